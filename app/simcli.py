@@ -1,0 +1,83 @@
+"""`motionsim`: a simulated device on a pseudo-terminal; prints the device path first."""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import signal
+import sys
+from collections.abc import Sequence
+from types import FrameType
+
+from drivers.errors import UnknownProtocol
+from drivers.sim.pty_server import PtyServer
+from drivers.sim.registry import create_device, simulator_names
+
+log = logging.getLogger("motionsim")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser for motionsim."""
+    parser = argparse.ArgumentParser(
+        prog="motionsim",
+        description="Serve a simulated positioning device on a pseudo-terminal. The first line "
+        "on stdout is the device path; it serves until SIGTERM or SIGINT.",
+    )
+    parser.add_argument("protocol", help="one of: " + ", ".join(simulator_names()))
+    parser.add_argument("--baud", type=int, help="line rate to emulate (default: the device's)")
+    parser.add_argument(
+        "--no-line-timing",
+        action="store_true",
+        help="deliver bytes at once instead of at the baud rate",
+    )
+    parser.add_argument(
+        "--non-blocking",
+        action="store_true",
+        help="COXIRIS: answer DONE when a move starts, not when it ends",
+    )
+    parser.add_argument("--instant", action="store_true", help="moves take no time")
+    parser.add_argument("--speed", type=float, help="initial speed (mm/s)")
+    parser.add_argument(
+        "--fault", action="append", default=[], help="an error CHECK_ERRORS reports (repeatable)"
+    )
+    parser.add_argument("--mute", action="store_true", help="a device that never answers")
+    parser.add_argument("-v", "--verbose", action="store_true", help="log on stderr")
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of motionsim; returns the exit status."""
+    options = build_parser().parse_args(argv)
+    logging.basicConfig(
+        level=logging.DEBUG if options.verbose else logging.WARNING,
+        format="motionsim: %(message)s",
+        stream=sys.stderr,
+    )
+    device_options: dict[str, object] = {"instant": options.instant, "mute": options.mute}
+    if options.protocol == "coxiris":
+        device_options["blocking"] = not options.non_blocking
+        device_options["faults"] = tuple(options.fault)
+        if options.speed is not None:
+            device_options["speed"] = options.speed
+    try:
+        probe = create_device(options.protocol, **device_options)
+    except UnknownProtocol as exc:
+        print(f"motionsim: {exc}", file=sys.stderr)
+        return 2
+    baud = None if options.no_line_timing else (options.baud or probe.default_baud)
+    device = create_device(options.protocol, baud=baud, **device_options)
+    server = PtyServer(device)
+
+    def stop(signum: int, frame: FrameType | None) -> None:
+        server.stop()
+
+    signal.signal(signal.SIGTERM, stop)
+    signal.signal(signal.SIGINT, stop)
+    print(server.path, flush=True)
+    log.info("serving %s on %s", options.protocol, server.path)
+    server.serve_forever()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""Motion Panel driver layer: transports, framers, protocols and simulators (no Qt)."""

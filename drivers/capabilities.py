@@ -1,0 +1,37 @@
+"""What a protocol can do, so that the application adapts to it."""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+
+
+class Completion(enum.Enum):
+    """How the end of a move becomes known."""
+
+    REPLY = "reply"  # the device's reply says the move ended (or a position poll confirms it)
+    FEEDBACK = "feedback"  # a feedback packet arrives when the move ends
+    ESTIMATE = "estimate"  # no message: estimated from distance and speed
+
+
+@dataclass(frozen=True)
+class Capabilities:
+    """Static description of a protocol's abilities."""
+
+    axes: tuple[str, ...]
+    length_unit: str = "mm"
+    speed_unit: str = "mm/s"
+    default_baud: int = 115200
+    absolute_moves: bool = True
+    relative_moves: bool = True
+    homing: bool = True
+    set_home: bool = True
+    speed: bool = True
+    speed_range: tuple[float, float] | None = None  # None: ask the device, or unknown
+    speed_limits_queryable: bool = False
+    position_feedback: bool = True  # False: positions are commanded only
+    completion: Completion = Completion.REPLY
+    parameters: bool = False
+    stop: bool = False
+    raw_text: bool = True  # a console send line takes text (True) or hex (False) by default
+    notes: tuple[str, ...] = field(default_factory=tuple)

@@ -1,0 +1,134 @@
+"""The synchronous client: writes one command, reads and decodes until its reply is complete."""
+
+from __future__ import annotations
+
+import logging
+import time
+from collections.abc import Callable
+
+from drivers.commands import Command
+from drivers.errors import DeviceTimeout, FrameError
+from drivers.events import Event, Undecodable
+from drivers.protocols.base import Exchange, Protocol, Reply
+from drivers.transport import Link
+
+log = logging.getLogger(__name__)
+
+EventListener = Callable[[Event, bool], None]
+"""Called with every decoded event and whether it answered the command in flight."""
+
+MAX_TIMEOUT_EXTENSION = 5  # a chattering device extends the wait at most this many timeouts
+
+
+class Client:
+    """One protocol over one link; not thread-safe: its owner (CLI or worker) is its only user."""
+
+    def __init__(
+        self,
+        link: Link,
+        protocol: Protocol,
+        timeout: float = 2.0,
+        clock: Callable[[], float] = time.monotonic,
+    ) -> None:
+        self.link = link
+        self.protocol = protocol
+        self.timeout = timeout
+        self.clock = clock
+        self.framer = protocol.new_framer()
+        self.listeners: list[EventListener] = []
+        self._buffer = bytearray()
+        self._last_rx = clock()
+        self._last_reply = 0.0
+
+    def execute(self, command: Command, timeout: float | None = None, extra: float = 0.0) -> Reply:
+        """Send `command` and wait for its reply.
+
+        `timeout` is the silence allowed before the reply is complete (the exchange's or the
+        client's default); `extra` adds the time the device is expected to be busy (a blocking
+        move). Raises BadInput before writing, DeviceError, DeviceTimeout or PortError.
+        """
+        data = self.protocol.encode(command)
+        exchange = self.protocol.exchange(command)
+        self.poll()
+        self._pace()
+        self.link.write(data)
+        silence = timeout if timeout is not None else (exchange.timeout or self.timeout)
+        self._await(exchange, silence, extra)
+        self._last_reply = self.clock()
+        return exchange.result()
+
+    def send_only(self, command: Command) -> None:
+        """Write a command that gets no reply (write-only devices)."""
+        data = self.protocol.encode(command)
+        self.poll()
+        self._pace()
+        self.link.write(data)
+        self._last_reply = self.clock()
+
+    def poll(self) -> list[Event]:
+        """Read and decode whatever has arrived unasked (debug lines, late replies)."""
+        events: list[Event] = []
+        for event in self._read_events():
+            self._notify(event, False)
+            events.append(event)
+        return events
+
+    def close(self) -> None:
+        """Close the link."""
+        self.link.close()
+
+    def _pace(self) -> None:
+        gap = self.protocol.min_gap - (self.clock() - self._last_reply)
+        while gap > 0:
+            # The device needs silence between packets (Visiomex: 1 s); keep reading meanwhile.
+            self.poll()
+            gap = self.protocol.min_gap - (self.clock() - self._last_reply)
+
+    def _await(self, exchange: Exchange, silence: float, extra: float) -> None:
+        start = self.clock()
+        hard_limit = start + extra + silence * MAX_TIMEOUT_EXTENSION
+        while not exchange.finished:
+            now = self.clock()
+            deadline = min(max(start + extra, self._last_rx) + silence, hard_limit)
+            if now >= deadline:
+                raise DeviceTimeout(self._timeout_message(exchange, silence, extra))
+            for event in self._read_events():
+                self._notify(event, exchange.on_event(event))
+        linger_end = self.clock() + exchange.linger
+        while exchange.wants_more and self.clock() < linger_end:
+            for event in self._read_events():
+                self._notify(event, exchange.on_event(event))
+
+    def _timeout_message(self, exchange: Exchange, silence: float, extra: float) -> str:
+        name = type(exchange.command).__name__
+        started = any(True for _ in exchange.events)
+        what = "did not finish its reply" if started else "did not answer"
+        return f"the device {what} to {name} within {silence + extra:.1f} s"
+
+    def _read_events(self) -> list[Event]:
+        data = self.link.read()
+        now = self.clock()
+        if data:
+            self._buffer += data
+            self._last_rx = now
+        frames, rest = self.framer.split(bytes(self._buffer))
+        idle = self.framer.idle_timeout
+        if rest and idle is not None and now - self._last_rx >= idle:
+            used, frame = self.framer.flush(rest)
+            rest = rest[used:]
+            if frame is not None:
+                frames.append(frame)
+        self._buffer = bytearray(rest)
+        events: list[Event] = []
+        for frame in frames:
+            try:
+                events.extend(self.protocol.decode(frame))
+            except FrameError as exc:
+                events.append(Undecodable(frame, str(exc)))
+        return events
+
+    def _notify(self, event: Event, solicited: bool) -> None:
+        if not solicited:
+            log.debug("unsolicited: %s", event)
+        for listener in list(self.listeners):
+            listener(event, solicited)

@@ -1,0 +1,107 @@
+"""Typed commands: what the application asks of a device, independent of any wire format."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Command:
+    """Base of every typed command."""
+
+
+@dataclass(frozen=True)
+class GetId(Command):
+    """Ask for the device's identifier."""
+
+
+@dataclass(frozen=True)
+class Help(Command):
+    """Ask the device for its help text."""
+
+
+@dataclass(frozen=True)
+class GetPosition(Command):
+    """Ask for the current position."""
+
+
+@dataclass(frozen=True)
+class Home(Command):
+    """Move to the home position (0, 0, 0)."""
+
+
+@dataclass(frozen=True)
+class SetHome(Command):
+    """Make the current position the origin."""
+
+
+@dataclass(frozen=True)
+class MoveTo(Command):
+    """Absolute move, in the protocol's length unit (mm unless its capabilities say otherwise)."""
+
+    x: float
+    y: float
+    z: float = 0.0
+
+
+@dataclass(frozen=True)
+class MoveBy(Command):
+    """Relative move by the given deltas."""
+
+    dx: float
+    dy: float
+    dz: float = 0.0
+
+
+@dataclass(frozen=True)
+class SetSpeed(Command):
+    """Set the movement speed (length unit per second)."""
+
+    speed: float
+
+
+@dataclass(frozen=True)
+class GetSpeed(Command):
+    """Ask for the current speed."""
+
+
+@dataclass(frozen=True)
+class GetMinSpeed(Command):
+    """Ask for the lowest speed the device allows."""
+
+
+@dataclass(frozen=True)
+class GetMaxSpeed(Command):
+    """Ask for the highest speed the device allows."""
+
+
+@dataclass(frozen=True)
+class CheckErrors(Command):
+    """Ask the device to run its diagnostics."""
+
+
+@dataclass(frozen=True)
+class Stop(Command):
+    """Stop motion and flush queued motion (where the protocol has it)."""
+
+
+@dataclass(frozen=True)
+class Dwell(Command):
+    """Wait on the device for a time, in milliseconds."""
+
+    ms: int
+
+
+@dataclass(frozen=True)
+class SetParameter(Command):
+    """Write a numbered device parameter (Visiomex style)."""
+
+    param_id: int
+    value: int
+
+
+@dataclass(frozen=True)
+class Raw(Command):
+    """Send bytes as they are; the protocol decides what ends the reply."""
+
+    data: bytes

@@ -1,0 +1,39 @@
+"""The driver layer's error hierarchy; every failure it raises is one of these."""
+
+from __future__ import annotations
+
+
+class MotionError(Exception):
+    """Base class of every error the driver layer raises."""
+
+
+class BadInput(MotionError, ValueError):
+    """A command or value the device would reject; refused before anything is sent."""
+
+
+class DeviceError(MotionError):
+    """The device answered, and its answer reports an error."""
+
+
+class CommunicationError(MotionError):
+    """The link failed: no answer, an unreadable answer, or a port that is gone."""
+
+
+class DeviceTimeout(CommunicationError, TimeoutError):
+    """The device did not answer (or did not finish) in time."""
+
+
+class PortError(CommunicationError):
+    """The port cannot be opened, or failed while in use."""
+
+
+class GarbledReply(CommunicationError):
+    """The device answered something the protocol cannot make sense of."""
+
+
+class FrameError(MotionError):
+    """A frame could not be built or taken apart (raised by framers and decoders)."""
+
+
+class UnknownProtocol(MotionError, LookupError):
+    """No protocol is registered under that name."""

@@ -1,0 +1,151 @@
+"""High-level motion API over a client: moves that return when done, speed with limits."""
+
+from __future__ import annotations
+
+import logging
+import math
+import time
+from collections.abc import Callable
+
+from drivers import commands as cmd
+from drivers.capabilities import Completion
+from drivers.client import Client
+from drivers.errors import BadInput, DeviceError, DeviceTimeout
+from drivers.events import PositionReport
+from drivers.protocols.base import Reply
+
+log = logging.getLogger(__name__)
+
+POSITION_TOLERANCE = 0.011  # positions are printed with two decimals from 32-bit floats
+POLL_INTERVAL = 0.1  # seconds between position polls while waiting for a move to end
+ESTIMATE_MARGIN = 1.5  # a move may take this much longer than distance / speed
+
+
+class Motion:
+    """Operator-level commands for any protocol, adapting to its capabilities."""
+
+    def __init__(self, client: Client, sleep: Callable[[float], None] = time.sleep) -> None:
+        self.client = client
+        self.capabilities = client.protocol.capabilities
+        self.sleep = sleep
+        self._speed: float | None = None
+        self._limits: tuple[float, float] | None = None
+        self.last_position: PositionReport | None = None
+
+    def identify(self) -> str:
+        """The device's identifier."""
+        return str(self.client.execute(cmd.GetId()).value)
+
+    def position(self) -> PositionReport:
+        """The current position (measured where the protocol reports it)."""
+        value = self.client.execute(cmd.GetPosition()).value
+        if not isinstance(value, PositionReport):
+            raise DeviceError(f"the device did not report a position ({value!r})")
+        self.last_position = value
+        return value
+
+    def speed(self) -> float:
+        """The speed as the device reports it."""
+        value = float(self.client.execute(cmd.GetSpeed()).value)  # type: ignore[arg-type]
+        self._speed = value
+        return value
+
+    def speed_limits(self) -> tuple[float, float]:
+        """The lowest and highest speed the device allows."""
+        if self._limits is None:
+            if self.capabilities.speed_limits_queryable:
+                low = float(self.client.execute(cmd.GetMinSpeed()).value)  # type: ignore[arg-type]
+                high = float(self.client.execute(cmd.GetMaxSpeed()).value)  # type: ignore[arg-type]
+                self._limits = (low, high)
+            elif self.capabilities.speed_range is not None:
+                self._limits = self.capabilities.speed_range
+            else:
+                raise BadInput(f"{self.client.protocol.name} has no speed limits to report")
+        return self._limits
+
+    def set_speed(self, speed: float) -> float:
+        """Set the speed, refused outside the device's limits; returns what the device reports.
+
+        The limits are asked of the device first where the protocol can (COXIRIS: two queries),
+        so an out-of-range speed is refused without SET_SPEED being sent.
+        """
+        if not math.isfinite(speed) or speed <= 0:
+            raise BadInput(f"speed {speed:g} refused: the speed must be a positive number")
+        low, high = self.speed_limits()
+        unit = self.capabilities.speed_unit
+        if not low <= speed <= high:
+            raise BadInput(
+                f"speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}"
+            )
+        self.client.execute(cmd.SetSpeed(speed))
+        self._speed = speed
+        if self.capabilities.position_feedback:
+            reported = self.speed()
+            if reported != speed:
+                log.info(
+                    "speed %g %s reads back as %g (the device rounds it)", speed, unit, reported
+                )
+            return reported
+        return speed
+
+    def move_to(self, x: float, y: float, z: float = 0.0) -> PositionReport:
+        """Absolute move; returns the position once the move has ended."""
+        return self._move(cmd.MoveTo(x, y, z), lambda here: (x, y, z))
+
+    def move_by(self, dx: float, dy: float, dz: float = 0.0) -> PositionReport:
+        """Relative move; returns the position once the move has ended."""
+        return self._move(
+            cmd.MoveBy(dx, dy, dz), lambda here: (here.x + dx, here.y + dy, here.z + dz)
+        )
+
+    def home(self) -> PositionReport:
+        """Go to (0, 0, 0); returns the position once there."""
+        return self._move(cmd.Home(), lambda here: (0.0, 0.0, 0.0))
+
+    def set_home(self) -> None:
+        """Make the current position the origin."""
+        self.client.execute(cmd.SetHome())
+        self.last_position = PositionReport(0.0, 0.0, 0.0, self.capabilities.position_feedback)
+
+    def check(self) -> None:
+        """Run the device's diagnostics; DeviceError lists what it reported."""
+        self.client.execute(cmd.CheckErrors())
+
+    def raw(self, data: bytes) -> Reply:
+        """Send a raw command line and return its reply."""
+        return self.client.execute(cmd.Raw(data))
+
+    def _move(
+        self,
+        command: cmd.Command,
+        target_of: Callable[[PositionReport], tuple[float, float, float]],
+    ) -> PositionReport:
+        self.client.protocol.encode(command)  # refuse bad input before any query is sent
+        here = self.position()
+        target = target_of(here)
+        speed = self._speed if self._speed is not None else self.speed()
+        estimate = math.dist((here.x, here.y, here.z), target) / max(speed, 1e-9)
+        self.client.execute(command, extra=estimate * ESTIMATE_MARGIN)
+        if self.capabilities.completion is Completion.REPLY:
+            return self._wait_until_at(target, estimate)
+        return self.position()
+
+    def _wait_until_at(self, target: tuple[float, float, float], estimate: float) -> PositionReport:
+        """After DONE: poll until the position reaches the target (non-blocking firmware style)."""
+        allowed = estimate * ESTIMATE_MARGIN + self.client.timeout
+        deadline = time.monotonic() + allowed
+        previous: PositionReport | None = None
+        while True:
+            now = self.position()
+            if all(
+                abs(a - b) <= POSITION_TOLERANCE
+                for a, b in zip((now.x, now.y, now.z), target, strict=True)
+            ):
+                return now
+            if previous == now:
+                log.warning("the stage stopped at %s short of the target %s", now, target)
+                return now
+            if time.monotonic() > deadline:
+                raise DeviceTimeout(f"the move to {target} did not end within {allowed:.1f} s")
+            previous = now
+            self.sleep(POLL_INTERVAL)

@@ -1,0 +1,1 @@
+"""Protocols: typed commands to frames, frames to typed events."""

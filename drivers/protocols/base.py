@@ -1,0 +1,110 @@
+"""The protocol contract: encoding commands, decoding frames, and following one command's reply."""
+
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+from dataclasses import dataclass, field
+from typing import ClassVar
+
+from drivers.capabilities import Capabilities
+from drivers.commands import Command
+from drivers.errors import MotionError
+from drivers.events import Event
+from drivers.framers.base import Framer
+
+
+@dataclass
+class Reply:
+    """What one command got back: a typed value where there is one, and every event seen."""
+
+    command: Command
+    value: object = None
+    events: list[Event] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+
+
+class Exchange(ABC):
+    """Follows the events that answer one command until it is finished.
+
+    The client feeds every decoded event to `on_event`; once `finished` is true, `result()`
+    returns the Reply or raises DeviceError. An exchange that expects no reply is finished at once.
+    """
+
+    #: Seconds to wait for the reply to begin (None: the client's default timeout).
+    timeout: float | None = None
+    #: Seconds to keep reading after the end, for trailing lines that belong to this reply.
+    linger: float = 0.0
+
+    def __init__(self, command: Command) -> None:
+        self.command = command
+        self.events: list[Event] = []
+        self.error: MotionError | None = None
+        self.value: object = None
+        self.notes: list[str] = []
+        self._finished = False
+
+    @property
+    def finished(self) -> bool:
+        """Whether the reply is complete (or failed)."""
+        return self._finished
+
+    def finish(self, value: object = None) -> None:
+        """Mark the exchange complete with `value`."""
+        self.value = value
+        self._finished = True
+
+    def fail(self, error: MotionError) -> None:
+        """Mark the exchange failed (a device error, or a reply that makes no sense)."""
+        self.error = error
+        self._finished = True
+
+    @property
+    def wants_more(self) -> bool:
+        """After finishing: whether trailing lines of this reply are still expected."""
+        return False
+
+    def on_event(self, event: Event) -> bool:
+        """Take one event; return True when it belonged to this exchange."""
+        taken = self.handle_trailing(event) if self._finished else self.handle(event)
+        if taken:
+            self.events.append(event)
+        return taken
+
+    @abstractmethod
+    def handle(self, event: Event) -> bool:
+        """Protocol-specific handling of one event; return True when it was taken."""
+
+    def handle_trailing(self, event: Event) -> bool:
+        """Take an event that arrives after the end (see `wants_more`)."""
+        return False
+
+    def result(self) -> Reply:
+        """The reply, or the device's error raised."""
+        if self.error is not None:
+            raise self.error
+        return Reply(self.command, self.value, list(self.events), list(self.notes))
+
+
+class Protocol(ABC):
+    """A wire protocol: its capabilities, framer, encoder, decoder and reply tracking."""
+
+    name: ClassVar[str]
+    capabilities: ClassVar[Capabilities]
+    #: Seconds to keep between the end of one reply and the next write (device pacing).
+    min_gap: ClassVar[float] = 0.0
+
+    @abstractmethod
+    def new_framer(self) -> Framer:
+        """A framer for the device's replies."""
+
+    @abstractmethod
+    def encode(self, command: Command) -> bytes:
+        """The bytes to write for `command`; raises BadInput before anything is sent."""
+
+    @abstractmethod
+    def decode(self, frame: bytes) -> list[Event]:
+        """The events in one frame from the device; never raises but FrameError."""
+
+    @abstractmethod
+    def exchange(self, command: Command) -> Exchange:
+        """A tracker for the reply to `command`."""

@@ -1,0 +1,219 @@
+"""COXIRIS ASCII protocol (PROTOCOLS.md §1): `CMD args\\n` -> `ACK CMD` ... `DONE CMD[: data]`."""
+
+from __future__ import annotations
+
+from drivers.capabilities import Capabilities, Completion
+from drivers.commands import (
+    CheckErrors,
+    Command,
+    GetId,
+    GetMaxSpeed,
+    GetMinSpeed,
+    GetPosition,
+    GetSpeed,
+    Help,
+    Home,
+    MoveBy,
+    MoveTo,
+    Raw,
+    SetHome,
+    SetSpeed,
+)
+from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
+from drivers.events import Ack, Done, ErrorReport, Event, PositionReport, TextLine
+from drivers.framers.lines import LineFramer
+from drivers.numbers import format_number
+from drivers.protocols.base import Exchange, Protocol
+
+MAX_COMMAND_LENGTH = 63  # the firmware's 64-byte buffer keeps 63 characters and a NUL
+HELP_LINE_COUNT = 12
+UNKNOWN_COMMAND = "Unknown command - "
+TOO_LONG = "Command too long"
+
+_SIMPLE: dict[type[Command], str] = {
+    Help: "HELP",
+    SetHome: "SET_HOME",
+    Home: "GO_HOME",
+    GetPosition: "GET_POSITION",
+    GetSpeed: "GET_SPEED",
+    GetMinSpeed: "GET_MIN_SPEED",
+    GetMaxSpeed: "GET_MAX_SPEED",
+    GetId: "GET_ID",
+    CheckErrors: "CHECK_ERRORS",
+}
+
+
+def command_line(command: Command) -> str:
+    """The text line (without terminator) for a typed command; BadInput if it cannot be sent."""
+    if type(command) in _SIMPLE:
+        line = _SIMPLE[type(command)]
+    elif isinstance(command, MoveTo):
+        parts = [
+            format_number(v, f"{a} coordinate")
+            for a, v in zip("xyz", (command.x, command.y, command.z), strict=True)
+        ]
+        line = "ABSOLUTE_MOVE " + " ".join(parts)
+    elif isinstance(command, MoveBy):
+        deltas = (command.dx, command.dy, command.dz)
+        parts = [
+            format_number(v, f"{a} distance")
+            for a, v in zip(("dx", "dy", "dz"), deltas, strict=True)
+        ]
+        line = "DELTA_MOVE " + " ".join(parts)
+    elif isinstance(command, SetSpeed):
+        if not command.speed > 0:
+            raise BadInput(f"speed {command.speed:g} mm/s refused: the speed must be positive")
+        line = "SET_SPEED " + format_number(command.speed, "speed")
+    elif isinstance(command, Raw):
+        try:
+            line = command.data.decode("ascii")
+        except UnicodeDecodeError as exc:
+            raise BadInput("raw command refused: COXIRIS takes ASCII text only") from exc
+        if any(c in line for c in "\r\n"):
+            raise BadInput("raw command refused: one line at a time (it contains a line break)")
+        if not line.strip():
+            raise BadInput("raw command refused: it is empty, and the device ignores blank lines")
+    else:
+        raise BadInput(f"COXIRIS has no command for {type(command).__name__}")
+    if len(line) > MAX_COMMAND_LENGTH:
+        raise BadInput(
+            f"command refused: {len(line)} characters, the device takes at most "
+            f"{MAX_COMMAND_LENGTH} ({line[:24]}...)"
+        )
+    return line
+
+
+def expected_name(line: str) -> str:
+    """The command name the device will echo in ACK/DONE: the first token, upper-cased."""
+    return line.strip().upper().split(" ")[0]
+
+
+def parse_reply_number(text: str, what: str) -> float:
+    """A number printed by the firmware; `ovf`, `nan` and `inf` are reported as unreadable."""
+    try:
+        value = float(text)
+    except ValueError as exc:
+        raise GarbledReply(
+            f"the device reported {what} as {text!r}, which is not a number"
+        ) from exc
+    if text.strip().lower() in ("nan", "inf", "-inf", "ovf"):
+        raise GarbledReply(f"the device reported {what} as {text!r}")
+    return value
+
+
+class CoxirisExchange(Exchange):
+    """Follows `ACK CMD`, error and text lines, then `DONE CMD`; and the ACK-less error replies."""
+
+    def __init__(self, command: Command, name: str) -> None:
+        super().__init__(command)
+        self.name = name
+        self.acked = False
+        self.errors: list[str] = []
+        self.lines: list[str] = []
+        self._trailing_lines = 0
+
+    @property
+    def wants_more(self) -> bool:
+        """True while the echo and help text of an unknown-command reply are still to come."""
+        return self._trailing_lines > 0
+
+    def handle_trailing(self, event: Event) -> bool:
+        """Swallow the echo and the help lines that follow `ERROR: Unknown command`."""
+        if self._trailing_lines > 0 and isinstance(event, TextLine):
+            self._trailing_lines -= 1
+            self.lines.append(event.text)
+            return True
+        return False
+
+    def handle(self, event: Event) -> bool:
+        """Track one event of the reply."""
+        if not self.acked:
+            if isinstance(event, Ack) and event.command == self.name:
+                self.acked = True
+                return True
+            if isinstance(event, ErrorReport):
+                # PROTOCOLS.md §1: unknown and too-long commands get an ERROR line with no ACK/DONE.
+                if event.message.startswith(UNKNOWN_COMMAND.rstrip()):
+                    self._trailing_lines = 2 + HELP_LINE_COUNT  # echo, "Available commands:", help
+                    self.fail(DeviceError(f"the device does not know the command {self.name!r}"))
+                else:
+                    self.fail(DeviceError(f"the device refused the command: {event.message}"))
+                return True
+            return False
+        if isinstance(event, ErrorReport):
+            self.errors.append(event.message)
+            return True
+        if isinstance(event, TextLine):
+            self.lines.append(event.text)
+            return True
+        if isinstance(event, Done) and event.command == self.name:
+            if self.errors:
+                self.fail(DeviceError("; ".join(self.errors)))
+            else:
+                self._complete(event)
+            return True
+        if isinstance(event, (Ack, Done)):
+            self.fail(GarbledReply(f"expected DONE {self.name}, got {event}"))
+            return True
+        return False
+
+    def _complete(self, done: Done) -> None:
+        command = self.command
+        data = done.data
+        try:
+            if isinstance(command, GetPosition):
+                fields = (data or "").split()
+                if len(fields) != 3:
+                    raise GarbledReply(f"position reply {data!r} does not hold three numbers")
+                x, y, z = (parse_reply_number(f, "a coordinate") for f in fields)
+                self.finish(PositionReport(x, y, z))
+            elif isinstance(command, (GetSpeed, GetMinSpeed, GetMaxSpeed)):
+                self.finish(parse_reply_number(data or "", "the speed"))
+            elif isinstance(command, GetId):
+                self.finish((data or "").strip())
+            elif isinstance(command, Help):
+                self.finish(list(self.lines))
+            else:
+                self.finish(data)
+        except GarbledReply as exc:
+            self.fail(exc)
+
+
+class CoxirisProtocol(Protocol):
+    """The COXIRIS positioning system's line protocol."""
+
+    name = "coxiris"
+    capabilities = Capabilities(
+        axes=("x", "y", "z"),
+        default_baud=115200,
+        speed_limits_queryable=True,
+        completion=Completion.REPLY,
+        notes=("speeds are reported rounded to whole mm/s", "positions are reported to 0.01 mm"),
+    )
+
+    def new_framer(self) -> LineFramer:
+        """Lines ended by CR LF."""
+        return LineFramer(b"\n")
+
+    def encode(self, command: Command) -> bytes:
+        """`CMD args\\n`, refused if longer than the firmware's 63 characters."""
+        return command_line(command).encode("ascii") + b"\n"
+
+    def decode(self, frame: bytes) -> list[Event]:
+        """One reply line to one event."""
+        try:
+            text = frame.decode("ascii")
+        except UnicodeDecodeError as exc:
+            raise FrameError(f"non-ASCII bytes in a COXIRIS line: {frame!r}") from exc
+        if text.startswith("ACK "):
+            return [Ack(text[4:].strip())]
+        if text.startswith("DONE "):
+            name, sep, data = text[5:].partition(":")
+            return [Done(name.strip(), data.strip() if sep else None)]
+        if text.startswith("ERROR:"):
+            return [ErrorReport(text[6:].lstrip(" "))]
+        return [TextLine(text)]
+
+    def exchange(self, command: Command) -> CoxirisExchange:
+        """Track the reply by the command name the device will echo."""
+        return CoxirisExchange(command, expected_name(command_line(command)))

@@ -1,0 +1,35 @@
+"""Protocols by name, imported only when asked for: one protocol's problem never breaks another."""
+
+from __future__ import annotations
+
+import importlib
+
+from drivers.errors import UnknownProtocol
+from drivers.protocols.base import Protocol
+
+PROTOCOLS: dict[str, tuple[str, str]] = {
+    "coxiris": ("drivers.protocols.coxiris", "CoxirisProtocol"),
+}
+PLANNED = ("visiomex", "laser-frame", "pi-frame", "firmata")
+
+
+def protocol_names() -> list[str]:
+    """Names of the protocols that can be used now."""
+    return list(PROTOCOLS)
+
+
+def get_protocol_class(name: str) -> type[Protocol]:
+    """The protocol class registered as `name`."""
+    try:
+        module_name, class_name = PROTOCOLS[name]
+    except KeyError:
+        if name in PLANNED:
+            raise UnknownProtocol(f"protocol {name!r} is not implemented yet") from None
+        known = ", ".join(protocol_names())
+        raise UnknownProtocol(f"unknown protocol {name!r} (known: {known})") from None
+    return getattr(importlib.import_module(module_name), class_name)
+
+
+def create_protocol(name: str) -> Protocol:
+    """A new instance of the protocol registered as `name`."""
+    return get_protocol_class(name)()

@@ -1,0 +1,1 @@
+"""Simulated devices: one model per protocol, on a stage model driven by an injectable clock."""

@@ -1,0 +1,81 @@
+"""Serving a simulated device on a pseudo-terminal, for programs that want a real tty path."""
+
+from __future__ import annotations
+
+import contextlib
+import errno
+import logging
+import os
+import select
+import threading
+import time
+import tty
+
+from drivers.sim.device import SimulatedDevice
+
+log = logging.getLogger(__name__)
+
+USB_FRAME = 0.002  # deliver paced output in chunks, like a USB-serial adapter
+IDLE_WAKE = 0.5
+
+
+class PtyServer:
+    """A device behind the master side of a pty; the slave's path is what clients open."""
+
+    def __init__(self, device: SimulatedDevice) -> None:
+        self.device = device
+        self.master, self.slave = os.openpty()
+        tty.setraw(self.slave)
+        os.set_blocking(self.master, False)
+        self.path = os.ttyname(self.slave)
+        self._stop = threading.Event()
+        self._wake_r, self._wake_w = os.pipe()
+        self._unsent = bytearray()
+
+    def stop(self) -> None:
+        """Ask `serve_forever` to return (safe from a signal handler or another thread)."""
+        self._stop.set()
+        with contextlib.suppress(OSError):
+            os.write(self._wake_w, b"x")
+
+    def serve_forever(self) -> None:
+        """Move bytes between the pty and the device until stopped."""
+        self.device.boot()
+        while not self._stop.is_set():
+            self._unsent += self.device.read_output()
+            self._flush()
+            due = self.device.next_due()
+            now = time.monotonic()
+            wait = IDLE_WAKE if due is None else min(IDLE_WAKE, max(USB_FRAME, due - now))
+            writers = [self.master] if self._unsent else []
+            readable, _, _ = select.select([self.master, self._wake_r], writers, [], wait)
+            if self.master in readable:
+                self._read()
+        self.close()
+
+    def _read(self) -> None:
+        try:
+            data = os.read(self.master, 4096)
+        except OSError as exc:
+            if exc.errno in (errno.EAGAIN, errno.EIO):
+                return
+            raise
+        if data:
+            self.device.receive(data)
+
+    def _flush(self) -> None:
+        if not self._unsent:
+            return
+        try:
+            written = os.write(self.master, bytes(self._unsent))
+        except OSError as exc:
+            if exc.errno in (errno.EAGAIN, errno.EIO):
+                return
+            raise
+        del self._unsent[:written]
+
+    def close(self) -> None:
+        """Close every descriptor."""
+        for fd in (self.master, self.slave, self._wake_r, self._wake_w):
+            with contextlib.suppress(OSError):
+                os.close(fd)

@@ -1,0 +1,32 @@
+"""Simulated devices by protocol name, imported lazily."""
+
+from __future__ import annotations
+
+import importlib
+from typing import Any
+
+from drivers.errors import UnknownProtocol
+from drivers.sim.clock import Clock, monotonic
+from drivers.sim.device import SimulatedDevice
+
+SIMULATORS: dict[str, tuple[str, str]] = {
+    "coxiris": ("drivers.sim.coxiris_device", "CoxirisDevice"),
+}
+
+
+def simulator_names() -> list[str]:
+    """Protocols that have a simulated device."""
+    return sorted(SIMULATORS)
+
+
+def create_device(
+    name: str, clock: Clock = monotonic, baud: int | None = None, **options: Any
+) -> SimulatedDevice:
+    """A simulated device for protocol `name`; `options` go to its constructor."""
+    try:
+        module_name, class_name = SIMULATORS[name]
+    except KeyError:
+        known = ", ".join(simulator_names())
+        raise UnknownProtocol(f"no simulator for {name!r} (simulators: {known})") from None
+    cls = getattr(importlib.import_module(module_name), class_name)
+    return cls(clock, baud, **options)

@@ -1,0 +1,61 @@
+"""Traffic records from the tap, and their text forms (console, log file)."""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import TextIO
+
+TX = "tx"
+RX = "rx"
+
+_ESCAPES = {0x0D: "\\r", 0x0A: "\\n", 0x09: "\\t", 0x5C: "\\\\"}
+
+
+@dataclass(frozen=True)
+class Traffic:
+    """Bytes that crossed the port: direction (`tx`/`rx`), data, and monotonic + wall-clock time."""
+
+    direction: str
+    data: bytes
+    time: float
+    wall: float = field(default_factory=time.time)
+
+
+def escape(data: bytes) -> str:
+    """Printable ASCII as is; CR, LF, tab and backslash escaped; other bytes as \\xNN."""
+    out = []
+    for byte in data:
+        if byte in _ESCAPES:
+            out.append(_ESCAPES[byte])
+        elif 0x20 <= byte < 0x7F:
+            out.append(chr(byte))
+        else:
+            out.append(f"\\x{byte:02x}")
+    return "".join(out)
+
+
+def hexdump_lines(record: Traffic, start: float, width: int = 16) -> list[str]:
+    """Lines like pyserial's spy: `000003.001 TX   48 45 4C 4C 4F   HELLO`."""
+    lines = []
+    for offset in range(0, len(record.data), width):
+        chunk = record.data[offset : offset + width]
+        hexes = " ".join(f"{b:02X}" for b in chunk)
+        text = "".join(chr(b) if 0x20 <= b < 0x7F else "." for b in chunk)
+        stamp = f"{record.time - start:010.3f}"
+        lines.append(f"{stamp} {record.direction.upper()}   {hexes:<{width * 3 - 1}}   {text}")
+    return lines
+
+
+class TrafficLogWriter:
+    """Writes every record to a text file as it happens, flushed, so a crash loses nothing."""
+
+    def __init__(self, stream: TextIO, start: float | None = None) -> None:
+        self.stream = stream
+        self.start = time.monotonic() if start is None else start
+
+    def __call__(self, record: Traffic) -> None:
+        """Append one record (hexdump lines and the escaped text)."""
+        for line in hexdump_lines(record, self.start):
+            self.stream.write(line + "\n")
+        self.stream.flush()

@@ -1,0 +1,133 @@
+"""`sim://PROTOCOL?option=value` for pyserial: a simulated device as an in-process serial port.
+
+Options: `blocking=0|1`, `instant=0|1`, `mute=0|1`, `line_timing=0|1` (emulate the baud rate,
+on by default), `speed=S`, `fault=TEXT` (repeatable, COXIRIS CHECK_ERRORS).
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+import urllib.parse
+from typing import Any
+
+import serial
+from serial.serialutil import PortNotOpenError, SerialBase, SerialException
+
+from drivers.errors import MotionError
+from drivers.sim.device import SimulatedDevice
+from drivers.sim.registry import create_device
+
+USB_FRAME = 0.002
+_FLAGS = {"blocking", "instant", "mute", "line_timing"}
+
+
+def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
+    """Split `sim://name?opts` into the protocol name, device options and line timing."""
+    parts = urllib.parse.urlsplit(url)
+    if parts.scheme != "sim":
+        raise SerialException(f"expected a sim:// URL, got {url!r}")
+    name = (parts.netloc or parts.path).strip("/")
+    options: dict[str, Any] = {}
+    line_timing = True
+    for key, value in urllib.parse.parse_qsl(parts.query, keep_blank_values=True):
+        if key in _FLAGS:
+            flag = value.lower() not in ("0", "false", "no", "off")
+            if key == "line_timing":
+                line_timing = flag
+            else:
+                options[key] = flag
+        elif key == "speed":
+            options["speed"] = float(value)
+        elif key == "fault":
+            options["faults"] = (*options.get("faults", ()), value)
+        else:
+            raise SerialException(f"unknown sim:// option {key!r}")
+    return name, options, line_timing
+
+
+class Serial(SerialBase):
+    """A pyserial port whose other end is a simulated device running on the real clock."""
+
+    def open(self) -> None:
+        """Create and boot the device named by the URL."""
+        if self._port is None:
+            raise SerialException("port must be configured before it can be used")
+        if self.is_open:
+            raise SerialException("port already open")
+        try:
+            name, options, line_timing = parse_sim_url(self._port)
+            baud = self._baudrate if line_timing else None
+            self.device: SimulatedDevice = create_device(name, time.monotonic, baud, **options)
+        except (MotionError, ValueError) as exc:
+            raise SerialException(f"cannot open {self._port}: {exc}") from exc
+        self._pending = bytearray()
+        self._wakeup = threading.Event()
+        self.is_open = True
+        self.device.boot()
+
+    def close(self) -> None:
+        """Close the port; a blocked read returns."""
+        self.is_open = False
+        if hasattr(self, "_wakeup"):
+            self._wakeup.set()
+
+    def _reconfigure_port(self) -> None:
+        """Nothing to configure: the device is in-process."""
+
+    def from_url(self, url: str) -> str:
+        """Keep the URL; options are read at open."""
+        return url
+
+    @property
+    def in_waiting(self) -> int:
+        """Bytes the device has sent and nobody has read yet."""
+        if not self.is_open:
+            raise PortNotOpenError()
+        self._pending += self.device.read_output()
+        return len(self._pending)
+
+    def read(self, size: int = 1) -> bytes:
+        """Up to `size` bytes, waiting at most `timeout` as a serial port does."""
+        if not self.is_open:
+            raise PortNotOpenError()
+        deadline = None if self._timeout is None else time.monotonic() + self._timeout
+        while True:
+            self._pending += self.device.read_output()
+            if len(self._pending) >= size:
+                break
+            now = time.monotonic()
+            if deadline is not None and now >= deadline:
+                break
+            due = self.device.next_due()
+            # Wake no more often than a USB-serial adapter delivers (about every 2 ms), so a
+            # paced reply arrives in chunks rather than one byte per read.
+            wait = 0.5 if due is None else max(USB_FRAME, due - now)
+            if deadline is not None:
+                wait = min(wait, deadline - now)
+            if self._wakeup.wait(wait) and not self.is_open:
+                raise PortNotOpenError()
+        data = bytes(self._pending[:size])
+        del self._pending[:size]
+        return data
+
+    def write(self, data: bytes) -> int:
+        """Hand the bytes to the device."""
+        if not self.is_open:
+            raise PortNotOpenError()
+        data = serial.to_bytes(data)
+        self.device.receive(data)
+        return len(data)
+
+    def reset_input_buffer(self) -> None:
+        """Drop what the device has sent so far."""
+        self._pending.clear()
+        self.device.read_output()
+
+    def reset_output_buffer(self) -> None:
+        """Nothing is buffered on the way out."""
+
+    @property
+    def out_waiting(self) -> int:
+        """Always 0."""
+        return 0
