@@ -12,6 +12,7 @@ from types import FrameType
 from drivers.errors import UnknownProtocol
 from drivers.sim.pty_server import PtyServer
 from drivers.sim.registry import create_device, simulator_names
+from drivers.traffic import TrafficLogWriter
 
 log = logging.getLogger("motionsim")
 
@@ -41,6 +42,9 @@ def build_parser() -> argparse.ArgumentParser:
         "--fault", action="append", default=[], help="an error CHECK_ERRORS reports (repeatable)"
     )
     parser.add_argument("--mute", action="store_true", help="a device that never answers")
+    parser.add_argument(
+        "--record", metavar="FILE", help="append a hexdump of the traffic, as the device sees it"
+    )
     parser.add_argument("-v", "--verbose", action="store_true", help="log on stderr")
     return parser
 
@@ -66,7 +70,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     baud = None if options.no_line_timing else (options.baud or probe.default_baud)
     device = create_device(options.protocol, baud=baud, **device_options)
-    server = PtyServer(device)
+    record = open(options.record, "a", encoding="utf-8") if options.record else None  # noqa: SIM115
+    server = PtyServer(device, TrafficLogWriter(record) if record else None)
 
     def stop(signum: int, frame: FrameType | None) -> None:
         server.stop()
@@ -75,7 +80,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     signal.signal(signal.SIGINT, stop)
     print(server.path, flush=True)
     log.info("serving %s on %s", options.protocol, server.path)
-    server.serve_forever()
+    try:
+        server.serve_forever()
+    finally:
+        if record is not None:
+            record.close()
     return 0
 
 

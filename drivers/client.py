@@ -87,23 +87,31 @@ class Client:
     def _await(self, exchange: Exchange, silence: float, extra: float) -> None:
         start = self.clock()
         hard_limit = start + extra + silence * MAX_TIMEOUT_EXTENSION
+        stray: list[Event] = []
         while not exchange.finished:
             now = self.clock()
             deadline = min(max(start + extra, self._last_rx) + silence, hard_limit)
             if now >= deadline:
-                raise DeviceTimeout(self._timeout_message(exchange, silence, extra))
+                raise DeviceTimeout(self._timeout_message(exchange, silence, extra, stray))
             for event in self._read_events():
-                self._notify(event, exchange.on_event(event))
+                taken = exchange.on_event(event)
+                if not taken:
+                    stray.append(event)
+                self._notify(event, taken)
         linger_end = self.clock() + exchange.linger
         while exchange.wants_more and self.clock() < linger_end:
             for event in self._read_events():
                 self._notify(event, exchange.on_event(event))
 
-    def _timeout_message(self, exchange: Exchange, silence: float, extra: float) -> str:
+    def _timeout_message(
+        self, exchange: Exchange, silence: float, extra: float, stray: list[Event]
+    ) -> str:
         name = type(exchange.command).__name__
-        started = any(True for _ in exchange.events)
-        what = "did not finish its reply" if started else "did not answer"
-        return f"the device {what} to {name} within {silence + extra:.1f} s"
+        what = "did not finish its reply" if exchange.events else "did not answer"
+        message = f"the device {what} to {name} within {silence + extra:.1f} s"
+        if stray:
+            message += f"; it sent {len(stray)} unexpected frame(s), the last: {stray[-1]}"
+        return message
 
     def _read_events(self) -> list[Event]:
         data = self.link.read()

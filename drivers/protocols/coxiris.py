@@ -104,6 +104,8 @@ def parse_reply_number(text: str, what: str) -> float:
 class CoxirisExchange(Exchange):
     """Follows `ACK CMD`, error and text lines, then `DONE CMD`; and the ACK-less error replies."""
 
+    linger = 2.0  # the help text after an unknown command: about 0.8 kB, 70 ms at 115200 baud
+
     def __init__(self, command: Command, name: str) -> None:
         super().__init__(command)
         self.name = name
@@ -111,6 +113,7 @@ class CoxirisExchange(Exchange):
         self.errors: list[str] = []
         self.lines: list[str] = []
         self._trailing_lines = 0
+        self._unknown_pending = False
 
     @property
     def wants_more(self) -> bool:
@@ -127,17 +130,26 @@ class CoxirisExchange(Exchange):
 
     def handle(self, event: Event) -> bool:
         """Track one event of the reply."""
+        if self._unknown_pending:
+            # PROTOCOLS.md §1: the line after `ERROR: Unknown command - ` echoes the command name;
+            # an echo of another name is the tail of an earlier reply, not ours.
+            self._unknown_pending = False
+            if isinstance(event, TextLine) and event.text == self.name:
+                self._trailing_lines = 1 + HELP_LINE_COUNT  # "Available commands:" and the help
+                self.lines.append(event.text)
+                self.fail(DeviceError(f"the device does not know the command {self.name!r}"))
+                return True
+            return False
         if not self.acked:
             if isinstance(event, Ack) and event.command == self.name:
                 self.acked = True
                 return True
             if isinstance(event, ErrorReport):
-                # PROTOCOLS.md §1: unknown and too-long commands get an ERROR line with no ACK/DONE.
+                # Unknown and too-long commands get an ERROR line with no ACK and no DONE.
                 if event.message.startswith(UNKNOWN_COMMAND.rstrip()):
-                    self._trailing_lines = 2 + HELP_LINE_COUNT  # echo, "Available commands:", help
-                    self.fail(DeviceError(f"the device does not know the command {self.name!r}"))
-                else:
-                    self.fail(DeviceError(f"the device refused the command: {event.message}"))
+                    self._unknown_pending = True
+                    return True
+                self.fail(DeviceError(f"the device refused the command: {event.message}"))
                 return True
             return False
         if isinstance(event, ErrorReport):

@@ -12,6 +12,8 @@ import time
 import tty
 
 from drivers.sim.device import SimulatedDevice
+from drivers.traffic import RX, TX, Traffic
+from drivers.transport import TrafficListener
 
 log = logging.getLogger(__name__)
 
@@ -22,8 +24,9 @@ IDLE_WAKE = 0.5
 class PtyServer:
     """A device behind the master side of a pty; the slave's path is what clients open."""
 
-    def __init__(self, device: SimulatedDevice) -> None:
+    def __init__(self, device: SimulatedDevice, recorder: TrafficListener | None = None) -> None:
         self.device = device
+        self.recorder = recorder
         self.master, self.slave = os.openpty()
         tty.setraw(self.slave)
         os.set_blocking(self.master, False)
@@ -61,6 +64,7 @@ class PtyServer:
                 return
             raise
         if data:
+            self._record(RX, data)
             self.device.receive(data)
 
     def _flush(self) -> None:
@@ -72,7 +76,13 @@ class PtyServer:
             if exc.errno in (errno.EAGAIN, errno.EIO):
                 return
             raise
+        self._record(TX, bytes(self._unsent[:written]))
         del self._unsent[:written]
+
+    def _record(self, direction: str, data: bytes) -> None:
+        """Report traffic from the device's side: RX is what the host wrote."""
+        if self.recorder is not None:
+            self.recorder(Traffic(direction, data, time.monotonic()))
 
     def close(self) -> None:
         """Close every descriptor."""

@@ -1,0 +1,50 @@
+"""Shared fixtures: clients on in-process simulated devices."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import pytest
+
+from drivers.client import Client
+from drivers.motion import Motion
+from drivers.protocols.coxiris import CoxirisProtocol
+from drivers.traffic import Traffic
+from drivers.transport import Link, open_link
+
+
+class Recorder:
+    """Collects every traffic record of a link."""
+
+    def __init__(self) -> None:
+        self.records: list[Traffic] = []
+
+    def __call__(self, record: Traffic) -> None:
+        self.records.append(record)
+
+    def sent(self) -> bytes:
+        """Everything written to the device."""
+        return b"".join(r.data for r in self.records if r.direction == "tx")
+
+    def received(self) -> bytes:
+        """Everything read from the device."""
+        return b"".join(r.data for r in self.records if r.direction == "rx")
+
+
+@pytest.fixture
+def sim_link(request: pytest.FixtureRequest) -> Iterator[tuple[Link, Recorder]]:
+    """A link to `sim://coxiris` with the options of `@pytest.mark.sim_url(...)`."""
+    marker = request.node.get_closest_marker("sim_url")
+    url = marker.args[0] if marker else "sim://coxiris?speed=100"
+    link = open_link(url, 115200)
+    recorder = Recorder()
+    link.listeners.append(recorder)
+    yield link, recorder
+    link.close()
+
+
+@pytest.fixture
+def motion(sim_link: tuple[Link, Recorder]) -> Motion:
+    """A Motion on the simulated COXIRIS device."""
+    link, _ = sim_link
+    return Motion(Client(link, CoxirisProtocol(), timeout=1.0))
