@@ -15,7 +15,7 @@ P = CoxirisProtocol()
 def _feed(command: cmd.Command, text: bytes):
     exchange = P.exchange(command)
     framer = P.new_framer()
-    frames, rest = framer.split(text)
+    frames, _rest = framer.split(text)
     for frame in frames:
         for event in P.decode(frame):
             exchange.on_event(event)

@@ -28,7 +28,7 @@ def test_loop_url_and_tap_report_both_directions() -> None:
         got += link.read()
     link.close()
     assert got == b"HELLO"
-    assert [r.direction for r in records][0] == "tx"
+    assert next(r.direction for r in records) == "tx"
     assert b"".join(r.data for r in records if r.direction == "rx") == b"HELLO"
     assert all(r.time > 0 for r in records)
 
@@ -36,7 +36,7 @@ def test_loop_url_and_tap_report_both_directions() -> None:
 def test_garbage_answer_is_a_clear_timeout_naming_what_came() -> None:
     link = open_link("loop://", 115200)  # echoes the command back: never an ACK
     client = Client(link, CoxirisProtocol(), timeout=0.2)
-    with pytest.raises(DeviceTimeout, match="unexpected frame.*GET_ID"):
+    with pytest.raises(DeviceTimeout, match=r"unexpected frame.*GET_ID"):
         client.execute(cmd.GetId())
     link.close()
 
