@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 import logging
+import threading
 import time
 from collections.abc import Callable
 
 from drivers.commands import Command
-from drivers.errors import DeviceTimeout, FrameError
+from drivers.errors import Aborted, DeviceTimeout, FrameError
 from drivers.events import Event, Undecodable
 from drivers.protocols.base import Exchange, Protocol, Reply
 from drivers.transport import Link
@@ -39,6 +40,8 @@ class Client:
         self._buffer = bytearray()
         self._last_rx = clock()
         self._last_reply = 0.0
+        self.abort = threading.Event()
+        """Set from any thread to make a waiting `execute` raise Aborted."""
 
     def execute(self, command: Command, timeout: float | None = None, extra: float = 0.0) -> Reply:
         """Send `command` and wait for its reply.
@@ -68,7 +71,7 @@ class Client:
     def poll(self) -> list[Event]:
         """Read and decode whatever has arrived unasked (debug lines, late replies)."""
         events: list[Event] = []
-        for event in self._read_events():
+        for event in self._read_events(wait=False):
             self._notify(event, False)
             events.append(event)
         return events
@@ -81,7 +84,9 @@ class Client:
         gap = self.protocol.min_gap - (self.clock() - self._last_reply)
         while gap > 0:
             # The device needs silence between packets (Visiomex: 1 s); keep reading meanwhile.
-            self.poll()
+            self._check_abort()
+            for event in self._read_events(wait=True):
+                self._notify(event, False)
             gap = self.protocol.min_gap - (self.clock() - self._last_reply)
 
     def _await(self, exchange: Exchange, silence: float, extra: float) -> None:
@@ -89,6 +94,7 @@ class Client:
         hard_limit = start + extra + silence * MAX_TIMEOUT_EXTENSION
         stray: list[Event] = []
         while not exchange.finished:
+            self._check_abort()
             now = self.clock()
             deadline = min(max(start + extra, self._last_rx) + silence, hard_limit)
             if now >= deadline:
@@ -103,6 +109,10 @@ class Client:
             for event in self._read_events():
                 self._notify(event, exchange.on_event(event))
 
+    def _check_abort(self) -> None:
+        if self.abort.is_set():
+            raise Aborted("abandoned: the connection is closing")
+
     def _timeout_message(
         self, exchange: Exchange, silence: float, extra: float, stray: list[Event]
     ) -> str:
@@ -113,8 +123,8 @@ class Client:
             message += f"; it sent {len(stray)} unexpected frame(s), the last: {stray[-1]}"
         return message
 
-    def _read_events(self) -> list[Event]:
-        data = self.link.read()
+    def _read_events(self, wait: bool = True) -> list[Event]:
+        data = self.link.read(wait)
         now = self.clock()
         if data:
             self._buffer += data

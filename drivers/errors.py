@@ -37,3 +37,7 @@ class FrameError(MotionError):
 
 class UnknownProtocol(MotionError, LookupError):
     """No protocol is registered under that name."""
+
+
+class Aborted(MotionError):
+    """The wait was abandoned because the owner is closing or cancelled it."""

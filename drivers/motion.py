@@ -10,7 +10,7 @@ from collections.abc import Callable
 from drivers import commands as cmd
 from drivers.capabilities import Completion
 from drivers.client import Client
-from drivers.errors import BadInput, DeviceError, DeviceTimeout
+from drivers.errors import Aborted, BadInput, DeviceError, DeviceTimeout
 from drivers.events import PositionReport
 from drivers.protocols.base import Reply
 
@@ -24,10 +24,11 @@ ESTIMATE_MARGIN = 1.5  # a move may take this much longer than distance / speed
 class Motion:
     """Operator-level commands for any protocol, adapting to its capabilities."""
 
-    def __init__(self, client: Client, sleep: Callable[[float], None] = time.sleep) -> None:
+    def __init__(self, client: Client) -> None:
         self.client = client
         self.capabilities = client.protocol.capabilities
-        self.sleep = sleep
+        self.position_listeners: list[Callable[[PositionReport], None]] = []
+        self.poll_interval = POLL_INTERVAL
         self._speed: float | None = None
         self._limits: tuple[float, float] | None = None
         self.last_position: PositionReport | None = None
@@ -41,7 +42,7 @@ class Motion:
         value = self.client.execute(cmd.GetPosition()).value
         if not isinstance(value, PositionReport):
             raise DeviceError(f"the device did not report a position ({value!r})")
-        self.last_position = value
+        self._set_position(value)
         return value
 
     def speed(self) -> float:
@@ -105,7 +106,12 @@ class Motion:
     def set_home(self) -> None:
         """Make the current position the origin."""
         self.client.execute(cmd.SetHome())
-        self.last_position = PositionReport(0.0, 0.0, 0.0, self.capabilities.position_feedback)
+        self._set_position(PositionReport(0.0, 0.0, 0.0, self.capabilities.position_feedback))
+
+    def _set_position(self, report: PositionReport) -> None:
+        self.last_position = report
+        for listener in list(self.position_listeners):
+            listener(report)
 
     def check(self) -> None:
         """Run the device's diagnostics; DeviceError lists what it reported."""
@@ -148,4 +154,5 @@ class Motion:
             if time.monotonic() > deadline:
                 raise DeviceTimeout(f"the move to {target} did not end within {allowed:.1f} s")
             previous = now
-            self.sleep(POLL_INTERVAL)
+            if self.client.abort.wait(self.poll_interval):
+                raise Aborted("abandoned: the connection is closing")

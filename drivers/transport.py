@@ -51,10 +51,12 @@ class Link:
         if written is not None and written != len(data):
             raise PortError(f"writing to {self.url}: only {written} of {len(data)} bytes sent")
 
-    def read(self) -> bytes:
-        """Whatever has arrived, waiting at most POLL_INTERVAL for the first byte."""
+    def read(self, wait: bool = True) -> bytes:
+        """Whatever has arrived; with `wait`, waiting at most POLL_INTERVAL for the first byte."""
         try:
             waiting = self.port.in_waiting
+            if not waiting and not wait:
+                return b""
             data = self.port.read(waiting or 1)
         except (serial.SerialException, OSError, ValueError, TypeError) as exc:
             raise PortError(f"reading from {self.url} failed: {exc}") from exc

@@ -1,0 +1,172 @@
+"""Benchmarks that print figures: framer throughput, command round trips, memory.
+
+Usage: .venv/bin/python bench/run.py [--json] [--quick]
+Figures are ratios where the machine is noisy (e.g. round trip over the pty versus in-process).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import os
+import statistics
+import subprocess
+import sys
+import time
+import tracemalloc
+from collections.abc import Callable
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from drivers import commands as cmd  # noqa: E402
+from drivers.client import Client  # noqa: E402
+from drivers.framers.lines import LineFramer  # noqa: E402
+from drivers.motion import Motion  # noqa: E402
+from drivers.protocols.coxiris import CoxirisProtocol  # noqa: E402
+from drivers.transport import open_link  # noqa: E402
+
+log = logging.getLogger("bench")
+
+
+def _best_of(repeats: int, run: Callable[[], float]) -> float:
+    return min(run() for _ in range(repeats))
+
+
+def bench_line_framer(lines: int) -> dict[str, float]:
+    """Decode a stream of COXIRIS reply lines, fed in 64-byte chunks as a port delivers them."""
+    stream = b"ACK GET_POSITION\r\nDONE GET_POSITION: 10.00 -5.00 2.50\r\n" * (lines // 2)
+    chunks = [stream[i : i + 64] for i in range(0, len(stream), 64)]
+    protocol = CoxirisProtocol()
+
+    def run() -> float:
+        framer = LineFramer()
+        buffer = b""
+        count = 0
+        start = time.perf_counter()
+        for chunk in chunks:
+            frames, buffer = framer.split(buffer + chunk)
+            for frame in frames:
+                protocol.decode(frame)
+                count += 1
+        assert count == lines
+        return time.perf_counter() - start
+
+    seconds = _best_of(3, run)
+    return {"lines": lines, "seconds": seconds, "lines_per_s": lines / seconds}
+
+
+def _round_trips(url: str, count: int) -> list[float]:
+    link = open_link(url, 115200)
+    client = Client(link, CoxirisProtocol())
+    try:
+        client.execute(cmd.GetId())
+        times = []
+        for _ in range(count):
+            start = time.perf_counter()
+            client.execute(cmd.GetPosition())
+            times.append(time.perf_counter() - start)
+        return times
+    finally:
+        link.close()
+
+
+def bench_round_trips(count: int) -> dict[str, float]:
+    """GET_POSITION round trips: in-process sim:// and through motionsim on a real pty."""
+    in_process = _round_trips("sim://coxiris", count)
+    sim = subprocess.Popen(
+        [sys.executable, "-m", "app.simcli", "coxiris"],
+        stdout=subprocess.PIPE,
+        text=True,
+        cwd=ROOT,
+    )
+    try:
+        assert sim.stdout is not None
+        path = sim.stdout.readline().strip()
+        over_pty = _round_trips(path, count)
+    finally:
+        sim.terminate()
+        sim.wait(10)
+    reply_bytes = len(b"ACK GET_POSITION\r\nDONE GET_POSITION: 0.00 0.00 0.00\r\n")
+    wire = (len(b"GET_POSITION\n") + reply_bytes) * 10 / 115200
+    result = {
+        "count": count,
+        "sim_median_ms": statistics.median(in_process) * 1000,
+        "pty_median_ms": statistics.median(over_pty) * 1000,
+        "pty_p95_ms": sorted(over_pty)[int(0.95 * len(over_pty))] * 1000,
+        "wire_time_ms": wire * 1000,
+    }
+    result["pty_over_wire_ratio"] = result["pty_median_ms"] / result["wire_time_ms"]
+    return result
+
+
+def bench_move_overhead(moves: int) -> dict[str, float]:
+    """Commands a completed move costs (position before, move, speed, confirmation)."""
+    link = open_link("sim://coxiris?instant=1&line_timing=0", 115200)
+    written: list[bytes] = []
+    link.listeners.append(lambda r: written.append(r.data) if r.direction == "tx" else None)
+    motion = Motion(Client(link, CoxirisProtocol()))
+    try:
+        start = time.perf_counter()
+        for i in range(moves):
+            motion.move_to(i % 10, 0, 0)
+        seconds = time.perf_counter() - start
+    finally:
+        link.close()
+    return {
+        "moves": moves,
+        "commands_per_move": len(written) / moves,
+        "ms_per_move": seconds / moves * 1000,
+    }
+
+
+def bench_traffic_memory(records: int) -> dict[str, float]:
+    """Memory held by a traffic tap's records (what a log keeps per byte)."""
+    from drivers.traffic import Traffic
+
+    tracemalloc.start()
+    kept = [
+        Traffic("rx", b"DONE GET_POSITION: 0.00 0.00 0.00\r\n", float(i)) for i in range(records)
+    ]
+    current, _ = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    payload = sum(len(r.data) for r in kept)
+    return {
+        "records": records,
+        "bytes_per_record": current / records,
+        "overhead_ratio": current / payload,
+    }
+
+
+def main() -> int:
+    """Run every benchmark and print the figures."""
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--quick", action="store_true", help="smaller sizes (for a smoke run)")
+    options = parser.parse_args()
+    scale = 10 if options.quick else 1
+    os.chdir(ROOT)
+    results = {
+        "line_framer": bench_line_framer(200_000 // scale),
+        "round_trips": bench_round_trips(200 // scale),
+        "move_overhead": bench_move_overhead(100 // scale),
+        "traffic_memory": bench_traffic_memory(100_000 // scale),
+    }
+    if options.json:
+        print(json.dumps(results, indent=None))
+    else:
+        for name, figures in results.items():
+            print(name)
+            for key, value in figures.items():
+                print(
+                    f"  {key:24} {value:,.3f}"
+                    if isinstance(value, float)
+                    else f"  {key:24} {value}"
+                )
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
