@@ -1,0 +1,89 @@
+"""Jobs: what the window asks the worker to do, as plain values with a human description."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Job:
+    """Base of every job; `describe()` is what the user is told about it."""
+
+    def describe(self) -> str:
+        """A short human description."""
+        return type(self).__name__
+
+
+@dataclass(frozen=True)
+class MoveToJob(Job):
+    """Absolute move (mm)."""
+
+    x: float
+    y: float
+    z: float
+
+    def describe(self) -> str:
+        """E.g. `move to (10, -5, 2.5) mm`."""
+        return f"move to ({self.x:g}, {self.y:g}, {self.z:g}) mm"
+
+
+@dataclass(frozen=True)
+class MoveByJob(Job):
+    """Relative move (mm)."""
+
+    dx: float
+    dy: float
+    dz: float
+
+    def describe(self) -> str:
+        """E.g. `jog by (1, 0, 0) mm`."""
+        return f"jog by ({self.dx:g}, {self.dy:g}, {self.dz:g}) mm"
+
+
+@dataclass(frozen=True)
+class HomeJob(Job):
+    """Go to (0, 0, 0)."""
+
+    def describe(self) -> str:
+        """`go home`."""
+        return "go home"
+
+
+@dataclass(frozen=True)
+class SetHomeJob(Job):
+    """Make the current position the origin."""
+
+    def describe(self) -> str:
+        """`set home`."""
+        return "set home here"
+
+
+@dataclass(frozen=True)
+class SetSpeedJob(Job):
+    """Set the speed (mm/s)."""
+
+    speed: float
+
+    def describe(self) -> str:
+        """E.g. `set speed 20 mm/s`."""
+        return f"set speed {self.speed:g} mm/s"
+
+
+@dataclass(frozen=True)
+class RawJob(Job):
+    """Send raw bytes typed in the console."""
+
+    data: bytes
+
+    def describe(self) -> str:
+        """E.g. `send 'GET_ID'`."""
+        return f"send {self.data!r}"
+
+
+@dataclass(frozen=True)
+class RefreshJob(Job):
+    """Read position, speed and limits again."""
+
+    def describe(self) -> str:
+        """`refresh`."""
+        return "refresh position and speed"

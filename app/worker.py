@@ -1,0 +1,265 @@
+"""The serial worker: one QObject on a QThread owns the port; the GUI talks to it by signals."""
+
+from __future__ import annotations
+
+import logging
+import queue
+import threading
+import time
+from dataclasses import dataclass
+
+from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, Slot
+
+from app import jobs
+from drivers.capabilities import Capabilities
+from drivers.client import Client
+from drivers.errors import Aborted, CommunicationError, MotionError, PortError
+from drivers.events import Event, TextLine, Undecodable
+from drivers.motion import Motion
+from drivers.registry import create_protocol
+from drivers.traffic import Traffic
+from drivers.transport import Link, open_link
+
+log = logging.getLogger(__name__)
+
+TICK_MS = 20  # the worker's loop period: queue, unsolicited input, polling
+TRAFFIC_BATCH_S = 0.05  # traffic is handed to the GUI at most this often (20 Hz)
+
+
+@dataclass(frozen=True)
+class DeviceInfo:
+    """What the window needs to adapt to a connected device."""
+
+    port: str
+    protocol: str
+    identity: str
+    capabilities: Capabilities
+
+
+class SerialWorker(QObject):
+    """Owns the link; runs jobs from a queue; polls the position; reports by signals.
+
+    Only `submit`, `cancel_pending` and `abort` may be called from another thread (they touch
+    thread-safe structures); everything else runs in the worker's thread via queued signals.
+    """
+
+    state_changed = Signal(str, str)  # connecting | connected | disconnected | error; detail
+    device_ready = Signal(object)  # DeviceInfo
+    traffic = Signal(list)  # list[Traffic], batched
+    position_changed = Signal(object)  # PositionReport
+    target_changed = Signal(object)  # (x, y, z) or None
+    speed_changed = Signal(float)
+    speed_limits_changed = Signal(float, float)
+    busy_changed = Signal(bool)
+    job_finished = Signal(object, object)  # Job, result
+    job_failed = Signal(object, str)  # Job, message
+    device_text = Signal(str)  # unsolicited lines: debug output, leftovers
+
+    def __init__(self, poll_moving_hz: float = 10.0, poll_idle_s: float = 1.0) -> None:
+        super().__init__()
+        self.poll_moving_hz = poll_moving_hz
+        self.poll_idle_s = poll_idle_s
+        self._jobs: queue.Queue[jobs.Job] = queue.Queue()
+        self._link: Link | None = None
+        self._motion: Motion | None = None
+        self._timer: QTimer | None = None
+        self._batch: list[Traffic] = []
+        self._batch_sent = 0.0
+        self._next_poll = 0.0
+        self._abort = threading.Event()
+
+    # -- thread-safe API ---------------------------------------------------------------------
+    def submit(self, job: jobs.Job) -> None:
+        """Queue a job (any thread)."""
+        self._jobs.put(job)
+
+    def cancel_pending(self) -> list[jobs.Job]:
+        """Drop every queued job that has not started; return them (any thread)."""
+        dropped = []
+        while True:
+            try:
+                dropped.append(self._jobs.get_nowait())
+            except queue.Empty:
+                return dropped
+
+    def abort(self) -> None:
+        """Make a wait in progress give up at once (any thread)."""
+        self._abort.set()
+
+    def abort_clear(self) -> None:
+        """Allow waits again (before a new connection)."""
+        self._abort.clear()
+
+    # -- worker-thread slots -----------------------------------------------------------------
+    @Slot()
+    def start(self) -> None:
+        """Create the loop timer in the worker's thread."""
+        self._timer = QTimer(self)
+        self._timer.setInterval(TICK_MS)
+        self._timer.timeout.connect(self._tick)
+        self._timer.start()
+
+    @Slot(str, str, int)
+    def open_port(self, url: str, protocol_name: str, baud: int) -> None:
+        """Open the port, identify the device and read its state."""
+        self.close_port()
+        self.state_changed.emit("connecting", f"{url} ({protocol_name}, {baud} baud)")
+        try:
+            protocol = create_protocol(protocol_name)
+            link = open_link(url, baud)
+        except MotionError as exc:
+            self.state_changed.emit("error", str(exc))
+            return
+        link.listeners.append(self._on_traffic)
+        client = Client(link, protocol)
+        client.abort = self._abort
+        client.listeners.append(self._on_event)
+        self._link = link
+        self._motion = Motion(client)
+        self._motion.poll_interval = 1.0 / self.poll_moving_hz
+        self._motion.position_listeners.append(self.position_changed.emit)
+        try:
+            identity = self._motion.identify()
+            self._refresh()
+        except MotionError as exc:
+            self._fail_connection(exc)
+            return
+        self.state_changed.emit("connected", f"{identity} on {url}")
+        self.device_ready.emit(DeviceInfo(url, protocol_name, identity, protocol.capabilities))
+        self._next_poll = time.monotonic() + self.poll_idle_s
+
+    @Slot()
+    def close_port(self) -> None:
+        """Close the port if open."""
+        if self._link is None:
+            return
+        self._flush_traffic()
+        self._link.close()
+        self._link = None
+        self._motion = None
+        self.state_changed.emit("disconnected", "")
+
+    @Slot()
+    def shutdown(self) -> None:
+        """Stop the loop, close the port and end the worker's thread."""
+        if self._timer is not None:
+            self._timer.stop()
+        self.cancel_pending()
+        self.close_port()
+        # Hand the worker (and its timer) back to the main thread, so that it can be deleted
+        # there once this thread has ended.
+        app = QCoreApplication.instance()
+        if app is not None:
+            self.moveToThread(app.thread())
+        QThread.currentThread().quit()
+
+    # -- the loop ----------------------------------------------------------------------------
+    def _tick(self) -> None:
+        if self._motion is None:
+            return
+        try:
+            try:
+                job = self._jobs.get_nowait()
+            except queue.Empty:
+                job = None
+            if job is not None:
+                self._run(job)
+            else:
+                self._motion.client.poll()
+                if time.monotonic() >= self._next_poll:
+                    self._motion.position()
+                    self._next_poll = time.monotonic() + self.poll_idle_s
+        except (PortError, Aborted) as exc:
+            self._fail_connection(exc)
+        except MotionError as exc:
+            self.state_changed.emit("connected", f"device: {exc}")
+        self._flush_traffic()
+
+    def _run(self, job: jobs.Job) -> None:
+        motion = self._motion
+        assert motion is not None
+        self.busy_changed.emit(True)
+        try:
+            result = self._dispatch(motion, job)
+        except (PortError, Aborted):
+            self.job_failed.emit(job, "the connection was lost")
+            raise
+        except MotionError as exc:
+            self.job_failed.emit(job, str(exc))
+            if isinstance(exc, CommunicationError):
+                self.target_changed.emit(None)
+        else:
+            self.job_finished.emit(job, result)
+        finally:
+            self.busy_changed.emit(False)
+            self._next_poll = time.monotonic() + self.poll_idle_s
+
+    def _dispatch(self, motion: Motion, job: jobs.Job) -> object:
+        if isinstance(job, jobs.MoveToJob):
+            self.target_changed.emit((job.x, job.y, job.z))
+            return motion.move_to(job.x, job.y, job.z)
+        if isinstance(job, jobs.MoveByJob):
+            here = motion.last_position
+            if here is not None:
+                self.target_changed.emit((here.x + job.dx, here.y + job.dy, here.z + job.dz))
+            return motion.move_by(job.dx, job.dy, job.dz)
+        if isinstance(job, jobs.HomeJob):
+            self.target_changed.emit((0.0, 0.0, 0.0))
+            return motion.home()
+        if isinstance(job, jobs.SetHomeJob):
+            motion.set_home()
+            return None
+        if isinstance(job, jobs.SetSpeedJob):
+            speed = motion.set_speed(job.speed)
+            self.speed_changed.emit(speed)
+            return speed
+        if isinstance(job, jobs.RawJob):
+            return motion.raw(job.data)
+        if isinstance(job, jobs.RefreshJob):
+            self._refresh()
+            return None
+        raise MotionError(f"unknown job {job!r}")
+
+    def _refresh(self) -> None:
+        motion = self._motion
+        assert motion is not None
+        motion.position()
+        caps = motion.capabilities
+        if caps.speed:
+            self.speed_changed.emit(motion.speed())
+            if caps.speed_limits_queryable or caps.speed_range is not None:
+                low, high = motion.speed_limits()
+                self.speed_limits_changed.emit(low, high)
+
+    def _fail_connection(self, exc: Exception) -> None:
+        dropped = self.cancel_pending()
+        detail = str(exc)
+        if dropped:
+            detail += f" ({len(dropped)} queued command(s) not sent)"
+        self._flush_traffic()
+        if self._link is not None:
+            self._link.close()
+        self._link = None
+        self._motion = None
+        self.target_changed.emit(None)
+        self.state_changed.emit("error", detail)
+
+    # -- listeners (worker thread) -----------------------------------------------------------
+    def _on_traffic(self, record: Traffic) -> None:
+        self._batch.append(record)
+        if record.time - self._batch_sent >= TRAFFIC_BATCH_S:
+            self._flush_traffic()
+
+    def _flush_traffic(self) -> None:
+        if self._batch:
+            batch, self._batch = self._batch, []
+            self.traffic.emit(batch)
+        self._batch_sent = time.monotonic()
+
+    def _on_event(self, event: Event, solicited: bool) -> None:
+        if solicited:
+            return
+        if isinstance(event, TextLine):
+            self.device_text.emit(event.text)
+        elif isinstance(event, Undecodable):
+            self.device_text.emit(f"undecodable: {event.reason}")

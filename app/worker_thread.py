@@ -1,0 +1,47 @@
+"""Running a SerialWorker on its own QThread, and stopping it cleanly."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import QObject, QThread, Signal
+
+from app.worker import SerialWorker
+
+
+class WorkerThread(QObject):
+    """Owns a QThread with a SerialWorker in it; the GUI calls these methods, never the port."""
+
+    open_requested = Signal(str, str, int)
+    close_requested = Signal()
+    shutdown_requested = Signal()
+
+    def __init__(self, worker: SerialWorker | None = None, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self.worker = worker or SerialWorker()
+        self.thread = QThread()
+        self.thread.setObjectName("serialWorker")
+        self.worker.moveToThread(self.thread)
+        self.thread.started.connect(self.worker.start)
+        self.open_requested.connect(self.worker.open_port)
+        self.close_requested.connect(self.worker.close_port)
+        self.shutdown_requested.connect(self.worker.shutdown)
+        self.thread.start()
+
+    def open(self, url: str, protocol: str, baud: int) -> None:
+        """Ask the worker to connect."""
+        self.worker.abort_clear()
+        self.open_requested.emit(url, protocol, baud)
+
+    def close(self) -> None:
+        """Ask the worker to disconnect (a wait in progress is abandoned)."""
+        self.worker.cancel_pending()
+        self.worker.abort()
+        self.close_requested.emit()
+
+    def stop(self, timeout_ms: int = 5000) -> bool:
+        """Shut the worker down and end the thread; True when it ended in time."""
+        if not self.thread.isRunning():
+            return True
+        self.worker.cancel_pending()
+        self.worker.abort()
+        self.shutdown_requested.emit()  # the worker quits its thread when done
+        return self.thread.wait(timeout_ms)

@@ -1,0 +1,100 @@
+"""The serial worker on its QThread against the in-process simulated device."""
+
+from __future__ import annotations
+
+import os
+
+if "DISPLAY" not in os.environ:
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+import pytest
+
+from app import jobs
+from app.worker import DeviceInfo
+from app.worker_thread import WorkerThread
+from drivers.events import PositionReport
+
+pytestmark = pytest.mark.timeout(30)
+
+
+@pytest.fixture
+def worker_thread(qtbot):
+    thread = WorkerThread()
+    yield thread
+    assert thread.stop()
+
+
+def _connect(qtbot, thread: WorkerThread, url: str = "sim://coxiris?speed=100") -> DeviceInfo:
+    with qtbot.waitSignal(thread.worker.device_ready, timeout=5000) as ready:
+        thread.open(url, "coxiris", 115200)
+    return ready.args[0]
+
+
+def test_connects_and_reports_the_device(qtbot, worker_thread: WorkerThread) -> None:
+    info = _connect(qtbot, worker_thread)
+    assert info.identity == "CX25F7TK9P"
+    assert info.capabilities.axes == ("x", "y", "z")
+
+
+def test_move_job_reports_positions_and_traffic(qtbot, worker_thread: WorkerThread) -> None:
+    _connect(qtbot, worker_thread)
+    traffic: list = []
+    worker_thread.worker.traffic.connect(traffic.extend)
+    with qtbot.waitSignal(worker_thread.worker.job_finished, timeout=5000) as done:
+        worker_thread.worker.submit(jobs.MoveToJob(10, -5, 2.5))
+    assert done.args[1] == PositionReport(10.0, -5.0, 2.5)
+    qtbot.waitUntil(lambda: b"DONE ABSOLUTE_MOVE" in b"".join(r.data for r in traffic))
+    sent = b"".join(r.data for r in traffic if r.direction == "tx")
+    assert b"ABSOLUTE_MOVE 10 -5 2.5\n" in sent
+
+
+def test_bad_job_fails_with_a_reason_and_nothing_sent(qtbot, worker_thread: WorkerThread) -> None:
+    _connect(qtbot, worker_thread)
+    traffic: list = []
+    worker_thread.worker.traffic.connect(traffic.extend)
+    with qtbot.waitSignal(worker_thread.worker.job_failed, timeout=5000) as failed:
+        worker_thread.worker.submit(jobs.SetSpeedJob(500))
+    assert "1 to 100" in failed.args[1]
+    assert b"SET_SPEED" not in b"".join(r.data for r in traffic)
+
+
+def test_cancel_pending_returns_what_was_not_sent(qtbot, worker_thread: WorkerThread) -> None:
+    worker = worker_thread.worker
+    for i in range(3):
+        worker.submit(jobs.MoveByJob(i, 0, 0))
+    dropped = worker.cancel_pending()
+    assert [job.dx for job in dropped] == [0, 1, 2]
+
+
+def test_device_vanishing_mid_move_is_an_error_not_a_hang(
+    qtbot, worker_thread: WorkerThread
+) -> None:
+    _connect(qtbot, worker_thread, "sim://coxiris?speed=1")
+    worker = worker_thread.worker
+    states: list[tuple[str, str]] = []
+    worker.state_changed.connect(lambda s, d: states.append((s, d)))
+    with qtbot.waitSignal(worker.busy_changed, timeout=5000):
+        worker.submit(jobs.MoveToJob(100, 0, 0))
+    worker.submit(jobs.HomeJob())
+    worker._link.port.close()  # the device goes away under the worker  # noqa: SLF001
+    qtbot.waitUntil(lambda: any(s == "error" for s, _ in states), timeout=5000)
+    detail = next(d for s, d in states if s == "error")
+    assert "1 queued command(s) not sent" in detail
+
+
+def test_stop_while_a_move_waits_ends_the_thread_quickly(
+    qtbot, worker_thread: WorkerThread
+) -> None:
+    _connect(qtbot, worker_thread, "sim://coxiris?speed=1")
+    with qtbot.waitSignal(worker_thread.worker.busy_changed, timeout=5000):
+        worker_thread.worker.submit(jobs.MoveToJob(100, 0, 0))
+    assert worker_thread.stop(3000)
+    assert not worker_thread.thread.isRunning()
+
+
+def test_open_failure_is_reported(qtbot, worker_thread: WorkerThread) -> None:
+    states: list[tuple[str, str]] = []
+    worker_thread.worker.state_changed.connect(lambda s, d: states.append((s, d)))
+    worker_thread.open("/dev/does-not-exist", "coxiris", 115200)
+    qtbot.waitUntil(lambda: any(s == "error" for s, _ in states), timeout=5000)
+    assert "cannot open /dev/does-not-exist" in states[-1][1]
