@@ -76,7 +76,7 @@ def test_device_vanishing_mid_move_is_an_error_not_a_hang(
     with qtbot.waitSignal(worker.busy_changed, timeout=5000):
         worker.submit(jobs.MoveToJob(100, 0, 0))
     worker.submit(jobs.HomeJob())
-    worker._link.port.close()  # the device goes away under the worker  # noqa: SLF001
+    worker._link.port.close()  # the device goes away under the worker
     qtbot.waitUntil(lambda: any(s == "error" for s, _ in states), timeout=5000)
     detail = next(d for s, d in states if s == "error")
     assert "1 queued command(s) not sent" in detail
