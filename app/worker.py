@@ -214,7 +214,8 @@ class SerialWorker(QObject):
             self.speed_changed.emit(speed)
             return speed
         if isinstance(job, jobs.RawJob):
-            return motion.raw(job.data)
+            motion.client.send_raw(job.data)
+            return None
         if isinstance(job, jobs.RefreshJob):
             self._refresh()
             return None
@@ -226,10 +227,10 @@ class SerialWorker(QObject):
         motion.position()
         caps = motion.capabilities
         if caps.speed:
-            self.speed_changed.emit(motion.speed())
             if caps.speed_limits_queryable or caps.speed_range is not None:
                 low, high = motion.speed_limits()
                 self.speed_limits_changed.emit(low, high)
+            self.speed_changed.emit(motion.speed())
 
     def _fail_connection(self, exc: Exception) -> None:
         dropped = self.cancel_pending()

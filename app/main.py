@@ -1,0 +1,91 @@
+"""`motionpanel`: the operator's window; with no arguments it opens on the simulated stage."""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import signal
+import sys
+from collections.abc import Sequence
+
+from PySide6.QtCore import QTimer
+from PySide6.QtWidgets import QApplication
+
+from app.main_window import MainWindow
+from app.settings import DEFAULT_PORT, DEFAULT_PROTOCOL
+from drivers.registry import get_protocol_class, protocol_names
+
+log = logging.getLogger("motionpanel")
+
+SCREENSHOT_TIMEOUT_MS = 15000
+SCREENSHOT_SETTLE_MS = 1500
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser for motionpanel."""
+    parser = argparse.ArgumentParser(prog="motionpanel", description="Motion Panel control window.")
+    parser.add_argument("--port", help=f"device path or pyserial URL (default {DEFAULT_PORT})")
+    parser.add_argument("--protocol", choices=protocol_names(), help="default coxiris")
+    parser.add_argument("--baud", type=int, help="line speed (default: the protocol's)")
+    parser.add_argument(
+        "--screenshot",
+        metavar="PATH",
+        help="save a PNG of the window once connected and settled, then exit",
+    )
+    parser.add_argument("-v", "--verbose", action="store_true", help="log on stderr")
+    return parser
+
+
+def take_screenshot(window: MainWindow, path: str, app: QApplication) -> None:
+    """Once connected and settled, save the window to `path` and quit (0; 3 if not connected)."""
+    done = False
+
+    def shoot() -> None:
+        nonlocal done
+        if done:
+            return
+        done = True
+        window.view2d.refresh()
+        refresh3d = getattr(window.view3d, "refresh", None)
+        if refresh3d is not None:
+            refresh3d()
+        ok = window.grab().save(path, "PNG")
+        if not ok:
+            log.error("could not write %s", path)
+        app.exit(0 if ok and window.connected else 3)
+
+    window.settled.connect(lambda: QTimer.singleShot(SCREENSHOT_SETTLE_MS, shoot))
+    QTimer.singleShot(SCREENSHOT_TIMEOUT_MS, shoot)
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Entry point of motionpanel; returns the exit status."""
+    options = build_parser().parse_args(argv)
+    logging.basicConfig(
+        level=logging.INFO if options.verbose else logging.WARNING,
+        format="motionpanel: %(message)s",
+    )
+    app = QApplication.instance() or QApplication(sys.argv[:1])
+    app.setApplicationName("Motion Panel")
+    window = MainWindow()
+    signal.signal(signal.SIGINT, lambda *_: window.close())
+    explicit = options.port or options.protocol or options.baud
+    port = options.port or (DEFAULT_PORT if explicit or options.screenshot else None)
+    protocol = options.protocol or DEFAULT_PROTOCOL
+    baud = options.baud or get_protocol_class(protocol).capabilities.default_baud
+    if port is None:
+        # No arguments: reconnect to the last port (the simulated stage the first time).
+        bar = window.connection_bar
+        port, protocol = bar.port(), bar.protocol()
+        baud = bar.baud() or get_protocol_class(protocol).capabilities.default_baud
+    if options.screenshot:
+        take_screenshot(window, options.screenshot, app)
+    window.show()
+    window.connect_device(port, protocol, baud)
+    status = app.exec()
+    window.close()
+    return status
+
+
+if __name__ == "__main__":
+    sys.exit(main())

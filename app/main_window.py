@@ -1,0 +1,322 @@
+"""The operator's main window: connection bar, jog, coordinates, speed, position views, console."""
+
+from __future__ import annotations
+
+import logging
+import time
+
+from PySide6.QtCore import QEvent, QObject, Qt, QTimer, Signal
+from PySide6.QtGui import QCloseEvent, QKeyEvent
+from PySide6.QtWidgets import (
+    QAbstractSpinBox,
+    QApplication,
+    QComboBox,
+    QDockWidget,
+    QLabel,
+    QLineEdit,
+    QMainWindow,
+    QPlainTextEdit,
+    QSplitter,
+    QTextEdit,
+    QToolBar,
+    QWidget,
+)
+
+from app import jobs
+from app.ports import PortWatcher
+from app.settings import DEFAULT_PORT, DEFAULT_PROTOCOL, open_settings, read_number, read_str
+from app.worker import DeviceInfo
+from app.worker_thread import WorkerThread
+from drivers.events import PositionReport
+from drivers.registry import get_protocol_class, protocol_names
+from drivers.sim.registry import simulator_names
+from drivers.traffic import Traffic
+from widgets.connection_bar import ConnectionBar
+from widgets.coordinate_entry import CoordinateEntry
+from widgets.jog_panel import JogPanel
+from widgets.position_buffer import PositionBuffer
+from widgets.position_readout import PositionReadout
+from widgets.position_view_2d import PositionView2D
+from widgets.position_view_3d import make_position_view_3d
+from widgets.raw_console import RawConsole
+from widgets.speed_control import SpeedControl
+
+log = logging.getLogger(__name__)
+
+TEXT_INPUTS = (QLineEdit, QAbstractSpinBox, QPlainTextEdit, QTextEdit, QComboBox)
+KEYBOARD_JOG_KEYS = {
+    Qt.Key.Key_Left,
+    Qt.Key.Key_Right,
+    Qt.Key.Key_Up,
+    Qt.Key.Key_Down,
+    Qt.Key.Key_PageUp,
+    Qt.Key.Key_PageDown,
+}
+
+
+def sim_ports() -> list[tuple[str, str]]:
+    """Every built-in simulated device as a (port, description) pair."""
+    return [(f"sim://{name}", f"simulated {name} device") for name in simulator_names()]
+
+
+class MainWindow(QMainWindow):
+    """Wires the widgets to the serial worker; never touches the port itself."""
+
+    settled = Signal()  # connected, state read, first position drawn
+
+    def __init__(self, worker_thread: WorkerThread | None = None) -> None:
+        super().__init__()
+        self.setObjectName("mainWindow")
+        self.setWindowTitle("Motion Panel")
+        self.settings = open_settings()
+        self.worker_thread = worker_thread or WorkerThread()
+        self.worker = self.worker_thread.worker
+        self.buffer = PositionBuffer()
+        self.t0 = time.monotonic()
+        self.connected = False
+        self.info: DeviceInfo | None = None
+        self._build()
+        self._wire()
+        self._restore()
+        self._set_controls_enabled(False)
+        QApplication.instance().installEventFilter(self)  # type: ignore[union-attr]
+
+    # -- layout ------------------------------------------------------------------------------
+    def _build(self) -> None:
+        self.connection_bar = ConnectionBar(self)
+        self.connection_bar.set_protocols(protocol_names())
+        toolbar = QToolBar("Connection", self)
+        toolbar.setObjectName("connectionToolBar")
+        toolbar.setMovable(False)
+        toolbar.addWidget(self.connection_bar)
+        self.addToolBar(toolbar)
+
+        self.view3d = make_position_view_3d(self.buffer, self)
+        self.view2d = PositionView2D(self.buffer, self)
+        splitter = QSplitter(Qt.Orientation.Horizontal, self)
+        splitter.addWidget(self.view3d)
+        splitter.addWidget(self.view2d)
+        splitter.setSizes([600, 600])
+        self.setCentralWidget(splitter)
+
+        self.readout = PositionReadout(self)
+        self.jog_panel = JogPanel(self)
+        self.coordinates = CoordinateEntry(self)
+        self.speed = SpeedControl(self)
+        self.console = RawConsole(self)
+        self._dock("Position", self.readout, Qt.DockWidgetArea.LeftDockWidgetArea)
+        self._dock("Jog", self.jog_panel, Qt.DockWidgetArea.LeftDockWidgetArea)
+        self._dock("Go to", self.coordinates, Qt.DockWidgetArea.LeftDockWidgetArea)
+        self._dock("Speed", self.speed, Qt.DockWidgetArea.LeftDockWidgetArea)
+        self._dock("Console", self.console, Qt.DockWidgetArea.BottomDockWidgetArea)
+
+        self.state_label = QLabel("disconnected", self)
+        self.state_label.setObjectName("statusConnection")
+        self.error_label = QLabel("", self)
+        self.error_label.setObjectName("statusError")
+        self.statusBar().addWidget(self.state_label)
+        self.statusBar().addPermanentWidget(self.error_label)
+        self.resize(1400, 900)
+
+    def _dock(self, title: str, widget: QWidget, area: Qt.DockWidgetArea) -> QDockWidget:
+        dock = QDockWidget(title, self)
+        dock.setObjectName(f"{widget.objectName()}Dock")
+        dock.setWidget(widget)
+        dock.setFeatures(
+            QDockWidget.DockWidgetFeature.DockWidgetMovable
+            | QDockWidget.DockWidgetFeature.DockWidgetFloatable
+        )
+        self.addDockWidget(area, dock)
+        return dock
+
+    def _wire(self) -> None:
+        w = self.worker
+        w.state_changed.connect(self._on_state)
+        w.device_ready.connect(self._on_device_ready)
+        w.traffic.connect(self._on_traffic)
+        w.position_changed.connect(self._on_position)
+        w.target_changed.connect(self._on_target)
+        w.speed_changed.connect(self._on_speed)
+        w.speed_limits_changed.connect(self.speed.set_range)
+        w.job_failed.connect(self._on_job_failed)
+        w.job_finished.connect(self._on_job_finished)
+        w.device_text.connect(lambda text: self.console.append_note(f"device: {text}"))
+
+        bar = self.connection_bar
+        bar.connect_requested.connect(self.connect_device)
+        bar.disconnect_requested.connect(self.disconnect_device)
+        bar.protocol_changed.connect(self._on_protocol_changed)
+        self.port_watcher = PortWatcher(self)
+        self.port_watcher.ports_changed.connect(self._on_ports)
+        bar.refresh_requested.connect(self.port_watcher.refresh)
+
+        self.jog_panel.jog_requested.connect(self._on_jog)
+        self.coordinates.go_requested.connect(self._on_go)
+        self.coordinates.home_requested.connect(lambda: self._submit(jobs.HomeJob()))
+        self.coordinates.set_home_requested.connect(lambda: self._submit(jobs.SetHomeJob()))
+        self.coordinates.stop_requested.connect(self.stop)
+        self.speed.speed_requested.connect(lambda v: self._submit(jobs.SetSpeedJob(v)))
+        self.console.send_requested.connect(lambda data: self._submit(jobs.RawJob(data)))
+
+    # -- connection --------------------------------------------------------------------------
+    def connect_device(self, port: str, protocol: str, baud: int) -> None:
+        """Ask the worker to open `port`; the result arrives as signals."""
+        self.settings.setValue("port", port)
+        self.settings.setValue("protocol", protocol)
+        self.settings.setValue("baud", baud)
+        self.console.append_note(f"connecting to {port} ({protocol}, {baud} baud)")
+        self.worker_thread.open(port, protocol, baud)
+
+    def disconnect_device(self) -> None:
+        """Ask the worker to close the port."""
+        dropped = self.worker.cancel_pending()
+        self._report_dropped(dropped)
+        self.worker_thread.close()
+
+    def _on_state(self, state: str, detail: str) -> None:
+        self.connection_bar.set_state(state)
+        self.connected = state == "connected"
+        text = state if not detail else f"{state}: {detail}"
+        self.state_label.setText(text)
+        if state == "error":
+            self.error_label.setText(detail)
+            self.console.append_note(f"error: {detail}")
+            self.statusBar().showMessage(detail, 10000)
+        elif state == "disconnected":
+            self.console.append_note("disconnected")
+        if not self.connected:
+            self._set_controls_enabled(False)
+
+    def _on_device_ready(self, info: DeviceInfo) -> None:
+        self.info = info
+        caps = info.capabilities
+        self.console.append_note(f"connected to {info.identity} on {info.port}")
+        for widget in (self.jog_panel, self.coordinates, self.readout):
+            widget.set_axes_enabled(caps.axes)
+        self.readout.set_measured(caps.position_feedback)
+        self._set_controls_enabled(True)
+        self.speed.setEnabled(caps.speed)
+        if caps.speed_range is not None:
+            self.speed.set_range(*caps.speed_range)
+        QTimer.singleShot(100, self.settled.emit)
+
+    def _on_protocol_changed(self, name: str) -> None:
+        try:
+            self.connection_bar.set_baud(get_protocol_class(name).capabilities.default_baud)
+        except LookupError as exc:
+            self.statusBar().showMessage(str(exc), 5000)
+
+    def _on_ports(self, ports: list[tuple[str, str]]) -> None:
+        self.connection_bar.set_ports(sim_ports() + ports)
+
+    # -- operator actions --------------------------------------------------------------------
+    def _submit(self, job: jobs.Job) -> None:
+        if not self.connected:
+            self.statusBar().showMessage(f"not connected: {job.describe()} not sent", 5000)
+            return
+        self.worker.submit(job)
+
+    def _on_jog(self, axis: str, distance: float) -> None:
+        deltas = {"x": 0.0, "y": 0.0, "z": 0.0}
+        deltas[axis] = distance
+        self.settings.setValue("jog_step", self.jog_panel.step())
+        self._submit(jobs.MoveByJob(deltas["x"], deltas["y"], deltas["z"]))
+
+    def _on_go(self, mode: str, values: tuple[float, float, float]) -> None:
+        if mode == "relative":
+            self._submit(jobs.MoveByJob(*values))
+        else:
+            self._submit(jobs.MoveToJob(*values))
+
+    def stop(self) -> None:
+        """Cancel what is queued and say what was not sent."""
+        dropped = self.worker.cancel_pending()
+        self._report_dropped(dropped)
+        if not dropped:
+            self.statusBar().showMessage("nothing queued; the move under way finishes", 5000)
+
+    def _report_dropped(self, dropped: list[jobs.Job]) -> None:
+        if not dropped:
+            return
+        names = ", ".join(job.describe() for job in dropped)
+        message = f"stopped: {len(dropped)} command(s) not sent: {names}"
+        self.statusBar().showMessage(message, 10000)
+        self.console.append_note(message)
+
+    def _set_controls_enabled(self, enabled: bool) -> None:
+        for widget in (self.jog_panel, self.coordinates, self.speed):
+            widget.setEnabled(enabled)
+
+    # -- worker results ----------------------------------------------------------------------
+    def _on_traffic(self, records: list[Traffic]) -> None:
+        for record in records:
+            self.console.append_traffic(record.direction, record.data, record.time)
+
+    def _on_position(self, report: PositionReport) -> None:
+        self.readout.set_position(report.x, report.y, report.z)
+        self.coordinates.set_known_position(report.x, report.y, report.z)
+        self.buffer.append(time.monotonic() - self.t0, report.x, report.y, report.z)
+
+    def _on_target(self, target: tuple[float, float, float] | None) -> None:
+        self.view2d.set_target(target)
+        self.view3d.set_target(target)  # type: ignore[attr-defined]
+
+    def _on_speed(self, speed: float) -> None:
+        self.speed.set_reported(speed)
+        self.speed.set_value(speed)
+
+    def _on_job_failed(self, job: jobs.Job, message: str) -> None:
+        text = f"{job.describe()} failed: {message}"
+        self.error_label.setText(text)
+        self.statusBar().showMessage(text, 10000)
+        self.console.append_note(text)
+
+    def _on_job_finished(self, job: jobs.Job, result: object) -> None:
+        self.error_label.setText("")
+        if isinstance(job, jobs.SetSpeedJob) and isinstance(result, float) and result != job.speed:
+            self.statusBar().showMessage(
+                f"speed {job.speed:g} mm/s reads back as {result:g} mm/s (the device rounds)", 5000
+            )
+
+    # -- keyboard jog ------------------------------------------------------------------------
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        """Arrow keys and Page Up/Down jog wherever the focus is, except in text fields."""
+        if (
+            event.type() == QEvent.Type.KeyPress
+            and isinstance(event, QKeyEvent)
+            and event.key() in KEYBOARD_JOG_KEYS
+            and self.isActiveWindow()
+            and self.jog_panel.isEnabled()
+            and not isinstance(QApplication.focusWidget(), TEXT_INPUTS)
+        ):
+            return self.jog_panel.handle_key(
+                event.key(), event.modifiers(), auto_repeat=event.isAutoRepeat()
+            )
+        return super().eventFilter(watched, event)
+
+    # -- settings ----------------------------------------------------------------------------
+    def _restore(self) -> None:
+        s = self.settings
+        geometry = s.value("geometry")
+        if geometry is not None:
+            self.restoreGeometry(geometry)
+        state = s.value("windowState")
+        if state is not None:
+            self.restoreState(state)
+        self.jog_panel.set_step(read_number(s, "jog_step", 1.0))
+        protocol = read_str(s, "protocol", DEFAULT_PROTOCOL)
+        self.connection_bar.set_protocol(protocol)
+        self.connection_bar.set_port(read_str(s, "port", DEFAULT_PORT))
+        self.connection_bar.set_baud(int(read_number(s, "baud", 115200)))
+
+    def closeEvent(self, event: QCloseEvent) -> None:
+        """Save the layout and stop the worker thread before closing."""
+        self.settings.setValue("geometry", self.saveGeometry())
+        self.settings.setValue("windowState", self.saveState())
+        self.settings.setValue("jog_step", self.jog_panel.step())
+        self.settings.sync()
+        QApplication.instance().removeEventFilter(self)  # type: ignore[union-attr]
+        self.port_watcher.stop()
+        if not self.worker_thread.stop():
+            log.error("the serial worker did not stop in time")
+        super().closeEvent(event)
