@@ -2,11 +2,6 @@
 
 from __future__ import annotations
 
-import os
-
-if "DISPLAY" not in os.environ:
-    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
-
 import pytest
 
 from app import jobs

@@ -1,0 +1,128 @@
+"""The main window against the simulated device, driven as an operator would."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QPushButton, QWidget
+
+from app.main_window import MainWindow
+
+pytestmark = pytest.mark.timeout(30)
+
+CONTRACT_NAMES = [
+    "connectionBar",
+    "jogPanel",
+    "coordinateEntry",
+    "speedControl",
+    "positionReadout",
+    "positionView3d",
+    "positionView2d",
+    "rawConsole",
+]
+
+
+@pytest.fixture
+def window(qtbot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[MainWindow]:
+    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(tmp_path / "settings.ini"))
+    win = MainWindow()
+    qtbot.addWidget(win)
+    win.show()
+    yield win
+    win.close()
+    assert not win.worker_thread.thread.isRunning()
+
+
+def _connect(qtbot, win: MainWindow, url: str = "sim://coxiris?speed=100") -> None:
+    with qtbot.waitSignal(win.settled, timeout=5000):
+        win.connect_device(url, "coxiris", 115200)
+
+
+def _position(win: MainWindow) -> tuple[float, float, float] | None:
+    return win.readout.position()
+
+
+def test_contract_object_names(window: MainWindow) -> None:
+    for name in CONTRACT_NAMES:
+        assert window.findChild(QWidget, name) is not None, name
+    plus = [b for b in window.findChildren(QPushButton) if b.text() == "X+"]
+    assert plus and plus[0].objectName() == "jogXPlus"
+
+
+def test_controls_disabled_until_connected(qtbot, window: MainWindow) -> None:
+    assert not window.jog_panel.isEnabled()
+    _connect(qtbot, window)
+    assert window.jog_panel.isEnabled()
+    assert window.connection_bar.state() == "connected"
+
+
+def test_jog_button_moves_the_stage_and_the_console_shows_it(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    window.jog_panel.set_step(10)
+    button = window.findChild(QPushButton, "jogXPlus")
+    qtbot.mouseClick(button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: _position(window) == (10.0, 0.0, 0.0), timeout=5000)
+    window.console.flush()
+    assert "DELTA_MOVE 10 0 0" in window.console.text()
+    assert len(window.buffer) >= 2
+
+
+def test_keyboard_jog(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    window.jog_panel.set_step(1)
+    window.view2d.setFocus()
+    qtbot.keyClick(window.view2d, Qt.Key.Key_Up)
+    qtbot.waitUntil(lambda: _position(window) == (0.0, 1.0, 0.0), timeout=5000)
+    qtbot.keyClick(window.view2d, Qt.Key.Key_PageDown, Qt.KeyboardModifier.ShiftModifier)
+    qtbot.waitUntil(lambda: _position(window) == (0.0, 1.0, -10.0), timeout=5000)
+
+
+def test_go_to_home_and_set_home(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    entry = window.coordinates
+    entry.set_values(10, -5, 2.5)
+    with qtbot.waitSignal(window.worker.job_finished, timeout=5000):
+        entry.go_requested.emit("absolute", entry.values())
+    qtbot.waitUntil(lambda: _position(window) == (10.0, -5.0, 2.5), timeout=5000)
+    with qtbot.waitSignal(window.worker.job_finished, timeout=5000):
+        entry.home_requested.emit()
+    qtbot.waitUntil(lambda: _position(window) == (0.0, 0.0, 0.0), timeout=5000)
+
+
+def test_speed_change_reads_back_rounded(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    assert window.speed.speed_range() == (1.0, 100.0)
+    with qtbot.waitSignal(window.worker.speed_changed, timeout=5000) as changed:
+        window.speed.speed_requested.emit(12.5)
+    assert changed.args == [13.0]
+    window.console.flush()
+    assert "SET_SPEED 12.5" in window.console.text()
+
+
+def test_stop_reports_what_was_not_sent(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window, "sim://coxiris?speed=1")
+    window.jog_panel.set_step(100)
+    with qtbot.waitSignal(window.worker.busy_changed, timeout=5000):
+        window.jog_panel.jog_requested.emit("x", 100.0)
+    window.jog_panel.jog_requested.emit("y", 100.0)
+    window.stop()
+    window.console.flush()
+    assert "1 command(s) not sent: jog by (0, 100, 0) mm" in window.console.text()
+
+
+def test_settings_are_saved_and_restored(qtbot, tmp_path: Path, monkeypatch) -> None:
+    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(tmp_path / "s.ini"))
+    first = MainWindow()
+    qtbot.addWidget(first)
+    first.jog_panel.set_step(10)
+    first.connection_bar.set_port("loop://")
+    first.settings.setValue("port", "loop://")
+    first.close()
+    second = MainWindow()
+    qtbot.addWidget(second)
+    assert second.jog_panel.step() == 10
+    assert second.connection_bar.port() == "loop://"
+    second.close()
