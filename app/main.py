@@ -14,6 +14,7 @@ from PySide6.QtWidgets import QApplication
 from app.main_window import MainWindow
 from app.settings import DEFAULT_PORT, DEFAULT_PROTOCOL
 from drivers.registry import get_protocol_class, protocol_names
+from widgets.position_view_3d import share_opengl_contexts
 
 log = logging.getLogger("motionpanel")
 
@@ -65,6 +66,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         level=logging.INFO if options.verbose else logging.WARNING,
         format="motionpanel: %(message)s",
     )
+    share_opengl_contexts()  # before the QApplication exists
     app = QApplication.instance() or QApplication(sys.argv[:1])
     app.setApplicationName("Motion Panel")
     window = MainWindow()

@@ -113,6 +113,7 @@ class SerialWorker(QObject):
         link.listeners.append(self._on_traffic)
         client = Client(link, protocol)
         client.abort = self._abort
+        client.wait_hooks.append(self._flush_traffic_if_due)
         client.listeners.append(self._on_event)
         self._link = link
         self._motion = Motion(client)
@@ -249,6 +250,10 @@ class SerialWorker(QObject):
     def _on_traffic(self, record: Traffic) -> None:
         self._batch.append(record)
         if record.time - self._batch_sent >= TRAFFIC_BATCH_S:
+            self._flush_traffic()
+
+    def _flush_traffic_if_due(self) -> None:
+        if self._batch and time.monotonic() - self._batch_sent >= TRAFFIC_BATCH_S:
             self._flush_traffic()
 
     def _flush_traffic(self) -> None:

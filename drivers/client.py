@@ -40,6 +40,8 @@ class Client:
         self._buffer = bytearray()
         self._last_rx = clock()
         self._last_reply = 0.0
+        self.wait_hooks: list[Callable[[], None]] = []
+        """Called every read while waiting (about every 20 ms), e.g. to hand on traffic."""
         self.abort = threading.Event()
         """Set from any thread to make a waiting `execute` raise Aborted."""
 
@@ -63,6 +65,14 @@ class Client:
     def send_only(self, command: Command) -> None:
         """Write a command that gets no reply (write-only devices)."""
         data = self.protocol.encode(command)
+        self.poll()
+        self._pace()
+        self.link.write(data)
+        self._last_reply = self.clock()
+
+    def send_raw(self, data: bytes) -> None:
+        """Write console bytes as they are (after the protocol's check); replies come unasked."""
+        self.protocol.check_raw(data)
         self.poll()
         self._pace()
         self.link.write(data)
@@ -125,6 +135,8 @@ class Client:
 
     def _read_events(self, wait: bool = True) -> list[Event]:
         data = self.link.read(wait)
+        for hook in self.wait_hooks:
+            hook()
         now = self.clock()
         if data:
             self._buffer += data

@@ -9,6 +9,10 @@ from collections.abc import Iterator
 if "DISPLAY" not in os.environ and "WAYLAND_DISPLAY" not in os.environ:
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
+from widgets.position_view_3d import share_opengl_contexts
+
+share_opengl_contexts()  # as the application does, before any QApplication exists
+
 import pytest
 
 from drivers.client import Client

@@ -31,6 +31,8 @@ def window(qtbot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[M
     win = MainWindow()
     qtbot.addWidget(win)
     win.show()
+    win.activateWindow()
+    qtbot.waitActive(win)
     yield win
     win.close()
     assert not win.worker_thread.thread.isRunning()
@@ -65,8 +67,13 @@ def test_jog_button_moves_the_stage_and_the_console_shows_it(qtbot, window: Main
     button = window.findChild(QPushButton, "jogXPlus")
     qtbot.mouseClick(button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: _position(window) == (10.0, 0.0, 0.0), timeout=5000)
-    window.console.flush()
-    assert "DELTA_MOVE 10 0 0" in window.console.text()
+
+    def console_shows_it() -> None:
+        window.console.flush()
+        assert "DELTA_MOVE 10 0 0" in window.console.text()
+        assert "DONE DELTA_MOVE" in window.console.text()
+
+    qtbot.waitUntil(console_shows_it, timeout=5000)
     assert len(window.buffer) >= 2
 
 
@@ -98,8 +105,12 @@ def test_speed_change_reads_back_rounded(qtbot, window: MainWindow) -> None:
     with qtbot.waitSignal(window.worker.speed_changed, timeout=5000) as changed:
         window.speed.speed_requested.emit(12.5)
     assert changed.args == [13.0]
-    window.console.flush()
-    assert "SET_SPEED 12.5" in window.console.text()
+
+    def console_shows_it() -> None:
+        window.console.flush()
+        assert "SET_SPEED 12.5" in window.console.text()
+
+    qtbot.waitUntil(console_shows_it, timeout=5000)
 
 
 def test_stop_reports_what_was_not_sent(qtbot, window: MainWindow) -> None:
@@ -111,6 +122,7 @@ def test_stop_reports_what_was_not_sent(qtbot, window: MainWindow) -> None:
     window.stop()
     window.console.flush()
     assert "1 command(s) not sent: jog by (0, 100, 0) mm" in window.console.text()
+    assert "not sent" in window.statusBar().currentMessage()
 
 
 def test_settings_are_saved_and_restored(qtbot, tmp_path: Path, monkeypatch) -> None:

@@ -108,3 +108,6 @@ class Protocol(ABC):
     @abstractmethod
     def exchange(self, command: Command) -> Exchange:
         """A tracker for the reply to `command`."""
+
+    def check_raw(self, data: bytes) -> None:
+        """Refuse raw console bytes the device cannot take (BadInput); the default takes all."""

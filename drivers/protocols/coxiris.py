@@ -226,6 +226,15 @@ class CoxirisProtocol(Protocol):
             return [ErrorReport(text[6:].lstrip(" "))]
         return [TextLine(text)]
 
+    def check_raw(self, data: bytes) -> None:
+        """Refuse any line over 63 characters: the firmware would overflow its buffer."""
+        for line in data.replace(b"\r", b"\n").split(b"\n"):
+            if len(line) > MAX_COMMAND_LENGTH:
+                raise BadInput(
+                    f"line refused: {len(line)} characters, the device takes at most "
+                    f"{MAX_COMMAND_LENGTH}"
+                )
+
     def exchange(self, command: Command) -> CoxirisExchange:
         """Track the reply by the command name the device will echo."""
         return CoxirisExchange(command, expected_name(command_line(command)))

@@ -1,0 +1,97 @@
+"""Event-loop stalls of the main window while jogging the simulated stage.
+
+A 5 ms timer in the GUI thread records the gap between its ticks while keyboard jogs are sent to
+the window, the worker moves the stage and the views redraw. Prints one JSON object:
+max and 99th-percentile gap (ms), jogs completed, and the console's record count.
+Run: .venv/bin/python bench/gui_latency.py [--jogs N] [--display]   (offscreen unless --display)
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+
+def measure(jogs: int) -> dict[str, float]:
+    """Jog `jogs` times by keyboard and return the event-loop gap figures."""
+    from PySide6.QtCore import QElapsedTimer, Qt, QTimer
+    from PySide6.QtTest import QTest
+    from PySide6.QtWidgets import QApplication
+
+    from app.main_window import MainWindow
+
+    app = QApplication.instance() or QApplication([])
+    window = MainWindow()
+    window.show()
+    window.connect_device("sim://coxiris?speed=50", "coxiris", 115200)
+    deadline = time.monotonic() + 10
+    while not window.connected and time.monotonic() < deadline:
+        app.processEvents()
+    if not window.connected:
+        raise RuntimeError("the simulated device did not connect")
+    window.jog_panel.set_step(1)
+
+    gaps: list[float] = []
+    clock = QElapsedTimer()
+    clock.start()
+    last = [clock.nsecsElapsed()]
+
+    def tick() -> None:
+        now = clock.nsecsElapsed()
+        gaps.append((now - last[0]) / 1e6)
+        last[0] = now
+
+    timer = QTimer()
+    timer.setTimerType(Qt.TimerType.PreciseTimer)
+    timer.setInterval(5)
+    timer.timeout.connect(tick)
+    timer.start()
+    finished = [0]
+    window.worker.job_finished.connect(lambda *_: finished.__setitem__(0, finished[0] + 1))
+    keys = [Qt.Key.Key_Right, Qt.Key.Key_Up, Qt.Key.Key_Left, Qt.Key.Key_Down]
+    sent = 0
+    end = time.monotonic() + 120
+    window.view2d.setFocus()
+    while finished[0] < jogs and time.monotonic() < end:
+        if sent < jogs and sent - finished[0] < 2:
+            QTest.keyClick(window.view2d, keys[sent % len(keys)])
+            sent += 1
+        app.processEvents()
+    timer.stop()
+    window.console.flush()
+    records = len(window.console.records())
+    window.close()
+    gaps.sort()
+    return {
+        "jogs": finished[0],
+        "ticks": len(gaps),
+        "max_gap_ms": gaps[-1] if gaps else 0.0,
+        "p99_gap_ms": gaps[int(0.99 * (len(gaps) - 1))] if gaps else 0.0,
+        "median_gap_ms": gaps[len(gaps) // 2] if gaps else 0.0,
+        "console_records": records,
+    }
+
+
+def main() -> int:
+    """Run the measurement and print one JSON object."""
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--jogs", type=int, default=40)
+    parser.add_argument("--display", action="store_true", help="use $DISPLAY instead of offscreen")
+    options = parser.parse_args()
+    if not options.display:
+        os.environ["QT_QPA_PLATFORM"] = "offscreen"
+    os.environ.setdefault("MOTIONPANEL_SETTINGS", os.path.join(tempfile.mkdtemp(), "bench.ini"))
+    print(json.dumps(measure(options.jogs)))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

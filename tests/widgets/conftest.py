@@ -1,0 +1,29 @@
+"""Widget tests run headless (offscreen) unless a display is there (Xvfb in CI, for GL tests)."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+from typing import Any
+
+import pytest
+
+# Before any QApplication exists; nothing above imports Qt.
+if "DISPLAY" not in os.environ and "WAYLAND_DISPLAY" not in os.environ:
+    os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
+
+from widgets.position_view_3d import share_opengl_contexts
+
+share_opengl_contexts()  # as the application does: several GL views over the session
+
+
+@pytest.fixture
+def record() -> Callable[[Any], list[tuple[Any, ...]]]:
+    """`calls = record(widget.some_signal)`: every emission's arguments, appended to a list."""
+
+    def _record(signal: Any) -> list[tuple[Any, ...]]:
+        calls: list[tuple[Any, ...]] = []
+        signal.connect(lambda *args: calls.append(args))
+        return calls
+
+    return _record

@@ -1,0 +1,225 @@
+"""Port, protocol and baud rate, a connect/disconnect button, and the connection state."""
+
+from __future__ import annotations
+
+import logging
+
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtGui import QIntValidator
+from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QWidget
+
+log = logging.getLogger(__name__)
+
+COMMON_BAUDS = (
+    9600, 19200, 38400, 57600, 115200, 230400, 250000, 460800, 500000, 921600, 1000000
+)  # fmt: skip
+DISCONNECTED, CONNECTING, CONNECTED, ERROR = "disconnected", "connecting", "connected", "error"
+_STATE_STYLE = {
+    DISCONNECTED: ("Disconnected", "#616161"),
+    CONNECTING: ("Connecting…", "#ef6c00"),
+    CONNECTED: ("Connected", "#2e7d32"),
+    ERROR: ("Error", "#c62828"),
+}
+
+
+class ConnectionBar(QWidget):
+    """Choose where and how to connect; emits `connect_requested` / `disconnect_requested`."""
+
+    connect_requested = Signal(str, str, int)  # port (device or pyserial URL), protocol, baud
+    disconnect_requested = Signal()
+    refresh_requested = Signal()
+    protocol_changed = Signal(str)
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("connectionBar")
+        self._state = DISCONNECTED
+        self._descriptions: dict[str, str] = {}
+
+        self.port_combo = QComboBox()
+        self.port_combo.setObjectName("portCombo")
+        self.port_combo.setEditable(True)
+        self.port_combo.setInsertPolicy(QComboBox.InsertPolicy.NoInsert)
+        self.port_combo.setMinimumContentsLength(18)
+        self.port_combo.lineEdit().setPlaceholderText("/dev/ttyUSB0, COM3 or a URL")
+        self.port_combo.setToolTip(
+            "Serial port, or any pyserial URL (e.g. sim://coxiris, socket://host:port, loop://)"
+        )
+        self.port_combo.currentTextChanged.connect(self._port_text_changed)
+        self.description_label = QLabel()
+        self.description_label.setObjectName("portDescription")
+        self.description_label.setStyleSheet("color: #616161;")
+        self.description_label.setMaximumWidth(220)
+        self.refresh_button = QPushButton("⟳")
+        self.refresh_button.setObjectName("refreshPortsButton")
+        self.refresh_button.setToolTip("Look for serial ports again")
+        self.refresh_button.setMaximumWidth(36)
+        self.refresh_button.clicked.connect(self.refresh_requested)
+
+        self.protocol_combo = QComboBox()
+        self.protocol_combo.setObjectName("protocolCombo")
+        self.protocol_combo.setToolTip("The language the device speaks")
+        self.protocol_combo.currentIndexChanged.connect(self._protocol_index_changed)
+        self._quiet = False
+
+        self.baud_combo = QComboBox()
+        self.baud_combo.setObjectName("baudCombo")
+        self.baud_combo.setEditable(True)
+        self.baud_combo.setInsertPolicy(QComboBox.InsertPolicy.NoInsert)
+        self.baud_combo.addItems([str(b) for b in COMMON_BAUDS])
+        self.baud_combo.setValidator(QIntValidator(1, 100_000_000, self))
+        self.baud_combo.setToolTip("Baud rate in bit/s (type any rate the device uses)")
+        self.baud_combo.setCurrentText("115200")
+
+        self.connect_button = QPushButton("Connect")
+        self.connect_button.setObjectName("connectButton")
+        self.connect_button.setMinimumWidth(96)
+        self.connect_button.clicked.connect(self._connect_clicked)
+        self.state_label = QLabel()
+        self.state_label.setObjectName("connectionState")
+        self.state_label.setMinimumWidth(110)
+
+        layout = QHBoxLayout(self)
+        for text, widget in (
+            ("Port:", self.port_combo),
+            (None, self.description_label),
+            (None, self.refresh_button),
+            ("Protocol:", self.protocol_combo),
+            ("Baud:", self.baud_combo),
+            (None, self.connect_button),
+            (None, self.state_label),
+        ):
+            if text:
+                label = QLabel(text)
+                label.setBuddy(widget)
+                layout.addWidget(label)
+            layout.addWidget(widget)
+        layout.addStretch(1)
+        self.set_state(DISCONNECTED)
+
+    # -- ports ---------------------------------------------------------------------------
+
+    def set_ports(self, ports: list[tuple[str, str]]) -> None:
+        """List (device, description) pairs, keeping what is selected or typed."""
+        current = self.port()
+        self._descriptions = {device: description for device, description in ports}
+        self.port_combo.blockSignals(True)
+        self.port_combo.clear()
+        for device, description in ports:
+            self.port_combo.addItem(device)
+            self.port_combo.setItemData(
+                self.port_combo.count() - 1, description, Qt.ItemDataRole.ToolTipRole
+            )
+        index = self.port_combo.findText(current)
+        if index >= 0:
+            self.port_combo.setCurrentIndex(index)
+        elif current:
+            self.port_combo.setEditText(current)  # a typed URL stays
+        self.port_combo.blockSignals(False)
+        self._port_text_changed(self.port())
+
+    def port(self) -> str:
+        """The selected or typed port."""
+        return self.port_combo.currentText().strip()
+
+    def set_port(self, port: str) -> None:
+        """Select or type a port."""
+        self.port_combo.setCurrentText(port)
+
+    def _port_text_changed(self, text: str) -> None:
+        description = self._descriptions.get(text.strip(), "")
+        metrics = self.description_label.fontMetrics()
+        elided = metrics.elidedText(description, Qt.TextElideMode.ElideRight, 210)
+        self.description_label.setText(elided)
+        self.description_label.setToolTip(description or "No description for this port")
+
+    # -- protocol and baud ---------------------------------------------------------------
+
+    def set_protocols(self, protocols: list[str]) -> None:
+        """List the protocol names, keeping the selection if it is still there; emits nothing."""
+        current = self.protocol()
+        self._quiet = True
+        try:
+            self.protocol_combo.clear()
+            self.protocol_combo.addItems(protocols)
+            index = self.protocol_combo.findText(current)
+            if index >= 0:
+                self.protocol_combo.setCurrentIndex(index)
+        finally:
+            self._quiet = False
+
+    def protocol(self) -> str:
+        """The selected protocol name ("" when none)."""
+        return self.protocol_combo.currentText()
+
+    def set_protocol(self, name: str) -> bool:
+        """Select a protocol, emitting nothing; False (selection kept) if it is not listed."""
+        index = self.protocol_combo.findText(name)
+        if index < 0:
+            log.warning("unknown protocol %r, keeping %r", name, self.protocol())
+            return False
+        self._quiet = True
+        try:
+            self.protocol_combo.setCurrentIndex(index)
+        finally:
+            self._quiet = False
+        return True
+
+    def _protocol_index_changed(self, _index: int) -> None:
+        if not self._quiet and self.protocol():
+            self.protocol_changed.emit(self.protocol())
+
+    def baud(self) -> int | None:
+        """The baud rate, or None when what is typed is not a positive whole number."""
+        text = self.baud_combo.currentText().strip()
+        return int(text) if text.isdigit() and int(text) > 0 else None
+
+    def set_baud(self, baud: int) -> bool:
+        """Show a baud rate (any positive one, not only the common ones); False if not positive."""
+        if baud <= 0:
+            log.warning("ignoring baud rate %r", baud)
+            return False
+        self.baud_combo.setCurrentText(str(int(baud)))
+        return True
+
+    # -- state ---------------------------------------------------------------------------
+
+    def state(self) -> str:
+        """The state: "disconnected", "connecting", "connected" or "error"."""
+        return self._state
+
+    def set_state(self, state: str, detail: str = "") -> None:
+        """Show the connection state (with an optional detail, e.g. the error message)."""
+        if state not in _STATE_STYLE:
+            raise ValueError(f"unknown state {state!r}: one of {sorted(_STATE_STYLE)}")
+        self._state = state
+        text, colour = _STATE_STYLE[state]
+        short = detail if len(detail) <= 60 else detail[:59] + "…"
+        self.state_label.setText(f"● {text}" + (f": {short}" if short else ""))
+        self.state_label.setToolTip(detail or text)
+        self.state_label.setStyleSheet(f"color: {colour}; font-weight: bold;")
+        idle = state in (DISCONNECTED, ERROR)
+        for widget in (self.port_combo, self.protocol_combo, self.baud_combo, self.refresh_button):
+            widget.setEnabled(idle)
+        button_text = {CONNECTING: "Cancel", CONNECTED: "Disconnect"}.get(state, "Connect")
+        self.connect_button.setText(button_text)
+        self.connect_button.setToolTip(
+            "Open the port and talk to the device" if idle else "Close the connection"
+        )
+
+    def _connect_clicked(self) -> None:
+        if self._state in (CONNECTING, CONNECTED):
+            self.disconnect_requested.emit()
+            return
+        port, protocol, baud = self.port(), self.protocol(), self.baud()
+        problem = (
+            "choose or type a port" if not port
+            else "choose a protocol" if not protocol
+            else "the baud rate must be a positive whole number" if baud is None
+            else ""
+        )  # fmt: skip
+        if problem:
+            self.set_state(ERROR, problem)
+            return
+        log.debug("connect requested: %s %s %d", port, protocol, baud)
+        self.connect_requested.emit(port, protocol, baud)

@@ -1,0 +1,227 @@
+"""Type a coordinate and go there; Home, Set Home and Stop."""
+
+from __future__ import annotations
+
+import logging
+from collections.abc import Callable, Iterable
+
+from PySide6.QtCore import Signal
+from PySide6.QtWidgets import (
+    QButtonGroup,
+    QDoubleSpinBox,
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QMessageBox,
+    QPushButton,
+    QRadioButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+from widgets._axes import AXES, normalize_axes
+
+log = logging.getLogger(__name__)
+
+ABSOLUTE = "absolute"
+RELATIVE = "relative"
+SET_HOME_QUESTION = (
+    "Make the current position the new home (0, 0, 0)?\n"
+    "All coordinates will be measured from here from now on."
+)
+
+
+def ask_with_message_box(question: str, parent: QWidget | None = None) -> bool:
+    """Ask a yes/no question in a modal QMessageBox; True for Yes."""
+    answer = QMessageBox.question(
+        parent,
+        "Motion Panel",
+        question,
+        QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+        QMessageBox.StandardButton.No,
+    )
+    return answer == QMessageBox.StandardButton.Yes
+
+
+class _AxisSpinBox(QDoubleSpinBox):
+    """A coordinate field: 3 decimals, mm, value read on Enter or when focus leaves."""
+
+    def __init__(self, axis: str, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName(f"coord{axis.upper()}")
+        self.setDecimals(3)
+        self.setSuffix(" mm")
+        self.setKeyboardTracking(False)
+        self.setAccelerated(True)
+        self.setMinimumWidth(110)
+
+
+class CoordinateEntry(QWidget):
+    """X/Y/Z fields, absolute or relative, and Go, Home, Set Home, Stop, Use current."""
+
+    go_requested = Signal(str, object)  # mode ("absolute"/"relative"), (x, y, z) in mm
+    home_requested = Signal()
+    set_home_requested = Signal()
+    stop_requested = Signal()
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("coordinateEntry")
+        self.confirm: Callable[[str], bool] = lambda q: ask_with_message_box(q, self)
+        self._axes = frozenset(AXES)
+        self._range = (-1000.0, 1000.0)
+        self._known: tuple[float, float, float] | None = None
+
+        grid = QGridLayout()
+        self.fields: dict[str, QDoubleSpinBox] = {}
+        for column, axis in enumerate(AXES):
+            label = QLabel(f"{axis.upper()}:")
+            field = _AxisSpinBox(axis)
+            field.lineEdit().returnPressed.connect(self._go)
+            label.setBuddy(field)
+            grid.addWidget(label, 0, 2 * column)
+            grid.addWidget(field, 0, 2 * column + 1)
+            self.fields[axis] = field
+
+        self.absolute_radio = QRadioButton("Absolute")
+        self.absolute_radio.setObjectName("modeAbsolute")
+        self.absolute_radio.setToolTip("Go to the typed coordinates (mm from home)")
+        self.relative_radio = QRadioButton("Relative")
+        self.relative_radio.setObjectName("modeRelative")
+        self.relative_radio.setToolTip("Move by the typed distances (mm) from where the stage is")
+        self._mode_group = QButtonGroup(self)
+        self._mode_group.addButton(self.absolute_radio)
+        self._mode_group.addButton(self.relative_radio)
+        self.absolute_radio.setChecked(True)
+        self.relative_radio.toggled.connect(self._mode_toggled)
+
+        self.go_button = self._button("Go", "goButton", "Start the move (Enter in a field)")
+        self.go_button.clicked.connect(self._go)
+        self.use_current_button = self._button(
+            "Use current", "useCurrentButton", "Fill the fields with the current position"
+        )
+        self.use_current_button.setEnabled(False)
+        self.use_current_button.clicked.connect(self._use_current)
+        self.home_button = self._button("Home", "homeButton", "Run the homing sequence")
+        self.home_button.clicked.connect(self.home_requested)
+        self.set_home_button = self._button(
+            "Set Home", "setHomeButton", "Make the current position the origin (asks first)"
+        )
+        self.set_home_button.clicked.connect(self._set_home)
+        self.stop_button = self._button("Stop", "stopButton", "Stop the stage now")
+        self.stop_button.setStyleSheet(
+            "QPushButton { background-color: #c62828; color: white; font-weight: bold;"
+            " padding: 4px 14px; } QPushButton:disabled { background-color: #9e9e9e; }"
+        )
+        self.stop_button.clicked.connect(self.stop_requested)
+
+        modes = QHBoxLayout()
+        modes.addWidget(self.absolute_radio)
+        modes.addWidget(self.relative_radio)
+        modes.addStretch(1)
+        modes.addWidget(self.use_current_button)
+        modes.addWidget(self.go_button)
+        actions = QHBoxLayout()
+        actions.addWidget(self.home_button)
+        actions.addWidget(self.set_home_button)
+        actions.addStretch(1)
+        actions.addWidget(self.stop_button)
+
+        layout = QVBoxLayout(self)
+        layout.addLayout(grid)
+        layout.addLayout(modes)
+        layout.addLayout(actions)
+        self._apply_range()
+
+    def _button(self, text: str, name: str, tip: str) -> QPushButton:
+        button = QPushButton(text)
+        button.setObjectName(name)
+        button.setToolTip(tip)
+        return button
+
+    # -- values ----------------------------------------------------------------------------
+
+    def mode(self) -> str:
+        """`"absolute"` or `"relative"`."""
+        return RELATIVE if self.relative_radio.isChecked() else ABSOLUTE
+
+    def set_mode(self, mode: str) -> None:
+        """Select `"absolute"` or `"relative"` (relative clears the fields to 0)."""
+        if mode not in (ABSOLUTE, RELATIVE):
+            raise ValueError(f"mode must be {ABSOLUTE!r} or {RELATIVE!r}, not {mode!r}")
+        (self.relative_radio if mode == RELATIVE else self.absolute_radio).setChecked(True)
+
+    def values(self) -> tuple[float, float, float]:
+        """The typed (x, y, z) in mm; a disabled axis is 0 in relative mode."""
+        relative = self.mode() == RELATIVE
+        out = []
+        for axis in AXES:
+            field = self.fields[axis]
+            field.interpretText()
+            enabled = axis in self._axes
+            out.append(0.0 if relative and not enabled else float(field.value()))
+        return (out[0], out[1], out[2])
+
+    def set_values(self, x: float, y: float, z: float) -> None:
+        """Fill the fields (clamped to the range); emits nothing."""
+        for axis, value in zip(AXES, (x, y, z), strict=True):
+            self.fields[axis].setValue(value)
+
+    def set_current(self, x: float, y: float, z: float) -> None:
+        """Fill the fields with a position (and switch to absolute mode); emits nothing."""
+        self.set_known_position(x, y, z)
+        self.set_mode(ABSOLUTE)
+        self.set_values(x, y, z)
+
+    def set_known_position(self, x: float, y: float, z: float) -> None:
+        """Remember the stage position for "Use current" without touching the fields."""
+        self._known = (float(x), float(y), float(z))
+        self.use_current_button.setEnabled(True)
+
+    def set_range(self, lo: float, hi: float) -> None:
+        """Absolute coordinates are limited to lo..hi mm; relative moves to ±(hi - lo)."""
+        if not lo < hi:
+            raise ValueError(f"empty range {lo}..{hi}")
+        self._range = (float(lo), float(hi))
+        self._apply_range()
+
+    def _apply_range(self) -> None:
+        lo, hi = self._range
+        if self.mode() == RELATIVE:
+            lo, hi = -(hi - lo), hi - lo
+        for axis, field in self.fields.items():
+            field.setRange(lo, hi)
+            state = "" if axis in self._axes else "\n(this device has no such axis)"
+            word = "distance to move" if self.mode() == RELATIVE else "target coordinate"
+            field.setToolTip(f"{axis.upper()} {word}, {lo:g} to {hi:g} mm{state}")
+
+    def set_axes_enabled(self, axes: Iterable[str]) -> None:
+        """Only the fields of `axes` can be edited."""
+        self._axes = normalize_axes(axes)
+        for axis, field in self.fields.items():
+            field.setEnabled(axis in self._axes)
+        self._apply_range()
+
+    # -- actions ---------------------------------------------------------------------------
+
+    def _mode_toggled(self, relative: bool) -> None:
+        self._apply_range()
+        if relative:
+            self.set_values(0.0, 0.0, 0.0)  # a relative move must never reuse a coordinate
+        elif self._known is not None:
+            self.set_values(*self._known)
+
+    def _use_current(self) -> None:
+        if self._known is not None:
+            self.set_current(*self._known)
+
+    def _go(self) -> None:
+        if not self.isEnabled() or not self.go_button.isEnabled():
+            return
+        mode, target = self.mode(), self.values()
+        log.debug("go %s %s", mode, target)
+        self.go_requested.emit(mode, target)
+
+    def _set_home(self) -> None:
+        if self.confirm(SET_HOME_QUESTION):
+            self.set_home_requested.emit()

@@ -1,0 +1,113 @@
+"""Large X/Y/Z position labels, and whether the position is measured or only commanded."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+from PySide6.QtCore import Qt
+from PySide6.QtGui import QFont, QFontDatabase
+from PySide6.QtWidgets import QGridLayout, QLabel, QSizePolicy, QVBoxLayout, QWidget
+
+from widgets._axes import AXES, normalize_axes
+
+UNKNOWN = "—"
+NOT_MEASURED_TEXT = "commanded, not measured"
+
+
+class PositionReadout(QWidget):
+    """Shows the stage position as "12.34 mm" per axis, in a large fixed-width font."""
+
+    def __init__(self, parent: QWidget | None = None, decimals: int = 2) -> None:
+        super().__init__(parent)
+        self.setObjectName("positionReadout")
+        self.setToolTip("Stage position in mm from home")
+        self._decimals = decimals
+        self._axes = frozenset(AXES)
+        self._position: tuple[float, float, float] | None = None
+
+        font = QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)
+        font.setPointSizeF(max(font.pointSizeF(), 9.0) * 2.0)
+        font.setWeight(QFont.Weight.Bold)
+        name_font = QFont(font)
+        name_font.setWeight(QFont.Weight.Normal)
+
+        grid = QGridLayout()
+        grid.setHorizontalSpacing(12)
+        self.labels: dict[str, QLabel] = {}
+        for row, axis in enumerate(AXES):
+            name = QLabel(f"{axis.upper()}")
+            name.setFont(name_font)
+            value = QLabel()
+            value.setObjectName(f"position{axis.upper()}")
+            value.setFont(font)
+            value.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
+            value.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+            value.setMinimumWidth(value.fontMetrics().horizontalAdvance("-0000.000 mm"))
+            grid.addWidget(name, row, 0)
+            grid.addWidget(value, row, 1)
+            self.labels[axis] = value
+        grid.setColumnStretch(1, 1)
+
+        self.measured_label = QLabel(NOT_MEASURED_TEXT)
+        self.measured_label.setObjectName("positionNotMeasured")
+        self.measured_label.setToolTip(
+            "This device does not report its position: the numbers are where it was told to go."
+        )
+        self.measured_label.setStyleSheet(
+            "color: #8a4b00; background: #fff3cd; border: 1px solid #e0b44c;"
+            " border-radius: 3px; padding: 2px 6px;"
+        )
+        self.measured_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        self.measured_label.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Maximum)
+        self.measured_label.setVisible(False)
+
+        layout = QVBoxLayout(self)
+        layout.addLayout(grid)
+        layout.addWidget(self.measured_label)
+        self._render()
+
+    def set_position(self, x: float, y: float, z: float) -> None:
+        """Show a position in mm."""
+        self._position = (float(x), float(y), float(z))
+        self._render()
+
+    def clear(self) -> None:
+        """Show no position (unknown, e.g. disconnected)."""
+        self._position = None
+        self._render()
+
+    def position(self) -> tuple[float, float, float] | None:
+        """The position last shown, or None."""
+        return self._position
+
+    def set_measured(self, measured: bool) -> None:
+        """False: the position is only commanded; say so visibly."""
+        self.measured_label.setVisible(not measured)
+
+    def is_measured(self) -> bool:
+        """Whether the position is shown as measured."""
+        return self.measured_label.isHidden()
+
+    def set_axes_enabled(self, axes: Iterable[str]) -> None:
+        """Grey out the axes the device lacks."""
+        self._axes = normalize_axes(axes)
+        self._render()
+
+    def text(self, axis: str) -> str:
+        """The text shown for one axis, e.g. "12.34 mm"."""
+        return self.labels[axis.lower()].text()
+
+    def _render(self) -> None:
+        for index, axis in enumerate(AXES):
+            label = self.labels[axis]
+            enabled = axis in self._axes
+            label.setEnabled(enabled)
+            if not enabled:
+                label.setText(f"{UNKNOWN} mm")
+                label.setToolTip(f"This device has no {axis.upper()} axis")
+            elif self._position is None:
+                label.setText(f"{UNKNOWN} mm")
+                label.setToolTip("Position unknown")
+            else:
+                label.setText(f"{self._position[index]:.{self._decimals}f} mm")
+                label.setToolTip(f"{axis.upper()} position in mm from home")

@@ -1,0 +1,172 @@
+"""2D position plots: the XY trail seen from above, and X/Y/Z against time."""
+
+from __future__ import annotations
+
+import numpy as np
+import pyqtgraph as pg
+from PySide6.QtCore import Qt, QTimer
+from PySide6.QtGui import QHideEvent, QResizeEvent, QShowEvent
+from PySide6.QtWidgets import QHBoxLayout, QPushButton, QSplitter, QVBoxLayout, QWidget
+
+from widgets._axes import AXES, target_point
+from widgets.position_buffer import PositionBuffer
+
+REFRESH_INTERVAL_MS = 33  # ~30 Hz
+AXIS_COLOURS = {"x": "#e53935", "y": "#43a047", "z": "#1e88e5"}
+TRAIL_COLOUR = "#5c6bc0"
+CURRENT_COLOUR = "#ffb300"
+TARGET_COLOUR = "#d81b60"
+
+
+class PositionView2D(QWidget):
+    """XY trail with current and target markers, and a position-time chart, from a buffer."""
+
+    def __init__(self, buffer: PositionBuffer, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("positionView2d")
+        self.buffer = buffer
+        self._seen_version = -1
+        self._target: tuple[float, float, float] | None = None
+
+        self.xy_plot = pg.PlotWidget()
+        self.xy_plot.setObjectName("positionXYPlot")
+        self.xy_plot.setToolTip("Stage seen from above: trail, current position (dot), target (+)")
+        xy = self.xy_plot.getPlotItem()
+        xy.setTitle("XY (from above)")
+        xy.setLabel("bottom", "X (mm)")
+        xy.setLabel("left", "Y (mm)")
+        xy.showGrid(x=True, y=True, alpha=0.3)
+        xy.setAspectLocked(True)
+        self.trail = xy.plot(pen=pg.mkPen(TRAIL_COLOUR, width=1.5), name="trail")
+        self.current_marker = pg.ScatterPlotItem(
+            size=12, brush=pg.mkBrush(CURRENT_COLOUR), pen=pg.mkPen("k", width=1)
+        )
+        self.target_marker = pg.ScatterPlotItem(
+            size=18, symbol="+", brush=pg.mkBrush(TARGET_COLOUR), pen=pg.mkPen(TARGET_COLOUR)
+        )
+        xy.addItem(self.current_marker)
+        xy.addItem(self.target_marker)
+
+        self.time_plot = pg.PlotWidget()
+        self.time_plot.setObjectName("positionTimePlot")
+        self.time_plot.setToolTip("X, Y and Z against time; dashed lines: target")
+        tp = self.time_plot.getPlotItem()
+        tp.setTitle("Position against time")
+        tp.setLabel("bottom", "time (s, 0 = latest sample)")
+        tp.setLabel("left", "position (mm)")
+        tp.showGrid(x=True, y=True, alpha=0.3)
+        tp.addLegend(offset=(-10, 10))
+        tp.setClipToView(True)
+        tp.setDownsampling(auto=True, mode="peak")
+        self.curves = {
+            axis: tp.plot(pen=pg.mkPen(AXIS_COLOURS[axis], width=1.5), name=axis.upper())
+            for axis in AXES
+        }
+        self.target_lines = {}
+        for axis in AXES:
+            line = pg.InfiniteLine(
+                angle=0, pen=pg.mkPen(AXIS_COLOURS[axis], style=Qt.PenStyle.DashLine)
+            )
+            line.setVisible(False)
+            tp.addItem(line, ignoreBounds=True)
+            self.target_lines[axis] = line
+
+        clear_button = QPushButton("Clear trail")
+        clear_button.setObjectName("clearTrailButton")
+        clear_button.setToolTip("Forget the path so far (the current position stays)")
+        clear_button.clicked.connect(self.clear_trail)
+        reset_button = QPushButton("Reset view")
+        reset_button.setObjectName("resetViewButton")
+        reset_button.setToolTip("Zoom both plots to fit the data again")
+        reset_button.clicked.connect(self.reset_view)
+        buttons = QHBoxLayout()
+        buttons.addStretch(1)
+        buttons.addWidget(clear_button)
+        buttons.addWidget(reset_button)
+
+        for plot in (self.xy_plot, self.time_plot):
+            for side in ("left", "bottom"):
+                plot.getPlotItem().getAxis(side).enableAutoSIPrefix(False)  # no "(x0.001)"
+        self.splitter = QSplitter(Qt.Orientation.Horizontal)
+        self.splitter.addWidget(self.xy_plot)
+        self.splitter.addWidget(self.time_plot)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addWidget(self.splitter, 1)
+        layout.addLayout(buttons)
+
+        self.timer = QTimer(self)
+        self.timer.setInterval(REFRESH_INTERVAL_MS)
+        self.timer.timeout.connect(self.refresh)
+
+    def refresh(self) -> None:
+        """Redraw from the buffer if it changed since the last refresh."""
+        if self.buffer.version == self._seen_version:
+            return
+        self._seen_version = self.buffer.version
+        rows = self.buffer.view()
+        if not len(rows):
+            self.trail.setData([], [])
+            self.current_marker.setData([], [])
+            for curve in self.curves.values():
+                curve.setData([], [])
+            return
+        t = rows[:, 0] - rows[-1, 0]
+        self.trail.setData(rows[:, 1], rows[:, 2])
+        self.current_marker.setData([rows[-1, 1]], [rows[-1, 2]])
+        for index, axis in enumerate(AXES, start=1):
+            self.curves[axis].setData(t, rows[:, index])
+
+    def set_target(self, x: object, y: float | None = None, z: float | None = None) -> None:
+        """Mark the target: `set_target(x, y, z)` or `set_target((x, y, z))` in mm; None hides it.
+
+        z may be None (a device without Z): then no Z target line is drawn.
+        """
+        point = target_point(x, y, z)
+        if point is None:
+            self._target = None
+            self.target_marker.setData([], [])
+            for line in self.target_lines.values():
+                line.setVisible(False)
+            return
+        tx, ty, tz = point
+        self._target = (tx, ty, np.nan if tz is None else tz)
+        self.target_marker.setData([tx], [ty])
+        for axis, value in zip(AXES, self._target, strict=True):
+            line = self.target_lines[axis]
+            line.setVisible(not np.isnan(value))
+            if not np.isnan(value):
+                line.setValue(value)
+
+    def target(self) -> tuple[float, float, float] | None:
+        """The target shown, or None (z is NaN when it was not given)."""
+        return self._target
+
+    def clear_trail(self) -> None:
+        """Empty the shared buffer except the newest position, and redraw."""
+        self.buffer.clear(keep_last=True)
+        self.refresh()
+
+    def reset_view(self) -> None:
+        """Zoom both plots to fit their data, following new data again."""
+        for plot in (self.xy_plot, self.time_plot):
+            plot.getPlotItem().enableAutoRange()
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        """Plots side by side when there is width for it, else one above the other."""
+        super().resizeEvent(event)
+        wide = event.size().width() >= 1.3 * event.size().height()
+        orientation = Qt.Orientation.Horizontal if wide else Qt.Orientation.Vertical
+        if self.splitter.orientation() != orientation:
+            self.splitter.setOrientation(orientation)
+
+    def showEvent(self, event: QShowEvent) -> None:
+        """Refresh periodically while visible."""
+        super().showEvent(event)
+        self.refresh()
+        self.timer.start()
+
+    def hideEvent(self, event: QHideEvent) -> None:
+        """No redrawing while hidden."""
+        self.timer.stop()
+        super().hideEvent(event)

@@ -1,0 +1,116 @@
+"""The console's send line: text (with escapes and a line ending) or hex, with history."""
+
+from __future__ import annotations
+
+import logging
+
+from PySide6.QtCore import Signal
+from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QVBoxLayout, QWidget
+
+from widgets import traffic_format as fmt
+from widgets.history_line_edit import HistoryLineEdit
+
+log = logging.getLogger(__name__)
+
+TEXT, HEX = "text", "hex"
+LINE_ENDINGS = {"LF (\\n)": b"\n", "CR (\\r)": b"\r", "CR+LF": b"\r\n", "none": b""}
+
+
+class SendLine(QWidget):
+    """Type bytes to send; `send_requested(bytes)` on Enter or Send, or an error shown inline."""
+
+    send_requested = Signal(object)  # bytes
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("consoleSendBar")
+        self.edit = HistoryLineEdit()
+        self.edit.setObjectName("consoleSendLine")
+        self.edit.returnPressed.connect(self.send)
+        self.edit.textEdited.connect(lambda _: self.show_error(""))
+        self.mode_combo = QComboBox()
+        self.mode_combo.setObjectName("consoleSendMode")
+        self.mode_combo.addItems([TEXT, HEX])
+        self.mode_combo.setToolTip(
+            "text: UTF-8 with \\r \\n \\t \\0 \\\\ \\xNN escapes, plus the line ending;\n"
+            "hex: bytes like 48 45 4C 4C 4F, sent as they are"
+        )
+        self.mode_combo.currentTextChanged.connect(self._mode_changed)
+        self.ending_combo = QComboBox()
+        self.ending_combo.setObjectName("consoleLineEnding")
+        self.ending_combo.addItems(list(LINE_ENDINGS))
+        self.ending_combo.setToolTip("Appended to every line sent in text mode")
+        self.button = QPushButton("Send")
+        self.button.setObjectName("consoleSend")
+        self.button.setToolTip("Send the line to the device (Enter)")
+        self.button.clicked.connect(self.send)
+        self.error_label = QLabel()
+        self.error_label.setObjectName("consoleError")
+        self.error_label.setStyleSheet("color: #c62828;")
+        self.error_label.setVisible(False)
+
+        row = QHBoxLayout()
+        row.setContentsMargins(0, 0, 0, 0)
+        row.addWidget(self.edit, 1)
+        row.addWidget(self.mode_combo)
+        row.addWidget(self.ending_combo)
+        row.addWidget(self.button)
+        layout = QVBoxLayout(self)
+        layout.setContentsMargins(0, 0, 0, 0)
+        layout.addLayout(row)
+        layout.addWidget(self.error_label)
+        self._mode_changed(TEXT)
+
+    def mode(self) -> str:
+        """How the line is read: `"text"` or `"hex"`."""
+        return self.mode_combo.currentText()
+
+    def set_mode(self, mode: str) -> None:
+        """Read the line as text (with escapes and the line ending) or as hex bytes."""
+        if mode not in (TEXT, HEX):
+            raise ValueError(f"send mode must be 'text' or 'hex', not {mode!r}")
+        self.mode_combo.setCurrentText(mode)
+
+    def set_line_ending(self, ending: bytes) -> None:
+        """The bytes appended to a text line: b"\\n", b"\\r", b"\\r\\n" or b""."""
+        names = {value: name for name, value in LINE_ENDINGS.items()}
+        if ending not in names:
+            raise ValueError(f"unsupported line ending {ending!r}")
+        self.ending_combo.setCurrentText(names[ending])
+
+    def _mode_changed(self, mode: str) -> None:
+        self.ending_combo.setEnabled(mode == TEXT)
+        hint = "hex bytes, e.g. 48 45 4C 4C 4F" if mode == HEX else "text to send"
+        self.edit.setPlaceholderText(f"{hint} (Up/Down: history)")
+        self.show_error("")
+
+    def data(self) -> bytes:
+        """The bytes the line stands for; raises ValueError saying what is wrong."""
+        text = self.edit.text()
+        if self.mode() == HEX:
+            data = fmt.parse_hex(text)
+        else:
+            data = fmt.unescape(text) + LINE_ENDINGS[self.ending_combo.currentText()]
+        if not data:
+            raise ValueError("nothing to send")
+        return data
+
+    def send(self) -> None:
+        """Emit `send_requested` with the line's bytes, or show what is wrong with it."""
+        if not self.isEnabled():
+            return
+        try:
+            data = self.data()
+        except ValueError as exc:
+            self.show_error(str(exc))
+            return
+        self.show_error("")
+        self.edit.add_history(self.edit.text())
+        self.edit.clear()
+        log.debug("send requested: %r", data)
+        self.send_requested.emit(data)
+
+    def show_error(self, message: str) -> None:
+        """Show a problem under the line ("" hides it)."""
+        self.error_label.setText(message)
+        self.error_label.setVisible(bool(message))

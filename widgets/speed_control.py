@@ -1,0 +1,143 @@
+"""Speed slider and field, kept in sync; the device-reported speed beside them."""
+
+from __future__ import annotations
+
+import logging
+
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtWidgets import (
+    QDoubleSpinBox,
+    QHBoxLayout,
+    QLabel,
+    QPushButton,
+    QSlider,
+    QWidget,
+)
+
+log = logging.getLogger(__name__)
+
+SLIDER_STEPS = 1000
+
+
+class SpeedControl(QWidget):
+    """Slider + spin box in mm/s; `speed_requested` on slider release, Enter or Apply only."""
+
+    speed_requested = Signal(float)
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("speedControl")
+        self._min, self._max = 0.0, 100.0
+
+        label = QLabel("Speed:")
+        label.setToolTip("Speed of the next moves")
+        self.slider = QSlider(Qt.Orientation.Horizontal)
+        self.slider.setObjectName("speedSlider")
+        self.slider.setRange(0, SLIDER_STEPS)
+        self.slider.setTracking(False)  # valueChanged on release, not on every drag tick
+        self.slider.setMinimumWidth(120)
+        self.slider.sliderMoved.connect(self._slider_moved)
+        self.slider.valueChanged.connect(self._slider_committed)
+
+        self.spin = QDoubleSpinBox()
+        self.spin.setObjectName("speedSpin")
+        self.spin.setDecimals(2)
+        self.spin.setSuffix(" mm/s")
+        self.spin.setKeyboardTracking(False)
+        self.spin.setMinimumWidth(100)
+        self.spin.valueChanged.connect(self._spin_changed)
+        self.spin.lineEdit().returnPressed.connect(self.apply)
+
+        self.apply_button = QPushButton("Apply")
+        self.apply_button.setObjectName("speedApply")
+        self.apply_button.setToolTip("Send the speed in the field to the device")
+        self.apply_button.clicked.connect(self.apply)
+
+        self.reported_label = QLabel()
+        self.reported_label.setObjectName("speedReported")
+        self.reported_label.setToolTip("The speed the device reports (it may round)")
+        self.reported_label.setMinimumWidth(110)
+        self.set_reported(None)
+
+        layout = QHBoxLayout(self)
+        layout.addWidget(label)
+        layout.addWidget(self.slider, 1)
+        layout.addWidget(self.spin)
+        layout.addWidget(self.apply_button)
+        layout.addWidget(self.reported_label)
+        label.setBuddy(self.spin)
+        self.set_range(0.0, 100.0)
+
+    # -- programmatic API (emits nothing) ------------------------------------------------
+
+    def value(self) -> float:
+        """The speed shown in the field, in mm/s."""
+        return float(self.spin.value())
+
+    def set_value(self, speed: float) -> None:
+        """Show `speed` (clamped to the range) in the field and the slider; emits nothing."""
+        self.spin.blockSignals(True)
+        self.spin.setValue(speed)
+        self.spin.blockSignals(False)
+        self._move_slider(self.spin.value())
+
+    def set_range(self, minimum: float, maximum: float) -> None:
+        """Limit the speed to minimum..maximum mm/s; emits nothing."""
+        if not minimum <= maximum:
+            raise ValueError(f"empty speed range {minimum}..{maximum}")
+        self._min, self._max = float(minimum), float(maximum)
+        current = self.spin.value()
+        self.spin.blockSignals(True)
+        self.spin.setRange(self._min, self._max)
+        self.spin.setSingleStep(max((self._max - self._min) / 100.0, 0.01))
+        self.spin.blockSignals(False)
+        self.slider.setEnabled(self._max > self._min)
+        tip = f"Speed, {self._min:g} to {self._max:g} mm/s; press Enter or Apply to send"
+        self.spin.setToolTip(tip)
+        self.slider.setToolTip(f"Drag and release to send ({self._min:g} to {self._max:g} mm/s)")
+        self.set_value(current)
+
+    def speed_range(self) -> tuple[float, float]:
+        """The (minimum, maximum) speed in mm/s."""
+        return self._min, self._max
+
+    def set_reported(self, speed: float | None) -> None:
+        """Show the device-reported speed, e.g. "device: 13 mm/s" (None: unknown)."""
+        text = "—" if speed is None else f"{speed:g}"
+        self.reported_label.setText(f"device: {text} mm/s")
+
+    # -- user actions --------------------------------------------------------------------
+
+    def apply(self) -> None:
+        """Send the speed in the field (what Enter and Apply do)."""
+        self.spin.interpretText()
+        speed = self.value()
+        log.debug("speed requested: %g mm/s", speed)
+        self.speed_requested.emit(speed)
+
+    def _to_slider(self, speed: float) -> int:
+        span = self._max - self._min
+        return 0 if span <= 0 else round((speed - self._min) / span * SLIDER_STEPS)
+
+    def _from_slider(self, position: int) -> float:
+        return self._min + (self._max - self._min) * position / SLIDER_STEPS
+
+    def _move_slider(self, speed: float) -> None:
+        self.slider.blockSignals(True)
+        self.slider.setValue(self._to_slider(speed))
+        self.slider.blockSignals(False)
+
+    def _slider_moved(self, position: int) -> None:
+        """While dragging: show the value, send nothing."""
+        self.spin.blockSignals(True)
+        self.spin.setValue(self._from_slider(position))
+        self.spin.blockSignals(False)
+
+    def _slider_committed(self, position: int) -> None:
+        """Released after a drag, or a click on the groove / a key on the slider: send."""
+        self._slider_moved(position)
+        self.apply()
+
+    def _spin_changed(self, speed: float) -> None:
+        """Typed or stepped: move the slider along, send nothing until Enter or Apply."""
+        self._move_slider(speed)
