@@ -31,13 +31,9 @@ def measure(jogs: int) -> dict[str, float]:
     app = QApplication.instance() or QApplication([])
     window = MainWindow()
     window.show()
-    window.connect_device("sim://coxiris?speed=50", "coxiris", 115200)
-    deadline = time.monotonic() + 10
-    while not window.connected and time.monotonic() < deadline:
-        app.processEvents()
-    if not window.connected:
-        raise RuntimeError("the simulated device did not connect")
+    window.activateWindow()
     window.jog_panel.set_step(1)
+    window.connect_device("sim://coxiris?speed=50", "coxiris", 115200)
 
     gaps: list[float] = []
     clock = QElapsedTimer()
@@ -46,7 +42,8 @@ def measure(jogs: int) -> dict[str, float]:
 
     def tick() -> None:
         now = clock.nsecsElapsed()
-        gaps.append((now - last[0]) / 1e6)
+        if window.connected:
+            gaps.append((now - last[0]) / 1e6)
         last[0] = now
 
     timer = QTimer()
@@ -57,14 +54,25 @@ def measure(jogs: int) -> dict[str, float]:
     finished = [0]
     window.worker.job_finished.connect(lambda *_: finished.__setitem__(0, finished[0] + 1))
     keys = [Qt.Key.Key_Right, Qt.Key.Key_Up, Qt.Key.Key_Left, Qt.Key.Key_Down]
-    sent = 0
-    end = time.monotonic() + 120
-    window.view2d.setFocus()
-    while finished[0] < jogs and time.monotonic() < end:
-        if sent < jogs and sent - finished[0] < 2:
-            QTest.keyClick(window.view2d, keys[sent % len(keys)])
-            sent += 1
-        app.processEvents()
+    sent = [0]
+    give_up = time.monotonic() + 120
+
+    def drive() -> None:
+        """Press the next jog key once the previous jogs are nearly done, like a user would."""
+        if finished[0] >= jogs or time.monotonic() > give_up:
+            app.quit()
+            return
+        if window.connected and sent[0] < jogs and sent[0] - finished[0] < 2:
+            window.view2d.setFocus()
+            QTest.keyClick(window.view2d, keys[sent[0] % len(keys)])
+            sent[0] += 1
+
+    driver = QTimer()
+    driver.setInterval(10)
+    driver.timeout.connect(drive)
+    driver.start()
+    app.exec()
+    driver.stop()
     timer.stop()
     window.console.flush()
     records = len(window.console.records())

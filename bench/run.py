@@ -140,6 +140,18 @@ def bench_traffic_memory(records: int) -> dict[str, float]:
     }
 
 
+def bench_gui_latency(jogs: int) -> dict[str, float]:
+    """Event-loop gaps of the window while jogging (bench/gui_latency.py, offscreen raster)."""
+    out = subprocess.run(
+        [sys.executable, str(ROOT / "bench" / "gui_latency.py"), "--jogs", str(jogs)],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        check=True,
+    )
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
 def main() -> int:
     """Run every benchmark and print the figures."""
     parser = argparse.ArgumentParser(description=__doc__)
@@ -153,6 +165,7 @@ def main() -> int:
         "round_trips": bench_round_trips(200 // scale),
         "move_overhead": bench_move_overhead(100 // scale),
         "traffic_memory": bench_traffic_memory(100_000 // scale),
+        "gui_latency": bench_gui_latency(40 // scale),
     }
     if options.json:
         print(json.dumps(results, indent=None))
