@@ -57,3 +57,12 @@ def motion(sim_link: tuple[Link, Recorder]) -> Motion:
     """A Motion on the simulated COXIRIS device."""
     link, _ = sim_link
     return Motion(Client(link, CoxirisProtocol(), timeout=1.0))
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """On CI the OpenGL tests must run, not skip: fail early when there is no display."""
+    has_gl_tests = any(item.get_closest_marker("gl") for item in items)
+    if os.environ.get("CI") and has_gl_tests and "DISPLAY" not in os.environ:
+        raise pytest.UsageError(
+            "CI must run the tests under Xvfb (no DISPLAY): see resources/setup.sh"
+        )

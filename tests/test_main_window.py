@@ -138,3 +138,19 @@ def test_settings_are_saved_and_restored(qtbot, tmp_path: Path, monkeypatch) -> 
     assert second.jog_panel.step() == 10
     assert second.connection_bar.port() == "loop://"
     second.close()
+
+
+@pytest.mark.gl
+@pytest.mark.skipif("DISPLAY" not in __import__("os").environ, reason="needs Xvfb or a display")
+def test_3d_view_is_real_opengl_and_draws_the_trail(qtbot, window: MainWindow) -> None:
+    from widgets.position_view_3d import PositionView3D
+
+    assert isinstance(window.view3d, PositionView3D), getattr(window.view3d, "reason", "")
+    _connect(qtbot, window)
+    blank = window.view3d.grabFramebuffer()
+    window.jog_panel.jog_requested.emit("x", 50.0)
+    qtbot.waitUntil(lambda: _position(window) == (50.0, 0.0, 0.0), timeout=5000)
+    window.view3d.refresh()
+    qtbot.waitUntil(lambda: window.view3d.trail.visible(), timeout=2000)
+    drawn = window.view3d.grabFramebuffer()
+    assert drawn != blank  # the marker moved and a trail appeared
