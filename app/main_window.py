@@ -148,6 +148,8 @@ class MainWindow(QMainWindow):
         bar.protocol_changed.connect(self._on_protocol_changed)
         self.port_watcher = PortWatcher(self)
         self.port_watcher.ports_changed.connect(self._on_ports)
+        self.port_watcher.port_added.connect(lambda p: self._notice(f"port {p} appeared"))
+        self.port_watcher.port_removed.connect(lambda p: self._notice(f"port {p} disappeared"))
         bar.refresh_requested.connect(self.port_watcher.refresh)
 
         self.jog_panel.jog_requested.connect(self._on_jog)
@@ -205,6 +207,10 @@ class MainWindow(QMainWindow):
             self.connection_bar.set_baud(get_protocol_class(name).capabilities.default_baud)
         except LookupError as exc:
             self.statusBar().showMessage(str(exc), 5000)
+
+    def _notice(self, text: str) -> None:
+        self.statusBar().showMessage(text, 8000)
+        self.console.append_note(text)
 
     def _on_ports(self, ports: list[tuple[str, str]]) -> None:
         self.connection_bar.set_ports(sim_ports() + ports)

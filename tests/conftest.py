@@ -13,8 +13,11 @@ from widgets.position_view_3d import share_opengl_contexts
 
 share_opengl_contexts()  # as the application does, before any QApplication exists
 
+from pathlib import Path
+
 import pytest
 
+from app.main_window import MainWindow
 from drivers.client import Client
 from drivers.motion import Motion
 from drivers.protocols.coxiris import CoxirisProtocol
@@ -50,6 +53,20 @@ def sim_link(request: pytest.FixtureRequest) -> Iterator[tuple[Link, Recorder]]:
     link.listeners.append(recorder)
     yield link, recorder
     link.close()
+
+
+@pytest.fixture
+def window(qtbot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[MainWindow]:
+    """A shown, active main window with its settings in a temporary file; closed afterwards."""
+    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(tmp_path / "settings.ini"))
+    win = MainWindow()
+    qtbot.addWidget(win)
+    win.show()
+    win.activateWindow()
+    qtbot.waitActive(win)
+    yield win
+    win.close()
+    assert not win.worker_thread.thread.isRunning()
 
 
 @pytest.fixture

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -23,19 +22,6 @@ CONTRACT_NAMES = [
     "positionView2d",
     "rawConsole",
 ]
-
-
-@pytest.fixture
-def window(qtbot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[MainWindow]:
-    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(tmp_path / "settings.ini"))
-    win = MainWindow()
-    qtbot.addWidget(win)
-    win.show()
-    win.activateWindow()
-    qtbot.waitActive(win)
-    yield win
-    win.close()
-    assert not win.worker_thread.thread.isRunning()
 
 
 def _connect(qtbot, win: MainWindow, url: str = "sim://coxiris?speed=100") -> None:
@@ -154,3 +140,22 @@ def test_3d_view_is_real_opengl_and_draws_the_trail(qtbot, window: MainWindow) -
     qtbot.waitUntil(lambda: window.view3d.trail.visible(), timeout=2000)
     drawn = window.view3d.grabFramebuffer()
     assert drawn != blank  # the marker moved and a trail appeared
+
+
+def test_ports_appearing_and_disappearing_are_noticed(
+    qtbot, window: MainWindow, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from app import ports
+
+    listing = [("/dev/ttyUSB0", "USB serial")]
+    monkeypatch.setattr(ports, "list_serial_ports", lambda: list(listing))
+    window.port_watcher.refresh()
+    listing.append(("/dev/ttyACM0", "Arduino Uno"))
+    window.port_watcher._check()
+    assert "port /dev/ttyACM0 appeared" in window.statusBar().currentMessage()
+    listing.pop(0)
+    window.port_watcher._check()
+    assert "port /dev/ttyUSB0 disappeared" in window.statusBar().currentMessage()
+    combo = window.connection_bar.port_combo
+    texts = " ".join(combo.itemText(i) for i in range(combo.count()))
+    assert "/dev/ttyACM0" in texts and "sim://coxiris" in texts

@@ -5,10 +5,11 @@ from __future__ import annotations
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt, QTimer
-from PySide6.QtGui import QHideEvent, QResizeEvent, QShowEvent
+from PySide6.QtGui import QResizeEvent
 from PySide6.QtWidgets import QHBoxLayout, QPushButton, QSplitter, QVBoxLayout, QWidget
 
 from widgets._axes import AXES, target_point
+from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
 REFRESH_INTERVAL_MS = 33  # ~30 Hz
@@ -28,7 +29,7 @@ def _grid() -> pg.GridItem:
     return grid
 
 
-class PositionView2D(QWidget):
+class PositionView2D(BufferedViewMixin, QWidget):
     """XY trail with current and target markers, and a position-time chart, from a buffer."""
 
     def __init__(self, buffer: PositionBuffer, parent: QWidget | None = None) -> None:
@@ -148,15 +149,6 @@ class PositionView2D(QWidget):
             if not np.isnan(value):
                 line.setValue(value)
 
-    def target(self) -> tuple[float, float, float] | None:
-        """The target shown, or None (z is NaN when it was not given)."""
-        return self._target
-
-    def clear_trail(self) -> None:
-        """Empty the shared buffer except the newest position, and redraw."""
-        self.buffer.clear(keep_last=True)
-        self.refresh()
-
     def reset_view(self) -> None:
         """Zoom both plots to fit their data, following new data again."""
         for plot in (self.xy_plot, self.time_plot):
@@ -169,14 +161,3 @@ class PositionView2D(QWidget):
         orientation = Qt.Orientation.Horizontal if wide else Qt.Orientation.Vertical
         if self.splitter.orientation() != orientation:
             self.splitter.setOrientation(orientation)
-
-    def showEvent(self, event: QShowEvent) -> None:
-        """Refresh periodically while visible."""
-        super().showEvent(event)
-        self.refresh()
-        self.timer.start()
-
-    def hideEvent(self, event: QHideEvent) -> None:
-        """No redrawing while hidden."""
-        self.timer.stop()
-        super().hideEvent(event)

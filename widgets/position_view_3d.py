@@ -7,10 +7,11 @@ from collections.abc import Callable
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, Qt, QTimer
-from PySide6.QtGui import QHideEvent, QOpenGLContext, QShowEvent, QVector3D
+from PySide6.QtGui import QOpenGLContext, QVector3D
 from PySide6.QtWidgets import QLabel, QWidget
 
 from widgets._axes import target_point
+from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
 log = logging.getLogger(__name__)
@@ -50,7 +51,7 @@ def opengl_available() -> bool:
     return bool(context.create())
 
 
-class PositionView3D(_GLBase):  # type: ignore[misc, valid-type]
+class PositionView3D(BufferedViewMixin, _GLBase):  # type: ignore[misc, valid-type]
     """Grid, axes, trail, current and target markers in 3D, refreshed from a buffer."""
 
     def __init__(
@@ -142,15 +143,6 @@ class PositionView3D(_GLBase):  # type: ignore[misc, valid-type]
         self.target_marker.setData(pos=np.array([self._target], dtype=np.float32))
         self.target_marker.setVisible(True)
 
-    def target(self) -> tuple[float, float, float] | None:
-        """The target shown, or None."""
-        return self._target
-
-    def clear_trail(self) -> None:
-        """Empty the shared buffer except the newest position, and redraw."""
-        self.buffer.clear(keep_last=True)
-        self.refresh()
-
     def reset_view(self) -> None:
         """Look at the data (or the whole grid) from above at an angle."""
         rows = self.buffer.view()
@@ -163,17 +155,6 @@ class PositionView3D(_GLBase):  # type: ignore[misc, valid-type]
         self.setCameraPosition(
             pos=QVector3D(*map(float, centre)), distance=extent * 1.8, elevation=30, azimuth=-60
         )
-
-    def showEvent(self, event: QShowEvent) -> None:
-        """Refresh periodically while visible."""
-        super().showEvent(event)
-        self.refresh()
-        self.timer.start()
-
-    def hideEvent(self, event: QHideEvent) -> None:
-        """No redrawing while hidden."""
-        self.timer.stop()
-        super().hideEvent(event)
 
 
 class PositionView3DPlaceholder(QLabel):
