@@ -39,3 +39,18 @@ class Framer(ABC):
             if frame is not None:
                 frames.append(frame)
         return frames, buffer
+
+
+def garbage_before(buffer: bytes, header: bytes) -> int:
+    """How many leading bytes cannot start a frame beginning with `header`.
+
+    That is everything before the first header, or, with no header in `buffer`, everything but a
+    tail that could be the start of one.
+    """
+    start = buffer.find(header)
+    if start >= 0:
+        return start
+    for keep in range(min(len(header) - 1, len(buffer)), 0, -1):
+        if header.startswith(buffer[-keep:]):
+            return len(buffer) - keep
+    return len(buffer)
