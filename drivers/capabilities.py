@@ -29,6 +29,9 @@ class Capabilities:
     speed: bool = True
     speed_range: tuple[float, float] | None = None  # None: ask the device, or unknown
     speed_limits_queryable: bool = False
+    speed_readback: bool = True  # False: the speed is only what was last set
+    default_speed: float = 10.0  # assumed until set, where the speed cannot be read back
+    identity_queryable: bool = True
     position_feedback: bool = True  # False: positions are commanded only
     completion: Completion = Completion.REPLY
     parameters: bool = False

@@ -24,21 +24,31 @@ ESTIMATE_MARGIN = 1.5  # a move may take this much longer than distance / speed
 class Motion:
     """Operator-level commands for any protocol, adapting to its capabilities."""
 
-    def __init__(self, client: Client) -> None:
+    def __init__(self, client: Client, wait: Callable[[float], bool] | None = None) -> None:
         self.client = client
         self.capabilities = client.protocol.capabilities
         self.position_listeners: list[Callable[[PositionReport], None]] = []
         self.poll_interval = POLL_INTERVAL
+        self.wait = wait or client.abort.wait
+        """Waits the given seconds; returns True when the wait was aborted."""
         self._speed: float | None = None
         self._limits: tuple[float, float] | None = None
         self.last_position: PositionReport | None = None
+        if not self.capabilities.position_feedback:
+            # Write-only devices: the position is what was commanded, from the power-on origin.
+            self.last_position = PositionReport(0.0, 0.0, 0.0, measured=False)
 
     def identify(self) -> str:
-        """The device's identifier."""
+        """The device's identifier (the protocol's name where the device cannot say)."""
+        if not self.capabilities.identity_queryable:
+            return f"{self.client.protocol.name} device"
         return str(self.client.execute(cmd.GetId()).value)
 
     def position(self) -> PositionReport:
-        """The current position (measured where the protocol reports it)."""
+        """The current position: measured where the protocol reports it, else the commanded one."""
+        if not self.capabilities.position_feedback:
+            assert self.last_position is not None
+            return self.last_position
         value = self.client.execute(cmd.GetPosition()).value
         if not isinstance(value, PositionReport):
             raise DeviceError(f"the device did not report a position ({value!r})")
@@ -46,7 +56,9 @@ class Motion:
         return value
 
     def speed(self) -> float:
-        """The speed as the device reports it."""
+        """The speed as the device reports it (or as last set, where it cannot be read back)."""
+        if not self.capabilities.speed_readback:
+            return self._speed if self._speed is not None else self.capabilities.default_speed
         value = float(self.client.execute(cmd.GetSpeed()).value)  # type: ignore[arg-type]
         self._speed = value
         return value
@@ -80,7 +92,7 @@ class Motion:
             )
         self.client.execute(cmd.SetSpeed(speed))
         self._speed = speed
-        if self.capabilities.position_feedback:
+        if self.capabilities.speed_readback:
             reported = self.speed()
             if reported != speed:
                 log.info(
@@ -131,8 +143,16 @@ class Motion:
         target = target_of(here)
         speed = self._speed if self._speed is not None else self.speed()
         estimate = math.dist((here.x, here.y, here.z), target) / max(speed, 1e-9)
-        self.client.execute(command, extra=estimate * ESTIMATE_MARGIN)
-        if self.capabilities.completion is Completion.REPLY:
+        completion = self.capabilities.completion
+        waits_in_reply = completion is not Completion.ESTIMATE
+        self.client.execute(command, extra=estimate * ESTIMATE_MARGIN if waits_in_reply else 0.0)
+        # Where the device never says when it is done (PROTOCOLS.md §4, §5): wait the estimate.
+        if completion is Completion.ESTIMATE and self.wait(estimate):
+            raise Aborted("abandoned: the connection is closing")
+        if not self.capabilities.position_feedback:
+            self._set_position(PositionReport(*target, measured=False))
+            return self.last_position  # type: ignore[return-value]
+        if completion is Completion.REPLY:
             return self._wait_until_at(target, estimate)
         return self.position()
 
@@ -143,10 +163,8 @@ class Motion:
         previous: PositionReport | None = None
         while True:
             now = self.position()
-            if all(
-                abs(a - b) <= POSITION_TOLERANCE
-                for a, b in zip((now.x, now.y, now.z), target, strict=True)
-            ):
+            here = (now.x, now.y, now.z)
+            if all(abs(a - b) <= POSITION_TOLERANCE for a, b in zip(here, target, strict=True)):
                 return now
             if previous == now:
                 log.warning("the stage stopped at %s short of the target %s", now, target)
@@ -154,5 +172,5 @@ class Motion:
             if time.monotonic() > deadline:
                 raise DeviceTimeout(f"the move to {target} did not end within {allowed:.1f} s")
             previous = now
-            if self.client.abort.wait(self.poll_interval):
+            if self.wait(self.poll_interval):
                 raise Aborted("abandoned: the connection is closing")
