@@ -13,6 +13,7 @@ from drivers.client import Client
 from drivers.errors import MotionError
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.transport import Link
+from tests.fakes import ScriptedPort
 
 P = CoxirisProtocol()
 COMMANDS = [
@@ -67,33 +68,6 @@ def test_exchange_takes_any_reply(command: cmd.Command, chunks: list[bytes]) -> 
     if exchange.finished:
         with contextlib.suppress(MotionError):
             exchange.result()
-
-
-class ScriptedPort:
-    """A pyserial-like port that answers every write with a scripted byte string."""
-
-    def __init__(self, answer: bytes) -> None:
-        self.answer = answer
-        self.pending = b""
-        self.port = "scripted"
-
-    def write(self, data: bytes) -> int:
-        self.pending += self.answer
-        return len(data)
-
-    def flush(self) -> None:
-        pass
-
-    @property
-    def in_waiting(self) -> int:
-        return len(self.pending)
-
-    def read(self, size: int) -> bytes:
-        data, self.pending = self.pending[:size], self.pending[size:]
-        return data
-
-    def close(self) -> None:
-        pass
 
 
 class FakeClock:

@@ -19,6 +19,7 @@ from drivers.framers.lines import LineFramer
 from drivers.motion import Motion
 from drivers.protocols.base import Exchange, Protocol
 from drivers.transport import Link
+from tests.fakes import ScriptedPort
 
 pytestmark = pytest.mark.timeout(20)
 
@@ -69,35 +70,6 @@ class ScriptedProtocol(Protocol):
         return self._exchange(command)
 
 
-class FakePort:
-    """Answers every write with `answer`; keeps what was written."""
-
-    def __init__(self, answer: bytes = b"") -> None:
-        self.answer = answer
-        self.pending = b""
-        self.written = b""
-        self.port = "fake"
-
-    def write(self, data: bytes) -> int:
-        self.written += data
-        self.pending += self.answer
-        return len(data)
-
-    def flush(self) -> None:
-        pass
-
-    @property
-    def in_waiting(self) -> int:
-        return len(self.pending)
-
-    def read(self, size: int) -> bytes:
-        data, self.pending = self.pending[:size], self.pending[size:]
-        return data
-
-    def close(self) -> None:
-        pass
-
-
 WRITE_ONLY = Capabilities(
     axes=("x", "y", "z"),
     position_feedback=False,
@@ -110,7 +82,7 @@ WRITE_ONLY = Capabilities(
 
 
 def _motion(caps: Capabilities, exchange: type[Exchange], answer: bytes = b""):
-    port = FakePort(answer)
+    port = ScriptedPort(answer)
     client = Client(Link(port, "fake"), ScriptedProtocol(caps, exchange))  # type: ignore[arg-type]
     waits: list[float] = []
     motion = Motion(client, wait=lambda s: waits.append(s) or False)
@@ -150,7 +122,7 @@ def test_feedback_completion_waits_for_the_packet() -> None:
 
 
 def test_aborted_estimate_wait_raises() -> None:
-    port = FakePort()
+    port = ScriptedPort()
     client = Client(Link(port, "fake"), ScriptedProtocol(WRITE_ONLY, NoReply))  # type: ignore[arg-type]
     motion = Motion(client, wait=lambda s: True)
     with pytest.raises(Aborted, match="abandoned"):

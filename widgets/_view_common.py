@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
+import numpy as np
+from PySide6.QtCore import QTimer
 from PySide6.QtGui import QHideEvent, QShowEvent
 
 from widgets.position_buffer import PositionBuffer
+
+REFRESH_INTERVAL_MS = 33  # ~30 Hz
 
 
 class BufferedViewMixin:
@@ -12,6 +16,20 @@ class BufferedViewMixin:
 
     buffer: PositionBuffer
     _target: tuple[float, float, float] | None
+
+    def start_refresh_timer(self) -> None:
+        """Create the timer that calls `refresh` at ~30 Hz while the view is shown."""
+        self._seen_version = -1
+        self.timer = QTimer(self)  # type: ignore[arg-type]
+        self.timer.setInterval(REFRESH_INTERVAL_MS)
+        self.timer.timeout.connect(self.refresh)
+
+    def changed_rows(self) -> np.ndarray | None:
+        """The buffer's rows if it changed since the last call, else None."""
+        if self.buffer.version == self._seen_version:
+            return None
+        self._seen_version = self.buffer.version
+        return self.buffer.view()
 
     def refresh(self) -> None:  # pragma: no cover - provided by the view
         """Redraw from the buffer."""
@@ -30,9 +48,9 @@ class BufferedViewMixin:
         """Refresh periodically while visible."""
         super().showEvent(event)  # type: ignore[misc]
         self.refresh()
-        self.timer.start()  # type: ignore[attr-defined]
+        self.timer.start()
 
     def hideEvent(self, event: QHideEvent) -> None:
         """No redrawing while hidden."""
-        self.timer.stop()  # type: ignore[attr-defined]
+        self.timer.stop()
         super().hideEvent(event)  # type: ignore[misc]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt, QTimer
+from PySide6.QtCore import Qt
 from PySide6.QtGui import QResizeEvent
 from PySide6.QtWidgets import QHBoxLayout, QPushButton, QSplitter, QVBoxLayout, QWidget
 
@@ -12,7 +12,6 @@ from widgets._axes import AXES, target_point
 from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
-REFRESH_INTERVAL_MS = 33  # ~30 Hz
 GRID_COLOUR = (60, 60, 60)
 AXIS_COLOURS = {"x": "#e53935", "y": "#43a047", "z": "#1e88e5"}
 TRAIL_COLOUR = "#5c6bc0"
@@ -36,7 +35,6 @@ class PositionView2D(BufferedViewMixin, QWidget):
         super().__init__(parent)
         self.setObjectName("positionView2d")
         self.buffer = buffer
-        self._seen_version = -1
         self._target: tuple[float, float, float] | None = None
 
         self.xy_plot = pg.PlotWidget()
@@ -106,16 +104,13 @@ class PositionView2D(BufferedViewMixin, QWidget):
         layout.addWidget(self.splitter, 1)
         layout.addLayout(buttons)
 
-        self.timer = QTimer(self)
-        self.timer.setInterval(REFRESH_INTERVAL_MS)
-        self.timer.timeout.connect(self.refresh)
+        self.start_refresh_timer()
 
     def refresh(self) -> None:
         """Redraw from the buffer if it changed since the last refresh."""
-        if self.buffer.version == self._seen_version:
+        rows = self.changed_rows()
+        if rows is None:
             return
-        self._seen_version = self.buffer.version
-        rows = self.buffer.view()
         if not len(rows):
             self.trail.setData([], [])
             self.current_marker.setData([], [])

@@ -6,7 +6,7 @@ import logging
 from collections.abc import Callable
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication, Qt, QTimer
+from PySide6.QtCore import QCoreApplication, Qt
 from PySide6.QtGui import QOpenGLContext, QVector3D
 from PySide6.QtWidgets import QLabel, QWidget
 
@@ -26,7 +26,6 @@ except Exception as exc:  # any failure means "no 3D view"
     _GLBase = QWidget
     _IMPORT_ERROR = f"{type(exc).__name__}: {exc}"
 
-REFRESH_INTERVAL_MS = 33  # ~30 Hz
 TRAIL_COLOUR = (0.36, 0.42, 0.75, 1.0)
 CURRENT_COLOUR = (1.0, 0.70, 0.0, 1.0)
 TARGET_COLOUR = (0.85, 0.11, 0.38, 1.0)
@@ -64,7 +63,6 @@ class PositionView3D(BufferedViewMixin, _GLBase):  # type: ignore[misc, valid-ty
         self.setToolTip("Drag to rotate, wheel to zoom, middle-drag to pan")
         self.buffer = buffer
         self.grid_mm = float(grid_mm)
-        self._seen_version = -1
         self._target: tuple[float, float, float] | None = None
         self.setBackgroundColor((24, 24, 28, 255))
 
@@ -106,17 +104,14 @@ class PositionView3D(BufferedViewMixin, _GLBase):  # type: ignore[misc, valid-ty
             item.setVisible(False)
             self.addItem(item)
 
-        self.timer = QTimer(self)
-        self.timer.setInterval(REFRESH_INTERVAL_MS)
-        self.timer.timeout.connect(self.refresh)
+        self.start_refresh_timer()
         self.reset_view()
 
     def refresh(self) -> None:
         """Redraw from the buffer if it changed since the last refresh."""
-        if self.buffer.version == self._seen_version:
+        rows = self.changed_rows()
+        if rows is None:
             return
-        self._seen_version = self.buffer.version
-        rows = self.buffer.view()
         if not len(rows):
             self.trail.setVisible(False)
             self.current_marker.setVisible(False)

@@ -6,8 +6,9 @@ import numpy as np
 import pytest
 from PySide6.QtCore import Qt
 
+from widgets._view_common import REFRESH_INTERVAL_MS
 from widgets.position_buffer import PositionBuffer
-from widgets.position_view_2d import REFRESH_INTERVAL_MS, PositionView2D
+from widgets.position_view_2d import PositionView2D
 
 
 @pytest.fixture
