@@ -10,11 +10,13 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 from typing import Any
 
+from drivers import commands as cmd
 from drivers.client import Client
 from drivers.errors import BadInput, CommunicationError, DeviceError, MotionError, UnknownProtocol
 from drivers.events import PositionReport
 from drivers.motion import Motion
 from drivers.numbers import parse_number
+from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
 from drivers.traffic import TrafficLogWriter
 from drivers.transport import open_link
@@ -127,27 +129,22 @@ def run_command(motion: Motion, command: str, args: list[str]) -> dict[str, Any]
     if command == "check":
         motion.check()
         return {"errors": []}
-    reply = motion.raw(args[0].encode("latin-1"))
+    reply = motion.raw(args[0].encode("utf-8"))
     lines = [f"{type(e).__name__}: {e}" for e in reply.events]
     return {"reply": lines}
 
 
-def _validate_offline(command: str, args: list[str], motion_protocol: Any) -> None:
+def _validate_offline(command: str, args: list[str], protocol: Protocol) -> None:
     """Refuse what can be refused before the port is even opened."""
     _check_arity(command, args)
-    if command in ("move", "jog"):
-        values = _numbers(args, ("x", "y", "z") if command == "move" else ("dx", "dy", "dz"))
-        from drivers import commands as cmd
-
-        motion_protocol.encode(cmd.MoveTo(*values) if command == "move" else cmd.MoveBy(*values))
+    if command == "move":
+        protocol.encode(cmd.MoveTo(*_numbers(args, ("x", "y", "z"))))
+    elif command == "jog":
+        protocol.encode(cmd.MoveBy(*_numbers(args, ("dx", "dy", "dz"))))
     elif command == "speed" and args:
-        from drivers import commands as cmd
-
-        motion_protocol.encode(cmd.SetSpeed(parse_number(args[0], "speed")))
+        protocol.encode(cmd.SetSpeed(parse_number(args[0], "speed")))
     elif command == "raw":
-        from drivers import commands as cmd
-
-        motion_protocol.encode(cmd.Raw(args[0].encode("latin-1")))
+        protocol.encode(cmd.Raw(args[0].encode("utf-8")))
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -135,6 +135,8 @@ def test_unknown_command_exits_1_at_once(sim: SimProcess) -> None:
         ("move", "1", "2", "3", "4"),
         ("id", "extra"),
         ("raw", "X" * 64),
+        ("raw", "GET_€"),
+        ("raw", "GET_ID\nHELP"),
         ("raw", "   "),
         ("raw",),
         ("speed", "0"),
