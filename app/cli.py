@@ -27,6 +27,7 @@ EXIT_OK = 0
 EXIT_DEVICE_ERROR = 1
 EXIT_BAD_INPUT = 2
 EXIT_NO_DEVICE = 3
+EXIT_INTERRUPTED = 130  # Ctrl-C, as shells report it
 
 PROTOCOL_CHOICES = ("coxiris", "visiomex", "laser-frame", "pi-frame", "firmata")
 COMMANDS = ("id", "position", "home", "set-home", "move", "jog", "speed", "limits", "check", "raw")
@@ -168,12 +169,18 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"motionctl: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
     baud = options.baud or protocol.capabilities.default_baud
+    if options.baud is not None and options.baud <= 0:
+        return _fail(UsageError("--baud must be a positive number of bits per second"), 2)
     with ExitStack() as stack:
+        try:
+            if options.log:
+                stream = stack.enter_context(open(options.log, "a", encoding="utf-8"))
+        except OSError as exc:
+            return _fail(UsageError(f"cannot write the log {options.log}: {exc}"), EXIT_BAD_INPUT)
         try:
             link = open_link(options.port, baud)
             stack.callback(link.close)
             if options.log:
-                stream = stack.enter_context(open(options.log, "a", encoding="utf-8"))
                 link.listeners.append(TrafficLogWriter(stream))
             motion = Motion(Client(link, protocol, timeout=options.timeout))
             result = run_command(motion, options.command, options.args)
@@ -185,6 +192,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _fail(exc, EXIT_NO_DEVICE)
         except MotionError as exc:
             return _fail(exc, EXIT_DEVICE_ERROR)
+        except KeyboardInterrupt:
+            return _fail(
+                UsageError("interrupted; the device may still be moving"), EXIT_INTERRUPTED
+            )
     if options.json:
         print(json.dumps(result))
     else:

@@ -156,7 +156,14 @@ def test_bad_input_exits_2_with_nothing_sent(sim: SimProcess, record: Path, args
 
 
 def test_bad_options_exit_2_with_nothing_sent(sim: SimProcess, record: Path) -> None:
-    for options in (["--timeout", "0"], ["--timeout", "-1"]):
+    bad_options = (
+        ["--timeout", "0"],
+        ["--timeout", "-1"],
+        ["--baud", "0"],
+        ["--baud", "fast"],
+        ["--log", "/nonexistent-dir/host.log"],
+    )
+    for options in bad_options:
         result = subprocess.run(
             [
                 sys.executable,
