@@ -13,10 +13,20 @@ from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
 GRID_COLOUR = (60, 60, 60)
+TIME_WINDOW_S = 60.0
+FOLLOW_PADDING = 0.25
+MIN_MARGIN_MM = 1.0
 AXIS_COLOURS = {"x": "#e53935", "y": "#43a047", "z": "#1e88e5"}
 TRAIL_COLOUR = "#5c6bc0"
 CURRENT_COLOUR = "#ffb300"
 TARGET_COLOUR = "#d81b60"
+
+
+def _padded(values: np.ndarray) -> tuple[float, float]:
+    """The span of `values` with a quarter of it (at least 1 mm) added on each side."""
+    low, high = float(values.min()), float(values.max())
+    margin = max((high - low) * FOLLOW_PADDING, MIN_MARGIN_MM)
+    return low - margin, high + margin
 
 
 def _grid() -> pg.GridItem:
@@ -61,7 +71,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.time_plot.setToolTip("X, Y and Z against time; dashed lines: target")
         tp = self.time_plot.getPlotItem()
         tp.setTitle("Position against time")
-        tp.setLabel("bottom", "time (s, 0 = latest sample)")
+        tp.setLabel("bottom", f"time (s, 0 = latest sample; last {TIME_WINDOW_S:g} s)")
         tp.setLabel("left", "position (mm)")
         tp.addItem(_grid(), ignoreBounds=True)
         tp.addLegend(offset=(-10, 10))
@@ -104,7 +114,11 @@ class PositionView2D(BufferedViewMixin, QWidget):
         layout.addWidget(self.splitter, 1)
         layout.addLayout(buttons)
 
+        for plot in (self.xy_plot, self.time_plot):
+            plot.getPlotItem().getViewBox().sigRangeChangedManually.connect(self._stop_following)
+        self._following = True
         self.start_refresh_timer()
+        self.reset_view()
 
     def refresh(self) -> None:
         """Redraw from the buffer if it changed since the last refresh."""
@@ -122,6 +136,25 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.current_marker.setData([rows[-1, 1]], [rows[-1, 2]])
         for index, axis in enumerate(AXES, start=1):
             self.curves[axis].setData(t, rows[:, index])
+        if self._following:
+            self._follow(rows, t)
+
+    def _follow(self, rows: np.ndarray, t: np.ndarray) -> None:
+        """Widen the views only when the data leaves them, with room to spare.
+
+        pyqtgraph's auto-range moved the range on almost every frame while jogging, and every
+        move rebuilt the axes' and grid's pictures: most of the GUI thread's time.
+        """
+        xy = self.xy_plot.getPlotItem()
+        (x0, x1), (y0, y1) = xy.viewRange()
+        xs, ys = rows[:, 1], rows[:, 2]
+        if xs.min() < x0 or xs.max() > x1 or ys.min() < y0 or ys.max() > y1:
+            xy.setRange(xRange=_padded(xs), yRange=_padded(ys), padding=0)
+        recent = rows[t >= -TIME_WINDOW_S, 1:4]
+        tp = self.time_plot.getPlotItem()
+        low, high = tp.viewRange()[1]
+        if recent.min() < low or recent.max() > high:
+            tp.setYRange(*_padded(recent.ravel()), padding=0)
 
     def set_target(self, x: object, y: float | None = None, z: float | None = None) -> None:
         """Mark the target: `set_target(x, y, z)` or `set_target((x, y, z))` in mm; None hides it.
@@ -145,9 +178,25 @@ class PositionView2D(BufferedViewMixin, QWidget):
                 line.setValue(value)
 
     def reset_view(self) -> None:
-        """Zoom both plots to fit their data, following new data again."""
+        """Zoom both plots to fit their data, following new data again.
+
+        The time axis keeps a fixed window: a range that moved every frame made pyqtgraph
+        rebuild the axis and grid pictures every frame (most of the GUI thread's time).
+        """
+        self._following = True
         for plot in (self.xy_plot, self.time_plot):
-            plot.getPlotItem().enableAutoRange()
+            plot.getPlotItem().disableAutoRange()
+        self.time_plot.getPlotItem().setXRange(-TIME_WINDOW_S, 0, padding=0.02)
+        rows = self.buffer.view()
+        if len(rows):
+            self._follow(rows, rows[:, 0] - rows[-1, 0])
+        else:
+            self.xy_plot.getPlotItem().setRange(xRange=(-1, 1), yRange=(-1, 1), padding=0)
+            self.time_plot.getPlotItem().setYRange(-1, 1, padding=0)
+
+    def _stop_following(self) -> None:
+        """The user zoomed or panned: leave the ranges alone until Reset view."""
+        self._following = False
 
     def resizeEvent(self, event: QResizeEvent) -> None:
         """Plots side by side when there is width for it, else one above the other."""

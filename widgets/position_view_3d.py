@@ -7,7 +7,15 @@ from collections.abc import Callable
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, Qt
-from PySide6.QtGui import QOpenGLContext, QVector3D
+from PySide6.QtGui import (
+    QImage,
+    QMouseEvent,
+    QOpenGLContext,
+    QPainter,
+    QPaintEvent,
+    QVector3D,
+    QWheelEvent,
+)
 from PySide6.QtWidgets import QLabel, QWidget
 
 from widgets._axes import target_point
@@ -19,11 +27,9 @@ log = logging.getLogger(__name__)
 try:  # PyOpenGL may be missing or broken: the module must still import
     import pyqtgraph.opengl as gl
 
-    _GLBase: type = gl.GLViewWidget
     _IMPORT_ERROR: str | None = None
 except Exception as exc:  # any failure means "no 3D view"
     gl = None
-    _GLBase = QWidget
     _IMPORT_ERROR = f"{type(exc).__name__}: {exc}"
 
 TRAIL_COLOUR = (0.36, 0.42, 0.75, 1.0)
@@ -50,8 +56,15 @@ def opengl_available() -> bool:
     return bool(context.create())
 
 
-class PositionView3D(BufferedViewMixin, _GLBase):  # type: ignore[misc, valid-type]
-    """Grid, axes, trail, current and target markers in 3D, refreshed from a buffer."""
+class PositionView3D(BufferedViewMixin, QWidget):
+    """Grid, axes, trail, current and target markers in 3D, refreshed from a buffer.
+
+    The scene is drawn with OpenGL by `self.scene`, a pyqtgraph GLViewWidget that is never
+    shown, into an image this plain widget paints. A QOpenGLWidget inside the window would make
+    Qt compose the whole window through OpenGL on every repaint of any widget: with software
+    OpenGL (Mesa llvmpipe) that took 75-90 ms a frame, while rendering the scene alone into an
+    image takes about 1.5 ms.
+    """
 
     def __init__(
         self, buffer: PositionBuffer, parent: QWidget | None = None, grid_mm: float = 200.0
@@ -61,10 +74,16 @@ class PositionView3D(BufferedViewMixin, _GLBase):  # type: ignore[misc, valid-ty
         super().__init__(parent)
         self.setObjectName("positionView3d")
         self.setToolTip("Drag to rotate, wheel to zoom, middle-drag to pan")
+        self.setMinimumSize(160, 120)
         self.buffer = buffer
         self.grid_mm = float(grid_mm)
         self._target: tuple[float, float, float] | None = None
-        self.setBackgroundColor((24, 24, 28, 255))
+        self._image = QImage()
+        self._stale = True
+        self.scene = gl.GLViewWidget()  # no parent: it must stay out of this window
+        self.scene.setBackgroundColor((24, 24, 28, 255))
+        self.destroyed.connect(self.scene.deleteLater)
+        self.addItem = self.scene.addItem
 
         grid = gl.GLGridItem()
         grid.setSize(self.grid_mm, self.grid_mm)
@@ -115,6 +134,7 @@ class PositionView3D(BufferedViewMixin, _GLBase):  # type: ignore[misc, valid-ty
         if not len(rows):
             self.trail.setVisible(False)
             self.current_marker.setVisible(False)
+            self._redraw()
             return
         points = np.ascontiguousarray(rows[:, 1:4], dtype=np.float32)
         self.trail.setVisible(len(points) >= 2)
@@ -122,6 +142,7 @@ class PositionView3D(BufferedViewMixin, _GLBase):  # type: ignore[misc, valid-ty
             self.trail.setData(pos=points)
         self.current_marker.setData(pos=points[-1:])
         self.current_marker.setVisible(True)
+        self._redraw()
 
     def set_target(self, x: object, y: float | None = None, z: float | None = None) -> None:
         """Mark the target: `set_target(x, y, z)` or `set_target((x, y, z))` in mm; None hides it.
@@ -132,11 +153,12 @@ class PositionView3D(BufferedViewMixin, _GLBase):  # type: ignore[misc, valid-ty
         if point is None:
             self._target = None
             self.target_marker.setVisible(False)
-            return
-        tx, ty, tz = point
-        self._target = (tx, ty, tz or 0.0)
-        self.target_marker.setData(pos=np.array([self._target], dtype=np.float32))
-        self.target_marker.setVisible(True)
+        else:
+            tx, ty, tz = point
+            self._target = (tx, ty, tz or 0.0)
+            self.target_marker.setData(pos=np.array([self._target], dtype=np.float32))
+            self.target_marker.setVisible(True)
+        self._redraw()
 
     def reset_view(self) -> None:
         """Look at the data (or the whole grid) from above at an angle."""
@@ -147,9 +169,55 @@ class PositionView3D(BufferedViewMixin, _GLBase):  # type: ignore[misc, valid-ty
             extent = float(max(np.max(hi - lo), self.grid_mm / 4))
         else:
             centre, extent = np.zeros(3), self.grid_mm * 0.7
-        self.setCameraPosition(
+        self.scene.setCameraPosition(
             pos=QVector3D(*map(float, centre)), distance=extent * 1.8, elevation=30, azimuth=-60
         )
+        self._redraw()
+
+    # -- drawing -----------------------------------------------------------------------------
+    def _redraw(self) -> None:
+        """Mark the image out of date; it is rendered at the next paint."""
+        self._stale = True
+        self.update()
+
+    def render_scene(self) -> QImage:
+        """Render the scene at the widget's size now, and keep the image."""
+        ratio = self.devicePixelRatioF()
+        self.scene.resize(max(1, self.width()), max(1, self.height()))
+        image = self.scene.grabFramebuffer()
+        image.setDevicePixelRatio(ratio)
+        self._image = image
+        self._stale = False
+        return image
+
+    def grabFramebuffer(self) -> QImage:
+        """The scene as it is now, rendered with OpenGL."""
+        return self.render_scene()
+
+    def paintEvent(self, event: QPaintEvent) -> None:
+        """Paint the rendered scene, rendering it first if it is out of date."""
+        if self._stale or self._image.size() != self.size() * self.devicePixelRatioF():
+            self.render_scene()
+        QPainter(self).drawImage(0, 0, self._image)
+
+    # -- camera: the mouse handlers of pyqtgraph's view, then a new image ----------------------
+    def mousePressEvent(self, event: QMouseEvent) -> None:
+        """Start a rotation (left), pan (middle or Ctrl) or zoom drag."""
+        self.scene.mousePressEvent(event)
+
+    def mouseMoveEvent(self, event: QMouseEvent) -> None:
+        """Rotate, pan or zoom while a button is held."""
+        self.scene.mouseMoveEvent(event)
+        self._redraw()
+
+    def mouseReleaseEvent(self, event: QMouseEvent) -> None:
+        """End the drag."""
+        self.scene.mouseReleaseEvent(event)
+
+    def wheelEvent(self, event: QWheelEvent) -> None:
+        """Zoom."""
+        self.scene.wheelEvent(event)
+        self._redraw()
 
 
 class PositionView3DPlaceholder(QLabel):

@@ -93,13 +93,33 @@ def test_empty_buffer(qtbot) -> None:
     assert len(widget.current_marker.getData()[0]) == 0
 
 
-def test_reset_view_re_enables_auto_range(view: PositionView2D) -> None:
+def test_reset_view_fits_the_data_again_after_a_manual_zoom(view: PositionView2D) -> None:
     view.refresh()
     plot = view.xy_plot.getPlotItem()
+    plot.getViewBox().sigRangeChangedManually.emit([True, True])  # as a mouse zoom does
     plot.setXRange(1000, 2000)
-    assert not plot.getViewBox().autoRangeEnabled()[0]
+    assert not view._following
     view.reset_view()
-    assert all(plot.getViewBox().autoRangeEnabled())
+    assert view._following
+    (x0, x1), (y0, y1) = plot.viewRange()
+    rows = view.buffer.view()
+    assert x0 <= rows[:, 1].min() and rows[:, 1].max() <= x1
+    assert y0 <= rows[:, 2].min() and rows[:, 2].max() <= y1
+
+
+def test_ranges_move_only_when_the_data_leaves_them(view: PositionView2D) -> None:
+    view.refresh()
+    plot = view.xy_plot.getPlotItem()
+    before = plot.viewRange()
+    last = view.buffer.last()
+    assert last is not None
+    view.buffer.append(last[0] + 0.1, last[1] + 0.01, last[2], last[3])  # a tiny step inside
+    view.refresh()
+    assert plot.viewRange() == before
+    view.buffer.append(last[0] + 0.2, last[1] + 500.0, last[2], last[3])  # far outside
+    view.refresh()
+    (x0, x1), _ = plot.viewRange()
+    assert x0 <= last[1] + 500.0 <= x1
 
 
 def test_timer_runs_only_while_shown(view: PositionView2D, qtbot) -> None:
