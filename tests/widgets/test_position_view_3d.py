@@ -123,3 +123,17 @@ def test_real_view_renders(gl_view) -> None:
     assert not image.isNull()
     colours = {image.pixel(x, y) for x in range(0, image.width(), 8) for y in range(0, 240, 8)}
     assert len(colours) > 2  # background, grid, trail: not a blank frame
+
+
+@pytest.mark.gl
+@needs_display
+def test_mouse_drag_and_wheel_move_the_camera(gl_view, qtbot) -> None:
+    from PySide6.QtCore import QPoint, Qt
+
+    azimuth = gl_view.scene.opts["azimuth"]
+    before = gl_view.grabFramebuffer()
+    qtbot.mousePress(gl_view, Qt.MouseButton.LeftButton, pos=QPoint(100, 100))
+    qtbot.mouseMove(gl_view, QPoint(160, 110))
+    qtbot.mouseRelease(gl_view, Qt.MouseButton.LeftButton, pos=QPoint(160, 110))
+    assert gl_view.scene.opts["azimuth"] != azimuth
+    assert gl_view.grabFramebuffer() != before
