@@ -25,7 +25,7 @@ from PySide6.QtWidgets import (
 from app import jobs
 from app.ports import PortWatcher
 from app.settings import DEFAULT_PORT, DEFAULT_PROTOCOL, open_settings, read_number, read_str
-from app.worker import DeviceInfo
+from app.worker import DeviceInfo, SerialWorker
 from app.worker_thread import WorkerThread
 from drivers.events import PositionReport
 from drivers.registry import get_protocol_class, protocol_names
@@ -69,7 +69,7 @@ class MainWindow(QMainWindow):
         self.setObjectName("mainWindow")
         self.setWindowTitle("Motion Panel")
         self.settings = open_settings()
-        self.worker_thread = worker_thread or WorkerThread()
+        self.worker_thread = worker_thread or WorkerThread(self._make_worker())
         self.worker = self.worker_thread.worker
         self.buffer = PositionBuffer()
         self.t0 = time.monotonic()
@@ -80,6 +80,12 @@ class MainWindow(QMainWindow):
         self._restore()
         self._set_controls_enabled(False)
         QApplication.instance().installEventFilter(self)  # type: ignore[union-attr]
+
+    def _make_worker(self) -> SerialWorker:
+        """A worker with the saved polling rates (5-10 Hz while a move is confirmed, 1 s idle)."""
+        moving_hz = min(max(read_number(self.settings, "poll_moving_hz", 10.0), 5.0), 10.0)
+        idle_s = min(max(read_number(self.settings, "poll_idle_s", 1.0), 0.2), 10.0)
+        return SerialWorker(poll_moving_hz=moving_hz, poll_idle_s=idle_s)
 
     # -- layout ------------------------------------------------------------------------------
     def _build(self) -> None:

@@ -159,3 +159,14 @@ def test_ports_appearing_and_disappearing_are_noticed(
     combo = window.connection_bar.port_combo
     texts = " ".join(combo.itemText(i) for i in range(combo.count()))
     assert "/dev/ttyACM0" in texts and "sim://coxiris" in texts
+
+
+def test_polling_rates_come_from_the_settings(qtbot, tmp_path: Path, monkeypatch) -> None:
+    path = tmp_path / "rates.ini"
+    path.write_text("[General]\npoll_moving_hz=5\npoll_idle_s=50\n")
+    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(path))
+    win = MainWindow()
+    qtbot.addWidget(win)
+    assert win.worker.poll_moving_hz == 5.0
+    assert win.worker.poll_idle_s == 10.0  # clamped: idle polling is never slower than 10 s
+    win.close()
