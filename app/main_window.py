@@ -6,7 +6,7 @@ import logging
 import time
 
 from PySide6.QtCore import QEvent, QObject, Qt, QTimer, Signal
-from PySide6.QtGui import QCloseEvent, QKeyEvent
+from PySide6.QtGui import QCloseEvent, QKeyEvent, QKeySequence
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
     QApplication,
@@ -110,11 +110,15 @@ class MainWindow(QMainWindow):
         self.coordinates = CoordinateEntry(self)
         self.speed = SpeedControl(self)
         self.console = RawConsole(self)
-        self._dock("Position", self.readout, Qt.DockWidgetArea.LeftDockWidgetArea)
-        self._dock("Jog", self.jog_panel, Qt.DockWidgetArea.LeftDockWidgetArea)
-        self._dock("Go to", self.coordinates, Qt.DockWidgetArea.LeftDockWidgetArea)
-        self._dock("Speed", self.speed, Qt.DockWidgetArea.LeftDockWidgetArea)
-        self._dock("Console", self.console, Qt.DockWidgetArea.BottomDockWidgetArea)
+        left, bottom = Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
+        docks = [
+            self._dock("Position", self.readout, left),
+            self._dock("Jog", self.jog_panel, left),
+            self._dock("Go to", self.coordinates, left),
+            self._dock("Speed", self.speed, left),
+            self._dock("Console", self.console, bottom),
+        ]
+        self._build_menus(docks)
 
         self.state_label = QLabel("disconnected", self)
         self.state_label.setObjectName("statusConnection")
@@ -124,6 +128,26 @@ class MainWindow(QMainWindow):
         self.statusBar().addPermanentWidget(self.error_label)
         self.resize(1400, 900)
 
+    def _build_menus(self, docks: list[QDockWidget]) -> None:
+        file_menu = self.menuBar().addMenu("&File")
+        export = file_menu.addAction("&Export traffic log…", self.console.export_interactively)
+        export.setShortcut(QKeySequence("Ctrl+E"))
+        export.setToolTip("Save every byte sent and received, with timestamps, to a text file")
+        file_menu.addSeparator()
+        file_menu.addAction("&Quit", QKeySequence.StandardKey.Quit, self.close)
+        view_menu = self.menuBar().addMenu("&View")
+        reset = view_menu.addAction("&Reset views", self.reset_views)
+        reset.setShortcut(QKeySequence("Ctrl+R"))
+        view_menu.addAction("&Clear trail", self.view2d.clear_trail)
+        view_menu.addSeparator()
+        for dock in docks:
+            view_menu.addAction(dock.toggleViewAction())
+
+    def reset_views(self) -> None:
+        """Fit the 2D and 3D views to the trail again."""
+        self.view2d.reset_view()
+        self.view3d.reset_view()  # type: ignore[attr-defined]
+
     def _dock(self, title: str, widget: QWidget, area: Qt.DockWidgetArea) -> QDockWidget:
         dock = QDockWidget(title, self)
         dock.setObjectName(f"{widget.objectName()}Dock")
@@ -131,6 +155,7 @@ class MainWindow(QMainWindow):
         dock.setFeatures(
             QDockWidget.DockWidgetFeature.DockWidgetMovable
             | QDockWidget.DockWidgetFeature.DockWidgetFloatable
+            | QDockWidget.DockWidgetFeature.DockWidgetClosable  # View menu brings it back
         )
         self.addDockWidget(area, dock)
         return dock

@@ -170,3 +170,26 @@ def test_polling_rates_come_from_the_settings(qtbot, tmp_path: Path, monkeypatch
     assert win.worker.poll_moving_hz == 5.0
     assert win.worker.poll_idle_s == 10.0  # clamped: idle polling is never slower than 10 s
     win.close()
+
+
+def test_menus_reset_views_and_toggle_panels(qtbot, window: MainWindow) -> None:
+    titles = [action.text() for action in window.menuBar().actions()]
+    assert titles == ["&File", "&View"]
+    view_menu = window.menuBar().actions()[1].menu()
+    names = [action.text() for action in view_menu.actions()]
+    assert "&Reset views" in names and "Console" in names
+    console_toggle = next(a for a in view_menu.actions() if a.text() == "Console")
+    console_toggle.trigger()
+    assert not window.console.isVisible()
+    console_toggle.trigger()
+    assert window.console.isVisible()
+    window.reset_views()
+
+
+def test_export_from_the_menu(qtbot, window: MainWindow, tmp_path: Path) -> None:
+    _connect(qtbot, window)
+    target = tmp_path / "traffic.txt"
+    window.console.ask_export_path = lambda: str(target)
+    file_menu = window.menuBar().actions()[0].menu()
+    next(a for a in file_menu.actions() if a.text().startswith("&Export")).trigger()
+    assert "TX  GET_ID\\n" in target.read_text()

@@ -13,7 +13,7 @@ from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
 GRID_COLOUR = (60, 60, 60)
-TIME_WINDOW_S = 60.0
+TIME_WINDOWS_S = (10.0, 30.0, 60.0)  # the time plot's span grows in these steps
 FOLLOW_PADDING = 0.25
 MIN_MARGIN_MM = 1.0
 AXIS_COLOURS = {"x": "#e53935", "y": "#43a047", "z": "#1e88e5"}
@@ -71,7 +71,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.time_plot.setToolTip("X, Y and Z against time; dashed lines: target")
         tp = self.time_plot.getPlotItem()
         tp.setTitle("Position against time")
-        tp.setLabel("bottom", f"time (s, 0 = latest sample; last {TIME_WINDOW_S:g} s)")
+        tp.setLabel("bottom", "time (s, 0 = latest sample)")
         tp.setLabel("left", "position (mm)")
         tp.addItem(_grid(), ignoreBounds=True)
         tp.addLegend(offset=(-10, 10))
@@ -150,8 +150,13 @@ class PositionView2D(BufferedViewMixin, QWidget):
         xs, ys = rows[:, 1], rows[:, 2]
         if xs.min() < x0 or xs.max() > x1 or ys.min() < y0 or ys.max() > y1:
             xy.setRange(xRange=_padded(xs), yRange=_padded(ys), padding=0)
-        recent = rows[t >= -TIME_WINDOW_S, 1:4]
+        span = -float(t[0])
+        window = next((w for w in TIME_WINDOWS_S if w >= span), TIME_WINDOWS_S[-1])
         tp = self.time_plot.getPlotItem()
+        if window != self._time_window:
+            self._time_window = window
+            tp.setXRange(-window, 0, padding=0.02)
+        recent = rows[t >= -window, 1:4]
         low, high = tp.viewRange()[1]
         if recent.min() < low or recent.max() > high:
             tp.setYRange(*_padded(recent.ravel()), padding=0)
@@ -180,19 +185,19 @@ class PositionView2D(BufferedViewMixin, QWidget):
     def reset_view(self) -> None:
         """Zoom both plots to fit their data, following new data again.
 
-        The time axis keeps a fixed window: a range that moved every frame made pyqtgraph
-        rebuild the axis and grid pictures every frame (most of the GUI thread's time).
+        The time axis shows the last 10, 30 or 60 s: a range that moved every frame made
+        pyqtgraph rebuild the axis and grid pictures every frame (most of the GUI thread's time).
         """
         self._following = True
+        self._time_window = 0.0
         for plot in (self.xy_plot, self.time_plot):
             plot.getPlotItem().disableAutoRange()
-        self.time_plot.getPlotItem().setXRange(-TIME_WINDOW_S, 0, padding=0.02)
         rows = self.buffer.view()
         if len(rows):
             self._follow(rows, rows[:, 0] - rows[-1, 0])
         else:
             self.xy_plot.getPlotItem().setRange(xRange=(-1, 1), yRange=(-1, 1), padding=0)
-            self.time_plot.getPlotItem().setYRange(-1, 1, padding=0)
+            self.time_plot.getPlotItem().setRange(xRange=(-TIME_WINDOWS_S[0], 0), yRange=(-1, 1))
 
     def _stop_following(self) -> None:
         """The user zoomed or panned: leave the ranges alone until Reset view."""

@@ -99,7 +99,7 @@ class RawConsole(QWidget):
         export_button = QPushButton("Export…")
         export_button.setObjectName("consoleExport")
         export_button.setToolTip("Save the whole retained log (not only what is shown) as text")
-        export_button.clicked.connect(self._export_clicked)
+        export_button.clicked.connect(self.export_interactively)
         clear_button = QPushButton("Clear")
         clear_button.setObjectName("consoleClear")
         clear_button.setToolTip("Forget the log")
@@ -297,7 +297,8 @@ class RawConsole(QWidget):
         Path(path).write_text("".join(line + "\n" for line in lines), encoding="utf-8")
         return len(lines)
 
-    def _export_clicked(self) -> None:
+    def export_interactively(self) -> None:
+        """Ask for a file and export the log to it, saying how it went."""
         path = self.ask_export_path()
         if not path:
             return
