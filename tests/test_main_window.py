@@ -193,3 +193,20 @@ def test_export_from_the_menu(qtbot, window: MainWindow, tmp_path: Path) -> None
     file_menu = window.menuBar().actions()[0].menu()
     next(a for a in file_menu.actions() if a.text().startswith("&Export")).trigger()
     assert "TX  GET_ID\\n" in target.read_text()
+
+
+def test_window_adapts_to_a_two_axis_commanded_only_protocol(qtbot, window: MainWindow) -> None:
+    from app.worker import DeviceInfo
+    from drivers.capabilities import Capabilities, Completion
+
+    caps = Capabilities(
+        axes=("x", "y"),
+        position_feedback=False,
+        completion=Completion.ESTIMATE,
+        speed_range=(1.0, 50.0),
+    )
+    window._on_device_ready(DeviceInfo("sim://other", "other", "test device", caps))
+    assert window.findChild(QPushButton, "jogXPlus").isEnabled()
+    assert not window.findChild(QPushButton, "jogZPlus").isEnabled()
+    assert not window.readout.is_measured()
+    assert window.speed.speed_range() == (1.0, 50.0)
