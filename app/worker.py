@@ -170,7 +170,10 @@ class SerialWorker(QObject):
                 if time.monotonic() >= self._next_poll:
                     self._motion.position()
                     self._next_poll = time.monotonic() + self.poll_idle_s
-        except (PortError, Aborted) as exc:
+        except Aborted:
+            self.cancel_pending()
+            self.close_port()  # the user disconnected (or the window closed) mid-command
+        except PortError as exc:
             self._fail_connection(exc)
         except MotionError as exc:
             self.state_changed.emit("connected", f"device: {exc}")
@@ -182,8 +185,11 @@ class SerialWorker(QObject):
         self.busy_changed.emit(True)
         try:
             result = self._dispatch(motion, job)
-        except (PortError, Aborted):
+        except PortError:
             self.job_failed.emit(job, "the connection was lost")
+            raise
+        except Aborted:
+            self.job_failed.emit(job, "abandoned: disconnected while it was under way")
             raise
         except MotionError as exc:
             self.job_failed.emit(job, str(exc))

@@ -93,3 +93,19 @@ def test_open_failure_is_reported(qtbot, worker_thread: WorkerThread) -> None:
     worker_thread.open("/dev/does-not-exist", "coxiris", 115200)
     qtbot.waitUntil(lambda: any(s == "error" for s, _ in states), timeout=5000)
     assert "cannot open /dev/does-not-exist" in states[-1][1]
+
+
+def test_disconnect_mid_move_is_a_disconnection_not_an_error(
+    qtbot, worker_thread: WorkerThread
+) -> None:
+    _connect(qtbot, worker_thread, "sim://coxiris?speed=1")
+    worker = worker_thread.worker
+    states: list[str] = []
+    worker.state_changed.connect(lambda s, d: states.append(s))
+    with qtbot.waitSignal(worker.busy_changed, timeout=5000):
+        worker.submit(jobs.MoveToJob(100, 0, 0))
+    with qtbot.waitSignal(worker.job_failed, timeout=5000) as failed:
+        worker_thread.close()
+    assert "abandoned" in failed.args[1]
+    qtbot.waitUntil(lambda: "disconnected" in states, timeout=5000)
+    assert "error" not in states
