@@ -47,10 +47,10 @@ def test_non_blocking_device_reports_positions_along_the_way(
 ) -> None:
     link, _ = sim_link
     client = Client(link, CoxirisProtocol())
-    client.execute(cmd.MoveTo(30, 0, 0))
+    client.execute(cmd.MoveTo(300, 0, 0))  # 3 s at 100 mm/s
     mid = client.execute(cmd.GetPosition()).value
     assert isinstance(mid, PositionReport)
-    assert 0.0 <= mid.x < 30.0
+    assert 0.0 <= mid.x < 300.0
 
 
 def test_speed_comes_back_rounded(motion: Motion) -> None:
