@@ -18,7 +18,7 @@ from drivers.motion import Motion
 from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
-from drivers.traffic import TrafficLogWriter
+from drivers.traffic import RX, Traffic, TrafficLogWriter
 from drivers.transport import open_link
 
 log = logging.getLogger("motionctl")
@@ -130,9 +130,20 @@ def run_command(motion: Motion, command: str, args: list[str]) -> dict[str, Any]
     if command == "check":
         motion.check()
         return {"errors": []}
-    reply = motion.raw(args[0].encode("utf-8"))
-    lines = [f"{type(e).__name__}: {e}" for e in reply.events]
-    return {"reply": lines}
+    received: list[bytes] = []
+    link = motion.client.link
+
+    def keep(record: Traffic) -> None:
+        if record.direction == RX:
+            received.append(record.data)
+
+    link.listeners.append(keep)
+    try:
+        motion.raw(args[0].encode("utf-8"))
+    finally:
+        link.listeners.remove(keep)
+    text = b"".join(received).decode("ascii", errors="backslashreplace")
+    return {"reply": text.splitlines()}
 
 
 def _validate_offline(command: str, args: list[str], protocol: Protocol) -> None:

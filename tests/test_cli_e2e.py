@@ -94,7 +94,10 @@ def test_every_command(sim: SimProcess) -> None:
     assert json.loads(ok("--json", "limits")) == {"min_speed": 1.0, "max_speed": 100.0}
     assert ok("check") == "ok"
     assert json.loads(ok("--json", "check")) == {"errors": []}
-    assert "CX25F7TK9P" in ok("raw", "get_id")
+    assert ok("raw", "get_id") == "ACK GET_ID\nDONE GET_ID: CX25F7TK9P"
+    assert json.loads(ok("--json", "raw", "GET_SPEED")) == {
+        "reply": ["ACK GET_SPEED", "DONE GET_SPEED: 13"]
+    }
 
 
 @pytest.mark.sim_args("--speed", "50", "--non-blocking")
