@@ -75,6 +75,7 @@ class MainWindow(QMainWindow):
         self.t0 = time.monotonic()
         self.connected = False
         self.info: DeviceInfo | None = None
+        self._last_connection: tuple[str, str, int] | None = None
         self._build()
         self._wire()
         self._restore()
@@ -135,6 +136,10 @@ class MainWindow(QMainWindow):
         export.setToolTip("Save every byte sent and received, with timestamps, to a text file")
         file_menu.addSeparator()
         file_menu.addAction("&Quit", QKeySequence.StandardKey.Quit, self.close)
+        motion_menu = self.menuBar().addMenu("&Motion")
+        stop = motion_menu.addAction("&Stop (drop queued commands)", self.stop)
+        stop.setShortcut(QKeySequence(Qt.Key.Key_Escape))
+        stop.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
         view_menu = self.menuBar().addMenu("&View")
         reset = view_menu.addAction("&Reset views", self.reset_views)
         reset.setShortcut(QKeySequence("Ctrl+R"))
@@ -179,7 +184,7 @@ class MainWindow(QMainWindow):
         bar.protocol_changed.connect(self._on_protocol_changed)
         self.port_watcher = PortWatcher(self)
         self.port_watcher.ports_changed.connect(self._on_ports)
-        self.port_watcher.port_added.connect(lambda p: self._notice(f"port {p} appeared"))
+        self.port_watcher.port_added.connect(self._on_port_added)
         self.port_watcher.port_removed.connect(lambda p: self._notice(f"port {p} disappeared"))
         bar.refresh_requested.connect(self.port_watcher.refresh)
 
@@ -197,11 +202,13 @@ class MainWindow(QMainWindow):
         self.settings.setValue("port", port)
         self.settings.setValue("protocol", protocol)
         self.settings.setValue("baud", baud)
+        self._last_connection = (port, protocol, baud)
         self.console.append_note(f"connecting to {port} ({protocol}, {baud} baud)")
         self.worker_thread.open(port, protocol, baud)
 
     def disconnect_device(self) -> None:
-        """Ask the worker to close the port."""
+        """Ask the worker to close the port (and do not reconnect by itself)."""
+        self._last_connection = None
         dropped = self.worker.cancel_pending()
         self._report_dropped(dropped)
         self.worker_thread.close()
@@ -231,13 +238,21 @@ class MainWindow(QMainWindow):
         self.speed.setEnabled(caps.speed)
         if caps.speed_range is not None:
             self.speed.set_range(*caps.speed_range)
-        QTimer.singleShot(100, self.settled.emit)
+        QTimer.singleShot(100, self, self.settled.emit)  # cancelled if the window goes first
 
     def _on_protocol_changed(self, name: str) -> None:
         try:
             self.connection_bar.set_baud(get_protocol_class(name).capabilities.default_baud)
         except LookupError as exc:
             self.statusBar().showMessage(str(exc), 5000)
+
+    def _on_port_added(self, port: str) -> None:
+        """A port appeared; if it is the one that was lost, connect again (position re-read)."""
+        self._notice(f"port {port} appeared")
+        last = self._last_connection
+        if self.connection_bar.state() == "error" and last is not None and last[0] == port:
+            self._notice(f"reconnecting to {port}")
+            self.connect_device(*last)
 
     def _notice(self, text: str) -> None:
         self.statusBar().showMessage(text, 8000)

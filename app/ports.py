@@ -35,7 +35,7 @@ class PortWatcher(QObject):
         self._timer.setInterval(REFRESH_MS)
         self._timer.timeout.connect(self._check)
         self._timer.start()
-        QTimer.singleShot(0, self.refresh)
+        QTimer.singleShot(0, self, self.refresh)
 
     def refresh(self) -> None:
         """List the ports now and always emit the list."""

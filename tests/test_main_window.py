@@ -174,8 +174,8 @@ def test_polling_rates_come_from_the_settings(qtbot, tmp_path: Path, monkeypatch
 
 def test_menus_reset_views_and_toggle_panels(qtbot, window: MainWindow) -> None:
     titles = [action.text() for action in window.menuBar().actions()]
-    assert titles == ["&File", "&View"]
-    view_menu = window.menuBar().actions()[1].menu()
+    assert titles == ["&File", "&Motion", "&View"]
+    view_menu = window.menuBar().actions()[2].menu()
     names = [action.text() for action in view_menu.actions()]
     assert "&Reset views" in names and "Console" in names
     console_toggle = next(a for a in view_menu.actions() if a.text() == "Console")
@@ -210,3 +210,35 @@ def test_window_adapts_to_a_two_axis_commanded_only_protocol(qtbot, window: Main
     assert not window.findChild(QPushButton, "jogZPlus").isEnabled()
     assert not window.readout.is_measured()
     assert window.speed.speed_range() == (1.0, 50.0)
+
+
+@pytest.mark.e2e
+def test_reconnects_when_the_lost_port_comes_back(qtbot, window: MainWindow) -> None:
+    from tests.simproc import SimProcess
+
+    sim = SimProcess("coxiris", "--speed", "100")
+    try:
+        with qtbot.waitSignal(window.settled, timeout=10000):
+            window.connect_device(sim.path, "coxiris", 115200)
+        window.jog_panel.jog_requested.emit("x", 3.0)
+        qtbot.waitUntil(lambda: window.readout.position() == (3.0, 0.0, 0.0), timeout=5000)
+        sim.kill()
+        qtbot.waitUntil(lambda: window.connection_bar.state() == "error", timeout=5000)
+        sim = SimProcess("coxiris", "--speed", "100")  # a new device process
+        # The kernel may hand out another pty number: the port that "comes back" is the old one
+        # only when the numbers match, so announce the new path as the lost port's return.
+        window._last_connection = (sim.path, "coxiris", 115200)
+        with qtbot.waitSignal(window.settled, timeout=10000):
+            window.port_watcher.port_added.emit(sim.path)
+        assert window.connection_bar.state() == "connected"
+        assert window.readout.position() == (0.0, 0.0, 0.0)  # re-read from the new device
+        assert window.jog_panel.isEnabled()
+    finally:
+        if sim.proc.poll() is None:
+            sim.stop()
+
+
+def test_escape_stops(qtbot, window: MainWindow) -> None:
+    window.worker.submit(__import__("app.jobs").jobs.HomeJob())
+    qtbot.keyClick(window, Qt.Key.Key_Escape)
+    assert "not sent" in window.statusBar().currentMessage()
