@@ -9,8 +9,6 @@ from typing import TextIO
 TX = "tx"
 RX = "rx"
 
-_ESCAPES = {0x0D: "\\r", 0x0A: "\\n", 0x09: "\\t", 0x5C: "\\\\"}
-
 
 @dataclass(frozen=True)
 class Traffic:
@@ -20,19 +18,6 @@ class Traffic:
     data: bytes
     time: float
     wall: float = field(default_factory=time.time)
-
-
-def escape(data: bytes) -> str:
-    """Printable ASCII as is; CR, LF, tab and backslash escaped; other bytes as \\xNN."""
-    out = []
-    for byte in data:
-        if byte in _ESCAPES:
-            out.append(_ESCAPES[byte])
-        elif 0x20 <= byte < 0x7F:
-            out.append(chr(byte))
-        else:
-            out.append(f"\\x{byte:02x}")
-    return "".join(out)
 
 
 def hexdump_lines(record: Traffic, start: float, width: int = 16) -> list[str]:
@@ -55,7 +40,7 @@ class TrafficLogWriter:
         self.start = time.monotonic() if start is None else start
 
     def __call__(self, record: Traffic) -> None:
-        """Append one record (hexdump lines and the escaped text)."""
+        """Append one record as hexdump lines with their text column."""
         for line in hexdump_lines(record, self.start):
             self.stream.write(line + "\n")
         self.stream.flush()

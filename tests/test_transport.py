@@ -11,7 +11,7 @@ from drivers import commands as cmd
 from drivers.client import Client
 from drivers.errors import DeviceTimeout, PortError
 from drivers.protocols.coxiris import CoxirisProtocol
-from drivers.traffic import Traffic, TrafficLogWriter, escape, hexdump_lines
+from drivers.traffic import Traffic, TrafficLogWriter, hexdump_lines
 from drivers.transport import open_link
 from drivers.urlhandler.protocol_sim import parse_sim_url
 
@@ -75,8 +75,7 @@ def test_sim_url_options() -> None:
         parse_sim_url("sim://coxiris?colour=red")
 
 
-def test_escape_and_hexdump() -> None:
-    assert escape(b"OK\r\n\x02\\") == "OK\\r\\n\\x02\\\\"
+def test_hexdump() -> None:
     record = Traffic("tx", b"HELLO", 3.001)
     assert hexdump_lines(record, 0.0) == ["000003.001 TX   48 45 4C 4C 4F" + " " * 33 + "   HELLO"]
 
