@@ -1,4 +1,4 @@
-"""Traffic records from the tap, and their text forms (console, log file)."""
+"""Traffic records from the tap, and their hexdump form for log files."""
 
 from __future__ import annotations
 
