@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 from typing import Any
 
+from app.settings import open_settings, read_travel
 from drivers import commands as cmd
 from drivers.client import Client
 from drivers.errors import BadInput, CommunicationError, DeviceError, MotionError, UnknownProtocol
@@ -20,6 +21,7 @@ from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
 from drivers.traffic import RX, Traffic, TrafficLogWriter
 from drivers.transport import open_link
+from drivers.travel import TravelLimits, check_resolution, parse_travel
 
 log = logging.getLogger("motionctl")
 
@@ -65,6 +67,17 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument("--json", action="store_true", help="print one JSON object on stdout")
     parser.add_argument("--log", metavar="FILE", help="append a hexdump of all traffic to FILE")
+    parser.add_argument(
+        "--travel",
+        metavar="X0:X1,Y0:Y1,Z0:Z1",
+        help="travel limits in mm for moves, or 'none' (default: those saved in the panel "
+        "for this port, else the protocol's)",
+    )
+    parser.add_argument(
+        "--clamp",
+        action="store_true",
+        help="a move beyond the travel limits goes to their edge instead of being refused",
+    )
     parser.add_argument("-v", "--verbose", action="store_true", help="log progress on stderr")
     parser.add_argument("command", choices=COMMANDS, metavar="COMMAND", help=" | ".join(COMMANDS))
     parser.add_argument("args", nargs=argparse.REMAINDER, metavar="ARGS")
@@ -146,78 +159,133 @@ def run_command(motion: Motion, command: str, args: list[str]) -> dict[str, Any]
     return {"reply": text.splitlines()}
 
 
-def _validate_offline(command: str, args: list[str], protocol: Protocol) -> None:
+def _validate_offline(
+    command: str, args: list[str], protocol: Protocol, travel: TravelLimits | None
+) -> None:
     """Refuse what can be refused before the port is even opened."""
     _check_arity(command, args)
+    resolution = protocol.capabilities.resolution
     if command == "move":
-        protocol.encode(cmd.MoveTo(*_numbers(args, ("x", "y", "z"))))
+        x, y, z = _numbers(args, ("x", "y", "z"))
+        protocol.encode(cmd.MoveTo(x, y, z))
+        check_resolution((x, y, z), ("x", "y", "z"), resolution)
+        if travel is not None:
+            travel.apply((x, y, z), f"move to ({x:g}, {y:g}, {z:g}) mm")
     elif command == "jog":
-        protocol.encode(cmd.MoveBy(*_numbers(args, ("dx", "dy", "dz"))))
+        dx, dy, dz = _numbers(args, ("dx", "dy", "dz"))
+        protocol.encode(cmd.MoveBy(dx, dy, dz))
+        check_resolution((dx, dy, dz), ("dx", "dy", "dz"), resolution)
     elif command == "speed" and args:
         protocol.encode(cmd.SetSpeed(parse_number(args[0], "speed")))
     elif command == "raw":
         protocol.encode(cmd.Raw(args[0].encode("utf-8")))
 
 
+def _travel(options: argparse.Namespace) -> TravelLimits | None:
+    """The travel limits: --travel, else those the panel saved for this port."""
+    if options.travel is not None:
+        limits = parse_travel(options.travel)
+    else:
+        limits = read_travel(open_settings(), options.protocol, options.port)
+    if limits is not None and options.clamp:
+        limits = TravelLimits(limits.box, clamp=True)
+    return limits
+
+
+def _join_travel(arguments: list[str]) -> list[str]:
+    """`--travel -50:50,...` as `--travel=-50:50,...` (argparse reads a leading - as an option)."""
+    joined: list[str] = []
+    index = 0
+    while index < len(arguments):
+        if arguments[index] == "--travel" and index + 1 < len(arguments):
+            joined.append(f"--travel={arguments[index + 1]}")
+            index += 2
+        else:
+            joined.append(arguments[index])
+            index += 1
+    return joined
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of motionctl; returns the exit status."""
+    arguments = _join_travel(list(sys.argv[1:] if argv is None else argv))
     parser = build_parser()
     try:
-        options = parser.parse_args(argv)
+        options = parser.parse_args(arguments)
     except SystemExit as exc:
+        if exc.code != 0 and "--json" in arguments:
+            print(json.dumps({"error": "invalid command line (see the usage above)", "exit": 2}))
         return EXIT_OK if exc.code == 0 else EXIT_BAD_INPUT
     logging.basicConfig(
         level=logging.INFO if options.verbose else logging.WARNING,
         format="motionctl: %(message)s",
         stream=sys.stderr,
     )
+    report = _Reporter(options.json)
     try:
         protocol = create_protocol(options.protocol)
-        _validate_offline(options.command, options.args, protocol)
+        travel = _travel(options)
+        _validate_offline(options.command, options.args, protocol, travel)
         if options.timeout <= 0:
             raise UsageError("--timeout must be positive")
+        if options.baud is not None and options.baud <= 0:
+            raise UsageError("--baud must be a positive number of bits per second")
     except (UsageError, BadInput, UnknownProtocol) as exc:
-        print(f"motionctl: {exc}", file=sys.stderr)
-        return EXIT_BAD_INPUT
+        return report.fail(exc, EXIT_BAD_INPUT)
     baud = options.baud or protocol.capabilities.default_baud
-    if options.baud is not None and options.baud <= 0:
-        return _fail(UsageError("--baud must be a positive number of bits per second"), 2)
     with ExitStack() as stack:
         try:
             if options.log:
                 stream = stack.enter_context(open(options.log, "a", encoding="utf-8"))
         except OSError as exc:
-            return _fail(UsageError(f"cannot write the log {options.log}: {exc}"), EXIT_BAD_INPUT)
+            return report.fail(f"cannot write the log {options.log}: {exc}", EXIT_BAD_INPUT)
         try:
             link = open_link(options.port, baud)
             stack.callback(link.close)
             if options.log:
                 link.listeners.append(TrafficLogWriter(stream))
             motion = Motion(Client(link, protocol, timeout=options.timeout))
+            motion.travel = travel
+            motion.notice_listeners.append(report.notice)
             result = run_command(motion, options.command, options.args)
         except BadInput as exc:
-            return _fail(exc, EXIT_BAD_INPUT)
+            return report.fail(exc, EXIT_BAD_INPUT)
         except DeviceError as exc:
-            return _fail(exc, EXIT_DEVICE_ERROR)
+            return report.fail(exc, EXIT_DEVICE_ERROR)
         except (CommunicationError, OSError) as exc:
-            return _fail(exc, EXIT_NO_DEVICE)
+            return report.fail(exc, EXIT_NO_DEVICE)
         except MotionError as exc:
-            return _fail(exc, EXIT_DEVICE_ERROR)
+            return report.fail(exc, EXIT_DEVICE_ERROR)
         except KeyboardInterrupt:
-            return _fail(
-                UsageError("interrupted; the device may still be moving"), EXIT_INTERRUPTED
-            )
+            return report.fail("interrupted; the device may still be moving", EXIT_INTERRUPTED)
     if options.json:
+        if report.notices:
+            result["notices"] = report.notices
         print(json.dumps(result))
     else:
         print(_text(result))
     return EXIT_OK
 
 
-def _fail(exc: Exception, status: int) -> int:
-    message = str(exc).replace("\n", " ")
-    print(f"motionctl: {message}", file=sys.stderr)
-    return status
+class _Reporter:
+    """Tells the user about failures and notices: on stderr, and as JSON on stdout with --json."""
+
+    def __init__(self, as_json: bool) -> None:
+        self.as_json = as_json
+        self.notices: list[str] = []
+
+    def notice(self, text: str) -> None:
+        """Something the user should know that is not a failure (e.g. a clamped move)."""
+        self.notices.append(text)
+        print(f"motionctl: {text}", file=sys.stderr)
+
+    def fail(self, problem: Exception | str, status: int) -> int:
+        """Report a failure; returns the exit status."""
+        message = str(problem).replace("\n", " ")
+        print(f"motionctl: {message}", file=sys.stderr)
+        if self.as_json:
+            print(json.dumps({"error": message, "exit": status}))
+        return status
 
 
 if __name__ == "__main__":

@@ -3,8 +3,13 @@
 from __future__ import annotations
 
 import os
+from urllib.parse import quote, urlsplit
 
 from PySide6.QtCore import QSettings
+
+from drivers.errors import BadInput
+from drivers.registry import get_protocol_class
+from drivers.travel import TravelLimits, parse_travel
 
 ORGANISATION = "MotionPanel"
 APPLICATION = "motionpanel"
@@ -32,3 +37,41 @@ def read_number(settings: QSettings, key: str, default: float) -> float:
         return float(settings.value(key, default))  # type: ignore[arg-type]
     except (TypeError, ValueError):
         return default
+
+
+def device_key(protocol: str, port: str) -> str:
+    """The settings group of one device: its protocol and port (a URL's options left out)."""
+    parts = urlsplit(port)
+    where = f"{parts.scheme}://{parts.netloc}{parts.path}" if parts.scheme else port
+    return f"devices/{protocol}/{quote(where, safe='')}"
+
+
+def read_travel(settings: QSettings, protocol: str, port: str) -> TravelLimits | None:
+    """The travel limits saved for a device, else the protocol's own (None: none known)."""
+    key = device_key(protocol, port)
+    text = settings.value(f"{key}/travel")
+    if isinstance(text, str):
+        try:
+            limits = parse_travel(text)
+        except BadInput:
+            limits = None
+        clamp = str(settings.value(f"{key}/travel_clamp", "false")).lower() == "true"
+        return TravelLimits(limits.box, clamp) if limits is not None else None
+    try:
+        box = get_protocol_class(protocol).capabilities.travel
+    except LookupError:
+        return None
+    return TravelLimits(box) if box is not None else None
+
+
+def write_travel(
+    settings: QSettings, protocol: str, port: str, limits: TravelLimits | None
+) -> None:
+    """Save a device's travel limits (None: explicitly none)."""
+    key = device_key(protocol, port)
+    if limits is None:
+        settings.setValue(f"{key}/travel", "none")
+        return
+    text = ",".join(f"{lo:g}:{hi:g}" for lo, hi in limits.box)
+    settings.setValue(f"{key}/travel", text)
+    settings.setValue(f"{key}/travel_clamp", "true" if limits.clamp else "false")

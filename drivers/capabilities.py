@@ -35,6 +35,10 @@ class Capabilities:
     position_feedback: bool = True  # False: positions are commanded only
     completion: Completion = Completion.REPLY
     parameters: bool = False
-    stop: bool = False
+    stop: bool = False  # True: Stop halts a move under way; False: Stop only drops the queue
+    resolution: float | None = None  # the finest coordinate step the device represents (mm)
+    travel: tuple[tuple[float, float], tuple[float, float], tuple[float, float]] | None = None
+    """The travel box in mm where the protocol knows it (None: unknown, set by the user)."""
+    busy_silent: bool = False  # the device answers nothing while a blocking move runs
     raw_text: bool = True  # a console send line takes text (True) or hex (False) by default
     notes: tuple[str, ...] = field(default_factory=tuple)

@@ -70,13 +70,21 @@ class Client:
         self.link.write(data)
         self._last_reply = self.clock()
 
-    def send_raw(self, data: bytes) -> None:
-        """Write console bytes as they are (after the protocol's check); replies come unasked."""
+    def send_raw(self, data: bytes) -> Reply | None:
+        """Write console bytes as they are (after the protocol's check).
+
+        Where the protocol can follow them as one command, wait for its reply like `execute`
+        (a device error is raised); otherwise return None at once and replies come unasked.
+        """
         self.protocol.check_raw(data)
+        exchange = self.protocol.raw_exchange(data)
         self.poll()
         self._pace()
         self.link.write(data)
+        if exchange is not None:
+            self._await(exchange, exchange.timeout or self.timeout, 0.0)
         self._last_reply = self.clock()
+        return exchange.result() if exchange is not None else None
 
     def poll(self) -> list[Event]:
         """Read and decode whatever has arrived unasked (debug lines, late replies)."""
@@ -126,11 +134,16 @@ class Client:
     def _timeout_message(
         self, exchange: Exchange, silence: float, extra: float, stray: list[Event]
     ) -> str:
-        name = type(exchange.command).__name__
+        name = self.protocol.command_name(exchange.command)
         what = "did not finish its reply" if exchange.events else "did not answer"
         message = f"the device {what} to {name} within {silence + extra:.1f} s"
         if stray:
             message += f"; it sent {len(stray)} unexpected frame(s), the last: {stray[-1]}"
+        if self.protocol.capabilities.busy_silent:
+            message += (
+                f" (it may still be moving: {self.protocol.name.upper()} answers nothing "
+                "until a blocking move has ended; try again once it has stopped)"
+            )
         return message
 
     def _read_events(self, wait: bool = True) -> list[Event]:

@@ -16,6 +16,9 @@ class Ack(Event):
 
     command: str
 
+    def __str__(self) -> str:
+        return f"ACK {self.command}"
+
 
 @dataclass(frozen=True)
 class Done(Event):
@@ -24,6 +27,9 @@ class Done(Event):
     command: str
     data: str | None = None
 
+    def __str__(self) -> str:
+        return f"DONE {self.command}" + (f": {self.data}" if self.data is not None else "")
+
 
 @dataclass(frozen=True)
 class ErrorReport(Event):
@@ -31,6 +37,9 @@ class ErrorReport(Event):
 
     message: str
     code: str | None = None
+
+    def __str__(self) -> str:
+        return f"error {self.code}: {self.message}" if self.code else f"error: {self.message}"
 
 
 @dataclass(frozen=True)
@@ -42,6 +51,10 @@ class PositionReport(Event):
     z: float
     measured: bool = True
 
+    def __str__(self) -> str:
+        kind = "" if self.measured else " (commanded)"
+        return f"position ({self.x:g}, {self.y:g}, {self.z:g}) mm{kind}"
+
 
 @dataclass(frozen=True)
 class Feedback(Event):
@@ -50,12 +63,18 @@ class Feedback(Event):
     code: str
     value: bytes = b""
 
+    def __str__(self) -> str:
+        return f"feedback {self.code}" + (f" {self.value.hex(' ').upper()}" if self.value else "")
+
 
 @dataclass(frozen=True)
 class TextLine(Event):
     """A line that is not part of the protocol's grammar: help text, debug output, echo."""
 
     text: str
+
+    def __str__(self) -> str:
+        return f"the line {self.text!r}"
 
 
 @dataclass(frozen=True)
@@ -64,3 +83,6 @@ class Undecodable(Event):
 
     data: bytes
     reason: str
+
+    def __str__(self) -> str:
+        return f"an unreadable frame ({self.reason}): {self.data.hex(' ').upper()}"

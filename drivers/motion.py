@@ -6,6 +6,7 @@ import logging
 import math
 import time
 from collections.abc import Callable
+from dataclasses import dataclass
 
 from drivers import commands as cmd
 from drivers.capabilities import Completion
@@ -13,12 +14,32 @@ from drivers.client import Client
 from drivers.errors import Aborted, BadInput, DeviceError, DeviceTimeout
 from drivers.events import PositionReport
 from drivers.protocols.base import Reply
+from drivers.travel import Point, TravelLimits, check_resolution
 
 log = logging.getLogger(__name__)
 
 POSITION_TOLERANCE = 0.011  # positions are printed with two decimals from 32-bit floats
 POLL_INTERVAL = 0.1  # seconds between position polls while waiting for a move to end
 ESTIMATE_MARGIN = 1.5  # a move may take this much longer than distance / speed
+
+
+@dataclass(frozen=True)
+class MoveStart:
+    """A move has been sent: where from, where to, how fast, and when (time.monotonic())."""
+
+    start: Point
+    target: Point
+    speed: float
+    started: float
+    duration: float
+
+    def estimate(self, now: float) -> Point:
+        """Where the stage should be at `now`, moving in a straight line at `speed`."""
+        if self.duration <= 0 or now >= self.started + self.duration:
+            return self.target
+        f = max(0.0, (now - self.started) / self.duration)
+        x, y, z = (a + (b - a) * f for a, b in zip(self.start, self.target, strict=True))
+        return (x, y, z)
 
 
 class Motion:
@@ -31,6 +52,11 @@ class Motion:
         self.poll_interval = POLL_INTERVAL
         self.wait = wait or client.abort.wait
         """Waits the given seconds; returns True when the wait was aborted."""
+        self.travel: TravelLimits | None = None
+        """Where moves may go; None: anywhere the device accepts."""
+        self.move_listeners: list[Callable[[MoveStart], None]] = []
+        self.notice_listeners: list[Callable[[str], None]] = []
+        """Told what the user should know, e.g. that a move was clamped to the travel limits."""
         self._speed: float | None = None
         self._limits: tuple[float, float] | None = None
         self.last_position: PositionReport | None = None
@@ -51,7 +77,7 @@ class Motion:
             return self.last_position
         value = self.client.execute(cmd.GetPosition()).value
         if not isinstance(value, PositionReport):
-            raise DeviceError(f"the device did not report a position ({value!r})")
+            raise DeviceError(f"the device did not report a position (it answered {value})")
         self._set_position(value)
         return value
 
@@ -103,17 +129,36 @@ class Motion:
 
     def move_to(self, x: float, y: float, z: float = 0.0) -> PositionReport:
         """Absolute move; returns the position once the move has ended."""
-        return self._move(cmd.MoveTo(x, y, z), lambda here: (x, y, z))
+        check_resolution((x, y, z), ("x", "y", "z"), self.capabilities.resolution)
+        return self._move(
+            cmd.MoveTo(x, y, z),
+            lambda here: (x, y, z),
+            lambda here, t: cmd.MoveTo(*t),
+            f"move to ({x:g}, {y:g}, {z:g}) mm",
+        )
 
     def move_by(self, dx: float, dy: float, dz: float = 0.0) -> PositionReport:
         """Relative move; returns the position once the move has ended."""
+        check_resolution((dx, dy, dz), ("dx", "dy", "dz"), self.capabilities.resolution)
         return self._move(
-            cmd.MoveBy(dx, dy, dz), lambda here: (here.x + dx, here.y + dy, here.z + dz)
+            cmd.MoveBy(dx, dy, dz),
+            lambda here: (here.x + dx, here.y + dy, here.z + dz),
+            lambda here, t: cmd.MoveBy(*self._deltas(here, t)),
+            f"jog by ({dx:g}, {dy:g}, {dz:g}) mm",
         )
 
     def home(self) -> PositionReport:
         """Go to (0, 0, 0); returns the position once there."""
-        return self._move(cmd.Home(), lambda here: (0.0, 0.0, 0.0))
+        return self._move(cmd.Home(), lambda here: (0.0, 0.0, 0.0), None, "go home")
+
+    def _deltas(self, here: PositionReport, target: Point) -> Point:
+        """The distances from `here` to `target`, on the device's resolution."""
+        step = self.capabilities.resolution or 1e-9
+        dx, dy, dz = (
+            round((t - h) / step) * step
+            for t, h in zip(target, (here.x, here.y, here.z), strict=True)
+        )
+        return (dx, dy, dz)
 
     def set_home(self) -> None:
         """Make the current position the origin."""
@@ -136,15 +181,30 @@ class Motion:
     def _move(
         self,
         command: cmd.Command,
-        target_of: Callable[[PositionReport], tuple[float, float, float]],
+        target_of: Callable[[PositionReport], Point],
+        rebuild: Callable[[PositionReport, Point], cmd.Command] | None,
+        what: str,
     ) -> PositionReport:
         self.client.protocol.encode(command)  # refuse bad input before any query is sent
         here = self.position()
         target = target_of(here)
+        if self.travel is not None:
+            limited, note = self.travel.apply(target, what)
+            if note is not None:
+                if rebuild is None:
+                    raise BadInput(f"{what} refused: home is outside the travel limits")
+                target, command = limited, rebuild(here, limited)
+                self.client.protocol.encode(command)
+                for listener in list(self.notice_listeners):
+                    listener(note)
         speed = self._speed if self._speed is not None else self.speed()
-        estimate = math.dist((here.x, here.y, here.z), target) / max(speed, 1e-9)
+        start = (here.x, here.y, here.z)
+        estimate = math.dist(start, target) / max(speed, 1e-9)
         completion = self.capabilities.completion
         waits_in_reply = completion is not Completion.ESTIMATE
+        started = MoveStart(start, target, speed, time.monotonic(), estimate)
+        for move_listener in list(self.move_listeners):
+            move_listener(started)
         self.client.execute(command, extra=estimate * ESTIMATE_MARGIN if waits_in_reply else 0.0)
         # Where the device never says when it is done (PROTOCOLS.md §4, §5): wait the estimate.
         if completion is Completion.ESTIMATE and self.wait(estimate):

@@ -36,6 +36,14 @@ def motionctl(port: str, *args: str, timeout: float = 2.0, log: Path | None = No
     )
 
 
+@pytest.fixture(autouse=True)
+def settings_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """motionctl reads the panel's saved travel limits: keep them in a file of the test's own."""
+    path = tmp_path / "settings.ini"
+    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(path))
+    return path
+
+
 @pytest.fixture
 def record(tmp_path: Path) -> Path:
     return tmp_path / "device.log"
@@ -146,6 +154,10 @@ def test_unknown_command_exits_1_at_once(sim: SimProcess) -> None:
         ("speed", "-5"),
         ("speed", "fast"),
         ("move", "99999999999", "0", "0"),
+        ("move", "0.001", "0", "0"),
+        ("jog", "0", "0.005"),
+        ("--travel", "-50:50,-50:50,0:10", "move", "100000", "0", "0"),
+        ("--travel", "1:2", "id"),
         ("teleport",),
     ],
 )
@@ -209,8 +221,59 @@ def test_device_that_never_answers_exits_3(sim: SimProcess) -> None:
     start = time.monotonic()
     result = motionctl(sim.path, "id", timeout=0.5)
     assert result.returncode == 3
-    assert "did not answer" in result.stderr
+    assert "did not answer to GET_ID" in result.stderr
+    assert "it may still be moving" in result.stderr
     assert time.monotonic() - start < 10
+    as_json = motionctl(sim.path, "--json", "id", timeout=0.5)
+    assert as_json.returncode == 3
+    error = json.loads(as_json.stdout)
+    assert error["exit"] == 3 and "did not answer" in error["error"]
+
+
+def test_json_errors_are_one_object(sim: SimProcess) -> None:
+    for args, status in (
+        (("--json", "move", "1e3", "0"), 2),
+        (("--json", "raw", "FOO"), 1),
+        (("--json", "teleport"), 2),
+    ):
+        result = motionctl(sim.path, *args)
+        assert result.returncode == status, result.stderr
+        error = json.loads(result.stdout)
+        assert set(error) == {"error", "exit"} and error["exit"] == status
+        assert error["error"]
+
+
+def test_travel_limits_refuse_a_jog_beyond_them(sim: SimProcess, record: Path) -> None:
+    travel = ("--travel", "-50:50,-20:20,0:10")
+    assert motionctl(sim.path, *travel, "move", "45", "0", "0").returncode == 0
+    result = motionctl(sim.path, *travel, "jog", "10", "0")
+    assert result.returncode == 2
+    assert "X 55 mm is outside -50..50 mm" in result.stderr
+    assert "DELTA_MOVE" not in received_by_device(record)
+
+
+def test_travel_limits_clamp_when_asked(sim: SimProcess) -> None:
+    result = motionctl(
+        sim.path, "--travel", "-50:50,-20:20,0:10", "--clamp", "--json", "jog", "80", "0"
+    )
+    assert result.returncode == 0, result.stderr
+    answer = json.loads(result.stdout)
+    assert answer["position"] == [50.0, 0.0, 0.0]
+    assert "clamped" in answer["notices"][0] and "clamped" in result.stderr
+
+
+def test_travel_limits_saved_by_the_panel_apply(sim: SimProcess, settings_file: Path) -> None:
+    from PySide6.QtCore import QSettings
+
+    from app.settings import write_travel
+    from drivers.travel import TravelLimits
+
+    settings = QSettings(str(settings_file), QSettings.Format.IniFormat)
+    write_travel(settings, "coxiris", sim.path, TravelLimits(((-5, 5), (-5, 5), (0, 1))))
+    settings.sync()
+    result = motionctl(sim.path, "move", "6", "0", "0")
+    assert result.returncode == 2 and "travel limits" in result.stderr
+    assert motionctl(sim.path, "--travel", "none", "move", "6", "0", "0").returncode == 0
 
 
 def test_port_that_does_not_exist_exits_3() -> None:

@@ -140,3 +140,26 @@ def test_done_for_another_command_is_garbled() -> None:
     ex = _feed(cmd.GetId(), b"ACK GET_ID\r\nDONE GET_SPEED: 1\r\n")
     with pytest.raises(GarbledReply):
         ex.result()
+
+
+def test_events_read_as_the_wire_says_them() -> None:
+    assert str(Ack("GET_ID")) == "ACK GET_ID"
+    assert str(Done("GET_ID", "CX1")) == "DONE GET_ID: CX1"
+    assert str(ErrorReport("Speed must be positive")) == "error: Speed must be positive"
+    assert str(TextLine("Checkpoint 2")) == "the line 'Checkpoint 2'"
+
+
+def test_command_names_are_the_wire_names() -> None:
+    protocol = CoxirisProtocol()
+    assert protocol.command_name(cmd.GetPosition()) == "GET_POSITION"
+    assert protocol.command_name(cmd.MoveTo(1, 2, 3)) == "ABSOLUTE_MOVE"
+    assert protocol.command_name(cmd.Raw(b"get_id")) == "GET_ID"
+
+
+def test_raw_exchange_follows_one_whole_line_only() -> None:
+    protocol = CoxirisProtocol()
+    exchange = protocol.raw_exchange(b"foo 1\r\n")
+    assert exchange is not None and exchange.name == "FOO"
+    assert protocol.raw_exchange(b"GET_ID") is None  # not ended: nothing to follow yet
+    assert protocol.raw_exchange(b"GET_ID\nGET_ID\n") is None
+    assert protocol.raw_exchange(b"  \n") is None

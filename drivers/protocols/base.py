@@ -111,3 +111,11 @@ class Protocol(ABC):
 
     def check_raw(self, data: bytes) -> None:
         """Refuse raw console bytes the device cannot take (BadInput); the default takes all."""
+
+    def raw_exchange(self, data: bytes) -> Exchange | None:
+        """A tracker for the reply to raw console bytes, where they are one whole command."""
+        return None
+
+    def command_name(self, command: Command) -> str:
+        """The command's name as the device knows it (e.g. `GET_POSITION`), for messages."""
+        return type(command).__name__

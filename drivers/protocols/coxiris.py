@@ -200,6 +200,8 @@ class CoxirisProtocol(Protocol):
         default_baud=115200,
         speed_limits_queryable=True,
         completion=Completion.REPLY,
+        resolution=0.01,  # positions are printed with two decimals
+        busy_silent=True,  # a blocking move callback delays every reply (PROTOCOLS.md §1)
         notes=("speeds are reported rounded to whole mm/s", "positions are reported to 0.01 mm"),
     )
 
@@ -216,7 +218,9 @@ class CoxirisProtocol(Protocol):
         try:
             text = frame.decode("ascii")
         except UnicodeDecodeError as exc:
-            raise FrameError(f"non-ASCII bytes in a COXIRIS line: {frame!r}") from exc
+            raise FrameError(
+                f"non-ASCII bytes in a COXIRIS line: {frame.hex(' ').upper()}"
+            ) from exc
         if text.startswith("ACK "):
             return [Ack(text[4:].strip())]
         if text.startswith("DONE "):
@@ -234,6 +238,27 @@ class CoxirisProtocol(Protocol):
                     f"line refused: {len(line)} characters, the device takes at most "
                     f"{MAX_COMMAND_LENGTH}"
                 )
+
+    def raw_exchange(self, data: bytes) -> CoxirisExchange | None:
+        """One console line (one trailing CR, LF or CR LF) is followed like a typed command."""
+        line = data
+        for ending in (b"\r\n", b"\n", b"\r"):
+            if line.endswith(ending):
+                line = line[: -len(ending)]
+                break
+        else:
+            return None  # not ended: the device waits for more, nothing to follow yet
+        if b"\r" in line or b"\n" in line or not line.strip() or not line.isascii():
+            return None
+        text = line.decode("ascii")
+        return CoxirisExchange(Raw(line), expected_name(text))
+
+    def command_name(self, command: Command) -> str:
+        """The name the device echoes in ACK/DONE, e.g. `GET_POSITION`."""
+        try:
+            return expected_name(command_line(command))
+        except BadInput:
+            return type(command).__name__
 
     def exchange(self, command: Command) -> CoxirisExchange:
         """Track the reply by the command name the device will echo."""

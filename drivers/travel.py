@@ -1,0 +1,116 @@
+"""Travel limits (a box the stage must stay in) and the device's coordinate resolution.
+
+Both are checked before a move is sent: a target outside the box is refused (or clamped to its
+edge, as the user chooses), and a value finer than the device can represent is refused.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from drivers.errors import BadInput
+
+AXIS_NAMES = ("x", "y", "z")
+Box = tuple[tuple[float, float], tuple[float, float], tuple[float, float]]
+Point = tuple[float, float, float]
+
+
+def _fmt(value: float) -> str:
+    return f"{value:g}"
+
+
+@dataclass(frozen=True)
+class TravelLimits:
+    """A box in mm, ((x_min, x_max), (y_min, y_max), (z_min, z_max)); `clamp` or refuse."""
+
+    box: Box
+    clamp: bool = False
+
+    def __post_init__(self) -> None:
+        if len(self.box) != 3:
+            raise BadInput("travel limits need a range for each of x, y and z")
+        for axis, (low, high) in zip(AXIS_NAMES, self.box, strict=True):
+            if not (math.isfinite(low) and math.isfinite(high)) or low > high:
+                raise BadInput(
+                    f"travel limits for {axis.upper()} ({_fmt(low)} to {_fmt(high)} mm) "
+                    "are not a range: the minimum must be at most the maximum"
+                )
+
+    def describe(self) -> str:
+        """E.g. `X -100..100, Y -50..50, Z 0..20 mm`."""
+        parts = [
+            f"{a.upper()} {_fmt(lo)}..{_fmt(hi)}"
+            for a, (lo, hi) in zip(AXIS_NAMES, self.box, strict=True)
+        ]
+        return ", ".join(parts) + " mm"
+
+    def contains(self, point: Point) -> bool:
+        """Whether `point` is inside the box (edges included)."""
+        return all(lo <= v <= hi for v, (lo, hi) in zip(point, self.box, strict=True))
+
+    def apply(self, target: Point, what: str = "the move") -> tuple[Point, str | None]:
+        """The target to send and a note when it was clamped; BadInput when it is refused."""
+        outside = [
+            (axis, value, lo, hi)
+            for axis, value, (lo, hi) in zip(AXIS_NAMES, target, self.box, strict=True)
+            if not lo <= value <= hi
+        ]
+        if not outside:
+            return target, None
+        details = "; ".join(
+            f"{a.upper()} {_fmt(v)} mm is outside {_fmt(lo)}..{_fmt(hi)} mm"
+            for a, v, lo, hi in outside
+        )
+        if not self.clamp:
+            raise BadInput(f"{what} refused: {details} (travel limits)")
+        clamped = tuple(min(max(v, lo), hi) for v, (lo, hi) in zip(target, self.box, strict=True))
+        where = ", ".join(f"{_fmt(c)}" for c in clamped)
+        note = f"{what} clamped to the travel limits: {details}; going to ({where}) mm"
+        return (clamped[0], clamped[1], clamped[2]), note
+
+
+def parse_travel(text: str) -> TravelLimits | None:
+    """`X0:X1,Y0:Y1,Z0:Z1` in mm (`none` for no limits); BadInput says what is wrong."""
+    stripped = text.strip().lower()
+    if stripped in ("", "none", "off"):
+        return None
+    parts = stripped.split(",")
+    if len(parts) != 3:
+        raise BadInput(
+            f"travel limits {text!r}: write three ranges in mm, X0:X1,Y0:Y1,Z0:Z1 "
+            "(e.g. -100:100,-50:50,0:20), or none"
+        )
+    ranges = []
+    for axis, part in zip(AXIS_NAMES, parts, strict=True):
+        low_text, sep, high_text = part.partition(":")
+        try:
+            if not sep:
+                raise ValueError
+            low, high = float(low_text), float(high_text)
+        except ValueError:
+            raise BadInput(
+                f"travel limits for {axis.upper()}: {part!r} is not MIN:MAX in mm (e.g. -100:100)"
+            ) from None
+        ranges.append((low, high))
+    return TravelLimits((ranges[0], ranges[1], ranges[2]))
+
+
+def check_resolution(values: Point, names: tuple[str, ...], resolution: float | None) -> None:
+    """Refuse a value the device cannot represent (finer than `resolution` mm)."""
+    if not resolution:
+        return
+    for name, value in zip(names, values, strict=True):
+        if not math.isfinite(value):
+            raise BadInput(f"{name} {value!r} is not a finite number")
+        steps = value / resolution
+        if abs(steps - round(steps)) > 1e-6 * max(1.0, abs(steps)):
+            nearest = round(steps) * resolution
+            raise BadInput(
+                f"{name} {_fmt(value)} mm refused: the device works to {_fmt(resolution)} mm "
+                f"(the nearest it can do is {nearest:.{_decimals(resolution)}f} mm)"
+            )
+
+
+def _decimals(resolution: float) -> int:
+    return max(0, -math.floor(math.log10(resolution) + 1e-9))
