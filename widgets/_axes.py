@@ -41,3 +41,7 @@ def target_point(
     if y is None:
         raise ValueError("a target needs at least x and y")
     return float(x), float(y), None if z is None else float(z)  # type: ignore[arg-type]
+
+
+Box = tuple[tuple[float, float], tuple[float, float], tuple[float, float]]
+"""A travel box in mm: ((x_min, x_max), (y_min, y_max), (z_min, z_max))."""

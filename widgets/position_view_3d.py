@@ -4,21 +4,39 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable
+from functools import partial
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtCore import QCoreApplication, QSize, Qt
 from PySide6.QtGui import (
+    QColor,
+    QFont,
+    QFontMetrics,
     QImage,
     QMouseEvent,
     QOpenGLContext,
     QPainter,
     QPaintEvent,
+    QResizeEvent,
     QVector3D,
     QWheelEvent,
 )
-from PySide6.QtWidgets import QLabel, QWidget
+from PySide6.QtWidgets import QLabel, QToolButton, QWidget
 
-from widgets._axes import target_point
+from widgets._axes import Box, target_point
+from widgets._gl_scene import (
+    FIELD_OF_VIEW,
+    MARGINS_PX,
+    VIEW_ANGLES,
+    VIEW_PRESETS,
+    axis_ends,
+    box_corners,
+    box_edges,
+    camera_rotation,
+    fit_camera,
+    grid_for,
+    overlay_buttons,
+)
 from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
@@ -35,7 +53,12 @@ except Exception as exc:  # any failure means "no 3D view"
 TRAIL_COLOUR = (0.36, 0.42, 0.75, 1.0)
 CURRENT_COLOUR = (1.0, 0.70, 0.0, 1.0)
 TARGET_COLOUR = (0.85, 0.11, 0.38, 1.0)
+ESTIMATED_COLOUR = (*CURRENT_COLOUR[:3], 0.5)  # a position estimated, not measured
 AXIS_COLOURS = ((0.90, 0.22, 0.21, 1.0), (0.26, 0.63, 0.28, 1.0), (0.12, 0.53, 0.90, 1.0))
+GRID_COLOUR = (1.0, 1.0, 1.0, 0.3)
+WORKSPACE_COLOUR = (0.30, 0.80, 0.78, 0.9)
+BACKGROUND = (24, 24, 28, 255)
+SCALE_COLOUR = (200, 200, 200)
 
 
 def share_opengl_contexts() -> None:
@@ -64,11 +87,13 @@ class PositionView3D(BufferedViewMixin, QWidget):
     Qt compose the whole window through OpenGL on every repaint of any widget: with software
     OpenGL (Mesa llvmpipe) that took 75-90 ms a frame, while rendering the scene alone into an
     image takes about 1.5 ms.
+
+    The grid covers the origin, the trail, the target and the workspace box, with a 1-2-5 mm
+    spacing; it grows when the data leaves it. A view preset ("top", "front", "side", "iso",
+    "fit") stays in force, refitted on resizes and grid changes, until the mouse moves the camera.
     """
 
-    def __init__(
-        self, buffer: PositionBuffer, parent: QWidget | None = None, grid_mm: float = 200.0
-    ) -> None:
+    def __init__(self, buffer: PositionBuffer, parent: QWidget | None = None) -> None:
         if gl is None:
             raise RuntimeError(f"pyqtgraph.opengl is unavailable ({_IMPORT_ERROR})")
         super().__init__(parent)
@@ -76,72 +101,75 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self.setToolTip("Drag to rotate, wheel to zoom, middle-drag to pan")
         self.setMinimumSize(160, 120)
         self.buffer = buffer
-        self.grid_mm = float(grid_mm)
         self._target: tuple[float, float, float] | None = None
+        self._workspace: Box | None = None
+        self._current: np.ndarray | None = None
+        self._follow = False
+        self._estimated = False
+        self._preset: str | None = "iso"
+        self._fitted_size = QSize()
+        self._framebuffer_key: tuple[int, int, float] | None = None
         self._image = QImage()
         self._stale = True
         self.scene = gl.GLViewWidget()  # no parent: it must stay out of this window
-        self.scene.setBackgroundColor((24, 24, 28, 255))
+        self.scene.setBackgroundColor(BACKGROUND)
+        self.scene.opts["fov"] = FIELD_OF_VIEW
         self.destroyed.connect(self.scene.deleteLater)
         self.addItem = self.scene.addItem
+        self._label_font = QFont()
+        self._label_font.setPointSize(10)
 
-        grid = gl.GLGridItem()
-        grid.setSize(self.grid_mm, self.grid_mm)
-        grid.setSpacing(self.grid_mm / 20, self.grid_mm / 20)
-        self.addItem(grid)
-        half = self.grid_mm / 2
-        axis_pos = np.array(
-            [[0, 0, 0], [half, 0, 0], [0, 0, 0], [0, half, 0], [0, 0, 0], [0, 0, half]],
-            dtype=np.float32,
-        )
-        axis_colour = np.repeat(np.array(AXIS_COLOURS, dtype=np.float32), 2, axis=0)
-        self.axes_item = gl.GLLinePlotItem(
-            pos=axis_pos, color=axis_colour, width=2.0, mode="lines", antialias=True
-        )
-        self.addItem(self.axes_item)
-        for index, name in enumerate("XYZ"):
-            end = np.zeros(3)
-            end[index] = half * 1.05
-            colour = [int(255 * c) for c in AXIS_COLOURS[index]]
-            self.addItem(gl.GLTextItem(pos=end, text=f"{name} (mm)", color=colour))
-
-        self.trail = gl.GLLinePlotItem(
-            pos=np.zeros((2, 3), dtype=np.float32),
-            color=TRAIL_COLOUR,
-            width=1.5,
-            mode="line_strip",
-            antialias=True,
-        )
+        self.grid_item = _lines(GRID_COLOUR, 1.0, glOptions="translucent")
+        self.axes_item = _lines(np.repeat(np.array(AXIS_COLOURS), 2, axis=0), 2.0)
+        self.workspace_item = _lines(WORKSPACE_COLOUR, 1.5)
+        self.workspace_item.setVisible(False)
+        self.labels = [
+            gl.GLTextItem(
+                text=f"{name} (mm)", color=[int(255 * c) for c in colour], font=self._label_font
+            )
+            for name, colour in zip("XYZ", AXIS_COLOURS, strict=True)
+        ]
+        self.trail = _lines(TRAIL_COLOUR, 1.5, mode="line_strip")
         self.current_marker = gl.GLScatterPlotItem(
             pos=np.zeros((1, 3), dtype=np.float32), color=CURRENT_COLOUR, size=12.0
         )
         self.target_marker = gl.GLScatterPlotItem(
             pos=np.zeros((1, 3), dtype=np.float32), color=TARGET_COLOUR, size=14.0
         )
-        self.target_marker.setGLOptions("translucent")
+        for item in (self.current_marker, self.target_marker):
+            item.setGLOptions("translucent")
+        for item in (self.grid_item, self.axes_item, self.workspace_item, *self.labels):
+            self.addItem(item)
         for item in (self.trail, self.current_marker, self.target_marker):
             item.setVisible(False)
             self.addItem(item)
 
+        self._make_buttons()
         self.start_refresh_timer()
-        self.reset_view()
+        self._fit_grid()
 
+    # -- public API ----------------------------------------------------------------------------
     def refresh(self) -> None:
         """Redraw from the buffer if it changed since the last refresh."""
         rows = self.changed_rows()
         if rows is None:
             return
-        if not len(rows):
-            self.trail.setVisible(False)
-            self.current_marker.setVisible(False)
-            self._redraw()
-            return
         points = np.ascontiguousarray(rows[:, 1:4], dtype=np.float32)
         self.trail.setVisible(len(points) >= 2)
         if len(points) >= 2:
             self.trail.setData(pos=points)
-        self.current_marker.setData(pos=points[-1:])
-        self.current_marker.setVisible(True)
+        self.current_marker.setVisible(bool(len(points)))
+        if len(points):
+            current = points[-1].copy()
+            self.current_marker.setData(pos=points[-1:])
+            moved = self._current is None or not np.array_equal(current, self._current)
+            self._current = current
+            if self._follow and moved:
+                self.scene.opts["center"] = QVector3D(*map(float, current))
+        else:
+            self._current = None
+        if not self._grid.contains(points):
+            self._fit_grid()
         self._redraw()
 
     def set_target(self, x: object, y: float | None = None, z: float | None = None) -> None:
@@ -158,21 +186,136 @@ class PositionView3D(BufferedViewMixin, QWidget):
             self._target = (tx, ty, tz or 0.0)
             self.target_marker.setData(pos=np.array([self._target], dtype=np.float32))
             self.target_marker.setVisible(True)
+            if not self._grid.contains(np.array([self._target])):
+                self._fit_grid()
         self._redraw()
 
+    def set_workspace(self, box: Box | None) -> None:
+        """Draw the travel box (mm) as a wireframe and fit the grid to it; None removes it."""
+        self._workspace = box
+        self.workspace_item.setVisible(box is not None)
+        if box is not None:
+            self.workspace_item.setData(pos=box_edges(box))
+        self._fit_grid()
+        self._redraw()
+
+    def grid_spacing(self) -> float:
+        """The distance between grid lines, in mm."""
+        return self._grid.spacing
+
     def reset_view(self) -> None:
-        """Look at the data (or the whole grid) from above at an angle."""
+        """Look at the whole scene from above at an angle (the "iso" preset)."""
+        self.set_view_preset("iso")
+
+    def set_view_preset(self, name: str) -> None:
+        """Look from "top", "front", "side" or "iso" at the whole scene, or "fit" the data."""
+        if name not in VIEW_PRESETS:
+            raise ValueError(f"unknown view preset {name!r}")
+        self._preset = name
+        self._fit_camera()
+        self._redraw()
+
+    def _fit_camera(self) -> None:
+        """Point the camera as the active preset says, at the widget's present size."""
+        opts = self.scene.opts
+        name = self._preset
+        elevation, azimuth = VIEW_ANGLES.get(name, (opts["elevation"], opts["azimuth"]))
+        points, margins = self._fit_points(data_only=name == "fit")
+        following = self._follow and self._current is not None
+        centre, distance = fit_camera(
+            points,
+            self._current if following else (points.min(axis=0) + points.max(axis=0)) / 2,
+            camera_rotation(elevation, azimuth),
+            opts["fov"],
+            (self.width(), self.height()),
+            margins,
+            move_centre=not following,
+        )
+        self.scene.setCameraPosition(
+            pos=QVector3D(*map(float, centre)),
+            distance=distance,
+            elevation=elevation,
+            azimuth=azimuth,
+        )
+        self._fitted_size = self.size()
+
+    def set_follow(self, on: bool) -> None:
+        """Keep the camera centred on the current position while `on`."""
+        self._follow = bool(on)
+        self.follow_button.setChecked(self._follow)
+        if self._follow and self._current is not None:
+            self.scene.opts["center"] = QVector3D(*map(float, self._current))
+            self._redraw()
+
+    def is_following(self) -> bool:
+        """Whether the camera follows the current position."""
+        return self._follow
+
+    def set_estimated(self, estimated: bool) -> None:
+        """Draw the current marker faded while its position is estimated, not measured."""
+        self._estimated = bool(estimated)
+        self.current_marker.setData(color=ESTIMATED_COLOUR if estimated else CURRENT_COLOUR)
+        self._redraw()
+
+    def is_estimated(self) -> bool:
+        """Whether the current marker shows an estimated position."""
+        return self._estimated
+
+    # -- scene -------------------------------------------------------------------------------
+    def _fit_grid(self) -> None:
+        """Size the grid, axes and labels to the data and workspace; refit an active preset."""
+        points = self._data_points()
+        self._grid = grid = grid_for(points, pad=0.0 if self._workspace else 0.05)
+        self.grid_item.setData(pos=grid.lines())
+        self._axis_ends = axis_ends(grid, float(points[:, 2].max()) if len(points) else 0.0)
+        vertices = np.zeros((6, 3), dtype=np.float32)
+        vertices[1::2] = self._axis_ends
+        self.axes_item.setData(pos=vertices)
+        span = max(grid.x1 - grid.x0, grid.y1 - grid.y0)
+        for label, end in zip(self.labels, self._axis_ends, strict=True):
+            label.setData(pos=end + np.sign(end) * 0.03 * span)
+        if self._preset is not None:
+            self._fit_camera()
+
+    def _data_points(self) -> np.ndarray:
+        """The corners of the trail's bounding box, the target and the workspace corners."""
+        parts = [np.zeros((0, 3), dtype=np.float32)]
         rows = self.buffer.view()
         if len(rows):
-            lo, hi = rows[:, 1:4].min(axis=0), rows[:, 1:4].max(axis=0)
-            centre = (lo + hi) / 2
-            extent = float(max(np.max(hi - lo), self.grid_mm / 4))
-        else:
-            centre, extent = np.zeros(3), self.grid_mm * 0.7
-        self.scene.setCameraPosition(
-            pos=QVector3D(*map(float, centre)), distance=extent * 1.8, elevation=30, azimuth=-60
-        )
-        self._redraw()
+            xyz = rows[:, 1:4]
+            parts.append(box_corners(tuple(zip(xyz.min(axis=0), xyz.max(axis=0), strict=True))))
+        if self._target is not None:
+            parts.append(np.array([self._target], dtype=np.float32))
+        if self._workspace is not None:
+            parts.append(box_corners(self._workspace))
+        return np.vstack(parts)
+
+    def _fit_points(self, data_only: bool) -> tuple[np.ndarray, np.ndarray]:
+        """The points a camera preset must show, and their margins (left, right, bottom, top px)."""
+        points = self._data_points()
+        margins = np.tile(MARGINS_PX, (len(points), 1))
+        if data_only and len(points):
+            return points, margins
+        grid = self._grid
+        corners = np.array([(x, y, 0.0) for x in (grid.x0, grid.x1) for y in (grid.y0, grid.y1)])
+        metrics = QFontMetrics(self._label_font)
+        label_margins = [  # the text is drawn right of and above its position
+            np.add(MARGINS_PX, (0, metrics.horizontalAdvance(lab.text), 0, metrics.height()))
+            for lab in self.labels
+        ]
+        label_pos = np.array([lab.pos for lab in self.labels])
+        points = np.vstack([points, corners, self._axis_ends, label_pos])
+        margins = np.vstack([margins, np.tile(MARGINS_PX, (7, 1)), label_margins])
+        return points, margins
+
+    def _make_buttons(self) -> None:
+        """The view-preset and follow buttons over the top-left corner."""
+        for button in overlay_buttons(self):
+            preset = button.text().lower()
+            if preset in VIEW_PRESETS:
+                button.clicked.connect(partial(self.set_view_preset, preset))
+        self.follow_button = self.findChild(QToolButton, "view3dFollow")
+        self.follow_button.toggled.connect(self.set_follow)
 
     # -- drawing -----------------------------------------------------------------------------
     def _redraw(self) -> None:
@@ -182,8 +325,20 @@ class PositionView3D(BufferedViewMixin, QWidget):
 
     def render_scene(self) -> QImage:
         """Render the scene at the widget's size now, and keep the image."""
-        ratio = self.devicePixelRatioF()
-        self.scene.resize(max(1, self.width()), max(1, self.height()))
+        if self._preset is not None and self._fitted_size != self.size():
+            self._fit_camera()  # the active preset, refitted to the new shape
+        if self.scene.screen() is not self.screen():
+            self.scene.setScreen(self.screen())  # the device pixel ratio of this widget's screen
+        size = QSize(max(1, self.width()), max(1, self.height()))
+        old = self.scene.size()
+        self.scene.resize(size)
+        ratio = self.scene.devicePixelRatioF()
+        key = (size.width(), size.height(), ratio)
+        if key != self._framebuffer_key:
+            # A hidden widget's resize event is held back until it is shown, and this one never
+            # is: without the event QOpenGLWidget keeps its first framebuffer size.
+            QCoreApplication.sendEvent(self.scene, QResizeEvent(size, old))
+            self._framebuffer_key = key
         image = self.scene.grabFramebuffer()
         image.setDevicePixelRatio(ratio)
         self._image = image
@@ -195,10 +350,17 @@ class PositionView3D(BufferedViewMixin, QWidget):
         return self.render_scene()
 
     def paintEvent(self, event: QPaintEvent) -> None:
-        """Paint the rendered scene, rendering it first if it is out of date."""
-        if self._stale or self._image.size() != self.size() * self.devicePixelRatioF():
+        """Paint the rendered scene, rendering it first if it is out of date, and the scale."""
+        if self._stale or self._image.deviceIndependentSize().toSize() != self.size():
             self.render_scene()
-        QPainter(self).drawImage(0, 0, self._image)
+        painter = QPainter(self)
+        painter.drawImage(0, 0, self._image)
+        painter.setPen(QColor(*SCALE_COLOUR))
+        painter.drawText(
+            self.rect().adjusted(6, 0, 0, -4),
+            Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignBottom,
+            f"grid {self.grid_spacing():g} mm",
+        )
 
     # -- camera: the mouse handlers of pyqtgraph's view, then a new image ----------------------
     def mousePressEvent(self, event: QMouseEvent) -> None:
@@ -208,6 +370,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
     def mouseMoveEvent(self, event: QMouseEvent) -> None:
         """Rotate, pan or zoom while a button is held."""
         self.scene.mouseMoveEvent(event)
+        self._preset = None
         self._redraw()
 
     def mouseReleaseEvent(self, event: QMouseEvent) -> None:
@@ -217,7 +380,20 @@ class PositionView3D(BufferedViewMixin, QWidget):
     def wheelEvent(self, event: QWheelEvent) -> None:
         """Zoom."""
         self.scene.wheelEvent(event)
+        self._preset = None
         self._redraw()
+
+
+def _lines(colour: object, width: float, mode: str = "lines", **kwargs: object) -> object:
+    """A GLLinePlotItem with placeholder vertices."""
+    return gl.GLLinePlotItem(
+        pos=np.zeros((2, 3), dtype=np.float32),
+        color=colour,
+        width=width,
+        mode=mode,
+        antialias=True,
+        **kwargs,
+    )
 
 
 class PositionView3DPlaceholder(QLabel):
@@ -247,6 +423,30 @@ class PositionView3DPlaceholder(QLabel):
 
     def reset_view(self) -> None:
         """Nothing to draw."""
+
+    def set_workspace(self, box: Box | None) -> None:
+        """Nothing to draw."""
+
+    def grid_spacing(self) -> float:
+        """No grid: 0.0."""
+        return 0.0
+
+    def set_view_preset(self, name: str) -> None:
+        """No camera."""
+
+    def set_follow(self, on: bool) -> None:
+        """No camera."""
+
+    def is_following(self) -> bool:
+        """Never following."""
+        return False
+
+    def set_estimated(self, estimated: bool) -> None:
+        """Nothing to draw."""
+
+    def is_estimated(self) -> bool:
+        """Nothing drawn: False."""
+        return False
 
 
 def make_position_view_3d(

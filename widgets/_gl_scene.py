@@ -1,0 +1,221 @@
+"""Helpers of the 3D position view: grid sizing, box edges, camera fitting, overlay buttons."""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QToolButton, QWidget
+
+from widgets._axes import Box
+
+MIN_SPAN_MM = 10.0
+GRID_CELLS = 10
+FIELD_OF_VIEW = 35.0  # degrees across; pyqtgraph's 60 distorts the flat presets
+MARGINS_PX = np.array((8, 8, 20, 30))  # left, right, bottom (scale text), top (buttons)
+
+# (elevation, azimuth) in degrees, as pyqtgraph's GLViewWidget camera uses them
+VIEW_ANGLES: dict[str, tuple[float, float]] = {
+    "top": (90.0, -90.0),  # X right, Y up
+    "front": (0.0, -90.0),  # from -Y: X right, Z up
+    "side": (0.0, 0.0),  # from +X: Y right, Z up
+    "iso": (30.0, -60.0),
+}
+VIEW_PRESETS = (*VIEW_ANGLES, "fit")
+
+BUTTONS = (
+    ("view3dTop", "Top", "View from above (X right, Y up)"),
+    ("view3dFront", "Front", "View from the front (X right, Z up)"),
+    ("view3dSide", "Side", "View from the side (Y right, Z up)"),
+    ("view3dIso", "Iso", "View from above at an angle"),
+    ("view3dFit", "Fit", "Zoom to the trail, the target and the workspace"),
+    ("view3dFollow", "Follow", "Keep the camera on the current position"),
+)
+BUTTON_STYLE = (
+    "QToolButton { color: #ddd; background: rgba(255, 255, 255, 24); border: none;"
+    " border-radius: 3px; padding: 2px 6px; }"
+    " QToolButton:hover { background: rgba(255, 255, 255, 60); }"
+    " QToolButton:checked { background: rgba(255, 179, 0, 110); color: white; }"
+)
+
+
+class Grid(NamedTuple):
+    """An XY grid in mm: x0..x1, y0..y1 with lines every `spacing`."""
+
+    x0: float
+    x1: float
+    y0: float
+    y1: float
+    spacing: float
+
+    def contains(self, points: np.ndarray) -> bool:
+        """Whether every (x, y, ...) row lies on the grid."""
+        if not len(points):
+            return True
+        tol = self.spacing * 1e-6
+        lo, hi = points[:, :2].min(axis=0), points[:, :2].max(axis=0)
+        return bool(
+            lo[0] >= self.x0 - tol
+            and hi[0] <= self.x1 + tol
+            and lo[1] >= self.y0 - tol
+            and hi[1] <= self.y1 + tol
+        )
+
+    def lines(self) -> np.ndarray:
+        """The grid's line segments as (2n, 3) float32 vertices at z = 0."""
+        xs = np.arange(self.x0, self.x1 + self.spacing / 2, self.spacing)
+        ys = np.arange(self.y0, self.y1 + self.spacing / 2, self.spacing)
+        vertical = [((x, self.y0, 0.0), (x, self.y1, 0.0)) for x in xs]
+        horizontal = [((self.x0, y, 0.0), (self.x1, y, 0.0)) for y in ys]
+        return np.array(vertical + horizontal, dtype=np.float32).reshape(-1, 3)
+
+
+def nice_spacing(span: float, cells: int = GRID_CELLS) -> float:
+    """The 1-2-5 x 10^n mm spacing that divides `span` into about `cells` cells."""
+    raw = max(float(span), 1e-9) / cells
+    decade = 10.0 ** math.floor(math.log10(raw))
+    candidates = [m * decade for m in (1.0, 2.0, 5.0, 10.0)]
+    return min(candidates, key=lambda c: abs(math.log(raw / c)))
+
+
+def grid_for(points: np.ndarray, pad: float = 0.05) -> Grid:
+    """A grid covering the origin and the XY of `points` ((n, 3) mm), with `pad` headroom.
+
+    Each side is at least half the longest one; the edges fall on grid lines.
+    """
+    xy = np.vstack([np.zeros((1, 2)), np.asarray(points, dtype=float).reshape(-1, 3)[:, :2]])
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    span = max(float(np.max(hi - lo)), MIN_SPAN_MM)
+    spacing = nice_spacing(span)
+    lo = np.where(lo < 0, lo - pad * span, lo)
+    hi = np.where(hi > 0, hi + pad * span, hi)
+    for axis in range(2):
+        short = span / 2 - (hi[axis] - lo[axis])
+        if short > 0:
+            if hi[axis] > 0 or lo[axis] >= 0:
+                hi[axis] += short
+            else:
+                lo[axis] -= short
+    lo = np.floor(lo / spacing + 1e-9) * spacing + 0.0  # + 0.0: no -0.0
+    hi = np.ceil(hi / spacing - 1e-9) * spacing + 0.0
+    return Grid(float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]), spacing)
+
+
+def axis_ends(grid: Grid, top: float) -> np.ndarray:
+    """The ends of the X, Y and Z axes (rows of a diagonal 3x3), scaled to the grid.
+
+    X and Y reach the grid's far edge; Z reaches `top` (the highest data), at least a quarter
+    of the grid.
+    """
+    span = max(grid.x1 - grid.x0, grid.y1 - grid.y0)
+    lengths = (
+        grid.x1 if grid.x1 > 0 else span / 2,
+        grid.y1 if grid.y1 > 0 else span / 2,
+        max(span / 4, top),
+    )
+    return np.diag(lengths).astype(np.float32)
+
+
+def box_corners(box: Box) -> np.ndarray:
+    """The 8 corners of a travel box as (8, 3) float32."""
+    (x0, x1), (y0, y1), (z0, z1) = box
+    return np.array(
+        [(x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)], dtype=np.float32
+    )
+
+
+def box_edges(box: Box) -> np.ndarray:
+    """The 12 edges of a travel box as (24, 3) float32 vertices for a "lines" plot."""
+    corners = box_corners(box)
+    pairs = [(a, b) for a in range(8) for b in range(a + 1, 8) if bin(a ^ b).count("1") == 1]
+    return np.array([corners[i] for pair in pairs for i in pair], dtype=np.float32)
+
+
+def camera_rotation(elevation: float, azimuth: float) -> np.ndarray:
+    """The 3x3 world-to-camera rotation of pyqtgraph's GLViewWidget (euler mode)."""
+    a = math.radians(elevation - 90.0)
+    b = math.radians(azimuth + 90.0)
+    about_x = np.array([[1, 0, 0], [0, math.cos(a), -math.sin(a)], [0, math.sin(a), math.cos(a)]])
+    about_minus_z = np.array(
+        [[math.cos(b), math.sin(b), 0], [-math.sin(b), math.cos(b), 0], [0, 0, 1]]
+    )
+    return about_x @ about_minus_z
+
+
+def _limits(margins: np.ndarray, size: tuple[int, int]) -> np.ndarray:
+    """Margins in pixels (left, right, bottom, top) as normalised device coordinate limits."""
+    width, height = size
+    m = np.asarray(margins, dtype=float)
+    return np.stack(
+        [
+            np.minimum(-1 + 2 * m[:, 0] / width, -0.05),
+            np.maximum(1 - 2 * m[:, 1] / width, 0.05),
+            np.minimum(-1 + 2 * m[:, 2] / height, -0.05),
+            np.maximum(1 - 2 * m[:, 3] / height, 0.05),
+        ],
+        axis=1,
+    )
+
+
+def fit_camera(
+    points: np.ndarray,
+    centre: np.ndarray,
+    rotation: np.ndarray,
+    fov: float,
+    size: tuple[int, int],
+    margins: np.ndarray,
+    move_centre: bool = True,
+) -> tuple[np.ndarray, float]:
+    """The camera centre and distance that put every point in view, as large as they fit.
+
+    `margins` is (n, 4): the pixels each point keeps from the left, right, bottom and top edges
+    of a `size` (width, height) image; `fov` is pyqtgraph's horizontal field of view in degrees.
+    With `move_centre` the centre moves across the view to balance the free space.
+    """
+    size = (max(1, size[0]), max(1, size[1]))
+    tan = np.array([1.0, size[1] / size[0]]) * math.tan(math.radians(fov) / 2)
+    limits = _limits(margins, size)
+    centre = np.asarray(centre, dtype=float)
+    points = np.asarray(points, dtype=float)
+    rounds = 4 if move_centre else 1
+    for round_ in range(rounds):
+        view = (points - centre) @ rotation.T
+        needed = [view[:, 2] + 1e-3]
+        for side in range(4):
+            coord = view[:, side // 2]
+            limit = limits[:, side]
+            same = np.sign(coord) == np.sign(limit)
+            needed.append(np.where(same, view[:, 2] + coord / (limit * tan[side // 2]), -np.inf))
+        distance = max(float(np.max(np.concatenate(needed))), 1.0)
+        if round_ == rounds - 1:
+            break
+        ndc = view[:, :2] / (distance - view[:, 2:3]) / tan
+        low = np.min(ndc - limits[:, [0, 2]], axis=0)  # free space left and below
+        high = np.min(limits[:, [1, 3]] - ndc, axis=0)  # right and above
+        shift = (low - high) / 2 * distance * tan  # in mm at the centre's depth
+        centre = centre + rotation[:2].T @ shift
+    return centre, distance
+
+
+def overlay_buttons(parent: QWidget) -> list[QToolButton]:
+    """Flat buttons in a row over the top-left corner of `parent`; they never take focus.
+
+    The arrow keys jog the stage elsewhere in the window, so the buttons must not keep them.
+    """
+    buttons, x = [], 4
+    for name, text, tip in BUTTONS:
+        button = QToolButton(parent)
+        button.setObjectName(name)
+        button.setText(text)
+        button.setToolTip(tip)
+        button.setAutoRaise(True)
+        button.setCheckable(name == "view3dFollow")
+        button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        button.setStyleSheet(BUTTON_STYLE)
+        button.resize(button.sizeHint())
+        button.move(x, 4)
+        x += button.width() + 2
+        buttons.append(button)
+    return buttons
