@@ -31,7 +31,7 @@ class PositionBuffer:
 
     @property
     def version(self) -> int:
-        """A counter that changes on every append and clear (cheap change detection)."""
+        """A counter that changes on every append, clear and shift (cheap change detection)."""
         return self._version
 
     def __len__(self) -> int:
@@ -60,6 +60,21 @@ class PositionBuffer:
             return None
         t, x, y, z = self._data[(self._next - 1) % self._capacity]
         return float(t), float(x), float(y), float(z)
+
+    def shift(self, dx: float, dy: float, dz: float) -> None:
+        """Add (dx, dy, dz) to every kept row's x, y and z, as when the home is moved.
+
+        Both copies of each row are shifted, so `view()` stays consistent whatever the wrap-around
+        and whatever rows are appended later. Dropped rows (outside the kept window) are left as
+        they were: they are never shown again.
+        """
+        offset = np.array([dx, dy, dz], dtype=np.float64)
+        if self._len:
+            start = (self._next - self._len) % self._capacity
+            first = np.arange(start, start + self._len) % self._capacity  # primary copies
+            self._data[first, 1:4] += offset
+            self._data[first + self._capacity, 1:4] += offset
+        self._version += 1
 
     def clear(self, keep_last: bool = False) -> None:
         """Drop all rows (all but the newest with `keep_last`, so a marker can stay)."""

@@ -5,27 +5,34 @@ from __future__ import annotations
 import numpy as np
 import pyqtgraph as pg
 from PySide6.QtCore import Qt
-from PySide6.QtGui import QResizeEvent
+from PySide6.QtGui import QBrush, QResizeEvent
 from PySide6.QtWidgets import QHBoxLayout, QPushButton, QSplitter, QVBoxLayout, QWidget
 
-from widgets._axes import AXES, target_point
+from widgets._axes import AXES, Box, target_point
 from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
 GRID_COLOUR = (60, 60, 60)
 TIME_WINDOWS_S = (10.0, 30.0, 60.0)  # the time plot's span grows in these steps
-FOLLOW_PADDING = 0.25
+FOLLOW_PADDING = 0.25  # room added on each side when a view is widened
 MIN_MARGIN_MM = 1.0
+XY_MARGIN = 0.08  # the XY view widens when a point comes closer to its edge than this share
+XY_FIT_MIN_MARGIN_MM = 2.0  # twice MIN_MARGIN_MM: a fresh fit never sits on the threshold
 AXIS_COLOURS = {"x": "#e53935", "y": "#43a047", "z": "#1e88e5"}
 TRAIL_COLOUR = "#5c6bc0"
 CURRENT_COLOUR = "#ffb300"
 TARGET_COLOUR = "#d81b60"
+WORKSPACE_COLOUR = "#26a69a"
 
 
 def _padded(values: np.ndarray) -> tuple[float, float]:
     """The span of `values` with a quarter of it (at least 1 mm) added on each side."""
-    low, high = float(values.min()), float(values.max())
-    margin = max((high - low) * FOLLOW_PADDING, MIN_MARGIN_MM)
+    return _fit(float(values.min()), float(values.max()), MIN_MARGIN_MM)
+
+
+def _fit(low: float, high: float, min_margin: float) -> tuple[float, float]:
+    """[low, high] with a quarter of its span (at least `min_margin`) added on each side."""
+    margin = max((high - low) * FOLLOW_PADDING, min_margin)
     return low - margin, high + margin
 
 
@@ -46,16 +53,26 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.setObjectName("positionView2d")
         self.buffer = buffer
         self._target: tuple[float, float, float] | None = None
+        self._workspace: Box | None = None
+        self._estimated = False
 
         self.xy_plot = pg.PlotWidget()
         self.xy_plot.setObjectName("positionXYPlot")
-        self.xy_plot.setToolTip("Stage seen from above: trail, current position (dot), target (+)")
+        self.xy_plot.setToolTip(
+            "Stage seen from above: trail, current position (dot; hollow when estimated),"
+            " target (+), travel limits (dashed)"
+        )
         xy = self.xy_plot.getPlotItem()
         xy.setTitle("XY (from above)")
         xy.setLabel("bottom", "X (mm)")
         xy.setLabel("left", "Y (mm)")
         xy.addItem(_grid(), ignoreBounds=True)
         xy.setAspectLocked(True)
+        self.workspace_outline = pg.PlotCurveItem(
+            pen=pg.mkPen(WORKSPACE_COLOUR, width=1.5, style=Qt.PenStyle.DashLine)
+        )
+        self.workspace_outline.setVisible(False)
+        xy.addItem(self.workspace_outline, ignoreBounds=True)  # fitted by _follow_xy, not auto
         self.trail = xy.plot(pen=pg.mkPen(TRAIL_COLOUR, width=1.5), name="trail")
         self.current_marker = pg.ScatterPlotItem(
             size=12, brush=pg.mkBrush(CURRENT_COLOUR), pen=pg.mkPen("k", width=1)
@@ -74,13 +91,13 @@ class PositionView2D(BufferedViewMixin, QWidget):
         tp.setLabel("bottom", "time (s, 0 = latest sample)")
         tp.setLabel("left", "position (mm)")
         tp.addItem(_grid(), ignoreBounds=True)
-        tp.addLegend(offset=(-10, 10))
         tp.setClipToView(True)
         tp.setDownsampling(auto=True, mode="peak")
         self.curves = {
             axis: tp.plot(pen=pg.mkPen(AXIS_COLOURS[axis], width=1.5), name=axis.upper())
             for axis in AXES
         }
+        self.legend = self._legend_row(tp)
         self.target_lines = {}
         for axis in AXES:
             line = pg.InfiniteLine(
@@ -120,6 +137,22 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.start_refresh_timer()
         self.reset_view()
 
+    def _legend_row(self, tp: pg.PlotItem) -> pg.LegendItem:
+        """A one-row legend in the title row, above the data area, so it never covers a line."""
+        legend = pg.LegendItem(colCount=len(AXES), horSpacing=4)
+        legend.layout.setContentsMargins(4, 2, 4, 2)  # 24 px high: fits the 30 px title row
+        for axis in AXES:
+            legend.addItem(self.curves[axis], axis.upper())
+        title = tp.titleLabel
+        tp.layout.removeItem(title)
+        header = pg.GraphicsLayout()
+        header.setContentsMargins(0, 0, 0, 0)
+        header.addItem(title, row=0, col=0)
+        header.addItem(legend, row=0, col=1)
+        header.layout.setColumnStretchFactor(0, 1)
+        tp.layout.addItem(header, 0, 1)
+        return legend
+
     def refresh(self) -> None:
         """Redraw from the buffer if it changed since the last refresh."""
         rows = self.changed_rows()
@@ -145,11 +178,11 @@ class PositionView2D(BufferedViewMixin, QWidget):
         pyqtgraph's auto-range moved the range on almost every frame while jogging, and every
         move rebuilt the axes' and grid's pictures: most of the GUI thread's time.
         """
-        xy = self.xy_plot.getPlotItem()
-        (x0, x1), (y0, y1) = xy.viewRange()
-        xs, ys = rows[:, 1], rows[:, 2]
-        if xs.min() < x0 or xs.max() > x1 or ys.min() < y0 or ys.max() > y1:
-            xy.setRange(xRange=_padded(xs), yRange=_padded(ys), padding=0)
+        self._follow_xy(rows)
+        self._follow_time(rows, t)
+
+    def _follow_time(self, rows: np.ndarray, t: np.ndarray, force: bool = False) -> None:
+        """Step the time window through 10, 30, 60 s; widen Y when the recent data leaves it."""
         span = -float(t[0])
         window = next((w for w in TIME_WINDOWS_S if w >= span), TIME_WINDOWS_S[-1])
         tp = self.time_plot.getPlotItem()
@@ -157,9 +190,60 @@ class PositionView2D(BufferedViewMixin, QWidget):
             self._time_window = window
             tp.setXRange(-window, 0, padding=0.02)
         recent = rows[t >= -window, 1:4]
+        recent = recent[np.isfinite(recent)]
+        if not len(recent):
+            return
         low, high = tp.viewRange()[1]
-        if recent.min() < low or recent.max() > high:
-            tp.setYRange(*_padded(recent.ravel()), padding=0)
+        if force or recent.min() < low or recent.max() > high:
+            tp.setYRange(*_padded(recent), padding=0)
+
+    def _follow_xy(self, rows: np.ndarray, force: bool = False) -> None:
+        """Widen the XY view when a point nears its edge, so the markers stay wholly inside.
+
+        The trail, the current position and the target must keep a margin of `XY_MARGIN` of the
+        span (at least `MIN_MARGIN_MM`) from every edge: the markers are 12-18 px wide, and a
+        point on the edge would be half hidden. A new fit adds `FOLLOW_PADDING` on each side and
+        includes the travel box, so it moves again only when the data leaves that room.
+        """
+        lows, highs = [], []
+        points = rows[:, 1:3]
+        if len(points):
+            low, high = points.min(axis=0), points.max(axis=0)
+            if not (np.isfinite(low).all() and np.isfinite(high).all()):  # rare: drop NaN rows
+                points = points[np.isfinite(points).all(axis=1)]
+                if len(points):
+                    low, high = points.min(axis=0), points.max(axis=0)
+            if len(points):
+                lows.append(low)
+                highs.append(high)
+        if self._target is not None:
+            lows.append(np.array(self._target[:2]))
+            highs.append(np.array(self._target[:2]))
+        if not lows and self._workspace is None:
+            return
+        xy = self.xy_plot.getPlotItem()
+        (x0, x1), (y0, y1) = xy.viewRange()
+        if lows and not force:
+            low, high = np.min(lows, axis=0), np.max(highs, axis=0)
+            mx = max((x1 - x0) * XY_MARGIN, MIN_MARGIN_MM)
+            my = max((y1 - y0) * XY_MARGIN, MIN_MARGIN_MM)
+            inside = low[0] >= x0 + mx and high[0] <= x1 - mx
+            force = not (inside and low[1] >= y0 + my and high[1] <= y1 - my)
+        if self._workspace is not None and not force:
+            (bx0, bx1), (by0, by1), _ = self._workspace
+            force = bx0 < x0 or bx1 > x1 or by0 < y0 or by1 > y1
+        if not force:
+            return
+        if self._workspace is not None:
+            (bx0, bx1), (by0, by1), _ = self._workspace
+            lows.append(np.array([bx0, by0]))
+            highs.append(np.array([bx1, by1]))
+        low, high = np.min(lows, axis=0), np.max(highs, axis=0)
+        xy.setRange(
+            xRange=_fit(low[0], high[0], XY_FIT_MIN_MARGIN_MM),
+            yRange=_fit(low[1], high[1], XY_FIT_MIN_MARGIN_MM),
+            padding=0,
+        )
 
     def set_target(self, x: object, y: float | None = None, z: float | None = None) -> None:
         """Mark the target: `set_target(x, y, z)` or `set_target((x, y, z))` in mm; None hides it.
@@ -181,6 +265,48 @@ class PositionView2D(BufferedViewMixin, QWidget):
             line.setVisible(not np.isnan(value))
             if not np.isnan(value):
                 line.setValue(value)
+        if self._following:
+            self._follow_xy(self.buffer.view())  # a target outside the view widens it at once
+
+    def set_workspace(self, box: Box | None) -> None:
+        """Outline the travel box's XY rectangle (dashed), in mm; None hides it.
+
+        The outline does not take part in pyqtgraph's auto-range; while following, the XY view
+        widens to hold it, and Reset view fits it with the data.
+        """
+        if box is None:
+            self._workspace = None
+            self.workspace_outline.setData([], [])
+            self.workspace_outline.setVisible(False)
+            return
+        if len(box) != 3 or any(len(pair) != 2 for pair in box):
+            raise ValueError(f"a travel box is three (min, max) pairs, not {box!r}")
+        (x0, x1), (y0, y1), (z0, z1) = (sorted((float(a), float(b))) for a, b in box)
+        if not np.isfinite([x0, x1, y0, y1]).all():
+            raise ValueError(f"a travel box needs finite X and Y limits, not {box!r}")
+        self._workspace = ((x0, x1), (y0, y1), (z0, z1))
+        self.workspace_outline.setData([x0, x1, x1, x0, x0], [y0, y0, y1, y1, y0])
+        self.workspace_outline.setVisible(True)
+        if self._following:
+            self._follow_xy(self.buffer.view())
+
+    def workspace(self) -> Box | None:
+        """The travel box shown, or None."""
+        return self._workspace
+
+    def set_estimated(self, estimated: bool) -> None:
+        """Draw the current-position marker hollow while the position is estimated, not read."""
+        self._estimated = bool(estimated)
+        if self._estimated:
+            self.current_marker.setPen(pg.mkPen(CURRENT_COLOUR, width=2.5))
+            self.current_marker.setBrush(QBrush(Qt.BrushStyle.NoBrush))
+        else:
+            self.current_marker.setPen(pg.mkPen("k", width=1))
+            self.current_marker.setBrush(pg.mkBrush(CURRENT_COLOUR))
+
+    def is_estimated(self) -> bool:
+        """Whether the current position is shown as estimated (hollow marker)."""
+        return self._estimated
 
     def reset_view(self) -> None:
         """Zoom both plots to fit their data, following new data again.
@@ -193,10 +319,13 @@ class PositionView2D(BufferedViewMixin, QWidget):
         for plot in (self.xy_plot, self.time_plot):
             plot.getPlotItem().disableAutoRange()
         rows = self.buffer.view()
-        if len(rows):
-            self._follow(rows, rows[:, 0] - rows[-1, 0])
+        if len(rows) or self._target is not None or self._workspace is not None:
+            self._follow_xy(rows, force=True)
         else:
             self.xy_plot.getPlotItem().setRange(xRange=(-1, 1), yRange=(-1, 1), padding=0)
+        if len(rows):
+            self._follow_time(rows, rows[:, 0] - rows[-1, 0], force=True)
+        else:
             self.time_plot.getPlotItem().setRange(xRange=(-TIME_WINDOWS_S[0], 0), yRange=(-1, 1))
 
     def _stop_following(self) -> None:

@@ -94,3 +94,98 @@ def test_matches_a_list_model(capacity: int, ops: list[float | None]) -> None:
             model = ([*model, row])[-capacity:]
         assert buffer.view().tolist() == model
         assert len(buffer) == len(model)
+
+
+def _assert_copies_agree(buffer: PositionBuffer) -> None:
+    """Every kept row is identical in both halves of the doubled storage."""
+    cap = buffer.capacity
+    start = (buffer._next - len(buffer)) % cap
+    for i in range(start, start + len(buffer)):
+        primary = i % cap
+        np.testing.assert_array_equal(buffer._data[primary], buffer._data[primary + cap])
+
+
+def test_shift_without_wraparound() -> None:
+    buffer = PositionBuffer(capacity=10)
+    for i in range(4):
+        buffer.append(i, i, 10 * i, -i)
+    version = buffer.version
+    buffer.shift(1.5, -2.0, 3.0)
+    assert buffer.version != version
+    assert buffer.view().tolist() == [[i, i + 1.5, 10 * i - 2.0, -i + 3.0] for i in range(4)]
+    assert buffer.last() == pytest.approx((3, 4.5, 28.0, 0.0))
+    _assert_copies_agree(buffer)
+
+
+@pytest.mark.parametrize("appended", [5, 6, 7, 9, 10, 13])
+def test_shift_after_wraparound_shifts_both_copies(appended: int) -> None:
+    buffer = PositionBuffer(capacity=5)
+    for i in range(appended):
+        buffer.append(i, i, 2 * i, 3 * i)
+    before = buffer.view().copy()
+    buffer.shift(10.0, 20.0, 30.0)
+    expected = before + np.array([0.0, 10.0, 20.0, 30.0])
+    np.testing.assert_array_equal(buffer.view(), expected)
+    _assert_copies_agree(buffer)
+    # Later appends wrap over the shifted rows: the view must still read shifted data, which
+    # breaks if only one copy of the doubled storage was shifted.
+    for k in range(1, 5):
+        buffer.append(100 + k, -k, -k, -k)
+        view = buffer.view()
+        np.testing.assert_array_equal(view[: 5 - k], expected[k:])
+        assert view[-1].tolist() == [100 + k, -k, -k, -k]
+        _assert_copies_agree(buffer)
+
+
+def test_shift_after_clear_keep_last_and_capacity_one() -> None:
+    buffer = PositionBuffer(capacity=1)
+    buffer.append(0, 1, 2, 3)
+    buffer.append(1, 4, 5, 6)
+    buffer.shift(-4, -5, -6)
+    assert buffer.view().tolist() == [[1, 0, 0, 0]]
+    _assert_copies_agree(buffer)
+
+    buffer = PositionBuffer(capacity=4)
+    for i in range(7):
+        buffer.append(i, i, i, i)
+    buffer.clear(keep_last=True)
+    buffer.shift(1, 1, 1)
+    assert buffer.view().tolist() == [[6, 7, 7, 7]]
+    _assert_copies_agree(buffer)
+
+
+def test_shift_of_an_empty_buffer_bumps_the_version_only() -> None:
+    buffer = PositionBuffer(capacity=3)
+    version = buffer.version
+    buffer.shift(1, 2, 3)
+    assert buffer.version != version
+    assert len(buffer) == 0
+    buffer.append(0, 0, 0, 0)  # rows added after a shift are not shifted
+    assert buffer.view().tolist() == [[0, 0, 0, 0]]
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    capacity=st.integers(1, 8),
+    ops=st.lists(
+        st.one_of(st.floats(-1e3, 1e3), st.none(), st.tuples(st.integers(-50, 50))),
+        max_size=40,
+    ),
+)
+def test_shift_matches_a_list_model(capacity: int, ops: list[float | tuple[int] | None]) -> None:
+    buffer = PositionBuffer(capacity=capacity)
+    model: list[list[float]] = []
+    for op in ops:
+        if op is None:
+            buffer.clear()
+            model.clear()
+        elif isinstance(op, tuple):
+            d = float(op[0])
+            buffer.shift(d, 2 * d, -d)
+            model = [[t, x + d, y + 2 * d, z - d] for t, x, y, z in model]
+        else:
+            row = [op, op + 1, op + 2, op + 3]
+            buffer.append(*row)
+            model = ([*model, row])[-capacity:]
+        assert buffer.view().tolist() == model
+        _assert_copies_agree(buffer)

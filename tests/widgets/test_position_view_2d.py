@@ -1,14 +1,16 @@
-"""PositionView2D: refresh from the buffer, markers, clear, reset, timer."""
+"""PositionView2D: refresh from the buffer, markers, margins, legend, workspace, clear, reset."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QPointF, QRectF, Qt
+from PySide6.QtGui import QColor
+from PySide6.QtWidgets import QApplication
 
 from widgets._view_common import REFRESH_INTERVAL_MS
 from widgets.position_buffer import PositionBuffer
-from widgets.position_view_2d import PositionView2D
+from widgets.position_view_2d import CURRENT_COLOUR, PositionView2D
 
 
 @pytest.fixture
@@ -136,3 +138,206 @@ def test_plots_stack_when_narrow(view: PositionView2D) -> None:
     assert view.splitter.orientation() == Qt.Orientation.Horizontal
     view.resize(400, 600)
     assert view.splitter.orientation() == Qt.Orientation.Vertical
+
+
+def _assert_clear_of_the_edges(view: PositionView2D, xs: list[float], ys: list[float]) -> None:
+    """Every point keeps 8% of the span (at least 1 mm) from each edge of the XY view."""
+    (x0, x1), (y0, y1) = view.xy_plot.getPlotItem().viewRange()
+    mx, my = max(0.08 * (x1 - x0), 1.0), max(0.08 * (y1 - y0), 1.0)
+    tol = 1e-9
+    assert min(xs) - x0 >= mx - tol and x1 - max(xs) >= mx - tol, ((x0, x1), xs)
+    assert min(ys) - y0 >= my - tol and y1 - max(ys) >= my - tol, ((y0, y1), ys)
+
+
+def test_a_point_near_the_edge_widens_the_view(view: PositionView2D) -> None:
+    view.refresh()
+    plot = view.xy_plot.getPlotItem()
+    (x0, x1), _ = plot.viewRange()
+    last = view.buffer.last()
+    assert last is not None
+    edge_x = x1 - 0.01 * (x1 - x0)  # inside the range, but the marker would be half outside
+    view.buffer.append(last[0] + 0.1, edge_x, last[2], last[3])
+    view.refresh()
+    rows = view.buffer.view()
+    _assert_clear_of_the_edges(view, rows[:, 1].tolist(), rows[:, 2].tolist())
+
+
+def test_a_new_target_outside_the_view_widens_it_at_once(view: PositionView2D) -> None:
+    view.refresh()
+    plot = view.xy_plot.getPlotItem()
+    before = plot.viewRange()
+    view.set_target(3.0, 4.0, 0.0)  # well inside: no range change
+    assert plot.viewRange() == before
+    view.set_target(-80.0, 250.0, 1.0)  # no refresh: set_target itself widens the view
+    rows = view.buffer.view()
+    _assert_clear_of_the_edges(view, [*rows[:, 1], -80.0], [*rows[:, 2], 250.0])
+    after = plot.viewRange()
+    view.refresh()  # unchanged buffer, target inside: nothing moves
+    assert plot.viewRange() == after
+
+
+def test_a_target_does_not_move_a_view_the_user_zoomed(view: PositionView2D) -> None:
+    view.refresh()
+    plot = view.xy_plot.getPlotItem()
+    plot.getViewBox().sigRangeChangedManually.emit([True, True])
+    plot.setRange(xRange=(0, 10), yRange=(0, 10), padding=0)
+    before = plot.viewRange()
+    view.set_target(500.0, 500.0)
+    assert plot.viewRange() == before
+    view.reset_view()
+    rows = view.buffer.view()
+    _assert_clear_of_the_edges(view, [*rows[:, 1], 500.0], [*rows[:, 2], 500.0])
+
+
+def test_markers_are_drawn_wholly_inside_the_view(qtbot) -> None:
+    buffer = PositionBuffer(capacity=10)
+    buffer.append(0.0, 0.0, 0.0, 0.0)
+    buffer.append(1.0, 40.0, 0.0, 0.0)  # the current position at the right of the trail
+    widget = PositionView2D(buffer)
+    qtbot.addWidget(widget)
+    widget.set_target(40.0, -30.0, 0.0)  # at the bottom-right corner of the data
+    widget.resize(900, 500)
+    widget.show()
+    qtbot.waitExposed(widget)
+    widget.refresh()
+    plot = widget.xy_plot.getPlotItem()
+    plot.setRange(xRange=(0.0, 40.0), yRange=(-30.0, 0.0), padding=0)  # points on the edges
+    buffer.append(2.0, 40.0, 0.0, 0.0)  # standing still: the next frame must make room
+    widget.refresh()
+    vb = plot.getViewBox()
+    area = vb.sceneBoundingRect()
+    for marker in (widget.current_marker, widget.target_marker):
+        (x,), (y,) = marker.getData()
+        centre = vb.mapViewToScene(QPointF(x, y))
+        half = marker.opts["size"] / 2 + 1  # + the pen
+        box = QRectF(centre.x() - half, centre.y() - half, 2 * half, 2 * half)
+        assert area.contains(box), (marker, box, area)
+
+
+def test_legend_is_clear_of_the_data_area(view: PositionView2D, qtbot) -> None:
+    tp = view.time_plot.getPlotItem()
+    assert [label.text for _, label in view.legend.items] == ["X", "Y", "Z"]
+    for size in ((900, 500), (400, 700), (1400, 300)):  # side by side, stacked, wide and low
+        view.resize(*size)
+        view.show()
+        qtbot.waitExposed(view)
+        view.refresh()
+        view.time_plot.viewport().update()
+        QApplication.processEvents()
+        legend = view.legend.sceneBoundingRect()
+        data = tp.getViewBox().sceneBoundingRect()
+        assert view.legend.isVisible() and legend.width() > 0 and legend.height() > 0
+        assert not legend.intersects(data), (size, legend, data)
+        assert legend.bottom() <= data.top()  # above the data, in the title row
+
+
+def test_workspace_outline(view: PositionView2D) -> None:
+    assert view.workspace() is None
+    assert not view.workspace_outline.isVisible()
+    view.set_workspace(((-5.0, 20.0), (30.0, -2.0), (-1.0, 1.0)))  # limits in either order
+    assert view.workspace() == ((-5.0, 20.0), (-2.0, 30.0), (-1.0, 1.0))
+    x, y = view.workspace_outline.getData()
+    assert list(zip(x.tolist(), y.tolist(), strict=True)) == [
+        (-5.0, -2.0),
+        (20.0, -2.0),
+        (20.0, 30.0),
+        (-5.0, 30.0),
+        (-5.0, -2.0),
+    ]
+    assert view.workspace_outline.isVisible()
+    pen = view.workspace_outline.opts["pen"]
+    assert pen.style() == Qt.PenStyle.DashLine
+    assert pen.color().name() not in {view.trail.opts["pen"].color().name(), "#000000"}
+    vb = view.xy_plot.getPlotItem().getViewBox()
+    assert view.workspace_outline not in vb.addedItems  # no part in pyqtgraph's auto-range
+    view.set_workspace(None)
+    assert view.workspace() is None
+    assert not view.workspace_outline.isVisible()
+    with pytest.raises(ValueError):
+        view.set_workspace(((0.0, 1.0), (0.0, 1.0)))  # type: ignore[arg-type]
+
+
+def test_reset_view_fits_the_workspace_too(view: PositionView2D) -> None:
+    view.refresh()
+    plot = view.xy_plot.getPlotItem()
+    plot.getViewBox().sigRangeChangedManually.emit([True, True])
+    view.set_workspace(((-100.0, 100.0), (-50.0, 60.0), (0.0, 10.0)))  # not following: no fit
+    (x0, x1), _ = plot.viewRange()
+    assert x0 > -100.0
+    view.reset_view()
+    (x0, x1), (y0, y1) = plot.viewRange()
+    assert x0 < -100.0 and x1 > 100.0 and y0 < -50.0 and y1 > 60.0
+    before = plot.viewRange()
+    view.refresh()
+    assert plot.viewRange() == before  # the fit is stable: no per-frame range changes
+
+
+def test_a_workspace_set_while_following_is_brought_into_view(view: PositionView2D) -> None:
+    view.refresh()
+    view.set_workspace(((0.0, 300.0), (0.0, 200.0), (0.0, 10.0)))
+    (x0, x1), (y0, y1) = view.xy_plot.getPlotItem().viewRange()
+    assert x0 <= 0.0 and x1 >= 300.0 and y0 <= 0.0 and y1 >= 200.0
+
+
+def test_reset_view_of_an_empty_buffer_fits_the_workspace(qtbot) -> None:
+    widget = PositionView2D(PositionBuffer(capacity=5))
+    qtbot.addWidget(widget)
+    widget.set_workspace(((10.0, 20.0), (30.0, 40.0), (0.0, 1.0)))
+    widget.reset_view()
+    (x0, x1), (y0, y1) = widget.xy_plot.getPlotItem().viewRange()
+    assert x0 < 10.0 and x1 > 20.0 and y0 < 30.0 and y1 > 40.0
+
+
+def _pixel_at(view: PositionView2D, x: float, y: float) -> QColor:
+    """The colour drawn at (x, y) mm of the XY plot."""
+    plot = view.xy_plot
+    scene = plot.getPlotItem().getViewBox().mapViewToScene(QPointF(x, y))
+    pixel = plot.mapFromScene(scene)
+    return plot.grab().toImage().pixelColor(pixel)
+
+
+def test_estimated_position_is_drawn_hollow(view: PositionView2D, qtbot) -> None:
+    view.resize(900, 500)
+    view.show()
+    qtbot.waitExposed(view)
+    view.refresh()
+    amber = QColor(CURRENT_COLOUR)
+    assert not view.is_estimated()
+
+    def is_amber(colour: QColor) -> bool:
+        pairs = zip(colour.getRgb()[:3], amber.getRgb()[:3], strict=True)
+        return all(abs(a - b) < 40 for a, b in pairs)
+
+    assert is_amber(_pixel_at(view, 9.0, 18.0))  # filled: the centre is the marker's colour
+    view.set_estimated(True)
+    assert view.is_estimated()
+    assert view.current_marker.opts["brush"].style() == Qt.BrushStyle.NoBrush
+    assert view.current_marker.opts["pen"].color() == amber
+    assert not is_amber(_pixel_at(view, 9.0, 18.0))  # hollow: the centre shows through
+    view.buffer.append(200.0, 9.0, 18.0, 0.0)  # new data keeps the hollow marker
+    view.refresh()
+    assert view.current_marker.opts["brush"].style() == Qt.BrushStyle.NoBrush
+    view.set_estimated(False)
+    assert not view.is_estimated()
+    assert is_amber(_pixel_at(view, 9.0, 18.0))
+
+
+def test_a_shifted_buffer_redraws_the_trail_in_the_new_coordinates(view, buffer) -> None:
+    view.refresh()
+    buffer.shift(-9.0, -18.0, 9.0)  # the current position becomes the new home
+    view.refresh()
+    x, y = view.trail.getData()
+    assert x.tolist() == [i - 9.0 for i in range(10)]
+    assert y.tolist() == [2 * i - 18.0 for i in range(10)]
+    assert view.current_marker.getData()[0].tolist() == [0.0]
+    _assert_clear_of_the_edges(view, x.tolist(), y.tolist())
+
+
+def test_a_position_without_y_does_not_break_the_fit(view: PositionView2D, buffer) -> None:
+    view.refresh()
+    buffer.append(200.0, 300.0, float("nan"), 0.0)  # a glitch: no Y in one sample
+    buffer.append(201.0, 300.0, 5.0, 0.0)
+    view.refresh()
+    (x0, x1), (y0, y1) = view.xy_plot.getPlotItem().viewRange()
+    assert np.isfinite([x0, x1, y0, y1]).all()
+    assert x0 < 300.0 < x1
