@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import logging
 
-from PySide6.QtCore import Qt, Signal
-from PySide6.QtGui import QIntValidator
-from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QWidget
+from PySide6.QtCore import QEvent, QObject, Qt, Signal
+from PySide6.QtGui import QIntValidator, QKeyEvent
+from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QLineEdit, QPushButton, QWidget
 
 log = logging.getLogger(__name__)
 
@@ -20,6 +20,20 @@ _STATE_STYLE = {
     CONNECTED: ("Connected", "#2e7d32"),
     ERROR: ("Error", "#c62828"),
 }
+DESCRIPTION_WIDTH = 220  # px, fixed: a longer description is elided (whole in the tooltip)
+STATE_MAX_WIDTH = 360  # px: a longer state text is elided (whole in the tooltip)
+
+
+def _restore_edit(edit: QLineEdit, text: str, cursor: int, start: int, length: int) -> None:
+    """Put back a line edit's text, cursor and selection (e.g. an inline completion)."""
+    if edit.text() != text:
+        edit.setText(text)
+    if length and cursor == start:
+        edit.setSelection(start + length, -length)
+    elif length:
+        edit.setSelection(start, length)
+    else:
+        edit.setCursorPosition(cursor)
 
 
 class ConnectionBar(QWidget):
@@ -46,10 +60,13 @@ class ConnectionBar(QWidget):
             "Serial port, or any pyserial URL (e.g. sim://coxiris, socket://host:port, loop://)"
         )
         self.port_combo.currentTextChanged.connect(self._port_text_changed)
+        # Enter connects; an event filter, as the combo box hands an ignored Return back to its
+        # line edit (returnPressed would come twice)
+        self.port_combo.lineEdit().installEventFilter(self)
         self.description_label = QLabel()
         self.description_label.setObjectName("portDescription")
         self.description_label.setStyleSheet("color: #616161;")
-        self.description_label.setMaximumWidth(220)
+        self.description_label.setFixedWidth(DESCRIPTION_WIDTH)  # the widgets after it stay put
         self.refresh_button = QPushButton("⟳")
         self.refresh_button.setObjectName("refreshPortsButton")
         self.refresh_button.setToolTip("Look for serial ports again")
@@ -73,11 +90,15 @@ class ConnectionBar(QWidget):
 
         self.connect_button = QPushButton("Connect")
         self.connect_button.setObjectName("connectButton")
-        self.connect_button.setMinimumWidth(96)
+        self.connect_button.setAutoDefault(False)  # Enter in the port field is handled here
+        metrics = self.connect_button.fontMetrics()
+        widest = max(metrics.horizontalAdvance(t) for t in ("Connect", "Cancel", "Disconnect"))
+        self.connect_button.setMinimumWidth(max(96, widest + 24))
         self.connect_button.clicked.connect(self._connect_clicked)
         self.state_label = QLabel()
         self.state_label.setObjectName("connectionState")
         self.state_label.setMinimumWidth(110)
+        self.state_label.setMaximumWidth(STATE_MAX_WIDTH)
 
         layout = QHBoxLayout(self)
         for text, widget in (
@@ -87,7 +108,6 @@ class ConnectionBar(QWidget):
             ("Protocol:", self.protocol_combo),
             ("Baud:", self.baud_combo),
             (None, self.connect_button),
-            (None, self.state_label),
         ):
             if text:
                 label = QLabel(text)
@@ -95,27 +115,38 @@ class ConnectionBar(QWidget):
                 layout.addWidget(label)
             layout.addWidget(widget)
         layout.addStretch(1)
+        layout.addWidget(self.state_label)  # after the stretch: its text never moves the rest
         self.set_state(DISCONNECTED)
 
     # -- ports ---------------------------------------------------------------------------
 
     def set_ports(self, ports: list[tuple[str, str]]) -> None:
-        """List (device, description) pairs, keeping what is selected or typed."""
-        current = self.port()
+        """List (device, description) pairs, keeping what is selected or typed as it is.
+
+        The text (with any options, e.g. `sim://coxiris?mute=1`), the cursor and the selection
+        (an inline completion) stay: this runs every few seconds, maybe while the user types.
+        """
+        combo, edit = self.port_combo, self.port_combo.lineEdit()
         self._descriptions = {device: description for device, description in ports}
-        self.port_combo.blockSignals(True)
-        self.port_combo.clear()
-        for device, description in ports:
-            self.port_combo.addItem(device)
-            self.port_combo.setItemData(
-                self.port_combo.count() - 1, description, Qt.ItemDataRole.ToolTipRole
-            )
-        index = self.port_combo.findText(current)
-        if index >= 0:
-            self.port_combo.setCurrentIndex(index)
-        elif current:
-            self.port_combo.setEditText(current)  # a typed URL stays
-        self.port_combo.blockSignals(False)
+        text, cursor = edit.text(), edit.cursorPosition()
+        start, length = edit.selectionStart(), len(edit.selectedText())
+        devices = [device for device, _ in ports]
+        combo.blockSignals(True)
+        try:
+            rebuild = devices != [combo.itemText(i) for i in range(combo.count())]
+            if rebuild:
+                combo.clear()
+                combo.addItems(devices)
+            for index, (_, description) in enumerate(ports):
+                if combo.itemData(index, Qt.ItemDataRole.ToolTipRole) != description:
+                    combo.setItemData(index, description, Qt.ItemDataRole.ToolTipRole)
+            index = combo.findText(text)
+            if rebuild and index >= 0:
+                combo.setCurrentIndex(index)
+            # last: changing items resets the edit text to the current item's
+            _restore_edit(edit, text, cursor, start, length)
+        finally:
+            combo.blockSignals(False)
         self._port_text_changed(self.port())
 
     def port(self) -> str:
@@ -126,12 +157,33 @@ class ConnectionBar(QWidget):
         """Select or type a port."""
         self.port_combo.setCurrentText(port)
 
+    def port_description(self, port: str) -> str:
+        """The listed description of `port`, or of the port it adds options to ("" if none)."""
+        port = port.strip()
+        if port in self._descriptions:
+            return self._descriptions[port]
+        return self._descriptions.get(port.split("?", 1)[0], "")  # sim://coxiris?mute=1
+
     def _port_text_changed(self, text: str) -> None:
-        description = self._descriptions.get(text.strip(), "")
-        metrics = self.description_label.fontMetrics()
-        elided = metrics.elidedText(description, Qt.TextElideMode.ElideRight, 210)
-        self.description_label.setText(elided)
-        self.description_label.setToolTip(description or "No description for this port")
+        description = self.port_description(text)
+        label = self.description_label
+        width = DESCRIPTION_WIDTH - 4  # fixed: also right before the first layout
+        elided = label.fontMetrics().elidedText(description, Qt.TextElideMode.ElideRight, width)
+        label.setText(elided)
+        label.setToolTip(description or "No description for this port")
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        """Enter (Return) in the port field connects, as the Connect button does, when idle."""
+        if (
+            watched is self.port_combo.lineEdit()
+            and event.type() == QEvent.Type.KeyPress
+            and isinstance(event, QKeyEvent)
+            and event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter)
+        ):
+            if self._state in (DISCONNECTED, ERROR):
+                self._connect_clicked()
+            return True
+        return super().eventFilter(watched, event)
 
     # -- protocol and baud ---------------------------------------------------------------
 
@@ -194,8 +246,10 @@ class ConnectionBar(QWidget):
             raise ValueError(f"unknown state {state!r}: one of {sorted(_STATE_STYLE)}")
         self._state = state
         text, colour = _STATE_STYLE[state]
-        short = detail if len(detail) <= 60 else detail[:59] + "…"
-        self.state_label.setText(f"● {text}" + (f": {short}" if short else ""))
+        full = f"● {text}" + (f": {detail}" if detail else "")
+        metrics = self.state_label.fontMetrics()
+        width = STATE_MAX_WIDTH - 4  # the label's text is elided, never clipped
+        self.state_label.setText(metrics.elidedText(full, Qt.TextElideMode.ElideRight, width))
         self.state_label.setToolTip(detail or text)
         self.state_label.setStyleSheet(f"color: {colour}; font-weight: bold;")
         idle = state in (DISCONNECTED, ERROR)

@@ -37,6 +37,13 @@ COLOURS = {TX: "#1565c0", RX: "#2e7d32", NOTE: "#757575"}
 Record = tuple[str, bytes, float]  # (direction or "note", data, timestamp in seconds)
 
 
+def _time(record: Record) -> float:
+    return record[2]
+
+
+Piece = tuple[str, bool, str]  # (colour kind, starts a line, text)
+
+
 def ask_save_path(parent: QWidget) -> str:
     """Ask where to export the log; "" when cancelled."""
     path, _ = QFileDialog.getSaveFileName(
@@ -59,14 +66,20 @@ class RawConsole(QWidget):
         super().__init__(parent)
         self.setObjectName("rawConsole")
         self.ask_export_path: Callable[[], str] = lambda: ask_save_path(self)
+        # time.monotonic, as the traffic's timestamps: notes' default time and the hex tail wait
+        self.clock: Callable[[], float] = time.monotonic
         self._records: deque[Record] = deque(maxlen=max_records)
         self._pending: deque[Record] = deque(maxlen=max(max_lines - 1, 1))  # room for a note
         self._origin: float | None = None
+        self._origin_set = False  # by set_time_origin (else: the earliest record)
+        self._shown_until: float | None = None  # time of the latest record rendered in the view
+        self._tail_since = 0.0  # clock() when the held hex row last got bytes
         self._mode = TEXT
         self._timestamps = True
         self._follow = True
         self._writing = False
         self._assembler = fmt.TextAssembler()
+        self._hex = fmt.HexAssembler()
         self._skipped = 0
         self._formats = {}
         for kind, colour in COLOURS.items():
@@ -146,13 +159,26 @@ class RawConsole(QWidget):
 
     def append_note(self, text: str, timestamp: float | None = None) -> None:
         """Log an information line such as "connected" (timestamp: monotonic now by default)."""
-        when = time.monotonic() if timestamp is None else timestamp
+        when = self.clock() if timestamp is None else timestamp
         self._add((NOTE, text.encode("utf-8"), when))
 
     def _add(self, record: Record) -> None:
-        if self._origin is None:
-            self._origin = record[2]
-        self._records.append(record)
+        when = record[2]
+        if self._origin is None or (not self._origin_set and when < self._origin):
+            if self._origin is not None:
+                self._shown_until = float("inf")  # every shown time moves: re-render at flush
+            self._origin = when
+        records = self._records
+        if not records or records[-1][2] <= when:
+            records.append(record)  # nearly always: in time order
+        else:  # late (a note is stamped when added, traffic comes in batches): insert in place
+            index = len(records) - 1
+            while index > 0 and records[index - 1][2] > when:
+                index -= 1
+            if len(records) == records.maxlen:
+                records.popleft()
+                index = max(index - 1, 0)
+            records.insert(index, record)
         if len(self._pending) == self._pending.maxlen:
             self._skipped += 1  # a flood: the oldest unshown record will never be shown
         self._pending.append(record)
@@ -162,56 +188,77 @@ class RawConsole(QWidget):
     def set_time_origin(self, timestamp: float) -> None:
         """Timestamps are shown as seconds since `timestamp` (default: the first record)."""
         self._origin = timestamp
+        self._origin_set = True
         self._rerender()
 
     def records(self) -> list[Record]:
-        """The retained records (bounded), oldest first: (direction or "note", data, time)."""
+        """The retained records (bounded), in time order: (direction or "note", data, time)."""
         return list(self._records)
 
     def flush(self) -> None:
         """Show the records appended since the last flush (the timer calls this at ~20 Hz)."""
         self._flush_timer.stop()
         if self._pending:
-            records = list(self._pending)
+            records = sorted(self._pending, key=_time)  # stable: ties keep their arrival order
             self._pending.clear()
+            if self._shown_until is not None and records[0][2] < self._shown_until:
+                self._rerender()  # older than what is shown: redo the view in time order
+                return
             if self._skipped:
                 text = f"{self._skipped} records not shown here (too many at once; export has them)"
                 records.insert(0, (NOTE, text.encode(), records[0][2]))
                 self._skipped = 0
             self._write(records)
+        elif self._hex.pending():
+            if self.clock() - self._tail_since >= fmt.HEX_IDLE:
+                self._emit([(kind, True, row) for kind, row in self._hex.close()])
+            else:
+                self._flush_timer.start()  # look again soon
 
     # -- rendering -----------------------------------------------------------------------
 
     def _pieces(
-        self, record: Record, timestamps: bool, mode: str, assembler: fmt.TextAssembler
-    ) -> list[tuple[bool, str]]:
-        """(starts a line, text) pieces of a record; see TextAssembler."""
+        self,
+        record: Record,
+        timestamps: bool,
+        mode: str,
+        assembler: fmt.TextAssembler,
+        hex_assembler: fmt.HexAssembler,
+    ) -> list[Piece]:
+        """(colour, starts a line, text) pieces of a record; see TextAssembler, HexAssembler."""
         kind, data, when = record
         seconds = when - (self._origin or 0.0) if timestamps else None
         if kind == NOTE:
             assembler.close()
-            return [(True, fmt.note_line(data.decode("utf-8", "replace"), seconds))]
+            pieces: list[Piece] = [(d, True, row) for d, row in hex_assembler.close()]
+            pieces.append((NOTE, True, fmt.note_line(data.decode("utf-8", "replace"), seconds)))
+            return pieces
         if mode == HEX:
-            assembler.close()
-            return [(True, line) for line in fmt.hex_lines(kind, data, seconds)]
-        return assembler.feed(kind, data, seconds)
+            return [(d, True, row) for d, row in hex_assembler.feed(kind, data, seconds, when)]
+        return [(kind, starts, text) for starts, text in assembler.feed(kind, data, seconds)]
 
     def _write(self, records: Iterable[Record]) -> None:
+        pieces: list[Piece] = []
+        for record in records:
+            pieces += self._pieces(record, self._timestamps, self._mode, self._assembler, self._hex)
+            self._shown_until = record[2]
+        if self._hex.pending():
+            self._tail_since = self.clock()
+            if not self._flush_timer.isActive():
+                self._flush_timer.start()  # shown if no more bytes come for it
+        self._emit(pieces)
+
+    def _emit(self, pieces: list[Piece]) -> None:
+        if not pieces:
+            return
         document = self.view.document()
         first = document.isEmpty()
         runs: list[tuple[str, list[str]]] = []  # consecutive pieces of one colour, as one string
-        for record in records:
-            pieces = self._pieces(record, self._timestamps, self._mode, self._assembler)
-            if not pieces:
-                continue
-            if not runs or runs[-1][0] != record[0]:
-                runs.append((record[0], []))
-            texts = runs[-1][1]
-            for starts_line, text in pieces:
-                texts.append(text if first or not starts_line else "\n" + text)
-                first = False
-        if not runs:
-            return
+        for kind, starts_line, text in pieces:
+            if not runs or runs[-1][0] != kind:
+                runs.append((kind, []))
+            runs[-1][1].append(text if first or not starts_line else "\n" + text)
+            first = False
         cursor = QTextCursor(document)
         cursor.movePosition(QTextCursor.MoveOperation.End)
         scroll = self.view.verticalScrollBar()
@@ -226,11 +273,16 @@ class RawConsole(QWidget):
         finally:
             self._writing = False
 
-    def _rerender(self) -> None:
+    def _reset_view(self) -> None:
         self._pending.clear()
         self._skipped = 0
         self._assembler = fmt.TextAssembler()
+        self._hex = fmt.HexAssembler()
+        self._shown_until = None
         self.view.clear()
+
+    def _rerender(self) -> None:
+        self._reset_view()
         count = self.view.maximumBlockCount()
         recent = list(self._records)[-count:] if count > 0 else list(self._records)
         if recent:
@@ -277,23 +329,23 @@ class RawConsole(QWidget):
     def clear(self) -> None:
         """Forget all records and empty the view."""
         self._records.clear()
-        self._pending.clear()
-        self._skipped = 0
-        self._assembler = fmt.TextAssembler()
-        self.view.clear()
+        self._reset_view()
         self._follow = True
         self.paused_label.setVisible(False)
 
     def export(self, path: str | Path) -> int:
         """Write every retained record as text, with timestamps, in the display mode; lines."""
         lines: list[str] = []
-        assembler = fmt.TextAssembler()
+        assembler, hex_assembler = fmt.TextAssembler(), fmt.HexAssembler()
         for record in self._records:
-            for starts_line, text in self._pieces(record, True, self._mode, assembler):
+            for _, starts_line, text in self._pieces(
+                record, True, self._mode, assembler, hex_assembler
+            ):
                 if starts_line or not lines:
                     lines.append(text)
                 else:
                     lines[-1] += text
+        lines += [row for _, row in hex_assembler.close()]
         Path(path).write_text("".join(line + "\n" for line in lines), encoding="utf-8")
         return len(lines)
 

@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import logging
+from collections.abc import Iterable
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QEvent, QObject, Signal
+from PySide6.QtGui import QKeyEvent, QKeySequence
 from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QVBoxLayout, QWidget
 
 from widgets import traffic_format as fmt
@@ -14,6 +16,37 @@ log = logging.getLogger(__name__)
 
 TEXT, HEX = "text", "hex"
 LINE_ENDINGS = {"LF (\\n)": b"\n", "CR (\\r)": b"\r", "CR+LF": b"\r\n", "none": b""}
+WINDOW_SHORTCUTS = ("Ctrl+E",)  # the window's "Export traffic log", not the edit's end of line
+
+
+class ShortcutPassThrough(QObject):
+    """Event filter: keys a line edit would keep for itself (e.g. emacs Ctrl+E) reach shortcuts.
+
+    Qt first offers a key that matches a shortcut to the focus widget as a ShortcutOverride
+    event; QLineEdit accepts Ctrl+E there (with X11 key bindings) and the shortcut never fires.
+    Filtering that event out, unaccepted, lets Qt's shortcut map trigger the shortcut.
+    """
+
+    def __init__(self, keys: Iterable[str], parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._keys = [QKeySequence(key) for key in keys]
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        """Hide a ShortcutOverride for one of the keys from the widget (without accepting it)."""
+        if event.type() == QEvent.Type.ShortcutOverride and isinstance(event, QKeyEvent):
+            pressed = QKeySequence(event.keyCombination())
+            if any(
+                pressed.matches(key) == QKeySequence.SequenceMatch.ExactMatch for key in self._keys
+            ):
+                return True
+        return False
+
+
+def pass_shortcuts_through(widget: QWidget, keys: Iterable[str]) -> ShortcutPassThrough:
+    """Let `keys` (like "Ctrl+E") reach the window's shortcuts while `widget` has focus."""
+    passer = ShortcutPassThrough(keys, widget)
+    widget.installEventFilter(passer)
+    return passer
 
 
 class SendLine(QWidget):
@@ -28,6 +61,7 @@ class SendLine(QWidget):
         self.edit.setObjectName("consoleSendLine")
         self.edit.returnPressed.connect(self.send)
         self.edit.textEdited.connect(lambda _: self.show_error(""))
+        pass_shortcuts_through(self.edit, WINDOW_SHORTCUTS)
         self.mode_combo = QComboBox()
         self.mode_combo.setObjectName("consoleSendMode")
         self.mode_combo.addItems([TEXT, HEX])

@@ -127,3 +127,78 @@ def test_missing_port_is_reported_not_emitted(bar: ConnectionBar, qtbot, record)
     assert calls == []
     assert bar.state() == "error"
     assert "port" in bar.state_label.text()
+
+
+def test_enter_in_the_port_field_connects(bar: ConnectionBar, qtbot, record) -> None:
+    connects, disconnects = record(bar.connect_requested), record(bar.disconnect_requested)
+    edit = bar.port_combo.lineEdit()
+    edit.clear()
+    qtbot.keyClicks(edit, "sim://coxiris?mute=1")
+    qtbot.keyClick(edit, Qt.Key.Key_Return)
+    assert connects == [("sim://coxiris?mute=1", "coxiris", 115200)]
+    bar.set_state("connected")
+    bar.port_combo.setEnabled(True)  # even if the field could take keys, Enter does not disconnect
+    qtbot.keyClick(edit, Qt.Key.Key_Return)
+    assert connects == [("sim://coxiris?mute=1", "coxiris", 115200)]
+    assert disconnects == []
+
+
+def _button_x(bar: ConnectionBar) -> int:
+    bar.layout().activate()
+    return bar.connect_button.mapTo(bar, bar.connect_button.rect().topLeft()).x()
+
+
+def test_the_connect_button_does_not_move(bar: ConnectionBar) -> None:
+    bar.resize(1600, bar.sizeHint().height())
+    bar.set_ports([("/dev/ttyS0", "x"), ("/dev/ttyUSB0", "FTDI FT232R USB UART " * 4)])
+    bar.set_port("/dev/ttyS0")
+    x = _button_x(bar)
+    bar.set_port("/dev/ttyUSB0")  # a long description
+    assert bar.description_label.text().endswith("…")  # elided; the whole text in the tooltip
+    assert bar.description_label.toolTip().startswith("FTDI FT232R USB UART FTDI")
+    assert _button_x(bar) == x
+    bar.set_port("sim://nowhere")  # none
+    assert _button_x(bar) == x
+    for state in ("connecting", "connected", "disconnected", "error"):
+        bar.set_state(state, "could not open port /dev/ttyUSB0: [Errno 16] Device or resource busy")
+        assert _button_x(bar) == x, state
+        bar.set_state(state)
+        assert _button_x(bar) == x, state
+
+
+def test_a_port_with_options_stays_after_refreshes_and_states(bar: ConnectionBar, qtbot) -> None:
+    ports = [("sim://coxiris", "simulated coxiris device"), *PORTS]
+    bar.set_ports(ports)
+    edit = bar.port_combo.lineEdit()
+    edit.clear()
+    qtbot.keyClicks(edit, "sim://coxiris?mute=1")  # completed inline from the list on the way
+    assert bar.port() == "sim://coxiris?mute=1"
+    assert bar.description_label.text() == "simulated coxiris device"  # the port's, options aside
+    for state in ("connecting", "connected", "error", "disconnected"):
+        bar.set_ports(ports)  # every 2 s
+        assert bar.port() == "sim://coxiris?mute=1"
+        bar.set_state(state)
+        assert bar.port() == "sim://coxiris?mute=1"
+        assert edit.text() == "sim://coxiris?mute=1"
+    bar.set_ports([])  # the port list is gone for a moment
+    bar.set_ports(ports)
+    assert bar.port() == "sim://coxiris?mute=1"
+
+
+def test_a_refresh_while_typing_keeps_the_cursor_and_the_inline_completion(
+    bar: ConnectionBar, qtbot
+) -> None:
+    ports = [("sim://coxiris", "simulated coxiris device"), *PORTS]
+    bar.set_ports(ports)
+    edit = bar.port_combo.lineEdit()
+    edit.clear()
+    qtbot.keyClicks(edit, "sim://co")
+    completed = edit.selectedText()  # e.g. "xiris", or "" without inline completion
+    bar.set_ports(ports)
+    assert edit.selectedText() == completed
+    edit.setText("sim://coxiris")
+    edit.setCursorPosition(6)
+    bar.set_ports(list(reversed(ports)))
+    assert edit.cursorPosition() == 6
+    qtbot.keyClicks(edit, "x")
+    assert bar.port() == "sim://xcoxiris"

@@ -7,8 +7,10 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from widgets.traffic_format import (
+    HEX_IDLE,
     HEX_WIDTH,
     TEXT_WIDTH,
+    HexAssembler,
     TextAssembler,
     escape,
     hex_lines,
@@ -101,3 +103,33 @@ def test_text_assembler_limits_line_length() -> None:
 
 def test_note_line() -> None:
     assert note_line("connected", 0.25) == "000000.250 --  connected"
+
+
+def test_hex_assembler_joins_reads_until_lf() -> None:
+    assembler = HexAssembler()
+    assert assembler.feed("rx", b"ACK GET_PO", 1.0, 1.0) == []
+    assert assembler.pending()
+    rows = assembler.feed("rx", b"SITION\r\nDONE", 1.01, 1.01)
+    assert rows == [
+        ("rx", hex_lines("rx", b"ACK GET_POSITION", 1.0)[0]),
+        ("rx", hex_lines("rx", b"\r\n", 1.0)[0]),
+    ]
+    assert assembler.feed("tx", b"X", 2.0, 2.0) == [("rx", hex_lines("rx", b"DONE", 1.01)[0])]
+    assert assembler.close() == [("tx", hex_lines("tx", b"X", 2.0)[0])]
+    assert not assembler.pending()
+    assert assembler.close() == []
+
+
+def test_hex_assembler_rows_of_exactly_the_width_and_idle_gaps() -> None:
+    assembler = HexAssembler()
+    rows = assembler.feed("rx", bytes(HEX_WIDTH), None, 0.0)
+    assert rows == [("rx", hex_lines("rx", bytes(HEX_WIDTH), None)[0])]
+    assert not assembler.pending()
+    assert assembler.feed("rx", b"\n", None, 0.1) == [("rx", hex_lines("rx", b"\n", None)[0])]
+    assembler.feed("rx", b"a", 1.0, 1.0)
+    assert assembler.feed("rx", b"b", 1.0 + HEX_IDLE / 2, 1.0 + HEX_IDLE / 2) == []
+    later = 1.0 + HEX_IDLE * 2
+    rows = assembler.feed("rx", b"c", later, later)  # a pause ends the block
+    assert rows == [("rx", hex_lines("rx", b"ab", 1.0)[0])]
+    assert assembler.close() == [("rx", hex_lines("rx", b"c", later)[0])]
+    assert assembler.feed("rx", b"", 9.0, 9.0) == []
