@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from widgets.traffic_format import escape
+
 
 @dataclass(frozen=True)
 class Job:
@@ -76,8 +78,8 @@ class RawJob(Job):
     data: bytes
 
     def describe(self) -> str:
-        """E.g. `send 'GET_ID'`."""
-        return f"send {self.data!r}"
+        """E.g. `send "GET_ID\\n"`, with the console's escapes."""
+        return f'send "{escape(self.data)}"'
 
 
 @dataclass(frozen=True)

@@ -5,32 +5,40 @@ from __future__ import annotations
 import logging
 import time
 
-from PySide6.QtCore import QEvent, QObject, Qt, QTimer, Signal
-from PySide6.QtGui import QCloseEvent, QKeyEvent, QKeySequence
+from PySide6.QtCore import Qt, QTimer, Signal
+from PySide6.QtGui import QCloseEvent, QKeySequence
 from PySide6.QtWidgets import (
-    QAbstractSpinBox,
-    QApplication,
-    QComboBox,
     QDockWidget,
-    QLabel,
-    QLineEdit,
+    QFrame,
     QMainWindow,
-    QPlainTextEdit,
+    QScrollArea,
     QSplitter,
-    QTextEdit,
     QToolBar,
     QWidget,
 )
 
 from app import jobs
+from app.keyboard_jog import KeyboardJog
+from app.move_estimate import MoveEstimate
 from app.ports import PortWatcher
-from app.settings import DEFAULT_PORT, DEFAULT_PROTOCOL, open_settings, read_number, read_str
+from app.settings import (
+    DEFAULT_PORT,
+    DEFAULT_PROTOCOL,
+    open_settings,
+    read_number,
+    read_str,
+    read_travel,
+    write_travel,
+)
 from app.worker import DeviceInfo, SerialWorker
 from app.worker_thread import WorkerThread
 from drivers.events import PositionReport
+from drivers.motion import MoveStart
 from drivers.registry import get_protocol_class, protocol_names
 from drivers.sim.registry import simulator_names
 from drivers.traffic import Traffic
+from drivers.travel import TravelLimits
+from widgets import status_line as status
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
 from widgets.jog_panel import JogPanel
@@ -40,18 +48,16 @@ from widgets.position_view_2d import PositionView2D
 from widgets.position_view_3d import make_position_view_3d
 from widgets.raw_console import RawConsole
 from widgets.speed_control import SpeedControl
+from widgets.status_line import StatusLine
+from widgets.travel_limits_dialog import TravelLimitsDialog
 
 log = logging.getLogger(__name__)
 
-TEXT_INPUTS = (QLineEdit, QAbstractSpinBox, QPlainTextEdit, QTextEdit, QComboBox)
-KEYBOARD_JOG_KEYS = {
-    Qt.Key.Key_Left,
-    Qt.Key.Key_Right,
-    Qt.Key.Key_Up,
-    Qt.Key.Key_Down,
-    Qt.Key.Key_PageUp,
-    Qt.Key.Key_PageDown,
-}
+NO_STOP_TIP = (
+    "{name} has no stop command: this drops the commands not yet sent; "
+    "a move already under way on the device finishes (Esc)"
+)
+STOP_TIP = "Stop the stage now: halts the move under way and drops what is queued (Esc)"
 
 
 def sim_ports() -> list[tuple[str, str]]:
@@ -75,12 +81,20 @@ class MainWindow(QMainWindow):
         self.t0 = time.monotonic()
         self.connected = False
         self.info: DeviceInfo | None = None
+        self.travel: TravelLimits | None = None
         self._last_connection: tuple[str, str, int] | None = None
+        self._last_position: tuple[float, float, float] | None = None
+        self._busy_job: jobs.Job | None = None
+        self._moving = False
+        self._failed = False
+        self._jog_job: jobs.MoveByJob | None = None
+        self._home_from: tuple[float, float, float] | None = None
+        self.estimate = MoveEstimate(self)
         self._build()
         self._wire()
         self._restore()
         self._set_controls_enabled(False)
-        QApplication.instance().installEventFilter(self)  # type: ignore[union-attr]
+        self.keyboard_jog = KeyboardJog(self, self.jog_panel)
 
     def _make_worker(self) -> SerialWorker:
         """A worker with the saved polling rates (5-10 Hz while a move is confirmed, 1 s idle)."""
@@ -117,16 +131,13 @@ class MainWindow(QMainWindow):
             self._dock("Jog", self.jog_panel, left),
             self._dock("Go to", self.coordinates, left),
             self._dock("Speed", self.speed, left),
-            self._dock("Console", self.console, bottom),
+            self._dock("Console", self.console, bottom, scroll=False),
         ]
         self._build_menus(docks)
 
-        self.state_label = QLabel("disconnected", self)
-        self.state_label.setObjectName("statusConnection")
-        self.error_label = QLabel("", self)
-        self.error_label.setObjectName("statusError")
-        self.statusBar().addWidget(self.state_label)
-        self.statusBar().addPermanentWidget(self.error_label)
+        self.status_line = StatusLine(self)
+        self.statusBar().addWidget(self.status_line, 1)
+        self.statusBar().setSizeGripEnabled(True)
         self.resize(1400, 900)
 
     def _build_menus(self, docks: list[QDockWidget]) -> None:
@@ -137,9 +148,13 @@ class MainWindow(QMainWindow):
         file_menu.addSeparator()
         file_menu.addAction("&Quit", QKeySequence.StandardKey.Quit, self.close)
         motion_menu = self.menuBar().addMenu("&Motion")
-        stop = motion_menu.addAction("&Stop (drop queued commands)", self.stop)
-        stop.setShortcut(QKeySequence(Qt.Key.Key_Escape))
-        stop.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
+        self.stop_action = motion_menu.addAction("&Stop", self.stop)
+        self.stop_action.setShortcut(QKeySequence(Qt.Key.Key_Escape))
+        self.stop_action.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
+        motion_menu.addSeparator()
+        self.travel_action = motion_menu.addAction("&Travel limits…", self.edit_travel_limits)
+        self.travel_action.setToolTip("The box the stage may move in, for this device")
+        self.travel_action.setEnabled(False)
         view_menu = self.menuBar().addMenu("&View")
         reset = view_menu.addAction("&Reset views", self.reset_views)
         reset.setShortcut(QKeySequence("Ctrl+R"))
@@ -153,10 +168,22 @@ class MainWindow(QMainWindow):
         self.view2d.reset_view()
         self.view3d.reset_view()  # type: ignore[attr-defined]
 
-    def _dock(self, title: str, widget: QWidget, area: Qt.DockWidgetArea) -> QDockWidget:
+    def _dock(
+        self, title: str, widget: QWidget, area: Qt.DockWidgetArea, scroll: bool = True
+    ) -> QDockWidget:
         dock = QDockWidget(title, self)
         dock.setObjectName(f"{widget.objectName()}Dock")
-        dock.setWidget(widget)
+        if scroll:  # a small screen scrolls the panel instead of squeezing it
+            area_widget = QScrollArea(dock)
+            area_widget.setObjectName(f"{widget.objectName()}Scroll")
+            area_widget.setWidgetResizable(True)
+            area_widget.setFrameShape(QFrame.Shape.NoFrame)
+            area_widget.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+            area_widget.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAsNeeded)
+            area_widget.setWidget(widget)
+            dock.setWidget(area_widget)
+        else:
+            dock.setWidget(widget)
         dock.setFeatures(
             QDockWidget.DockWidgetFeature.DockWidgetMovable
             | QDockWidget.DockWidgetFeature.DockWidgetFloatable
@@ -176,7 +203,11 @@ class MainWindow(QMainWindow):
         w.speed_limits_changed.connect(self.speed.set_range)
         w.job_failed.connect(self._on_job_failed)
         w.job_finished.connect(self._on_job_finished)
-        w.device_text.connect(lambda text: self.console.append_note(f"device: {text}"))
+        w.move_started.connect(self._on_move_started)
+        w.notice.connect(self._on_notice)
+        w.device_error.connect(self._on_device_error)
+        w.device_note.connect(self._on_device_note)
+        self.estimate.estimated.connect(self._on_estimate)
 
         bar = self.connection_bar
         bar.connect_requested.connect(self.connect_device)
@@ -185,13 +216,14 @@ class MainWindow(QMainWindow):
         self.port_watcher = PortWatcher(self)
         self.port_watcher.ports_changed.connect(self._on_ports)
         self.port_watcher.port_added.connect(self._on_port_added)
-        self.port_watcher.port_removed.connect(lambda p: self._notice(f"port {p} disappeared"))
+        self.port_watcher.port_removed.connect(self._on_port_removed)
         bar.refresh_requested.connect(self.port_watcher.refresh)
 
         self.jog_panel.jog_requested.connect(self._on_jog)
+        self.jog_panel.jog_released.connect(self._on_jog_released)
         self.coordinates.go_requested.connect(self._on_go)
         self.coordinates.home_requested.connect(lambda: self._submit(jobs.HomeJob()))
-        self.coordinates.set_home_requested.connect(lambda: self._submit(jobs.SetHomeJob()))
+        self.coordinates.set_home_requested.connect(self._set_home)
         self.coordinates.stop_requested.connect(self.stop)
         self.speed.speed_requested.connect(lambda v: self._submit(jobs.SetSpeedJob(v)))
         self.console.send_requested.connect(lambda data: self._submit(jobs.RawJob(data)))
@@ -204,6 +236,7 @@ class MainWindow(QMainWindow):
         self.settings.setValue("baud", baud)
         self._last_connection = (port, protocol, baud)
         self.console.append_note(f"connecting to {port} ({protocol}, {baud} baud)")
+        self._apply_travel(read_travel(self.settings, protocol, port))
         self.worker_thread.open(port, protocol, baud)
 
     def disconnect_device(self) -> None:
@@ -215,36 +248,67 @@ class MainWindow(QMainWindow):
 
     def _on_state(self, state: str, detail: str) -> None:
         self.connection_bar.set_state(state)
-        self.connected = state == "connected"
-        text = state if not detail else f"{state}: {detail}"
-        self.state_label.setText(text)
+        was_connected, self.connected = self.connected, state == "connected"
         if state == "error":
-            self.error_label.setText(detail)
-            self.console.append_note(f"error: {detail}")
-            self.statusBar().showMessage(detail, 10000)
+            self._failed = True
+            self._say(f"connection error: {detail}", status.FAILURE)
         elif state == "disconnected":
             self.console.append_note("disconnected")
+        elif state == "connected" and detail.startswith("device: "):
+            self._failed = True
+            self._say(detail, status.FAILURE, note=False)
         if not self.connected:
             self._set_controls_enabled(False)
+            self._end_move()
+            self.jog_panel.release()
+            if self._last_position is not None:
+                self.readout.set_status("stale")
+        elif not was_connected:
+            self._failed = False
+        self._show_machine_state(state, detail)
+
+    def _show_machine_state(self, connection: str = "", detail: str = "") -> None:
+        if not self.connected:
+            name = connection or self.connection_bar.state()
+            self.status_line.set_state(name if name != "connected" else status.IDLE, detail)
+        elif self._moving:
+            self.status_line.set_state(status.MOVING)
+        elif self._busy_job is not None:
+            self.status_line.set_state(status.BUSY, self._busy_job.describe())
+        elif self._failed:
+            self.status_line.set_state(status.ERROR, self.status_line.message())
+        else:
+            self.status_line.set_state(status.IDLE)
 
     def _on_device_ready(self, info: DeviceInfo) -> None:
         self.info = info
         caps = info.capabilities
         self.console.append_note(f"connected to {info.identity} on {info.port}")
+        self._say(f"connected to {info.identity} on {info.port}", note=False)
         for widget in (self.jog_panel, self.coordinates, self.readout):
             widget.set_axes_enabled(caps.axes)
         self.readout.set_measured(caps.position_feedback)
+        self.readout.set_status("live")
+        self.jog_panel.set_resolution(caps.resolution)
+        self.coordinates.set_resolution(caps.resolution)
+        name = info.protocol.upper()
+        tip = STOP_TIP if caps.stop else NO_STOP_TIP.format(name=name)
+        self.coordinates.set_stop_mode(caps.stop, tip)
+        self.stop_action.setText("&Stop" if caps.stop else "&Drop queued commands")
+        self.stop_action.setToolTip(tip)
         self._set_controls_enabled(True)
+        self.travel_action.setEnabled(True)
         self.speed.setEnabled(caps.speed)
         if caps.speed_range is not None:
             self.speed.set_range(*caps.speed_range)
+        self._show_machine_state()
         QTimer.singleShot(100, self, self.settled.emit)  # cancelled if the window goes first
 
     def _on_protocol_changed(self, name: str) -> None:
         try:
             self.connection_bar.set_baud(get_protocol_class(name).capabilities.default_baud)
         except LookupError as exc:
-            self.statusBar().showMessage(str(exc), 5000)
+            self._say(str(exc), status.WARNING, note=False)
 
     def _on_port_added(self, port: str) -> None:
         """A port appeared; if it is the one that was lost, connect again (position re-read)."""
@@ -254,25 +318,81 @@ class MainWindow(QMainWindow):
             self._notice(f"reconnecting to {port}")
             self.connect_device(*last)
 
+    def _on_port_removed(self, port: str) -> None:
+        self._notice(f"port {port} disappeared")
+
     def _notice(self, text: str) -> None:
-        self.statusBar().showMessage(text, 8000)
-        self.console.append_note(text)
+        self._say(text)
+
+    def _say(self, text: str, kind: str = status.INFO, note: bool = True) -> None:
+        """Tell the operator: the status line (once), and the console's log."""
+        self.status_line.show_message(text, kind)
+        if note:
+            self.console.append_note(text)
 
     def _on_ports(self, ports: list[tuple[str, str]]) -> None:
         self.connection_bar.set_ports(sim_ports() + ports)
 
-    # -- operator actions --------------------------------------------------------------------
-    def _submit(self, job: jobs.Job) -> None:
-        if not self.connected:
-            self.statusBar().showMessage(f"not connected: {job.describe()} not sent", 5000)
+    # -- travel limits -----------------------------------------------------------------------
+    def _apply_travel(self, limits: TravelLimits | None) -> None:
+        self.travel = limits
+        box = limits.box if limits is not None else None
+        self.worker_thread.set_travel(limits)
+        self.coordinates.set_box(box)
+        self.view2d.set_workspace(box)
+        self.view3d.set_workspace(box)  # type: ignore[attr-defined]
+
+    def edit_travel_limits(self) -> None:
+        """Let the operator set this device's travel box (saved per device)."""
+        if self._last_connection is None:
             return
+        port, protocol, _ = self._last_connection
+        current = self.travel
+        dialog = TravelLimitsDialog(
+            f"{protocol} on {port}",
+            current.box if current is not None else None,
+            current.clamp if current is not None else False,
+            self,
+        )
+        if dialog.exec() != TravelLimitsDialog.DialogCode.Accepted:
+            return
+        box, clamp = dialog.result_limits()
+        limits = TravelLimits(box, clamp) if box is not None else None
+        write_travel(self.settings, protocol, port, limits)
+        self._apply_travel(limits)
+        self._say(f"travel limits: {limits.describe() if limits else 'none'}")
+
+    # -- operator actions --------------------------------------------------------------------
+    def _submit(self, job: jobs.Job) -> bool:
+        if not self.connected:
+            self._say(f"not connected: {job.describe()} not sent", status.WARNING, note=False)
+            return False
+        self._busy_job = job
         self.worker.submit(job)
+        self._show_machine_state()
+        return True
 
     def _on_jog(self, axis: str, distance: float) -> None:
+        """A jog key or button was pressed: one step now; more while it is held."""
+        self.settings.setValue("jog_step", self.jog_panel.step())
+        if self._jog_job is None:
+            self._jog_step(axis, distance)
+
+    def _jog_step(self, axis: str, distance: float) -> None:
         deltas = {"x": 0.0, "y": 0.0, "z": 0.0}
         deltas[axis] = distance
-        self.settings.setValue("jog_step", self.jog_panel.step())
-        self._submit(jobs.MoveByJob(deltas["x"], deltas["y"], deltas["z"]))
+        job = jobs.MoveByJob(deltas["x"], deltas["y"], deltas["z"])
+        self._jog_job = job if self._submit(job) else None
+
+    def _on_jog_released(self) -> None:
+        """The held key or button was released: no more steps (the one under way finishes)."""
+
+    def _next_jog_step(self) -> None:
+        """After a jog step: the next one while the key or button is still held."""
+        self._jog_job = None
+        held = self.jog_panel.held()
+        if held is not None:
+            self._jog_step(*held)
 
     def _on_go(self, mode: str, values: tuple[float, float, float]) -> None:
         if mode == "relative":
@@ -280,24 +400,30 @@ class MainWindow(QMainWindow):
         else:
             self._submit(jobs.MoveToJob(*values))
 
+    def _set_home(self) -> None:
+        if self._submit(jobs.SetHomeJob()):
+            self._home_from = self._last_position
+
     def stop(self) -> None:
         """Cancel what is queued and say what was not sent."""
+        self.jog_panel.release()
         dropped = self.worker.cancel_pending()
         self._report_dropped(dropped)
         if not dropped:
-            self.statusBar().showMessage("nothing queued; the move under way finishes", 5000)
+            self._say("nothing queued; the move under way finishes", note=False)
 
     def _report_dropped(self, dropped: list[jobs.Job]) -> None:
         if not dropped:
             return
         names = ", ".join(job.describe() for job in dropped)
-        message = f"stopped: {len(dropped)} command(s) not sent: {names}"
-        self.statusBar().showMessage(message, 10000)
-        self.console.append_note(message)
+        self._say(f"stopped: {len(dropped)} command(s) not sent: {names}", status.WARNING)
+        if any(job is self._jog_job for job in dropped):
+            self._jog_job = None
 
     def _set_controls_enabled(self, enabled: bool) -> None:
         for widget in (self.jog_panel, self.coordinates, self.speed):
             widget.setEnabled(enabled)
+        self.console.set_send_enabled(enabled)
 
     # -- worker results ----------------------------------------------------------------------
     def _on_traffic(self, records: list[Traffic]) -> None:
@@ -305,9 +431,47 @@ class MainWindow(QMainWindow):
             self.console.append_traffic(record.direction, record.data, record.time)
 
     def _on_position(self, report: PositionReport) -> None:
-        self.readout.set_position(report.x, report.y, report.z)
-        self.coordinates.set_known_position(report.x, report.y, report.z)
-        self.buffer.append(time.monotonic() - self.t0, report.x, report.y, report.z)
+        if self._home_from is not None and (report.x, report.y, report.z) == (0.0, 0.0, 0.0):
+            # Set Home: the trail moves into the new coordinates, with no false jump.
+            x, y, z = self._home_from
+            self._home_from = None
+            self.buffer.shift(-x, -y, -z)
+            self._on_target(None)
+            self.console.append_note(
+                f"new home: the trail is shifted by ({-x:g}, {-y:g}, {-z:g}) mm"
+            )
+        if self.estimate.active():
+            self._end_move_estimate()
+        self._show_position(report.x, report.y, report.z)
+
+    def _show_position(self, x: float, y: float, z: float) -> None:
+        self._last_position = (x, y, z)
+        self.readout.set_position(x, y, z)
+        self.coordinates.set_known_position(x, y, z)
+        self.buffer.append(time.monotonic() - self.t0, x, y, z)
+
+    def _on_move_started(self, move: MoveStart) -> None:
+        self._moving = True
+        self._show_machine_state()
+        if move.duration > 0:
+            self.estimate.start(move)
+            self.readout.set_status("estimated")
+            self.view2d.set_estimated(True)
+            self.view3d.set_estimated(True)  # type: ignore[attr-defined]
+
+    def _on_estimate(self, x: float, y: float, z: float) -> None:
+        self._show_position(x, y, z)
+
+    def _end_move_estimate(self) -> None:
+        self.estimate.stop()
+        self.readout.set_status("live" if self.connected else "stale")
+        self.view2d.set_estimated(False)
+        self.view3d.set_estimated(False)  # type: ignore[attr-defined]
+
+    def _end_move(self) -> None:
+        self._moving = False
+        if self.estimate.active():
+            self._end_move_estimate()
 
     def _on_target(self, target: tuple[float, float, float] | None) -> None:
         self.view2d.set_target(target)
@@ -317,34 +481,44 @@ class MainWindow(QMainWindow):
         self.speed.set_reported(speed)
         self.speed.set_value(speed)
 
+    def _on_notice(self, text: str) -> None:
+        self._say(text, status.WARNING)
+
+    def _on_device_error(self, message: str) -> None:
+        self._failed = True
+        self._say(f"the device reported an error: {message}", status.FAILURE)
+        self._show_machine_state()
+
+    def _on_device_note(self, text: str) -> None:
+        self.console.append_note(f"device: {text}")
+
+    def _job_ended(self, job: jobs.Job) -> None:
+        self._busy_job = None
+        if isinstance(job, (jobs.MoveToJob, jobs.MoveByJob, jobs.HomeJob)):
+            self._end_move()
+        if isinstance(job, jobs.SetHomeJob):
+            self._home_from = None
+        if job is self._jog_job:
+            self._next_jog_step()
+
     def _on_job_failed(self, job: jobs.Job, message: str) -> None:
-        text = f"{job.describe()} failed: {message}"
-        self.error_label.setText(text)
-        self.statusBar().showMessage(text, 10000)
-        self.console.append_note(text)
+        if job is self._jog_job:
+            self.jog_panel.release()  # e.g. refused at the travel limits: stop stepping
+        self._failed = True
+        self._say(f"{job.describe()} failed: {message}", status.FAILURE)
+        self._job_ended(job)
+        self._show_machine_state()
 
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
-        self.error_label.setText("")
+        self._failed = False
+        self.status_line.clear_error()
         if isinstance(job, jobs.SetSpeedJob) and isinstance(result, float) and result != job.speed:
-            self.statusBar().showMessage(
-                f"speed {job.speed:g} mm/s reads back as {result:g} mm/s (the device rounds)", 5000
+            self._say(
+                f"speed {job.speed:g} mm/s reads back as {result:g} mm/s (the device rounds)",
+                note=False,
             )
-
-    # -- keyboard jog ------------------------------------------------------------------------
-    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
-        """Arrow keys and Page Up/Down jog wherever the focus is, except in text fields."""
-        if (
-            event.type() == QEvent.Type.KeyPress
-            and isinstance(event, QKeyEvent)
-            and event.key() in KEYBOARD_JOG_KEYS
-            and self.isActiveWindow()
-            and self.jog_panel.isEnabled()
-            and not isinstance(QApplication.focusWidget(), TEXT_INPUTS)
-        ):
-            return self.jog_panel.handle_key(
-                event.key(), event.modifiers(), auto_repeat=event.isAutoRepeat()
-            )
-        return super().eventFilter(watched, event)
+        self._job_ended(job)
+        self._show_machine_state()
 
     # -- settings ----------------------------------------------------------------------------
     def _restore(self) -> None:
@@ -367,7 +541,8 @@ class MainWindow(QMainWindow):
         self.settings.setValue("windowState", self.saveState())
         self.settings.setValue("jog_step", self.jog_panel.step())
         self.settings.sync()
-        QApplication.instance().removeEventFilter(self)  # type: ignore[union-attr]
+        self.keyboard_jog.detach()
+        self.estimate.stop()
         self.port_watcher.stop()
         if not self.worker_thread.stop():
             log.error("the serial worker did not stop in time")

@@ -14,11 +14,12 @@ from app import jobs
 from drivers.capabilities import Capabilities
 from drivers.client import Client
 from drivers.errors import Aborted, CommunicationError, MotionError, PortError
-from drivers.events import Event, TextLine, Undecodable
-from drivers.motion import Motion
+from drivers.events import ErrorReport, Event, Undecodable
+from drivers.motion import Motion, MoveStart
 from drivers.registry import create_protocol
 from drivers.traffic import Traffic
 from drivers.transport import Link, open_link
+from drivers.travel import TravelLimits
 
 log = logging.getLogger(__name__)
 
@@ -53,7 +54,10 @@ class SerialWorker(QObject):
     busy_changed = Signal(bool)
     job_finished = Signal(object, object)  # Job, result
     job_failed = Signal(object, str)  # Job, message
-    device_text = Signal(str)  # unsolicited lines: debug output, leftovers
+    move_started = Signal(object)  # MoveStart: from, to, speed, when
+    notice = Signal(str)  # something the operator should know, e.g. a move clamped to the limits
+    device_error = Signal(str)  # an error the device reported unasked (e.g. to a console line)
+    device_note = Signal(str)  # an unsolicited frame that could not be decoded
 
     def __init__(self, poll_moving_hz: float = 10.0, poll_idle_s: float = 1.0) -> None:
         super().__init__()
@@ -67,6 +71,7 @@ class SerialWorker(QObject):
         self._batch_sent = 0.0
         self._next_poll = 0.0
         self._abort = threading.Event()
+        self._travel: TravelLimits | None = None
 
     # -- thread-safe API ---------------------------------------------------------------------
     def submit(self, job: jobs.Job) -> None:
@@ -91,6 +96,13 @@ class SerialWorker(QObject):
         self._abort.clear()
 
     # -- worker-thread slots -----------------------------------------------------------------
+    @Slot(object)
+    def set_travel(self, limits: TravelLimits | None) -> None:
+        """Use these travel limits for every move from now on (None: no limits)."""
+        self._travel = limits
+        if self._motion is not None:
+            self._motion.travel = limits
+
     @Slot()
     def start(self) -> None:
         """Create the loop timer in the worker's thread."""
@@ -119,12 +131,16 @@ class SerialWorker(QObject):
         self._motion = Motion(client)
         self._motion.poll_interval = 1.0 / self.poll_moving_hz
         self._motion.position_listeners.append(self.position_changed.emit)
+        self._motion.move_listeners.append(self._on_move_started)
+        self._motion.notice_listeners.append(self.notice.emit)
+        self._motion.travel = self._travel
         try:
             identity = self._motion.identify()
             self._refresh()
         except MotionError as exc:
             self._fail_connection(exc)
             return
+        self._flush_traffic()
         self.state_changed.emit("connected", f"{identity} on {url}")
         self.device_ready.emit(DeviceInfo(url, protocol_name, identity, protocol.capabilities))
         self._next_poll = time.monotonic() + self.poll_idle_s
@@ -186,16 +202,20 @@ class SerialWorker(QObject):
         try:
             result = self._dispatch(motion, job)
         except PortError:
+            self._flush_traffic()
             self.job_failed.emit(job, "the connection was lost")
             raise
         except Aborted:
+            self._flush_traffic()
             self.job_failed.emit(job, "abandoned: disconnected while it was under way")
             raise
         except MotionError as exc:
+            self._flush_traffic()  # the console shows the traffic before the failure
             self.job_failed.emit(job, str(exc))
             if isinstance(exc, CommunicationError):
                 self.target_changed.emit(None)
         else:
+            self._flush_traffic()
             self.job_finished.emit(job, result)
         finally:
             self.busy_changed.emit(False)
@@ -203,15 +223,10 @@ class SerialWorker(QObject):
 
     def _dispatch(self, motion: Motion, job: jobs.Job) -> object:
         if isinstance(job, jobs.MoveToJob):
-            self.target_changed.emit((job.x, job.y, job.z))
             return motion.move_to(job.x, job.y, job.z)
         if isinstance(job, jobs.MoveByJob):
-            here = motion.last_position
-            if here is not None:
-                self.target_changed.emit((here.x + job.dx, here.y + job.dy, here.z + job.dz))
             return motion.move_by(job.dx, job.dy, job.dz)
         if isinstance(job, jobs.HomeJob):
-            self.target_changed.emit((0.0, 0.0, 0.0))
             return motion.home()
         if isinstance(job, jobs.SetHomeJob):
             motion.set_home()
@@ -221,8 +236,8 @@ class SerialWorker(QObject):
             self.speed_changed.emit(speed)
             return speed
         if isinstance(job, jobs.RawJob):
-            motion.client.send_raw(job.data)
-            return None
+            reply = motion.client.send_raw(job.data)
+            return None if reply is None else reply.value
         if isinstance(job, jobs.RefreshJob):
             self._refresh()
             return None
@@ -268,10 +283,15 @@ class SerialWorker(QObject):
             self.traffic.emit(batch)
         self._batch_sent = time.monotonic()
 
+    def _on_move_started(self, start: MoveStart) -> None:
+        self.target_changed.emit(start.target)  # the target as sent, after any clamping
+        self.move_started.emit(start)
+
     def _on_event(self, event: Event, solicited: bool) -> None:
+        # Unsolicited text lines are in the console's RX already: not repeated as notes.
         if solicited:
             return
-        if isinstance(event, TextLine):
-            self.device_text.emit(event.text)
+        if isinstance(event, ErrorReport):
+            self.device_error.emit(event.message)
         elif isinstance(event, Undecodable):
-            self.device_text.emit(f"undecodable: {event.reason}")
+            self.device_note.emit(str(event))

@@ -13,6 +13,7 @@ class WorkerThread(QObject):
     open_requested = Signal(str, str, int)
     close_requested = Signal()
     shutdown_requested = Signal()
+    travel_requested = Signal(object)
 
     def __init__(self, worker: SerialWorker | None = None, parent: QObject | None = None) -> None:
         super().__init__(parent)
@@ -24,12 +25,17 @@ class WorkerThread(QObject):
         self.open_requested.connect(self.worker.open_port)
         self.close_requested.connect(self.worker.close_port)
         self.shutdown_requested.connect(self.worker.shutdown)
+        self.travel_requested.connect(self.worker.set_travel)
         self.thread.start()
 
     def open(self, url: str, protocol: str, baud: int) -> None:
         """Ask the worker to connect."""
         self.worker.abort_clear()
         self.open_requested.emit(url, protocol, baud)
+
+    def set_travel(self, limits: object) -> None:
+        """Ask the worker to use these travel limits (a TravelLimits, or None)."""
+        self.travel_requested.emit(limits)
 
     def close(self) -> None:
         """Ask the worker to disconnect (a wait in progress is abandoned)."""

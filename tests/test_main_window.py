@@ -9,6 +9,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QPushButton, QWidget
 
 from app.main_window import MainWindow
+from tests.relay import wait_in_gui
 
 pytestmark = pytest.mark.timeout(30)
 
@@ -77,10 +78,10 @@ def test_go_to_home_and_set_home(qtbot, window: MainWindow) -> None:
     _connect(qtbot, window)
     entry = window.coordinates
     entry.set_values(10, -5, 2.5)
-    with qtbot.waitSignal(window.worker.job_finished, timeout=5000):
+    with wait_in_gui(qtbot, window.worker.job_finished):
         entry.go_requested.emit("absolute", entry.values())
     qtbot.waitUntil(lambda: _position(window) == (10.0, -5.0, 2.5), timeout=5000)
-    with qtbot.waitSignal(window.worker.job_finished, timeout=5000):
+    with wait_in_gui(qtbot, window.worker.job_finished):
         entry.home_requested.emit()
     qtbot.waitUntil(lambda: _position(window) == (0.0, 0.0, 0.0), timeout=5000)
 
@@ -88,7 +89,7 @@ def test_go_to_home_and_set_home(qtbot, window: MainWindow) -> None:
 def test_speed_change_reads_back_rounded(qtbot, window: MainWindow) -> None:
     _connect(qtbot, window)
     assert window.speed.speed_range() == (1.0, 100.0)
-    with qtbot.waitSignal(window.worker.speed_changed, timeout=5000) as changed:
+    with wait_in_gui(qtbot, window.worker.speed_changed) as changed:
         window.speed.speed_requested.emit(12.5)
     assert changed.args == [13.0]
 
@@ -102,13 +103,14 @@ def test_speed_change_reads_back_rounded(qtbot, window: MainWindow) -> None:
 def test_stop_reports_what_was_not_sent(qtbot, window: MainWindow) -> None:
     _connect(qtbot, window, "sim://coxiris?speed=1")
     window.jog_panel.set_step(100)
-    with qtbot.waitSignal(window.worker.busy_changed, timeout=5000):
+    with wait_in_gui(qtbot, window.worker.busy_changed):
         window.jog_panel.jog_requested.emit("x", 100.0)
-    window.jog_panel.jog_requested.emit("y", 100.0)
+    window.coordinates.go_requested.emit("relative", (0.0, 100.0, 0.0))
     window.stop()
     window.console.flush()
     assert "1 command(s) not sent: jog by (0, 100, 0) mm" in window.console.text()
-    assert "not sent" in window.statusBar().currentMessage()
+    assert "not sent" in window.status_line.message()
+    assert window.jog_panel.held() is None  # Stop also ends a held jog
 
 
 def test_settings_are_saved_and_restored(qtbot, tmp_path: Path, monkeypatch) -> None:
@@ -152,10 +154,10 @@ def test_ports_appearing_and_disappearing_are_noticed(
     window.port_watcher.refresh()
     listing.append(("/dev/ttyACM0", "Arduino Uno"))
     window.port_watcher._check()
-    assert "port /dev/ttyACM0 appeared" in window.statusBar().currentMessage()
+    assert "port /dev/ttyACM0 appeared" in window.status_line.message()
     listing.pop(0)
     window.port_watcher._check()
-    assert "port /dev/ttyUSB0 disappeared" in window.statusBar().currentMessage()
+    assert "port /dev/ttyUSB0 disappeared" in window.status_line.message()
     combo = window.connection_bar.port_combo
     texts = " ".join(combo.itemText(i) for i in range(combo.count()))
     assert "/dev/ttyACM0" in texts and "sim://coxiris" in texts
@@ -241,4 +243,4 @@ def test_reconnects_when_the_lost_port_comes_back(qtbot, window: MainWindow) -> 
 def test_escape_stops(qtbot, window: MainWindow) -> None:
     window.worker.submit(__import__("app.jobs").jobs.HomeJob())
     qtbot.keyClick(window, Qt.Key.Key_Escape)
-    assert "not sent" in window.statusBar().currentMessage()
+    assert "not sent" in window.status_line.message()

@@ -49,8 +49,9 @@ def test_device_vanishing_mid_move(qtbot, window: MainWindow, sim: SimProcess) -
     sim.kill()
     qtbot.waitUntil(lambda: window.connection_bar.state() == "error", timeout=5000)
     assert not window.jog_panel.isEnabled()
-    assert "error" in window.state_label.text()
+    assert window.status_line.state() == "error"
     window.console.flush()
     text = window.console.text()
     assert "ACK ABSOLUTE_MOVE" in text
-    assert "error:" in text
+    assert "connection error: reading from" in text
+    assert window.readout.status() == "stale"

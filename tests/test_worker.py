@@ -8,6 +8,7 @@ from app import jobs
 from app.worker import DeviceInfo
 from app.worker_thread import WorkerThread
 from drivers.events import PositionReport
+from tests.relay import wait_in_gui
 
 pytestmark = pytest.mark.timeout(30)
 
@@ -20,7 +21,7 @@ def worker_thread(qtbot):
 
 
 def _connect(qtbot, thread: WorkerThread, url: str = "sim://coxiris?speed=100") -> DeviceInfo:
-    with qtbot.waitSignal(thread.worker.device_ready, timeout=5000) as ready:
+    with wait_in_gui(qtbot, thread.worker.device_ready) as ready:
         thread.open(url, "coxiris", 115200)
     return ready.args[0]
 
@@ -35,7 +36,7 @@ def test_move_job_reports_positions_and_traffic(qtbot, worker_thread: WorkerThre
     _connect(qtbot, worker_thread)
     traffic: list = []
     worker_thread.worker.traffic.connect(traffic.extend)
-    with qtbot.waitSignal(worker_thread.worker.job_finished, timeout=5000) as done:
+    with wait_in_gui(qtbot, worker_thread.worker.job_finished) as done:
         worker_thread.worker.submit(jobs.MoveToJob(10, -5, 2.5))
     assert done.args[1] == PositionReport(10.0, -5.0, 2.5)
     qtbot.waitUntil(lambda: b"DONE ABSOLUTE_MOVE" in b"".join(r.data for r in traffic))
@@ -47,7 +48,7 @@ def test_bad_job_fails_with_a_reason_and_nothing_sent(qtbot, worker_thread: Work
     _connect(qtbot, worker_thread)
     traffic: list = []
     worker_thread.worker.traffic.connect(traffic.extend)
-    with qtbot.waitSignal(worker_thread.worker.job_failed, timeout=5000) as failed:
+    with wait_in_gui(qtbot, worker_thread.worker.job_failed) as failed:
         worker_thread.worker.submit(jobs.SetSpeedJob(500))
     assert "1 to 100" in failed.args[1]
     assert b"SET_SPEED" not in b"".join(r.data for r in traffic)
@@ -68,7 +69,7 @@ def test_device_vanishing_mid_move_is_an_error_not_a_hang(
     worker = worker_thread.worker
     states: list[tuple[str, str]] = []
     worker.state_changed.connect(lambda s, d: states.append((s, d)))
-    with qtbot.waitSignal(worker.busy_changed, timeout=5000):
+    with wait_in_gui(qtbot, worker.busy_changed):
         worker.submit(jobs.MoveToJob(100, 0, 0))
     worker.submit(jobs.HomeJob())
     worker._link.port.close()  # the device goes away under the worker
@@ -81,7 +82,7 @@ def test_stop_while_a_move_waits_ends_the_thread_quickly(
     qtbot, worker_thread: WorkerThread
 ) -> None:
     _connect(qtbot, worker_thread, "sim://coxiris?speed=1")
-    with qtbot.waitSignal(worker_thread.worker.busy_changed, timeout=5000):
+    with wait_in_gui(qtbot, worker_thread.worker.busy_changed):
         worker_thread.worker.submit(jobs.MoveToJob(100, 0, 0))
     assert worker_thread.stop(3000)
     assert not worker_thread.thread.isRunning()
@@ -102,9 +103,9 @@ def test_disconnect_mid_move_is_a_disconnection_not_an_error(
     worker = worker_thread.worker
     states: list[str] = []
     worker.state_changed.connect(lambda s, d: states.append(s))
-    with qtbot.waitSignal(worker.busy_changed, timeout=5000):
+    with wait_in_gui(qtbot, worker.busy_changed):
         worker.submit(jobs.MoveToJob(100, 0, 0))
-    with qtbot.waitSignal(worker.job_failed, timeout=5000) as failed:
+    with wait_in_gui(qtbot, worker.job_failed) as failed:
         worker_thread.close()
     assert "abandoned" in failed.args[1]
     qtbot.waitUntil(lambda: "disconnected" in states, timeout=5000)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+import math
 from collections.abc import Callable, Iterable
 
 from PySide6.QtCore import Signal
@@ -19,10 +20,11 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from widgets._axes import AXES, normalize_axes
+from widgets._axes import AXES, Box, normalize_axes
 
 log = logging.getLogger(__name__)
 
+UNBOUNDED_MM = 99999.0  # the fields' range where no travel limits are set
 ABSOLUTE = "absolute"
 RELATIVE = "relative"
 SET_HOME_QUESTION = (
@@ -69,7 +71,7 @@ class CoordinateEntry(QWidget):
         self.setObjectName("coordinateEntry")
         self.confirm: Callable[[str], bool] = lambda q: ask_with_message_box(q, self)
         self._axes = frozenset(AXES)
-        self._range = (-1000.0, 1000.0)
+        self._box: Box | None = None
         self._known: tuple[float, float, float] | None = None
 
         grid = QGridLayout()
@@ -109,10 +111,7 @@ class CoordinateEntry(QWidget):
         )
         self.set_home_button.clicked.connect(self._set_home)
         self.stop_button = self._button("Stop", "stopButton", "Stop the stage now")
-        self.stop_button.setStyleSheet(
-            "QPushButton { background-color: #c62828; color: white; font-weight: bold;"
-            " padding: 4px 14px; } QPushButton:disabled { background-color: #9e9e9e; }"
-        )
+        self.set_stop_mode(True, "Stop the stage now (Esc)")
         self.stop_button.clicked.connect(self.stop_requested)
 
         modes = QHBoxLayout()
@@ -178,22 +177,47 @@ class CoordinateEntry(QWidget):
         self._known = (float(x), float(y), float(z))
         self.use_current_button.setEnabled(True)
 
-    def set_range(self, lo: float, hi: float) -> None:
-        """Absolute coordinates are limited to lo..hi mm; relative moves to ±(hi - lo)."""
-        if not lo < hi:
-            raise ValueError(f"empty range {lo}..{hi}")
-        self._range = (float(lo), float(hi))
+    def set_box(self, box: Box | None) -> None:
+        """Bound the fields by the travel box in mm (None: no travel limits are known)."""
+        self._box = box
         self._apply_range()
 
+    def box(self) -> Box | None:
+        """The travel box bounding the fields, or None."""
+        return self._box
+
+    def set_resolution(self, resolution: float | None) -> None:
+        """Type coordinates to the device's resolution in mm (None: 0.001 mm)."""
+        decimals = 3 if not resolution else max(0, min(3, round(-math.log10(resolution))))
+        for field in self.fields.values():
+            field.setDecimals(decimals)
+
+    def set_stop_mode(self, can_stop: bool, tooltip: str) -> None:
+        """A real Stop (red) where the protocol can halt a move; else "Drop queued"."""
+        self.stop_button.setText("Stop" if can_stop else "Drop queued")
+        self.stop_button.setToolTip(tooltip)
+        colour = "#c62828" if can_stop else "#6d4c41"
+        self.stop_button.setStyleSheet(
+            f"QPushButton {{ background-color: {colour}; color: white; font-weight: bold;"
+            " padding: 4px 10px; } QPushButton:disabled { background-color: #9e9e9e; }"
+        )
+
+    def _range(self, index: int) -> tuple[float, float]:
+        if self._box is None:
+            return (-UNBOUNDED_MM, UNBOUNDED_MM)
+        return self._box[index]
+
     def _apply_range(self) -> None:
-        lo, hi = self._range
-        if self.mode() == RELATIVE:
-            lo, hi = -(hi - lo), hi - lo
-        for axis, field in self.fields.items():
+        relative = self.mode() == RELATIVE
+        for index, (axis, field) in enumerate(self.fields.items()):
+            lo, hi = self._range(index)
+            if relative:
+                lo, hi = -(hi - lo), hi - lo
             field.setRange(lo, hi)
             state = "" if axis in self._axes else "\n(this device has no such axis)"
-            word = "distance to move" if self.mode() == RELATIVE else "target coordinate"
-            field.setToolTip(f"{axis.upper()} {word}, {lo:g} to {hi:g} mm{state}")
+            word = "distance to move" if relative else "target coordinate"
+            limits = "travel limits" if self._box is not None else "no travel limits set"
+            field.setToolTip(f"{axis.upper()} {word}, {lo:g} to {hi:g} mm ({limits}){state}")
 
     def set_axes_enabled(self, axes: Iterable[str]) -> None:
         """Only the fields of `axes` can be edited."""

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+import math
 from collections.abc import Iterable
 
 from PySide6.QtCore import Qt, Signal
@@ -57,16 +58,26 @@ def _fmt_mm(value: float) -> str:
 
 
 class JogPanel(QWidget):
-    """Six jog buttons, a step size, Shift for a ten times bigger step; emits `jog_requested`."""
+    """Six jog buttons, a step size, Shift for a ten times bigger step.
+
+    Pressing a button or a jog key emits `jog_requested` (one step) and holds the jog until
+    it is released (`jog_released`): the window repeats steps while `held()` says so.
+    """
 
     jog_requested = Signal(str, float)
+    jog_released = Signal()
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("jogPanel")
         self.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
-        self.setToolTip(f"Move the stage by one step.\n{KEY_HINT} (while the panel has focus).")
+        self.setToolTip(
+            "Move the stage by one step; hold a button or key to keep stepping.\n"
+            f"{KEY_HINT} (see the hint below for where the keys work)."
+        )
         self._axes = frozenset(AXES)
+        self._held: tuple[str, float] | None = None
+        self._held_key: int | None = None
         self.buttons: dict[tuple[str, float], QPushButton] = {}
 
         pad = QGridLayout()
@@ -78,7 +89,8 @@ class JogPanel(QWidget):
             button.setMinimumSize(52, 40)
             button.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Preferred)
             button.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # clicks focus the panel, for keys
-            button.clicked.connect(lambda _=False, a=axis, d=direction: self._button_clicked(a, d))
+            button.pressed.connect(lambda a=axis, d=direction: self._button_pressed(a, d))
+            button.released.connect(self.release)
             pad.addWidget(button, row, column)
             self.buttons[(axis, direction)] = button
         pad.setColumnMinimumWidth(3, 16)
@@ -114,11 +126,9 @@ class JogPanel(QWidget):
 
         self.hint_label = QLabel(KEY_HINT)
         self.hint_label.setObjectName("jogHint")
-        self.hint_label.setToolTip(
-            "Keyboard jog works anywhere in the window except in text fields;\n"
-            "hold Shift for a step ten times bigger (also with the buttons)."
-        )
+        self.hint_label.setWordWrap(True)
         self.hint_label.setStyleSheet("color: #616161;")
+        self.set_keyboard_state(True, "")
 
         layout = QVBoxLayout(self)
         layout.addLayout(pad)
@@ -127,6 +137,26 @@ class JogPanel(QWidget):
         self.set_step(1.0)
 
     # -- step ------------------------------------------------------------------------------
+
+    def set_keyboard_state(self, active: bool, reason: str) -> None:
+        """Say whether the jog keys act now, and if not, why (e.g. "the focus is in a field")."""
+        state = "keys active" if active else f"keys off: {reason}"
+        self.hint_label.setText(f"{KEY_HINT} · {state}")
+        self.hint_label.setToolTip(
+            "The jog keys work while this window is active and no menu, list, dialog or popup\n"
+            "is open, except when the focus is in a field that uses the arrow keys itself\n"
+            "(text and number fields, drop-down lists, the speed slider, the console).\n"
+            "Click the views or this panel to give the keys back to jogging.\n"
+            "Hold a key to keep stepping; Shift for a step ten times bigger."
+        )
+
+    def set_resolution(self, resolution: float | None) -> None:
+        """Step sizes are typed to the device's resolution in mm (None: 0.001 mm)."""
+        decimals = 3 if not resolution else max(0, min(3, round(-math.log10(resolution))))
+        self.step_spin.setDecimals(decimals)
+        self.step_spin.setMinimum(10.0**-decimals)
+        for value, button in self.preset_buttons.items():
+            button.setEnabled(value >= 10.0**-decimals - 1e-12)
 
     def step(self) -> float:
         """The current step in mm (without the Shift factor)."""
@@ -180,7 +210,17 @@ class JogPanel(QWidget):
         if axis not in self._axes:
             return False
         if not auto_repeat:
+            self._held_key = key
             self._jog(axis, direction, bool(bits & _SHIFT))
+        return True
+
+    def handle_key_release(self, key: int, *, auto_repeat: bool = False) -> bool:
+        """End a held jog when its key is released; True if the key is a jog key."""
+        key = int(getattr(key, "value", key))
+        if key not in KEY_MAP:
+            return False
+        if not auto_repeat and key == self._held_key:
+            self.release()
         return True
 
     def keyPressEvent(self, event: QKeyEvent) -> None:
@@ -190,11 +230,35 @@ class JogPanel(QWidget):
         else:
             super().keyPressEvent(event)
 
-    def _button_clicked(self, axis: str, direction: float) -> None:
+    def keyReleaseEvent(self, event: QKeyEvent) -> None:
+        """A released jog key ends the held jog."""
+        if self.handle_key_release(event.key(), auto_repeat=event.isAutoRepeat()):
+            event.accept()
+        else:
+            super().keyReleaseEvent(event)
+
+    def held(self) -> tuple[str, float] | None:
+        """The (axis, distance) being held, or None."""
+        return self._held
+
+    def held_by_key(self) -> bool:
+        """Whether the held jog is held by a key (not a button)."""
+        return self._held is not None and self._held_key is not None
+
+    def release(self) -> None:
+        """End the held jog (a key or button released, or the window lost the keyboard)."""
+        self._held_key = None
+        if self._held is not None:
+            self._held = None
+            self.jog_released.emit()
+
+    def _button_pressed(self, axis: str, direction: float) -> None:
         shift = bool(modifier_bits(QApplication.keyboardModifiers()) & _SHIFT)
+        self._held_key = None
         self._jog(axis, direction, shift)
 
     def _jog(self, axis: str, direction: float, shift: bool) -> None:
         distance = direction * self.step() * (SHIFT_FACTOR if shift else 1.0)
         log.debug("jog %s by %g mm", axis, distance)
+        self._held = (axis, distance)
         self.jog_requested.emit(axis, distance)

@@ -12,6 +12,19 @@ from widgets._axes import AXES, normalize_axes
 
 UNKNOWN = "—"
 NOT_MEASURED_TEXT = "commanded, not measured"
+LIVE, ESTIMATED, STALE = "live", "estimated", "stale"
+_STATUS = {
+    ESTIMATED: (
+        "estimated from the speed: the device cannot be asked while it moves",
+        "color: #0d47a1; background: #e3f2fd; border: 1px solid #90caf9;",
+        "color: #1565c0; font-style: italic;",
+    ),
+    STALE: (
+        "last known position: not connected",
+        "color: #616161; background: #eeeeee; border: 1px solid #bdbdbd;",
+        "color: #9e9e9e;",
+    ),
+}
 
 
 class PositionReadout(QWidget):
@@ -24,6 +37,7 @@ class PositionReadout(QWidget):
         self._decimals = decimals
         self._axes = frozenset(AXES)
         self._position: tuple[float, float, float] | None = None
+        self._status = LIVE
 
         font = QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)
         font.setPointSizeF(max(font.pointSizeF(), 9.0) * 2.0)
@@ -61,10 +75,30 @@ class PositionReadout(QWidget):
         self.measured_label.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Maximum)
         self.measured_label.setVisible(False)
 
+        self.status_label = QLabel()
+        self.status_label.setObjectName("positionStatus")
+        self.status_label.setWordWrap(True)
+        self.status_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        self.status_label.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Maximum)
+        self.status_label.setVisible(False)
+
         layout = QVBoxLayout(self)
         layout.addLayout(grid)
         layout.addWidget(self.measured_label)
+        layout.addWidget(self.status_label)
         self._render()
+
+    def set_status(self, status: str) -> None:
+        """`"live"` (measured or commanded), `"estimated"` (moving) or `"stale"` (last known)."""
+        if status not in (LIVE, ESTIMATED, STALE):
+            raise ValueError(f"status must be live, estimated or stale, not {status!r}")
+        if status != self._status:
+            self._status = status
+            self._render()
+
+    def status(self) -> str:
+        """The status shown: live, estimated or stale."""
+        return self._status
 
     def set_position(self, x: float, y: float, z: float) -> None:
         """Show a position in mm."""
@@ -98,10 +132,15 @@ class PositionReadout(QWidget):
         return self.labels[axis.lower()].text()
 
     def _render(self) -> None:
+        text, badge, value_style = _STATUS.get(self._status, ("", "", ""))
+        self.status_label.setText(text)
+        self.status_label.setStyleSheet(f"{badge} border-radius: 3px; padding: 2px 6px;")
+        self.status_label.setVisible(bool(text))
         for index, axis in enumerate(AXES):
             label = self.labels[axis]
             enabled = axis in self._axes
             label.setEnabled(enabled)
+            label.setStyleSheet(value_style)
             if not enabled:
                 label.setText(f"{UNKNOWN} mm")
                 label.setToolTip(f"This device has no {axis.upper()} axis")

@@ -55,3 +55,22 @@ def test_disabled_axes(readout: PositionReadout) -> None:
     assert readout.text("y") == "2.00 mm"
     readout.set_axes_enabled(["x", "y", "z"])
     assert readout.text("z") == "3.00 mm"
+
+
+def test_estimated_and_stale_are_visible(qtbot) -> None:
+    readout = PositionReadout()
+    qtbot.addWidget(readout)
+    readout.set_position(1, 2, 3)
+    assert readout.status() == "live" and readout.status_label.isHidden()
+    readout.set_status("estimated")
+    assert not readout.status_label.isHidden()
+    assert "estimated" in readout.status_label.text()
+    assert "italic" in readout.labels["x"].styleSheet()
+    readout.set_status("stale")
+    assert "last known" in readout.status_label.text()
+    assert readout.text("x") == "1.00 mm"  # kept, but greyed
+    assert "#9e9e9e" in readout.labels["x"].styleSheet()
+    readout.set_status("live")
+    assert readout.status_label.isHidden() and readout.labels["x"].styleSheet() == ""
+    with pytest.raises(ValueError):
+        readout.set_status("bold")

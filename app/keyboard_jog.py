@@ -1,0 +1,123 @@
+"""Keyboard jog for the main window: the jog keys act only where the arrow keys are free."""
+
+from __future__ import annotations
+
+import pyqtgraph as pg
+from PySide6.QtCore import QEvent, QObject
+from PySide6.QtGui import QKeyEvent
+from PySide6.QtWidgets import (
+    QAbstractButton,
+    QAbstractScrollArea,
+    QAbstractSlider,
+    QAbstractSpinBox,
+    QApplication,
+    QComboBox,
+    QLineEdit,
+    QMenu,
+    QMenuBar,
+    QRadioButton,
+    QTabBar,
+    QWidget,
+)
+
+from widgets.jog_panel import KEY_MAP, JogPanel
+
+# Widgets that use the arrow or page keys themselves; a jog key there is theirs.
+ARROW_KEY_WIDGETS: tuple[type[QWidget], ...] = (
+    QLineEdit,
+    QAbstractSpinBox,
+    QComboBox,
+    QAbstractScrollArea,  # lists, tables, text views, the console
+    QAbstractSlider,
+    QRadioButton,
+    QMenuBar,
+    QMenu,
+    QTabBar,
+)
+_KINDS = (
+    (QLineEdit, "a text field"),
+    (QAbstractSpinBox, "a number field"),
+    (QComboBox, "a drop-down list"),
+    (QAbstractSlider, "a slider"),
+    (QAbstractScrollArea, "a list or text view"),
+    (QAbstractButton, "a choice"),
+)
+
+
+def uses_arrow_keys(widget: QWidget | None) -> bool:
+    """Whether `widget` takes the arrow keys for itself (plots do not: they leave them to jog)."""
+    if widget is None or isinstance(widget, pg.GraphicsView):
+        return False
+    return isinstance(widget, ARROW_KEY_WIDGETS)
+
+
+class KeyboardJog(QObject):
+    """An application event filter that jogs `panel` by key for `window`, and says where it acts.
+
+    Jog keys act while `window` is the active window, no popup, menu or dialog is open, the jog
+    panel is enabled, and the focus is not in a widget that uses the arrow keys itself. Releasing
+    the held key, or the window losing the keyboard, ends a held jog.
+    """
+
+    def __init__(self, window: QWidget, panel: JogPanel) -> None:
+        super().__init__(window)
+        self.window = window
+        self.panel = panel
+        app = QApplication.instance()
+        assert app is not None
+        app.installEventFilter(self)
+        app.focusChanged.connect(self._focus_changed)  # type: ignore[attr-defined]
+        self._attached = True
+
+    def detach(self) -> None:
+        """Stop filtering (the window is closing)."""
+        app = QApplication.instance()
+        if app is not None and self._attached:
+            self._attached = False
+            app.removeEventFilter(self)
+            app.focusChanged.disconnect(self._focus_changed)  # type: ignore[attr-defined]
+
+    def blocker(self) -> str:
+        """Why the jog keys do not act now ("" when they do)."""
+        if not self.panel.isEnabled():
+            return "not connected"
+        if QApplication.activePopupWidget() is not None:
+            return "a menu or list is open"
+        if QApplication.activeModalWidget() is not None:
+            return "a dialog is open"
+        if not self.window.isActiveWindow():
+            return "another window is active"
+        focus = QApplication.focusWidget()
+        if uses_arrow_keys(focus):
+            kind = next((text for cls, text in _KINDS if isinstance(focus, cls)), "a field")
+            return f"the focus is in {kind}"
+        return ""
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        """Jog on a jog key's press where allowed; end the held jog on its release."""
+        kind = event.type()
+        if kind in (QEvent.Type.KeyPress, QEvent.Type.KeyRelease) and isinstance(event, QKeyEvent):
+            if event.key() not in KEY_MAP:
+                return False
+            if kind == QEvent.Type.KeyRelease:
+                self.panel.handle_key_release(event.key(), auto_repeat=event.isAutoRepeat())
+                return not self.blocker()  # a field that took the press takes the release
+            if self.blocker():
+                if not event.isAutoRepeat():
+                    self.panel.release()  # a popup opened over a held key: stop stepping
+                return False
+            return self.panel.handle_key(
+                event.key(), event.modifiers(), auto_repeat=event.isAutoRepeat()
+            )
+        if kind == QEvent.Type.WindowDeactivate and watched is self.window:
+            self.panel.release()
+            self._focus_changed()
+        elif kind == QEvent.Type.WindowActivate and watched is self.window:
+            self._focus_changed()
+        return False
+
+    def _focus_changed(self, *_args: object) -> None:
+        blocker = self.blocker()
+        self.panel.set_keyboard_state(not blocker, blocker)
+        if blocker and self.panel.held_by_key():
+            self.panel.release()
