@@ -9,9 +9,7 @@ from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QCloseEvent, QKeySequence
 from PySide6.QtWidgets import (
     QDockWidget,
-    QFrame,
     QMainWindow,
-    QScrollArea,
     QSplitter,
     QToolBar,
     QWidget,
@@ -42,6 +40,7 @@ from widgets import status_line as status
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
 from widgets.jog_panel import JogPanel
+from widgets.panel_scroll_area import PanelScrollArea
 from widgets.position_buffer import PositionBuffer
 from widgets.position_readout import PositionReadout
 from widgets.position_view_2d import PositionView2D
@@ -114,6 +113,8 @@ class MainWindow(QMainWindow):
 
         self.view3d = make_position_view_3d(self.buffer, self)
         self.view2d = PositionView2D(self.buffer, self)
+        for view in (self.view3d, self.view2d):
+            view.setFocusPolicy(Qt.FocusPolicy.ClickFocus)  # a click gives the keys back to jog
         splitter = QSplitter(Qt.Orientation.Horizontal, self)
         splitter.addWidget(self.view3d)
         splitter.addWidget(self.view2d)
@@ -134,6 +135,8 @@ class MainWindow(QMainWindow):
             self._dock("Console", self.console, bottom, scroll=False),
         ]
         self._build_menus(docks)
+        # The left panels run the full height; the console sits under the views only.
+        self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
 
         self.status_line = StatusLine(self)
         self.statusBar().addWidget(self.status_line, 1)
@@ -174,14 +177,7 @@ class MainWindow(QMainWindow):
         dock = QDockWidget(title, self)
         dock.setObjectName(f"{widget.objectName()}Dock")
         if scroll:  # a small screen scrolls the panel instead of squeezing it
-            area_widget = QScrollArea(dock)
-            area_widget.setObjectName(f"{widget.objectName()}Scroll")
-            area_widget.setWidgetResizable(True)
-            area_widget.setFrameShape(QFrame.Shape.NoFrame)
-            area_widget.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-            area_widget.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAsNeeded)
-            area_widget.setWidget(widget)
-            dock.setWidget(area_widget)
+            dock.setWidget(PanelScrollArea(widget, dock))
         else:
             dock.setWidget(widget)
         dock.setFeatures(
@@ -235,6 +231,10 @@ class MainWindow(QMainWindow):
         self.settings.setValue("protocol", protocol)
         self.settings.setValue("baud", baud)
         self._last_connection = (port, protocol, baud)
+        bar = self.connection_bar
+        bar.set_port(port)  # as typed, options included
+        bar.set_protocol(protocol)
+        bar.set_baud(baud)
         self.console.append_note(f"connecting to {port} ({protocol}, {baud} baud)")
         self._apply_travel(read_travel(self.settings, protocol, port))
         self.worker_thread.open(port, protocol, baud)

@@ -101,7 +101,6 @@ class JogPanel(QWidget):
         presets.setSpacing(2)
         step_label = QLabel("Step:")
         step_label.setToolTip("Distance of one jog")
-        presets.addWidget(step_label)
         self.preset_buttons: dict[float, QPushButton] = {}
         for value in STEP_PRESETS:
             button = QPushButton(_fmt_mm(value))
@@ -121,8 +120,11 @@ class JogPanel(QWidget):
         self.step_spin.setSuffix(" mm")
         self.step_spin.setToolTip("Any step size (0.001 to 1000 mm)")
         self.step_spin.valueChanged.connect(self._step_edited)
-        presets.addWidget(self.step_spin)
         presets.addStretch(1)
+        step_row = QHBoxLayout()
+        step_row.addWidget(step_label)
+        step_row.addWidget(self.step_spin)
+        step_row.addStretch(1)
 
         self.hint_label = QLabel(KEY_HINT)
         self.hint_label.setObjectName("jogHint")
@@ -132,6 +134,7 @@ class JogPanel(QWidget):
 
         layout = QVBoxLayout(self)
         layout.addLayout(pad)
+        layout.addLayout(step_row)
         layout.addLayout(presets)
         layout.addWidget(self.hint_label)
         self.set_step(1.0)

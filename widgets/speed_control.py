@@ -11,6 +11,7 @@ from PySide6.QtWidgets import (
     QLabel,
     QPushButton,
     QSlider,
+    QVBoxLayout,
     QWidget,
 )
 
@@ -59,12 +60,16 @@ class SpeedControl(QWidget):
         self.reported_label.setMinimumWidth(110)
         self.set_reported(None)
 
-        layout = QHBoxLayout(self)
-        layout.addWidget(label)
-        layout.addWidget(self.slider, 1)
-        layout.addWidget(self.spin)
-        layout.addWidget(self.apply_button)
-        layout.addWidget(self.reported_label)
+        top = QHBoxLayout()
+        top.addWidget(label)
+        top.addWidget(self.slider, 1)
+        bottom = QHBoxLayout()
+        bottom.addWidget(self.spin)
+        bottom.addWidget(self.apply_button)
+        bottom.addWidget(self.reported_label, 1)
+        layout = QVBoxLayout(self)
+        layout.addLayout(top)
+        layout.addLayout(bottom)
         label.setBuddy(self.spin)
         self.set_range(0.0, 100.0)
 
