@@ -6,7 +6,6 @@ import pyqtgraph as pg
 from PySide6.QtCore import QEvent, QObject
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import (
-    QAbstractButton,
     QAbstractScrollArea,
     QAbstractSlider,
     QAbstractSpinBox,
@@ -22,33 +21,29 @@ from PySide6.QtWidgets import (
 
 from widgets.jog_panel import KEY_MAP, JogPanel
 
-# Widgets that use the arrow or page keys themselves; a jog key there is theirs.
-ARROW_KEY_WIDGETS: tuple[type[QWidget], ...] = (
-    QLineEdit,
-    QAbstractSpinBox,
-    QComboBox,
-    QAbstractScrollArea,  # lists, tables, text views, the console
-    QAbstractSlider,
-    QRadioButton,
-    QMenuBar,
-    QMenu,
-    QTabBar,
-)
-_KINDS = (
+# Widgets that use the arrow or page keys themselves (a jog key there is theirs), as the hint
+# names them; the first match describes the widget.
+ARROW_KEY_WIDGETS: tuple[tuple[type[QWidget], str], ...] = (
     (QLineEdit, "a text field"),
     (QAbstractSpinBox, "a number field"),
     (QComboBox, "a drop-down list"),
     (QAbstractSlider, "a slider"),
-    (QAbstractScrollArea, "a list or text view"),
-    (QAbstractButton, "a choice"),
+    (QAbstractScrollArea, "a list or text view"),  # lists, tables, text views, the console
+    (QRadioButton, "a choice"),
+    (QMenuBar, "the menu bar"),
+    (QMenu, "a menu"),
+    (QTabBar, "tabs"),
 )
 
 
-def uses_arrow_keys(widget: QWidget | None) -> bool:
-    """Whether `widget` takes the arrow keys for itself (plots do not: they leave them to jog)."""
+def arrow_key_user(widget: QWidget | None) -> str:
+    """What `widget` is, when it takes the arrow keys for itself; "" when it leaves them to jog.
+
+    Plots (pyqtgraph views) leave them to jog.
+    """
     if widget is None or isinstance(widget, pg.GraphicsView):
-        return False
-    return isinstance(widget, ARROW_KEY_WIDGETS)
+        return ""
+    return next((text for cls, text in ARROW_KEY_WIDGETS if isinstance(widget, cls)), "")
 
 
 class KeyboardJog(QObject):
@@ -87,11 +82,8 @@ class KeyboardJog(QObject):
             return "a dialog is open"
         if not self.window.isActiveWindow():
             return "another window is active"
-        focus = QApplication.focusWidget()
-        if uses_arrow_keys(focus):
-            kind = next((text for cls, text in _KINDS if isinstance(focus, cls)), "a field")
-            return f"the focus is in {kind}"
-        return ""
+        kind = arrow_key_user(QApplication.focusWidget())
+        return f"the focus is in {kind}" if kind else ""
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """Jog on a jog key's press where allowed; end the held jog on its release."""

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import numbers
 from collections.abc import Iterable
 
@@ -45,3 +46,8 @@ def target_point(
 
 Box = tuple[tuple[float, float], tuple[float, float], tuple[float, float]]
 """A travel box in mm: ((x_min, x_max), (y_min, y_max), (z_min, z_max))."""
+
+
+def decimals_for(resolution: float | None) -> int:
+    """Decimals to type a length in mm to the device's resolution (None: 0.001 mm, 3 decimals)."""
+    return 3 if not resolution else max(0, min(3, round(-math.log10(resolution))))

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import logging
-import math
 from collections.abc import Callable, Iterable
 
 from PySide6.QtCore import Signal
@@ -20,7 +19,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from widgets._axes import AXES, Box, normalize_axes
+from widgets._axes import AXES, Box, decimals_for, normalize_axes
 
 log = logging.getLogger(__name__)
 
@@ -188,7 +187,7 @@ class CoordinateEntry(QWidget):
 
     def set_resolution(self, resolution: float | None) -> None:
         """Type coordinates to the device's resolution in mm (None: 0.001 mm)."""
-        decimals = 3 if not resolution else max(0, min(3, round(-math.log10(resolution))))
+        decimals = decimals_for(resolution)
         for field in self.fields.values():
             field.setDecimals(decimals)
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import logging
-import math
 from collections.abc import Iterable
 
 from PySide6.QtCore import Qt, Signal
@@ -21,7 +20,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from widgets._axes import AXES, modifier_bits, normalize_axes
+from widgets._axes import AXES, decimals_for, modifier_bits, normalize_axes
 
 log = logging.getLogger(__name__)
 
@@ -155,7 +154,7 @@ class JogPanel(QWidget):
 
     def set_resolution(self, resolution: float | None) -> None:
         """Step sizes are typed to the device's resolution in mm (None: 0.001 mm)."""
-        decimals = 3 if not resolution else max(0, min(3, round(-math.log10(resolution))))
+        decimals = decimals_for(resolution)
         self.step_spin.setDecimals(decimals)
         self.step_spin.setMinimum(10.0**-decimals)
         for value, button in self.preset_buttons.items():
