@@ -87,6 +87,7 @@ class MainWindow(QMainWindow):
         self._moving = False
         self._failed = False
         self._jog_job: jobs.MoveByJob | None = None
+        self._jog_next: tuple[str, float] | None = None  # a tap during a step: the next step
         self._home_from: tuple[float, float, float] | None = None
         self.estimate = MoveEstimate(self)
         self._build()
@@ -216,7 +217,6 @@ class MainWindow(QMainWindow):
         bar.refresh_requested.connect(self.port_watcher.refresh)
 
         self.jog_panel.jog_requested.connect(self._on_jog)
-        self.jog_panel.jog_released.connect(self._on_jog_released)
         self.coordinates.go_requested.connect(self._on_go)
         self.coordinates.home_requested.connect(lambda: self._submit(jobs.HomeJob()))
         self.coordinates.set_home_requested.connect(self._set_home)
@@ -261,6 +261,7 @@ class MainWindow(QMainWindow):
             self._set_controls_enabled(False)
             self._end_move()
             self.jog_panel.release()
+            self._jog_job = self._jog_next = None
             if self._last_position is not None:
                 self.readout.set_status("stale")
         elif not was_connected:
@@ -312,17 +313,14 @@ class MainWindow(QMainWindow):
 
     def _on_port_added(self, port: str) -> None:
         """A port appeared; if it is the one that was lost, connect again (position re-read)."""
-        self._notice(f"port {port} appeared")
+        self._say(f"port {port} appeared")
         last = self._last_connection
         if self.connection_bar.state() == "error" and last is not None and last[0] == port:
-            self._notice(f"reconnecting to {port}")
+            self._say(f"reconnecting to {port}")
             self.connect_device(*last)
 
     def _on_port_removed(self, port: str) -> None:
-        self._notice(f"port {port} disappeared")
-
-    def _notice(self, text: str) -> None:
-        self._say(text)
+        self._say(f"port {port} disappeared")
 
     def _say(self, text: str, kind: str = status.INFO, note: bool = True) -> None:
         """Tell the operator: the status line (once), and the console's log."""
@@ -373,10 +371,13 @@ class MainWindow(QMainWindow):
         return True
 
     def _on_jog(self, axis: str, distance: float) -> None:
-        """A jog key or button was pressed: one step now; more while it is held."""
+        """A jog key or button was pressed: one step now (or after the step under way, never
+        more than one step ahead of the stage); more while it is held."""
         self.settings.setValue("jog_step", self.jog_panel.step())
         if self._jog_job is None:
             self._jog_step(axis, distance)
+        else:
+            self._jog_next = (axis, distance)
 
     def _jog_step(self, axis: str, distance: float) -> None:
         deltas = {"x": 0.0, "y": 0.0, "z": 0.0}
@@ -384,15 +385,12 @@ class MainWindow(QMainWindow):
         job = jobs.MoveByJob(deltas["x"], deltas["y"], deltas["z"])
         self._jog_job = job if self._submit(job) else None
 
-    def _on_jog_released(self) -> None:
-        """The held key or button was released: no more steps (the one under way finishes)."""
-
     def _next_jog_step(self) -> None:
-        """After a jog step: the next one while the key or button is still held."""
+        """After a jog step: a tap made meanwhile, else the next one while still held."""
         self._jog_job = None
-        held = self.jog_panel.held()
-        if held is not None:
-            self._jog_step(*held)
+        step, self._jog_next = self._jog_next or self.jog_panel.held(), None
+        if step is not None:
+            self._jog_step(*step)
 
     def _on_go(self, mode: str, values: tuple[float, float, float]) -> None:
         if mode == "relative":
@@ -407,6 +405,7 @@ class MainWindow(QMainWindow):
     def stop(self) -> None:
         """Cancel what is queued and say what was not sent."""
         self.jog_panel.release()
+        self._jog_next = None
         dropped = self.worker.cancel_pending()
         self._report_dropped(dropped)
         if not dropped:
@@ -455,18 +454,23 @@ class MainWindow(QMainWindow):
         self._show_machine_state()
         if move.duration > 0:
             self.estimate.start(move)
-            self.readout.set_status("estimated")
-            self.view2d.set_estimated(True)
-            self.view3d.set_estimated(True)  # type: ignore[attr-defined]
 
     def _on_estimate(self, x: float, y: float, z: float) -> None:
+        if self.readout.status() != "estimated":
+            # Marked at the first estimate: a move over before it (a short jog step) restyles
+            # nothing, which halved the GUI's event-loop gaps while jogging.
+            self._mark_estimated(True)
         self._show_position(x, y, z)
+
+    def _mark_estimated(self, estimated: bool) -> None:
+        self.readout.set_status("estimated" if estimated else "live")
+        self.view2d.set_estimated(estimated)
+        self.view3d.set_estimated(estimated)  # type: ignore[attr-defined]
 
     def _end_move_estimate(self) -> None:
         self.estimate.stop()
-        self.readout.set_status("live" if self.connected else "stale")
-        self.view2d.set_estimated(False)
-        self.view3d.set_estimated(False)  # type: ignore[attr-defined]
+        if self.readout.status() == "estimated":
+            self._mark_estimated(False)
 
     def _end_move(self) -> None:
         self._moving = False
@@ -504,6 +508,7 @@ class MainWindow(QMainWindow):
     def _on_job_failed(self, job: jobs.Job, message: str) -> None:
         if job is self._jog_job:
             self.jog_panel.release()  # e.g. refused at the travel limits: stop stepping
+            self._jog_next = None
         self._failed = True
         self._say(f"{job.describe()} failed: {message}", status.FAILURE)
         self._job_ended(job)
