@@ -86,6 +86,7 @@ class PositionReadout(QWidget):
         layout.addLayout(grid)
         layout.addWidget(self.measured_label)
         layout.addWidget(self.status_label)
+        self._render_status()
         self._render()
 
     def set_status(self, status: str) -> None:
@@ -94,7 +95,7 @@ class PositionReadout(QWidget):
             raise ValueError(f"status must be live, estimated or stale, not {status!r}")
         if status != self._status:
             self._status = status
-            self._render()
+            self._render_status()
 
     def status(self) -> str:
         """The status shown: live, estimated or stale."""
@@ -131,16 +132,20 @@ class PositionReadout(QWidget):
         """The text shown for one axis, e.g. "12.34 mm"."""
         return self.labels[axis.lower()].text()
 
-    def _render(self) -> None:
+    def _render_status(self) -> None:
+        """The badge and the values' style (style sheets are costly: only when it changes)."""
         text, badge, value_style = _STATUS.get(self._status, ("", "", ""))
         self.status_label.setText(text)
         self.status_label.setStyleSheet(f"{badge} border-radius: 3px; padding: 2px 6px;")
         self.status_label.setVisible(bool(text))
+        for label in self.labels.values():
+            label.setStyleSheet(value_style)
+
+    def _render(self) -> None:
         for index, axis in enumerate(AXES):
             label = self.labels[axis]
             enabled = axis in self._axes
             label.setEnabled(enabled)
-            label.setStyleSheet(value_style)
             if not enabled:
                 label.setText(f"{UNKNOWN} mm")
                 label.setToolTip(f"This device has no {axis.upper()} axis")

@@ -52,10 +52,12 @@ class StatusLine(QWidget):
         """Show the machine state (disconnected, connecting, idle, moving, busy or error)."""
         if state not in _STATES:
             raise ValueError(f"unknown machine state {state!r}: one of {sorted(_STATES)}")
-        self._state = state
         text, colour, tip = _STATES[state]
-        self.state_label.setText(f"● {text}")
         self.state_label.setToolTip(detail or tip)
+        if state == self._state:
+            return  # style sheets are costly: restyle only on a change
+        self._state = state
+        self.state_label.setText(f"● {text}")
         self.state_label.setStyleSheet(
             f"color: white; background: {colour}; border-radius: 3px; padding: 1px 8px;"
             " font-weight: bold;"
@@ -69,13 +71,16 @@ class StatusLine(QWidget):
         """Replace the message (info, warning or error); the full text is in the tooltip."""
         if kind not in _MESSAGE_COLOURS:
             raise ValueError(f"unknown message kind {kind!r}")
+        restyle = kind != self._kind or not self.message_label.styleSheet()
         self._message, self._kind = text, kind
         metrics = self.message_label.fontMetrics()
         width = max(self.message_label.width(), 200)
         self.message_label.setText(metrics.elidedText(text, Qt.TextElideMode.ElideRight, width))
         self.message_label.setToolTip(text)
-        weight = "bold" if kind == FAILURE else "normal"
-        self.message_label.setStyleSheet(f"color: {_MESSAGE_COLOURS[kind]}; font-weight: {weight};")
+        if restyle:  # style sheets are costly: only when the kind changes
+            weight = "bold" if kind == FAILURE else "normal"
+            colour = _MESSAGE_COLOURS[kind]
+            self.message_label.setStyleSheet(f"color: {colour}; font-weight: {weight};")
 
     def clear_error(self) -> None:
         """Clear the message if it is an error (the next command succeeded)."""
