@@ -23,7 +23,7 @@ sys.path.insert(0, str(ROOT))
 
 def measure(jogs: int) -> dict[str, float]:
     """Jog `jogs` times by keyboard and return the event-loop gap figures."""
-    from PySide6.QtCore import QElapsedTimer, Qt, QTimer
+    from PySide6.QtCore import QElapsedTimer, QObject, Qt, QTimer
     from PySide6.QtTest import QTest
     from PySide6.QtWidgets import QApplication
 
@@ -53,8 +53,20 @@ def measure(jogs: int) -> dict[str, float]:
     timer.setInterval(5)
     timer.timeout.connect(tick)
     timer.start()
-    finished = [0]
-    window.worker.job_finished.connect(lambda *_: finished.__setitem__(0, finished[0] + 1))
+
+    class Counter(QObject):
+        """Counts finished jobs in the GUI thread, as the window sees them (a bare lambda would
+        run in the worker's thread, ahead of the window)."""
+
+        def __init__(self) -> None:
+            super().__init__()
+            self.count = 0
+
+        def add(self, *_args: object) -> None:
+            self.count += 1
+
+    finished = Counter()
+    window.worker.job_finished.connect(finished.add)
     keys = [Qt.Key.Key_Right, Qt.Key.Key_Up, Qt.Key.Key_Left, Qt.Key.Key_Down]
     give_up = time.monotonic() + 120
     settle_until = [float("inf")]
@@ -62,11 +74,11 @@ def measure(jogs: int) -> dict[str, float]:
 
     def drive() -> None:
         """Press the next jog key once the previous jogs are nearly done, like a user would."""
-        if finished[0] >= jogs or time.monotonic() > give_up:
+        if finished.count >= jogs or time.monotonic() > give_up:
             app.quit()
             return
         settled = window.connected and time.monotonic() > settle_until[0]
-        if settled and sent[0] < jogs and sent[0] - finished[0] < 2:
+        if settled and sent[0] < jogs and sent[0] - finished.count < 2:
             window.view2d.setFocus()
             QTest.keyClick(window.view2d, keys[sent[0] % len(keys)])
             sent[0] += 1
@@ -87,7 +99,7 @@ def measure(jogs: int) -> dict[str, float]:
     return {
         "gaps_over_50ms": over,
         "worst_gap_index": worst_at,
-        "jogs": finished[0],
+        "jogs": finished.count,
         "ticks": len(gaps),
         "max_gap_ms": gaps[-1] if gaps else 0.0,
         "p99_gap_ms": gaps[int(0.99 * (len(gaps) - 1))] if gaps else 0.0,
