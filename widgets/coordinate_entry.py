@@ -129,6 +129,7 @@ class CoordinateEntry(QWidget):
         layout.addLayout(grid)
         layout.addLayout(modes)
         layout.addLayout(actions)
+        layout.addStretch(1)  # extra height goes below the panel, not between its rows
         self._apply_range()
 
     def _button(self, text: str, name: str, tip: str) -> QPushButton:

@@ -136,6 +136,7 @@ class JogPanel(QWidget):
         layout.addLayout(step_row)
         layout.addLayout(presets)
         layout.addWidget(self.hint_label)
+        layout.addStretch(1)  # extra height goes below the panel, not between its rows
         self.set_step(1.0)
 
     # -- step ------------------------------------------------------------------------------
