@@ -10,7 +10,13 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 from typing import Any
 
-from app.settings import open_settings, read_travel
+from app.cli_params import check_param_offline, param_rows, param_table, run_param
+from app.settings import (
+    open_settings,
+    read_parameters,
+    read_travel,
+    write_parameters,
+)
 from drivers import commands as cmd
 from drivers.client import Client
 from drivers.errors import BadInput, CommunicationError, DeviceError, MotionError, UnknownProtocol
@@ -32,17 +38,22 @@ EXIT_NO_DEVICE = 3
 EXIT_INTERRUPTED = 130  # Ctrl-C, as shells report it
 
 PROTOCOL_CHOICES = ("coxiris", "visiomex", "laser-frame", "pi-frame", "firmata")
-COMMANDS = ("id", "position", "home", "set-home", "move", "jog", "speed", "limits", "check", "raw")
+COMMANDS = (
+    "id", "position", "home", "set-home", "move", "jog", "speed", "limits", "check", "raw", "param",
+)  # fmt: skip
 _ARITY = {
     "id": (0, 0), "position": (0, 0), "home": (0, 0), "set-home": (0, 0), "limits": (0, 0),
     "check": (0, 0), "move": (2, 3), "jog": (2, 3), "speed": (0, 1), "raw": (1, 1),
+    "param": (1, 3),
 }  # fmt: skip
 _USAGE = {
     "move": "move X Y [Z]",
     "jog": "jog DX DY [DZ]",
     "speed": "speed [VALUE]",
     "raw": "raw TEXT",
+    "param": "param list | param set NAME|ID VALUE | param write FILE",
 }
+_PARAM_ARITY = {"list": 0, "set": 2, "write": 1}
 
 
 class UsageError(Exception):
@@ -61,6 +72,10 @@ def build_parser() -> argparse.ArgumentParser:
         "--port", required=True, help="device path, COM name or pyserial URL (sim://coxiris)"
     )
     parser.add_argument("--protocol", required=True, choices=PROTOCOL_CHOICES)
+    parser.add_argument(
+        "--variant",
+        help="the protocol's wire variant (visiomex: seed, prefixed, board12; default: the first)",
+    )
     parser.add_argument("--baud", type=int, help="line speed (default: the protocol's)")
     parser.add_argument(
         "--timeout", type=float, default=2.0, help="seconds to wait for a reply (default 2)"
@@ -78,6 +93,12 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="a move beyond the travel limits goes to their edge instead of being refused",
     )
+    parser.add_argument(
+        "--kind",
+        default="linear",
+        choices=("linear", "rotational", "steps"),
+        help="jog: distances in mm (linear), degrees (rotational) or motor steps (visiomex)",
+    )
     parser.add_argument("-v", "--verbose", action="store_true", help="log progress on stderr")
     parser.add_argument("command", choices=COMMANDS, metavar="COMMAND", help=" | ".join(COMMANDS))
     parser.add_argument("args", nargs=argparse.REMAINDER, metavar="ARGS")
@@ -88,6 +109,8 @@ def _check_arity(command: str, args: list[str]) -> None:
     low, high = _ARITY[command]
     if not low <= len(args) <= high:
         raise UsageError(f"usage: {_USAGE.get(command, command)} (got {len(args)} arguments)")
+    if command == "param" and _PARAM_ARITY.get(args[0]) != len(args) - 1:
+        raise UsageError(f"usage: {_USAGE['param']}")
 
 
 def _numbers(args: list[str], names: Sequence[str]) -> list[float]:
@@ -114,11 +137,21 @@ def _text(result: dict[str, Any]) -> str:
         return f"min {result['min_speed']:g} mm/s, max {result['max_speed']:g} mm/s"
     if "reply" in result:
         return "\n".join(result["reply"])
+    if "parameters" in result:
+        return param_table(result["parameters"])
+    if "written" in result:
+        return "\n".join(
+            f"{w['name']} = {w['value']:g} {w['unit']}".rstrip() for w in result["written"]
+        )
     return "ok"
 
 
-def run_command(motion: Motion, command: str, args: list[str]) -> dict[str, Any]:
+def run_command(
+    motion: Motion, command: str, args: list[str], kind: str = "linear", remember: Any = None
+) -> dict[str, Any]:
     """Carry out one motionctl command; returns the JSON-able result."""
+    if command == "param":
+        return run_param(motion, args, remember or (lambda values: None))
     if command == "id":
         return {"id": motion.identify()}
     if command == "position":
@@ -131,7 +164,7 @@ def run_command(motion: Motion, command: str, args: list[str]) -> dict[str, Any]
     if command == "move":
         return _position(motion.move_to(*_numbers(args, ("x", "y", "z"))))
     if command == "jog":
-        return _position(motion.move_by(*_numbers(args, ("dx", "dy", "dz"))))
+        return _position(motion.move_by(*_numbers(args, ("dx", "dy", "dz")), kind=kind))
     if command == "speed":
         if args:
             requested = parse_number(args[0], "speed")
@@ -160,25 +193,34 @@ def run_command(motion: Motion, command: str, args: list[str]) -> dict[str, Any]
 
 
 def _validate_offline(
-    command: str, args: list[str], protocol: Protocol, travel: TravelLimits | None
+    command: str, args: list[str], protocol: Protocol, travel: TravelLimits | None, kind: str
 ) -> None:
     """Refuse what can be refused before the port is even opened."""
     _check_arity(command, args)
-    resolution = protocol.capabilities.resolution
+    caps = protocol.capabilities
+    if kind not in caps.move_kinds and command == "jog":
+        raise BadInput(
+            f"--kind {kind} refused: {protocol.name} moves are {', '.join(caps.move_kinds)}"
+        )
     if command == "move":
         x, y, z = _numbers(args, ("x", "y", "z"))
-        protocol.encode(cmd.MoveTo(x, y, z))
-        check_resolution((x, y, z), ("x", "y", "z"), resolution)
+        # A relative-only device is sent the distance from where this run starts: the origin.
+        protocol.encode(cmd.MoveTo(x, y, z) if caps.absolute_moves else cmd.MoveBy(x, y, z))
+        check_resolution((x, y, z), ("x", "y", "z"), caps.resolution)
         if travel is not None:
             travel.apply((x, y, z), f"move to ({x:g}, {y:g}, {z:g}) mm")
     elif command == "jog":
         dx, dy, dz = _numbers(args, ("dx", "dy", "dz"))
-        protocol.encode(cmd.MoveBy(dx, dy, dz))
-        check_resolution((dx, dy, dz), ("dx", "dy", "dz"), resolution)
+        protocol.encode(cmd.MoveBy(dx, dy, dz, kind))
+        if kind == "linear":
+            check_resolution((dx, dy, dz), ("dx", "dy", "dz"), caps.resolution)
     elif command == "speed" and args:
-        protocol.encode(cmd.SetSpeed(parse_number(args[0], "speed")))
+        for part in protocol.expand(cmd.SetSpeed(parse_number(args[0], "speed"))):
+            protocol.encode(part)
     elif command == "raw":
         protocol.encode(cmd.Raw(args[0].encode("utf-8")))
+    elif command == "param":
+        check_param_offline(protocol, args)
 
 
 def _travel(options: argparse.Namespace) -> TravelLimits | None:
@@ -223,9 +265,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     report = _Reporter(options.json)
     try:
-        protocol = create_protocol(options.protocol)
+        protocol = create_protocol(options.protocol, options.variant)
         travel = _travel(options)
-        _validate_offline(options.command, options.args, protocol, travel)
+        _validate_offline(options.command, options.args, protocol, travel, options.kind)
         if options.timeout <= 0:
             raise UsageError("--timeout must be positive")
         if options.baud is not None and options.baud <= 0:
@@ -233,6 +275,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     except (UsageError, BadInput, UnknownProtocol) as exc:
         return report.fail(exc, EXIT_BAD_INPUT)
     baud = options.baud or protocol.capabilities.default_baud
+    settings = open_settings()
+    last_written = read_parameters(settings, options.protocol, options.port)
+    protocol.assume_parameters(last_written)
+    if options.command == "param" and options.args[0] == "list":
+        return report.done({"parameters": param_rows(protocol, last_written)})
+
+    def remember(values: dict[str, float]) -> None:
+        write_parameters(settings, options.protocol, options.port, values)
+
     with ExitStack() as stack:
         try:
             if options.log:
@@ -247,7 +298,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             motion = Motion(Client(link, protocol, timeout=options.timeout))
             motion.travel = travel
             motion.notice_listeners.append(report.notice)
-            result = run_command(motion, options.command, options.args)
+            result = run_command(motion, options.command, options.args, options.kind, remember)
         except BadInput as exc:
             return report.fail(exc, EXIT_BAD_INPUT)
         except DeviceError as exc:
@@ -258,13 +309,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             return report.fail(exc, EXIT_DEVICE_ERROR)
         except KeyboardInterrupt:
             return report.fail("interrupted; the device may still be moving", EXIT_INTERRUPTED)
-    if options.json:
-        if report.notices:
-            result["notices"] = report.notices
-        print(json.dumps(result))
-    else:
-        print(_text(result))
-    return EXIT_OK
+    return report.done(result)
 
 
 class _Reporter:
@@ -278,6 +323,16 @@ class _Reporter:
         """Something the user should know that is not a failure (e.g. a clamped move)."""
         self.notices.append(text)
         print(f"motionctl: {text}", file=sys.stderr)
+
+    def done(self, result: dict[str, Any]) -> int:
+        """Print the result (text, or one JSON object); returns EXIT_OK."""
+        if self.as_json:
+            if self.notices:
+                result["notices"] = self.notices
+            print(json.dumps(result))
+        else:
+            print(_text(result))
+        return EXIT_OK
 
     def fail(self, problem: Exception | str, status: int) -> int:
         """Report a failure; returns the exit status."""

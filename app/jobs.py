@@ -36,10 +36,12 @@ class MoveByJob(Job):
     dx: float
     dy: float
     dz: float
+    kind: str = "linear"  # or the protocol's rotational (degrees) or steps
 
     def describe(self) -> str:
         """E.g. `jog by (1, 0, 0) mm`."""
-        return f"jog by ({self.dx:g}, {self.dy:g}, {self.dz:g}) mm"
+        unit = "mm" if self.kind == "linear" else self.kind
+        return f"jog by ({self.dx:g}, {self.dy:g}, {self.dz:g}) {unit}"
 
 
 @dataclass(frozen=True)
@@ -69,6 +71,20 @@ class SetSpeedJob(Job):
     def describe(self) -> str:
         """E.g. `set speed 20 mm/s`."""
         return f"set speed {self.speed:g} mm/s"
+
+
+@dataclass(frozen=True, eq=False)
+class SetParameterJob(Job):
+    """Write one device parameter (by id), in its unit."""
+
+    param_id: int
+    value: float
+    name: str = ""
+    unit: str = ""
+
+    def describe(self) -> str:
+        """E.g. `set pulley_diameter_x = 38.2 mm`."""
+        return f"set {self.name or self.param_id} = {self.value:g} {self.unit}".rstrip()
 
 
 @dataclass(frozen=True)

@@ -29,6 +29,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--protocol", choices=protocol_names(), help="default coxiris")
     parser.add_argument("--baud", type=int, help="line speed (default: the protocol's)")
     parser.add_argument(
+        "--variant", help="the protocol's wire variant (visiomex: seed, prefixed, board12)"
+    )
+    parser.add_argument(
         "--screenshot",
         metavar="PATH",
         help="save a PNG of the window once connected and settled, then exit",
@@ -74,7 +77,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     explicit = options.port or options.protocol or options.baud
     port = options.port or (DEFAULT_PORT if explicit or options.screenshot else None)
     protocol = options.protocol or DEFAULT_PROTOCOL
-    baud = options.baud or get_protocol_class(protocol).capabilities.default_baud
+    baud = options.baud or get_protocol_class(protocol).default_baud(options.variant)
     if port is None:
         # No arguments: reconnect to the last port (the simulated stage the first time).
         bar = window.connection_bar
@@ -83,7 +86,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     if options.screenshot:
         take_screenshot(window, options.screenshot, app)
     window.show()
-    window.connect_device(port, protocol, baud)
+    window.connect_device(port, protocol, baud, options.variant)
     status = app.exec()
     window.close()
     return status

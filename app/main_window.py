@@ -18,18 +18,21 @@ from PySide6.QtWidgets import (
 from app import jobs
 from app.keyboard_jog import KeyboardJog
 from app.move_estimate import MoveEstimate
+from app.parameter_dock import ParameterDock
 from app.ports import PortWatcher
 from app.settings import (
     DEFAULT_PORT,
     DEFAULT_PROTOCOL,
     open_settings,
     read_number,
+    read_parameters,
     read_str,
     read_travel,
     write_travel,
 )
-from app.worker import DeviceInfo, SerialWorker
+from app.worker import ConnectOptions, DeviceInfo, SerialWorker
 from app.worker_thread import WorkerThread
+from drivers.capabilities import Completion
 from drivers.events import PositionReport
 from drivers.motion import MoveStart
 from drivers.registry import get_protocol_class, protocol_names
@@ -135,6 +138,9 @@ class MainWindow(QMainWindow):
             self._dock("Speed", self.speed, left),
             self._dock("Console", self.console, bottom, scroll=False),
         ]
+        self.parameters = ParameterDock(self)
+        self.tabifyDockWidget(docks[-1], self.parameters.dock)
+        docks.append(self.parameters.dock)
         self._build_menus(docks)
         # The left panels run the full height; the console sits under the views only.
         self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
@@ -210,6 +216,7 @@ class MainWindow(QMainWindow):
         bar.connect_requested.connect(self.connect_device)
         bar.disconnect_requested.connect(self.disconnect_device)
         bar.protocol_changed.connect(self._on_protocol_changed)
+        bar.variant_changed.connect(self._on_variant_changed)
         self.port_watcher = PortWatcher(self)
         self.port_watcher.ports_changed.connect(self._on_ports)
         self.port_watcher.port_added.connect(self._on_port_added)
@@ -225,19 +232,32 @@ class MainWindow(QMainWindow):
         self.console.send_requested.connect(lambda data: self._submit(jobs.RawJob(data)))
 
     # -- connection --------------------------------------------------------------------------
-    def connect_device(self, port: str, protocol: str, baud: int) -> None:
-        """Ask the worker to open `port`; the result arrives as signals."""
+    def connect_device(
+        self, port: str, protocol: str, baud: int, variant: str | None = None
+    ) -> None:
+        """Ask the worker to open `port`; the result arrives as signals.
+
+        `variant`: the protocol's wire variant (None: the one chosen in the bar, else saved).
+        """
         self.settings.setValue("port", port)
         self.settings.setValue("protocol", protocol)
         self.settings.setValue("baud", baud)
         self._last_connection = (port, protocol, baud)
         bar = self.connection_bar
+        if variant is None and bar.protocol() == protocol:
+            variant = bar.variant()
         bar.set_port(port)  # as typed, options included
         bar.set_protocol(protocol)
+        self._show_variants(protocol, variant or read_str(self.settings, f"variant/{protocol}", ""))
         bar.set_baud(baud)
-        self.console.append_note(f"connecting to {port} ({protocol}, {baud} baud)")
+        variant = bar.variant()
+        if variant:
+            self.settings.setValue(f"variant/{protocol}", variant)
+        shown = f"{protocol} {variant}" if variant else protocol
+        self.console.append_note(f"connecting to {port} ({shown}, {baud} baud)")
         self._apply_travel(read_travel(self.settings, protocol, port))
-        self.worker_thread.open(port, protocol, baud)
+        options = ConnectOptions(variant, read_parameters(self.settings, protocol, port))
+        self.worker_thread.open(port, protocol, baud, options)
 
     def disconnect_device(self) -> None:
         """Ask the worker to close the port (and do not reconnect by itself)."""
@@ -259,6 +279,7 @@ class MainWindow(QMainWindow):
             self._say(detail, status.FAILURE, note=False)
         if not self.connected:
             self._set_controls_enabled(False)
+            self.parameters.disconnected()
             self._end_move()
             self.jog_panel.release()
             self._jog_job = self._jog_next = None
@@ -284,15 +305,26 @@ class MainWindow(QMainWindow):
     def _on_device_ready(self, info: DeviceInfo) -> None:
         self.info = info
         caps = info.capabilities
+        name = info.protocol.upper()
         self.console.append_note(f"connected to {info.identity} on {info.port}")
         self._say(f"connected to {info.identity} on {info.port}", note=False)
         for widget in (self.jog_panel, self.coordinates, self.readout):
             widget.set_axes_enabled(caps.axes)
         self.readout.set_measured(caps.position_feedback)
         self.readout.set_status("live")
+        self.speed.set_note(caps.speed_note)
+        self.speed.set_decimals(caps.speed_decimals)
+        self.coordinates.set_home_tips(
+            caps.home_note or "Go to the home position (0, 0, 0)",
+            "Make the current position the origin (asks first)"
+            if caps.set_home
+            else f"Restart the panel's count of the position here (asks first); {name} has no "
+            "set-home command, so nothing is sent",
+        )
+        self.console.send_line.set_line_ending(caps.raw_line_end.encode("ascii"))
+        self.parameters.device_ready(info)
         self.jog_panel.set_resolution(caps.resolution)
         self.coordinates.set_resolution(caps.resolution)
-        name = info.protocol.upper()
         tip = STOP_TIP if caps.stop else NO_STOP_TIP.format(name=name)
         self.coordinates.set_stop_mode(caps.stop, tip)
         self.stop_action.setText("&Stop" if caps.stop else "&Drop queued commands")
@@ -307,7 +339,25 @@ class MainWindow(QMainWindow):
 
     def _on_protocol_changed(self, name: str) -> None:
         try:
-            self.connection_bar.set_baud(get_protocol_class(name).capabilities.default_baud)
+            cls = get_protocol_class(name)
+        except LookupError as exc:
+            self._say(str(exc), status.WARNING, note=False)
+            return
+        self._show_variants(name, read_str(self.settings, f"variant/{name}", ""))
+        self.connection_bar.set_baud(cls.default_baud(self.connection_bar.variant() or None))
+
+    def _show_variants(self, protocol: str, current: str) -> None:
+        """List the protocol's wire variants in the bar (hidden when it has none)."""
+        try:
+            variants = [(v.name, v.description) for v in get_protocol_class(protocol).variants]
+        except LookupError:
+            variants = []
+        self.connection_bar.set_variants(variants, current)
+
+    def _on_variant_changed(self, variant: str) -> None:
+        try:
+            cls = get_protocol_class(self.connection_bar.protocol())
+            self.connection_bar.set_baud(cls.default_baud(variant))
         except LookupError as exc:
             self._say(str(exc), status.WARNING, note=False)
 
@@ -321,6 +371,14 @@ class MainWindow(QMainWindow):
 
     def _on_port_removed(self, port: str) -> None:
         self._say(f"port {port} disappeared")
+
+    def say(self, text: str) -> None:
+        """Tell the operator something (status line and console log)."""
+        self._say(text)
+
+    def submit_job(self, job: jobs.Job) -> bool:
+        """Queue a job for the worker; False (and a message) when not connected."""
+        return self._submit(job)
 
     def _say(self, text: str, kind: str = status.INFO, note: bool = True) -> None:
         """Tell the operator: the status line (once), and the console's log."""
@@ -414,6 +472,7 @@ class MainWindow(QMainWindow):
     def _report_dropped(self, dropped: list[jobs.Job]) -> None:
         if not dropped:
             return
+        self.parameters.forget(dropped)
         names = ", ".join(job.describe() for job in dropped)
         self._say(f"stopped: {len(dropped)} command(s) not sent: {names}", status.WARNING)
         if any(job is self._jog_job for job in dropped):
@@ -441,6 +500,9 @@ class MainWindow(QMainWindow):
             )
         if self.estimate.active():
             self._end_move_estimate()
+        if not report.measured and self.info is not None:
+            feedback = self.info.capabilities.completion is Completion.FEEDBACK
+            self.readout.set_measured(False, report.confirmed if feedback else None)
         self._show_position(report.x, report.y, report.z)
 
     def _show_position(self, x: float, y: float, z: float) -> None:
@@ -537,6 +599,7 @@ class MainWindow(QMainWindow):
         self.jog_panel.set_step(read_number(s, "jog_step", 1.0))
         protocol = read_str(s, "protocol", DEFAULT_PROTOCOL)
         self.connection_bar.set_protocol(protocol)
+        self._show_variants(protocol, read_str(s, f"variant/{protocol}", ""))
         self.connection_bar.set_port(read_str(s, "port", DEFAULT_PORT))
         self.connection_bar.set_baud(int(read_number(s, "baud", 115200)))
 

@@ -75,3 +75,29 @@ def write_travel(
     text = ",".join(f"{lo:g}:{hi:g}" for lo, hi in limits.box)
     settings.setValue(f"{key}/travel", text)
     settings.setValue(f"{key}/travel_clamp", "true" if limits.clamp else "false")
+
+
+def read_parameters(settings: QSettings, protocol: str, port: str) -> dict[str, float]:
+    """The parameter values last written to a device and confirmed (the device has no read-back)."""
+    group = f"{device_key(protocol, port)}/parameters"
+    settings.beginGroup(group)
+    try:
+        values: dict[str, float] = {}
+        for name in settings.childKeys():
+            try:
+                values[name] = float(settings.value(name))  # type: ignore[arg-type]
+            except (TypeError, ValueError):
+                continue  # an edited settings file: the value is forgotten, not fatal
+        return values
+    finally:
+        settings.endGroup()
+
+
+def write_parameters(
+    settings: QSettings, protocol: str, port: str, values: dict[str, float]
+) -> None:
+    """Remember values the device confirmed (merged with those written before)."""
+    group = f"{device_key(protocol, port)}/parameters"
+    for name, value in values.items():
+        settings.setValue(f"{group}/{name}", repr(float(value)))
+    settings.sync()

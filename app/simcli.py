@@ -36,6 +36,16 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="COXIRIS: answer DONE when a move starts, not when it ends",
     )
+    parser.add_argument(
+        "--variant",
+        choices=("seed", "prefixed", "board12"),
+        help="Visiomex: packet profile (default: seed)",
+    )
+    parser.add_argument(
+        "--no-bugs",
+        action="store_true",
+        help="Visiomex: the documented firmware instead of the public one's bugs",
+    )
     parser.add_argument("--instant", action="store_true", help="moves take no time")
     parser.add_argument("--speed", type=float, help="initial speed (mm/s)")
     parser.add_argument(
@@ -63,6 +73,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         device_options["faults"] = tuple(options.fault)
         if options.speed is not None:
             device_options["speed"] = options.speed
+    elif options.protocol == "visiomex":
+        device_options["bugs"] = not options.no_bugs
+        if options.variant is not None:
+            device_options["variant"] = options.variant
     try:
         probe = create_device(options.protocol, **device_options)
     except UnknownProtocol as exc:

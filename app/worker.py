@@ -6,16 +6,17 @@ import logging
 import queue
 import threading
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, Slot
 
 from app import jobs
 from drivers.capabilities import Capabilities
 from drivers.client import Client
-from drivers.errors import Aborted, CommunicationError, MotionError, PortError
+from drivers.errors import Aborted, CommunicationError, DeviceTimeout, MotionError, PortError
 from drivers.events import ErrorReport, Event, Undecodable
 from drivers.motion import Motion, MoveStart
+from drivers.parameters import Parameter
 from drivers.registry import create_protocol
 from drivers.traffic import Traffic
 from drivers.transport import Link, open_link
@@ -35,6 +36,17 @@ class DeviceInfo:
     protocol: str
     identity: str
     capabilities: Capabilities
+    variant: str = ""
+    parameters: tuple[Parameter, ...] = ()
+
+
+@dataclass(frozen=True)
+class ConnectOptions:
+    """How to talk to the device beyond port, protocol and baud."""
+
+    variant: str = ""  # the protocol's wire variant ("": its default)
+    parameters: dict[str, float] = field(default_factory=dict)
+    """Values written earlier and kept by the panel (the device may have no read-back)."""
 
 
 class SerialWorker(QObject):
@@ -58,6 +70,8 @@ class SerialWorker(QObject):
     notice = Signal(str)  # something the operator should know, e.g. a move clamped to the limits
     device_error = Signal(str)  # an error the device reported unasked (e.g. to a console line)
     device_note = Signal(str)  # an unsolicited frame that could not be decoded
+    parameter_written = Signal(object)  # ParameterWritten: the device confirmed a parameter
+    job_timed_out = Signal(object)  # Job: the device did not answer it (before job_failed)
 
     def __init__(self, poll_moving_hz: float = 10.0, poll_idle_s: float = 1.0) -> None:
         super().__init__()
@@ -111,13 +125,17 @@ class SerialWorker(QObject):
         self._timer.timeout.connect(self._tick)
         self._timer.start()
 
-    @Slot(str, str, int)
-    def open_port(self, url: str, protocol_name: str, baud: int) -> None:
+    @Slot(str, str, int, object)
+    def open_port(
+        self, url: str, protocol_name: str, baud: int, options: ConnectOptions | None = None
+    ) -> None:
         """Open the port, identify the device and read its state."""
+        options = options or ConnectOptions()
         self.close_port()
         self.state_changed.emit("connecting", f"{url} ({protocol_name}, {baud} baud)")
         try:
-            protocol = create_protocol(protocol_name)
+            protocol = create_protocol(protocol_name, options.variant or None)
+            protocol.assume_parameters(options.parameters)
             link = open_link(url, baud)
         except MotionError as exc:
             self.state_changed.emit("error", str(exc))
@@ -133,6 +151,7 @@ class SerialWorker(QObject):
         self._motion.position_listeners.append(self.position_changed.emit)
         self._motion.move_listeners.append(self._on_move_started)
         self._motion.notice_listeners.append(self.notice.emit)
+        self._motion.parameter_listeners.append(self.parameter_written.emit)
         self._motion.travel = self._travel
         try:
             identity = self._motion.identify()
@@ -142,7 +161,12 @@ class SerialWorker(QObject):
             return
         self._flush_traffic()
         self.state_changed.emit("connected", f"{identity} on {url}")
-        self.device_ready.emit(DeviceInfo(url, protocol_name, identity, protocol.capabilities))
+        variant = protocol.variant.name if protocol.variant else ""
+        self.device_ready.emit(
+            DeviceInfo(
+                url, protocol_name, identity, protocol.capabilities, variant, protocol.parameters
+            )
+        )
         self._next_poll = time.monotonic() + self.poll_idle_s
 
     @Slot()
@@ -211,6 +235,8 @@ class SerialWorker(QObject):
             raise
         except MotionError as exc:
             self._flush_traffic()  # the console shows the traffic before the failure
+            if isinstance(exc, DeviceTimeout):
+                self.job_timed_out.emit(job)
             self.job_failed.emit(job, str(exc))
             if isinstance(exc, CommunicationError):
                 self.target_changed.emit(None)
@@ -225,7 +251,7 @@ class SerialWorker(QObject):
         if isinstance(job, jobs.MoveToJob):
             return motion.move_to(job.x, job.y, job.z)
         if isinstance(job, jobs.MoveByJob):
-            return motion.move_by(job.dx, job.dy, job.dz)
+            return motion.move_by(job.dx, job.dy, job.dz, job.kind)
         if isinstance(job, jobs.HomeJob):
             return motion.home()
         if isinstance(job, jobs.SetHomeJob):
@@ -238,6 +264,8 @@ class SerialWorker(QObject):
         if isinstance(job, jobs.RawJob):
             reply = motion.client.send_raw(job.data)
             return None if reply is None else reply.value
+        if isinstance(job, jobs.SetParameterJob):
+            return motion.set_parameter(job.param_id, job.value)
         if isinstance(job, jobs.RefreshJob):
             self._refresh()
             return None

@@ -10,7 +10,7 @@ from app.worker import SerialWorker
 class WorkerThread(QObject):
     """Owns a QThread with a SerialWorker in it; the GUI calls these methods, never the port."""
 
-    open_requested = Signal(str, str, int)
+    open_requested = Signal(str, str, int, object)
     close_requested = Signal()
     shutdown_requested = Signal()
     travel_requested = Signal(object)
@@ -28,10 +28,10 @@ class WorkerThread(QObject):
         self.travel_requested.connect(self.worker.set_travel)
         self.thread.start()
 
-    def open(self, url: str, protocol: str, baud: int) -> None:
-        """Ask the worker to connect."""
+    def open(self, url: str, protocol: str, baud: int, options: object = None) -> None:
+        """Ask the worker to connect (`options`: a ConnectOptions, or None for the defaults)."""
         self.worker.abort_clear()
-        self.open_requested.emit(url, protocol, baud)
+        self.open_requested.emit(url, protocol, baud, options)
 
     def set_travel(self, limits: object) -> None:
         """Ask the worker to use these travel limits (a TravelLimits, or None)."""

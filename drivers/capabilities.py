@@ -41,4 +41,9 @@ class Capabilities:
     """The travel box in mm where the protocol knows it (None: unknown, set by the user)."""
     busy_silent: bool = False  # the device answers nothing while a blocking move runs
     raw_text: bool = True  # a console send line takes text (True) or hex (False) by default
+    raw_line_end: str = "\n"  # what the console appends to a text line by default
+    move_kinds: tuple[str, ...] = ("linear",)  # MoveBy kinds: linear, rotational, steps
+    speed_decimals: int = 2  # the decimals a speed may have (Visiomex: whole mm/s)
+    speed_note: str = ""  # what setting the speed does on this device, where it is not obvious
+    home_note: str = ""  # how Home is done, where the device has no homing of its own
     notes: tuple[str, ...] = field(default_factory=tuple)

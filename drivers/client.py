@@ -40,6 +40,7 @@ class Client:
         self._buffer = bytearray()
         self._last_rx = clock()
         self._last_reply = 0.0
+        self._last_write = -1e9
         self.wait_hooks: list[Callable[[], None]] = []
         """Called every read while waiting (about every 20 ms), e.g. to hand on traffic."""
         self.abort = threading.Event()
@@ -56,9 +57,9 @@ class Client:
         exchange = self.protocol.exchange(command)
         self.poll()
         self._pace()
-        self.link.write(data)
+        self._write(data)
         silence = timeout if timeout is not None else (exchange.timeout or self.timeout)
-        self._await(exchange, silence, extra)
+        self._await(exchange, silence, max(extra, exchange.extra))
         self._last_reply = self.clock()
         return exchange.result()
 
@@ -67,7 +68,7 @@ class Client:
         data = self.protocol.encode(command)
         self.poll()
         self._pace()
-        self.link.write(data)
+        self._write(data)
         self._last_reply = self.clock()
 
     def send_raw(self, data: bytes) -> Reply | None:
@@ -80,9 +81,9 @@ class Client:
         exchange = self.protocol.raw_exchange(data)
         self.poll()
         self._pace()
-        self.link.write(data)
+        self._write(data)
         if exchange is not None:
-            self._await(exchange, exchange.timeout or self.timeout, 0.0)
+            self._await(exchange, exchange.timeout or self.timeout, exchange.extra)
         self._last_reply = self.clock()
         return exchange.result() if exchange is not None else None
 
@@ -98,14 +99,24 @@ class Client:
         """Close the link."""
         self.link.close()
 
-    def _pace(self) -> None:
+    def _write(self, data: bytes) -> None:
+        self.link.write(data)
+        self._last_write = self.clock()
+
+    def _gap(self) -> float:
+        """Seconds to wait before the next write may go."""
         gap = self.protocol.min_gap - (self.clock() - self._last_reply)
-        while gap > 0:
-            # The device needs silence between packets (Visiomex: 1 s); keep reading meanwhile.
+        if self._last_rx <= self._last_write:
+            # Unanswered: the device may still be reading that packet (Visiomex: it ends after
+            # 1 s of silence, and a packet sent sooner merges with it).
+            gap = max(gap, self.protocol.write_gap - (self.clock() - self._last_write))
+        return gap
+
+    def _pace(self) -> None:
+        while self._gap() > 0:
             self._check_abort()
             for event in self._read_events(wait=True):
                 self._notify(event, False)
-            gap = self.protocol.min_gap - (self.clock() - self._last_reply)
 
     def _await(self, exchange: Exchange, silence: float, extra: float) -> None:
         start = self.clock()

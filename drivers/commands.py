@@ -46,11 +46,16 @@ class MoveTo(Command):
 
 @dataclass(frozen=True)
 class MoveBy(Command):
-    """Relative move by the given deltas."""
+    """Relative move by the given deltas; `kind` is one of the protocol's `move_kinds`.
+
+    Linear deltas are in the length unit (mm); `rotational` ones in degrees of the motor's
+    cycle, `steps` in motor steps (Visiomex `MR`, `MS`).
+    """
 
     dx: float
     dy: float
     dz: float = 0.0
+    kind: str = "linear"
 
 
 @dataclass(frozen=True)
@@ -94,10 +99,10 @@ class Dwell(Command):
 
 @dataclass(frozen=True)
 class SetParameter(Command):
-    """Write a numbered device parameter (Visiomex style)."""
+    """Write a numbered device parameter, in its interface unit (the protocol scales it)."""
 
     param_id: int
-    value: int
+    value: float
 
 
 @dataclass(frozen=True)

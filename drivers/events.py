@@ -50,9 +50,13 @@ class PositionReport(Event):
     y: float
     z: float
     measured: bool = True
+    confirmed: bool = False
+    """For a commanded position: the device said the move to it has ended (Visiomex FA0001)."""
 
     def __str__(self) -> str:
-        kind = "" if self.measured else " (commanded)"
+        kind = ""
+        if not self.measured:
+            kind = " (commanded, confirmed)" if self.confirmed else " (commanded)"
         return f"position ({self.x:g}, {self.y:g}, {self.z:g}) mm{kind}"
 
 
@@ -62,9 +66,11 @@ class Feedback(Event):
 
     code: str
     value: bytes = b""
+    meaning: str = ""
 
     def __str__(self) -> str:
-        return f"feedback {self.code}" + (f" {self.value.hex(' ').upper()}" if self.value else "")
+        text = f"feedback {self.code}" + (f" {self.value.hex(' ').upper()}" if self.value else "")
+        return f"{text} ({self.meaning})" if self.meaning else text
 
 
 @dataclass(frozen=True)

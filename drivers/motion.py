@@ -13,6 +13,7 @@ from drivers.capabilities import Completion
 from drivers.client import Client
 from drivers.errors import Aborted, BadInput, DeviceError, DeviceTimeout
 from drivers.events import PositionReport
+from drivers.parameters import ParameterWritten
 from drivers.protocols.base import Reply
 from drivers.travel import Point, TravelLimits, check_resolution
 
@@ -55,6 +56,8 @@ class Motion:
         self.travel: TravelLimits | None = None
         """Where moves may go; None: anywhere the device accepts."""
         self.move_listeners: list[Callable[[MoveStart], None]] = []
+        self.parameter_listeners: list[Callable[[ParameterWritten], None]] = []
+        """Told of every parameter the device confirmed (and what it changed by itself)."""
         self.notice_listeners: list[Callable[[str], None]] = []
         """Told what the user should know, e.g. that a move was clamped to the travel limits."""
         self._speed: float | None = None
@@ -74,6 +77,7 @@ class Motion:
         """The current position: measured where the protocol reports it, else the commanded one."""
         if not self.capabilities.position_feedback:
             assert self.last_position is not None
+            self._set_position(self.last_position)  # listeners see it like a measured one
             return self.last_position
         value = self.client.execute(cmd.GetPosition()).value
         if not isinstance(value, PositionReport):
@@ -106,7 +110,8 @@ class Motion:
         """Set the speed, refused outside the device's limits; returns what the device reports.
 
         The limits are asked of the device first where the protocol can (COXIRIS: two queries),
-        so an out-of-range speed is refused without SET_SPEED being sent.
+        so an out-of-range speed is refused without SET_SPEED being sent. Where the protocol
+        sets the speed as parameters (Visiomex 21 and 22), each is written and reported.
         """
         if not math.isfinite(speed) or speed <= 0:
             raise BadInput(f"speed {speed:g} refused: the speed must be a positive number")
@@ -116,7 +121,14 @@ class Motion:
             raise BadInput(
                 f"speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}"
             )
-        self.client.execute(cmd.SetSpeed(speed))
+        parts = self.client.protocol.expand(cmd.SetSpeed(speed))
+        for part in parts:
+            self.client.protocol.encode(part)  # every packet checked before the first is sent
+        for part in parts:
+            if isinstance(part, cmd.SetParameter):
+                self.set_parameter(part.param_id, part.value)
+            else:
+                self.client.execute(part)
         self._speed = speed
         if self.capabilities.speed_readback:
             reported = self.speed()
@@ -127,29 +139,66 @@ class Motion:
             return reported
         return speed
 
+    def set_parameter(self, key: str | int, value: float) -> ParameterWritten:
+        """Write one device parameter (by name or id) and wait for the device to confirm it."""
+        protocol = self.client.protocol
+        parameter = protocol.parameter(key)
+        command = cmd.SetParameter(parameter.id, value)
+        protocol.encode(command)  # refused before sending: range, digits, not a number
+        self.client.execute(command)
+        written = protocol.parameter_written(command)
+        for listener in list(self.parameter_listeners):
+            listener(written)
+        return written
+
     def move_to(self, x: float, y: float, z: float = 0.0) -> PositionReport:
-        """Absolute move; returns the position once the move has ended."""
+        """Absolute move; returns the position once the move has ended.
+
+        Where the device moves only relatively (Visiomex), the distance from the position
+        the panel knows is sent.
+        """
         check_resolution((x, y, z), ("x", "y", "z"), self.capabilities.resolution)
+        what = f"move to ({x:g}, {y:g}, {z:g}) mm"
+        if self.capabilities.absolute_moves:
+            return self._move(
+                what, lambda here: (x, y, z), lambda here, t: cmd.MoveTo(*t), cmd.MoveTo(x, y, z)
+            )
         return self._move(
-            cmd.MoveTo(x, y, z),
+            what,
             lambda here: (x, y, z),
-            lambda here, t: cmd.MoveTo(*t),
-            f"move to ({x:g}, {y:g}, {z:g}) mm",
+            lambda here, t: cmd.MoveBy(*self._deltas(here, t)),
+            check=cmd.MoveBy(0.0, 0.0, z),
         )
 
-    def move_by(self, dx: float, dy: float, dz: float = 0.0) -> PositionReport:
-        """Relative move; returns the position once the move has ended."""
-        check_resolution((dx, dy, dz), ("dx", "dy", "dz"), self.capabilities.resolution)
+    def move_by(
+        self, dx: float, dy: float, dz: float = 0.0, kind: str = "linear"
+    ) -> PositionReport:
+        """Relative move (`kind`: linear mm, or the protocol's rotational degrees or steps)."""
+        command = cmd.MoveBy(dx, dy, dz, kind)
+        if kind == "linear":
+            check_resolution((dx, dy, dz), ("dx", "dy", "dz"), self.capabilities.resolution)
+        lx, ly, lz = self.client.protocol.kind_to_length(command)
         return self._move(
-            cmd.MoveBy(dx, dy, dz),
-            lambda here: (here.x + dx, here.y + dy, here.z + dz),
-            lambda here, t: cmd.MoveBy(*self._deltas(here, t)),
-            f"jog by ({dx:g}, {dy:g}, {dz:g}) mm",
+            f"jog by ({dx:g}, {dy:g}, {dz:g}) {'mm' if kind == 'linear' else kind}",
+            lambda here: (here.x + lx, here.y + ly, here.z + lz),
+            lambda here, t: (
+                command
+                if t == (here.x + lx, here.y + ly, here.z + lz)
+                else cmd.MoveBy(*self._deltas(here, t))
+            ),
+            check=command,
         )
 
     def home(self) -> PositionReport:
-        """Go to (0, 0, 0); returns the position once there."""
-        return self._move(cmd.Home(), lambda here: (0.0, 0.0, 0.0), None, "go home")
+        """Go to (0, 0, 0); returns the position once there.
+
+        A device with no homing command of its own is moved back by a relative move.
+        """
+        if not self.capabilities.homing:
+            if self.capabilities.relative_moves and not self.capabilities.position_feedback:
+                return self.move_to(0.0, 0.0, 0.0)
+            raise BadInput(f"{self.client.protocol.name} has no way to go home")
+        return self._move("go home", lambda here: (0.0, 0.0, 0.0), None, check=cmd.Home())
 
     def _deltas(self, here: PositionReport, target: Point) -> Point:
         """The distances from `here` to `target`, on the device's resolution."""
@@ -161,8 +210,14 @@ class Motion:
         return (dx, dy, dz)
 
     def set_home(self) -> None:
-        """Make the current position the origin."""
-        self.client.execute(cmd.SetHome())
+        """Make the current position the origin.
+
+        A commanded-only device with no such command: the panel's own count restarts from here.
+        """
+        if self.capabilities.set_home:
+            self.client.execute(cmd.SetHome())
+        elif self.capabilities.position_feedback:
+            raise BadInput(f"{self.client.protocol.name} has no set-home command")
         self._set_position(PositionReport(0.0, 0.0, 0.0, self.capabilities.position_feedback))
 
     def _set_position(self, report: PositionReport) -> None:
@@ -180,40 +235,51 @@ class Motion:
 
     def _move(
         self,
-        command: cmd.Command,
-        target_of: Callable[[PositionReport], Point],
-        rebuild: Callable[[PositionReport, Point], cmd.Command] | None,
         what: str,
+        target_of: Callable[[PositionReport], Point],
+        command_of: Callable[[PositionReport, Point], cmd.Command] | None,
+        check: cmd.Command,
     ) -> PositionReport:
-        self.client.protocol.encode(command)  # refuse bad input before any query is sent
+        """Move to `target_of(here)` with `command_of(here, target)` (None: `check` as it is)."""
+        protocol = self.client.protocol
+        protocol.encode(check)  # refuse bad input before any query is sent
         here = self.position()
         target = target_of(here)
+        command = command_of(here, target) if command_of is not None else check
+        protocol.encode(command)
         if self.travel is not None:
             limited, note = self.travel.apply(target, what)
             if note is not None:
-                if rebuild is None:
+                if command_of is None:
                     raise BadInput(f"{what} refused: home is outside the travel limits")
-                target, command = limited, rebuild(here, limited)
-                self.client.protocol.encode(command)
+                target, command = limited, command_of(here, limited)
+                protocol.encode(command)
                 for listener in list(self.notice_listeners):
                     listener(note)
-        speed = self._speed if self._speed is not None else self.speed()
         start = (here.x, here.y, here.z)
-        estimate = math.dist(start, target) / max(speed, 1e-9)
+        timing = protocol.move_timing(command, start, target)
+        if timing is None:
+            speed = self._speed if self._speed is not None else self.speed()
+            delay, duration = 0.0, math.dist(start, target) / max(speed, 1e-9)
+        else:
+            delay, duration = timing
+            speed = math.dist(start, target) / duration if duration > 0 else 0.0
         completion = self.capabilities.completion
         waits_in_reply = completion is not Completion.ESTIMATE
-        started = MoveStart(start, target, speed, time.monotonic(), estimate)
+        started = MoveStart(start, target, speed, time.monotonic() + delay, duration)
         for move_listener in list(self.move_listeners):
             move_listener(started)
-        self.client.execute(command, extra=estimate * ESTIMATE_MARGIN if waits_in_reply else 0.0)
+        extra = (delay + duration) * ESTIMATE_MARGIN if waits_in_reply else 0.0
+        self.client.execute(command, extra=extra)
         # Where the device never says when it is done (PROTOCOLS.md §4, §5): wait the estimate.
-        if completion is Completion.ESTIMATE and self.wait(estimate):
+        if completion is Completion.ESTIMATE and self.wait(delay + duration):
             raise Aborted("abandoned: the connection is closing")
         if not self.capabilities.position_feedback:
-            self._set_position(PositionReport(*target, measured=False))
+            confirmed = completion is Completion.FEEDBACK  # the device said the move ended
+            self._set_position(PositionReport(*target, measured=False, confirmed=confirmed))
             return self.last_position  # type: ignore[return-value]
         if completion is Completion.REPLY:
-            return self._wait_until_at(target, estimate)
+            return self._wait_until_at(target, duration)
         return self.position()
 
     def _wait_until_at(self, target: tuple[float, float, float], estimate: float) -> PositionReport:

@@ -9,8 +9,9 @@ from drivers.protocols.base import Protocol
 
 PROTOCOLS: dict[str, tuple[str, str]] = {
     "coxiris": ("drivers.protocols.coxiris", "CoxirisProtocol"),
+    "visiomex": ("drivers.protocols.visiomex", "VisiomexProtocol"),
 }
-PLANNED = ("visiomex", "laser-frame", "pi-frame", "firmata")
+PLANNED = ("laser-frame", "pi-frame", "firmata")
 
 
 def protocol_names() -> list[str]:
@@ -30,6 +31,6 @@ def get_protocol_class(name: str) -> type[Protocol]:
     return getattr(importlib.import_module(module_name), class_name)
 
 
-def create_protocol(name: str) -> Protocol:
-    """A new instance of the protocol registered as `name`."""
-    return get_protocol_class(name)()
+def create_protocol(name: str, variant: str | None = None) -> Protocol:
+    """A new instance of the protocol registered as `name`, in one of its wire variants."""
+    return get_protocol_class(name)(variant)

@@ -116,7 +116,7 @@ def test_feedback_completion_waits_for_the_packet() -> None:
         identity_queryable=False,
     )
     motion, port, waits = _motion(caps, UntilFeedback, answer=b"debug line\nDONE\n")
-    assert motion.move_to(3, 4, 0) == PositionReport(3.0, 4.0, 0.0, measured=False)
+    assert motion.move_to(3, 4, 0) == PositionReport(3.0, 4.0, 0.0, measured=False, confirmed=True)
     assert waits == []  # no estimate wait: the packet said it
     assert port.written.count(b"MoveTo") == 1
 

@@ -43,6 +43,7 @@ class ConnectionBar(QWidget):
     disconnect_requested = Signal()
     refresh_requested = Signal()
     protocol_changed = Signal(str)
+    variant_changed = Signal(str)
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -79,6 +80,13 @@ class ConnectionBar(QWidget):
         self.protocol_combo.currentIndexChanged.connect(self._protocol_index_changed)
         self._quiet = False
 
+        self.variant_label = QLabel("Variant:")
+        self.variant_combo = QComboBox()
+        self.variant_combo.setObjectName("variantCombo")
+        self.variant_combo.setToolTip("The wire variant of this protocol (packet format and rate)")
+        self.variant_combo.currentIndexChanged.connect(self._variant_index_changed)
+        self.variant_label.setBuddy(self.variant_combo)
+
         self.baud_combo = QComboBox()
         self.baud_combo.setObjectName("baudCombo")
         self.baud_combo.setEditable(True)
@@ -106,14 +114,18 @@ class ConnectionBar(QWidget):
             (None, self.description_label),
             (None, self.refresh_button),
             ("Protocol:", self.protocol_combo),
+            (self.variant_label, self.variant_combo),
             ("Baud:", self.baud_combo),
             (None, self.connect_button),
         ):
-            if text:
+            if isinstance(text, QLabel):
+                layout.addWidget(text)
+            elif text:
                 label = QLabel(text)
                 label.setBuddy(widget)
                 layout.addWidget(label)
             layout.addWidget(widget)
+        self.set_variants([])
         layout.addStretch(1)
         layout.addWidget(self.state_label)  # after the stretch: its text never moves the rest
         self.set_state(DISCONNECTED)
@@ -221,6 +233,32 @@ class ConnectionBar(QWidget):
         if not self._quiet and self.protocol():
             self.protocol_changed.emit(self.protocol())
 
+    def set_variants(self, variants: list[tuple[str, str]], current: str = "") -> None:
+        """List a protocol's wire variants as (name, description); hidden when it has none."""
+        self._quiet = True
+        try:
+            self.variant_combo.clear()
+            for name, description in variants:
+                self.variant_combo.addItem(name, name)
+                self.variant_combo.setItemData(
+                    self.variant_combo.count() - 1, description, Qt.ItemDataRole.ToolTipRole
+                )
+            index = self.variant_combo.findData(current) if current else 0
+            self.variant_combo.setCurrentIndex(max(index, 0))
+        finally:
+            self._quiet = False
+        for widget in (self.variant_label, self.variant_combo):
+            widget.setVisible(bool(variants))
+
+    def variant(self) -> str:
+        """The selected wire variant ("" when the protocol has none)."""
+        data = self.variant_combo.currentData()
+        return data if isinstance(data, str) else ""
+
+    def _variant_index_changed(self, _index: int) -> None:
+        if not self._quiet and self.variant():
+            self.variant_changed.emit(self.variant())
+
     def baud(self) -> int | None:
         """The baud rate, or None when what is typed is not a positive whole number."""
         text = self.baud_combo.currentText().strip()
@@ -253,7 +291,13 @@ class ConnectionBar(QWidget):
         self.state_label.setToolTip(detail or text)
         self.state_label.setStyleSheet(f"color: {colour}; font-weight: bold;")
         idle = state in (DISCONNECTED, ERROR)
-        for widget in (self.port_combo, self.protocol_combo, self.baud_combo, self.refresh_button):
+        for widget in (
+            self.port_combo,
+            self.protocol_combo,
+            self.variant_combo,
+            self.baud_combo,
+            self.refresh_button,
+        ):
             widget.setEnabled(idle)
         button_text = {CONNECTING: "Cancel", CONNECTED: "Disconnect"}.get(state, "Connect")
         self.connect_button.setText(button_text)

@@ -13,13 +13,13 @@ from PySide6.QtWidgets import (
     QHBoxLayout,
     QLabel,
     QMessageBox,
-    QPushButton,
     QRadioButton,
     QVBoxLayout,
     QWidget,
 )
 
 from widgets._axes import AXES, Box, decimals_for, normalize_axes
+from widgets._buttons import make_button
 
 log = logging.getLogger(__name__)
 
@@ -96,20 +96,20 @@ class CoordinateEntry(QWidget):
         self.absolute_radio.setChecked(True)
         self.relative_radio.toggled.connect(self._mode_toggled)
 
-        self.go_button = self._button("Go", "goButton", "Start the move (Enter in a field)")
+        self.go_button = make_button("Go", "goButton", "Start the move (Enter in a field)")
         self.go_button.clicked.connect(self._go)
-        self.use_current_button = self._button(
+        self.use_current_button = make_button(
             "Use current", "useCurrentButton", "Fill the fields with the current position"
         )
         self.use_current_button.setEnabled(False)
         self.use_current_button.clicked.connect(self._use_current)
-        self.home_button = self._button("Home", "homeButton", "Run the homing sequence")
+        self.home_button = make_button("Home", "homeButton", "Run the homing sequence")
         self.home_button.clicked.connect(self.home_requested)
-        self.set_home_button = self._button(
+        self.set_home_button = make_button(
             "Set Home", "setHomeButton", "Make the current position the origin (asks first)"
         )
         self.set_home_button.clicked.connect(self._set_home)
-        self.stop_button = self._button("Stop", "stopButton", "Stop the stage now")
+        self.stop_button = make_button("Stop", "stopButton", "Stop the stage now")
         self.set_stop_mode(True, "Stop the stage now (Esc)")
         self.stop_button.clicked.connect(self.stop_requested)
 
@@ -131,12 +131,6 @@ class CoordinateEntry(QWidget):
         layout.addLayout(actions)
         layout.addStretch(1)  # extra height goes below the panel, not between its rows
         self._apply_range()
-
-    def _button(self, text: str, name: str, tip: str) -> QPushButton:
-        button = QPushButton(text)
-        button.setObjectName(name)
-        button.setToolTip(tip)
-        return button
 
     # -- values ----------------------------------------------------------------------------
 
@@ -191,6 +185,11 @@ class CoordinateEntry(QWidget):
         decimals = decimals_for(resolution)
         for field in self.fields.values():
             field.setDecimals(decimals)
+
+    def set_home_tips(self, home: str, set_home: str) -> None:
+        """Say what Home and Set Home do on this device."""
+        self.home_button.setToolTip(home)
+        self.set_home_button.setToolTip(set_home)
 
     def set_stop_mode(self, can_stop: bool, tooltip: str) -> None:
         """A real Stop (red) where the protocol can halt a move; else "Drop queued"."""

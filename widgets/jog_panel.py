@@ -26,7 +26,7 @@ log = logging.getLogger(__name__)
 
 STEP_PRESETS: tuple[float, ...] = (0.01, 0.1, 1.0, 10.0, 100.0)
 SHIFT_FACTOR = 10.0
-KEY_HINT = "Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10"  # noqa: RUF001 (the multiplication sign is meant)
+KEY_HINT = "Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10"
 
 _SHIFT = Qt.KeyboardModifier.ShiftModifier.value
 _KEYPAD = Qt.KeyboardModifier.KeypadModifier.value

@@ -12,6 +12,9 @@ from widgets._axes import AXES, normalize_axes
 
 UNKNOWN = "—"
 NOT_MEASURED_TEXT = "commanded, not measured"
+CONFIRMED_TEXT = "commanded, move confirmed"
+UNCONFIRMED_TEXT = "commanded, not confirmed yet"
+COMMANDED_TIP = "This device does not report its position: the numbers are where it was told to go."
 LIVE, ESTIMATED, STALE = "live", "estimated", "stale"
 _STATUS = {
     ESTIMATED: (
@@ -48,6 +51,7 @@ class PositionReadout(QWidget):
         grid = QGridLayout()
         grid.setHorizontalSpacing(12)
         self.labels: dict[str, QLabel] = {}
+        self.names: dict[str, QLabel] = {}
         for row, axis in enumerate(AXES):
             name = QLabel(f"{axis.upper()}")
             name.setFont(name_font)
@@ -60,13 +64,12 @@ class PositionReadout(QWidget):
             grid.addWidget(name, row, 0)
             grid.addWidget(value, row, 1)
             self.labels[axis] = value
+            self.names[axis] = name
         grid.setColumnStretch(1, 1)
 
         self.measured_label = QLabel(NOT_MEASURED_TEXT)
         self.measured_label.setObjectName("positionNotMeasured")
-        self.measured_label.setToolTip(
-            "This device does not report its position: the numbers are where it was told to go."
-        )
+        self.measured_label.setToolTip(COMMANDED_TIP)
         self.measured_label.setStyleSheet(
             "color: #8a4b00; background: #fff3cd; border: 1px solid #e0b44c;"
             " border-radius: 3px; padding: 2px 6px;"
@@ -115,9 +118,19 @@ class PositionReadout(QWidget):
         """The position last shown, or None."""
         return self._position
 
-    def set_measured(self, measured: bool) -> None:
-        """False: the position is only commanded; say so visibly."""
+    def set_measured(self, measured: bool, confirmed: bool | None = None) -> None:
+        """False: the position is only commanded; say so visibly, and whether the device
+        confirmed reaching it (`confirmed`: None where the device never says)."""
         self.measured_label.setVisible(not measured)
+        if confirmed is None:
+            text, tip = NOT_MEASURED_TEXT, COMMANDED_TIP
+        elif confirmed:
+            text, tip = CONFIRMED_TEXT, COMMANDED_TIP + " The device said the last move ended."
+        else:
+            text, tip = UNCONFIRMED_TEXT, COMMANDED_TIP + " The device has not confirmed it yet."
+        if self.measured_label.text() != text:
+            self.measured_label.setText(text)
+            self.measured_label.setToolTip(tip)
 
     def is_measured(self) -> bool:
         """Whether the position is shown as measured."""
@@ -146,6 +159,8 @@ class PositionReadout(QWidget):
             label = self.labels[axis]
             enabled = axis in self._axes
             label.setEnabled(enabled)
+            label.setVisible(enabled)  # a device without the axis: its row is not shown
+            self.names[axis].setVisible(enabled)
             if not enabled:
                 label.setText(f"{UNKNOWN} mm")
                 label.setToolTip(f"This device has no {axis.upper()} axis")

@@ -67,13 +67,31 @@ class SpeedControl(QWidget):
         bottom.addWidget(self.spin)
         bottom.addWidget(self.apply_button)
         bottom.addWidget(self.reported_label, 1)
+        self.note_label = QLabel()
+        self.note_label.setObjectName("speedNote")
+        self.note_label.setWordWrap(True)
+        self.note_label.setStyleSheet("color: #616161;")
+        self.note_label.setVisible(False)
         layout = QVBoxLayout(self)
         layout.addLayout(top)
         layout.addLayout(bottom)
+        layout.addWidget(self.note_label)
         label.setBuddy(self.spin)
         self.set_range(0.0, 100.0)
 
     # -- programmatic API (emits nothing) ------------------------------------------------
+
+    def set_note(self, text: str) -> None:
+        """Say what setting the speed does on this device (hidden when empty)."""
+        self.note_label.setText(text)
+        self.note_label.setVisible(bool(text))
+        self.apply_button.setToolTip(
+            "Send the speed in the field to the device" + (f"\n{text}" if text else "")
+        )
+
+    def set_decimals(self, decimals: int) -> None:
+        """The decimals the device takes (0: whole mm/s)."""
+        self.spin.setDecimals(decimals)
 
     def value(self) -> float:
         """The speed shown in the field, in mm/s."""

@@ -7,10 +7,22 @@ from dataclasses import dataclass, field
 from typing import ClassVar
 
 from drivers.capabilities import Capabilities
-from drivers.commands import Command
-from drivers.errors import MotionError
+from drivers.commands import Command, MoveBy, SetParameter
+from drivers.errors import BadInput, MotionError
 from drivers.events import Event
 from drivers.framers.base import Framer
+from drivers.parameters import Parameter, ParameterWritten, find_parameter
+
+Point = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class Variant:
+    """A wire profile of a protocol (e.g. Visiomex's 12-character board): name and line rate."""
+
+    name: str
+    description: str
+    baud: int | None = None  # None: the protocol's default
 
 
 @dataclass
@@ -34,6 +46,8 @@ class Exchange(ABC):
     timeout: float | None = None
     #: Seconds to keep reading after the end, for trailing lines that belong to this reply.
     linger: float = 0.0
+    #: Seconds the device is expected to be busy before it finishes (a move in a raw packet).
+    extra: float = 0.0
 
     def __init__(self, command: Command) -> None:
         self.command = command
@@ -86,12 +100,78 @@ class Exchange(ABC):
 
 
 class Protocol(ABC):
-    """A wire protocol: its capabilities, framer, encoder, decoder and reply tracking."""
+    """A wire protocol: its capabilities, framer, encoder, decoder and reply tracking.
+
+    `capabilities` on the class are the default variant's; an instance's may differ by variant.
+    """
 
     name: ClassVar[str]
-    capabilities: ClassVar[Capabilities]
+    capabilities: Capabilities
     #: Seconds to keep between the end of one reply and the next write (device pacing).
     min_gap: ClassVar[float] = 0.0
+    #: Seconds of silence the device needs after a packet before the next one, unless it has
+    #: answered meanwhile (Visiomex: a packet ends after 1 s without bytes).
+    write_gap: ClassVar[float] = 0.0
+    #: Wire profiles; the first is the default. Empty: the protocol has one.
+    variants: ClassVar[tuple[Variant, ...]] = ()
+    #: Numbered device parameters (empty: none).
+    parameters: ClassVar[tuple[Parameter, ...]] = ()
+
+    def __init__(self, variant: str | None = None) -> None:
+        self.variant = self._choose_variant(variant)
+
+    @classmethod
+    def _choose_variant(cls, name: str | None) -> Variant | None:
+        if not cls.variants:
+            if name:
+                raise BadInput(f"{cls.name} has no wire variants (got {name!r})")
+            return None
+        if not name:
+            return cls.variants[0]
+        for variant in cls.variants:
+            if variant.name == name:
+                return variant
+        known = ", ".join(v.name for v in cls.variants)
+        raise BadInput(f"{cls.name} has no variant {name!r} (variants: {known})")
+
+    @classmethod
+    def default_baud(cls, variant: str | None = None) -> int:
+        """The line rate of a variant (or the protocol's)."""
+        chosen = cls._choose_variant(variant)
+        if chosen is not None and chosen.baud is not None:
+            return chosen.baud
+        return cls.capabilities.default_baud
+
+    def parameter(self, key: str | int) -> Parameter:
+        """A parameter by name or id; BadInput if the protocol has none by that key."""
+        return find_parameter(self.parameters, key)
+
+    def derived_values(self, values: dict[str, float]) -> list[tuple[str, str]]:
+        """Figures that follow from parameter values (by name), as (label, text) pairs."""
+        return []
+
+    def assume_parameters(self, values: dict[str, float]) -> None:
+        """Take values written earlier (saved by the panel) as what the device holds."""
+
+    def parameter_written(self, command: SetParameter) -> ParameterWritten:
+        """Note a confirmed write; returns what the device now holds because of it."""
+        return ParameterWritten(self.parameter(command.param_id), command.value)
+
+    def expand(self, command: Command) -> list[Command]:
+        """The commands that carry out `command` on the wire (Visiomex speed: two sets)."""
+        return [command]
+
+    def move_timing(
+        self, command: Command, start: Point, target: Point
+    ) -> tuple[float, float] | None:
+        """Seconds before a move starts and how long it runs (None: distance over speed)."""
+        return None
+
+    def kind_to_length(self, command: MoveBy) -> Point:
+        """A relative move's deltas in the length unit (its `kind` may be degrees or steps)."""
+        if command.kind != "linear":
+            raise BadInput(f"{self.name} moves are linear only (got {command.kind!r})")
+        return (command.dx, command.dy, command.dz)
 
     @abstractmethod
     def new_framer(self) -> Framer:

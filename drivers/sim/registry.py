@@ -11,6 +11,7 @@ from drivers.sim.device import SimulatedDevice
 
 SIMULATORS: dict[str, tuple[str, str]] = {
     "coxiris": ("drivers.sim.coxiris_device", "CoxirisDevice"),
+    "visiomex": ("drivers.sim.visiomex_device", "VisiomexDevice"),
 }
 
 

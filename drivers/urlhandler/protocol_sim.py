@@ -1,7 +1,9 @@
 """`sim://PROTOCOL?option=value` for pyserial: a simulated device as an in-process serial port.
 
-Options: `blocking=0|1`, `instant=0|1`, `mute=0|1`, `line_timing=0|1` (emulate the baud rate,
-on by default), `speed=S`, `fault=TEXT` (repeatable, COXIRIS CHECK_ERRORS).
+Options: `instant=0|1`, `mute=0|1`, `line_timing=0|1` (emulate the baud rate, on by default);
+COXIRIS: `blocking=0|1`, `speed=S`, `fault=TEXT` (repeatable, CHECK_ERRORS);
+Visiomex: `variant=seed|prefixed|board12`, `bugs=0|1` (the public firmware's bugs, on by default).
+Only the options given are passed to the device.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from drivers.sim.device import SimulatedDevice
 from drivers.sim.registry import create_device
 
 USB_FRAME = 0.002
-_FLAGS = {"blocking", "instant", "mute", "line_timing"}
+_FLAGS = {"blocking", "instant", "mute", "line_timing", "bugs"}
 
 
 def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
@@ -39,6 +41,8 @@ def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
                 options[key] = flag
         elif key == "speed":
             options["speed"] = float(value)
+        elif key == "variant":
+            options["variant"] = value
         elif key == "fault":
             options["faults"] = (*options.get("faults", ()), value)
         else:
@@ -59,7 +63,7 @@ class Serial(SerialBase):
             name, options, line_timing = parse_sim_url(self._port)
             baud = self._baudrate if line_timing else None
             self.device: SimulatedDevice = create_device(name, time.monotonic, baud, **options)
-        except (MotionError, ValueError) as exc:
+        except (MotionError, ValueError, TypeError) as exc:  # TypeError: option not for it
             raise SerialException(f"cannot open {self._port}: {exc}") from exc
         self._pending = bytearray()
         self._wakeup = threading.Event()

@@ -1,0 +1,192 @@
+"""The parameter editor's dock in the window: rows from the protocol, writes through the worker."""
+
+from __future__ import annotations
+
+import logging
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QObject, Qt
+from PySide6.QtWidgets import QDockWidget
+
+from app import jobs
+from app.settings import read_parameters, write_parameters
+from app.worker import DeviceInfo
+from drivers.errors import BadInput
+from drivers.param_profile import read_profile, write_profile
+from drivers.parameters import Parameter, ParameterWritten
+from drivers.protocols.base import Protocol
+from drivers.registry import create_protocol
+from widgets.parameter_editor import ParameterEditor, ParameterRow
+
+if TYPE_CHECKING:
+    from app.main_window import MainWindow
+
+log = logging.getLogger(__name__)
+
+SECONDS_PER_PACKET = 1.05  # Visiomex: the reply comes 1 s after the packet, then the next goes
+FORCED_NOTE = "the device now holds {value:g}: the firmware forces it after every set"
+
+
+def editor_rows(parameters: tuple[Parameter, ...]) -> list[ParameterRow]:
+    """The editor's plain rows for a protocol's parameters."""
+    return [
+        ParameterRow(p.id, p.name, p.unit, p.minimum, p.maximum, p.step, p.output, p.description)
+        for p in parameters
+    ]
+
+
+class ParameterDock(QObject):
+    """Shows the editor when the device has parameters; turns its requests into jobs."""
+
+    def __init__(self, window: MainWindow) -> None:
+        super().__init__(window)
+        self.window = window
+        self.editor = ParameterEditor(window)
+        self.dock = QDockWidget("Parameters", window)
+        self.dock.setObjectName("parameterEditor")
+        self.dock.setWidget(self.editor)
+        self.dock.setFeatures(
+            QDockWidget.DockWidgetFeature.DockWidgetMovable
+            | QDockWidget.DockWidgetFeature.DockWidgetFloatable
+            | QDockWidget.DockWidgetFeature.DockWidgetClosable
+        )
+        window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.dock)
+        self.dock.hide()
+        self.protocol: Protocol | None = None
+        self.info: DeviceInfo | None = None
+        self._writing: list[jobs.SetParameterJob] = []
+        self.editor.write_requested.connect(self.write)
+        self.editor.cancel_requested.connect(self.cancel)
+        self.editor.load_requested.connect(self.load)
+        self.editor.save_requested.connect(self.save)
+        w = window.worker
+        w.parameter_written.connect(self._on_written)
+        w.job_finished.connect(self._on_job_finished)
+        w.job_failed.connect(self._on_job_failed)
+        w.job_timed_out.connect(self._on_job_timed_out)
+
+    # -- connection --------------------------------------------------------------------------
+    def device_ready(self, info: DeviceInfo) -> None:
+        """Show the editor for a device with parameters (rows, last written, derived values)."""
+        self.info = info
+        if not info.parameters:
+            self.protocol = None
+            self.dock.hide()
+            return
+        self.protocol = create_protocol(info.protocol, info.variant or None)
+        self.editor.set_parameters(editor_rows(info.parameters))
+        last = read_parameters(self.window.settings, info.protocol, info.port)
+        self.protocol.assume_parameters(last)
+        defaults = {p.name: p.default for p in info.parameters}
+        self.editor.set_values({**defaults, **last})
+        self.editor.set_last_written(last)
+        self.editor.set_derivation(self.protocol.derived_values)
+        self.editor.set_connected(True)
+        self.dock.setWindowTitle(f"Parameters ({info.protocol})")
+        self.dock.setToolTip(f"{info.identity} on {info.port}")
+        self.dock.show()
+        self.dock.raise_()
+
+    def disconnected(self) -> None:
+        """No device: writing is off (the table stays editable, for profiles)."""
+        self.editor.set_connected(False)
+        if self._writing:
+            self._writing.clear()
+            self.editor.end_write()
+
+    # -- writing -----------------------------------------------------------------------------
+    def write(self, items: list[tuple[int, float]]) -> None:
+        """Queue one set job per parameter; the progress bar counts them."""
+        if self.protocol is None or not items or self._writing:
+            return
+        submitted = []
+        for param_id, value in items:
+            parameter = self.protocol.parameter(param_id)
+            job = jobs.SetParameterJob(parameter.id, value, parameter.name, parameter.unit)
+            if not self.window.submit_job(job):
+                break
+            self._writing.append(job)
+            submitted.append(parameter.id)
+        if submitted:
+            self.editor.begin_write(submitted, SECONDS_PER_PACKET)
+
+    def cancel(self) -> None:
+        """Drop the sets not sent yet; the one in flight finishes (its reply is awaited)."""
+        dropped = self.window.worker.cancel_pending()
+        keep = [job for job in dropped if not isinstance(job, jobs.SetParameterJob)]
+        for job in keep:
+            self.window.worker.submit(job)  # only the parameter writes are cancelled
+        cancelled = [job for job in dropped if isinstance(job, jobs.SetParameterJob)]
+        self.forget(cancelled)
+        self.window.say(f"parameter writing cancelled: {len(cancelled)} not sent")
+
+    def forget(self, dropped: list[jobs.Job]) -> None:
+        """Jobs that will never run (cancelled or stopped): their rows say so."""
+        for job in dropped:
+            if job in self._writing:
+                self._writing.remove(job)
+                self.editor.set_status(job.param_id, "cancelled", "not sent")
+        self._end_if_done()
+
+    def _end_if_done(self) -> None:
+        if not self._writing and self.editor.writing():
+            self.editor.end_write()
+
+    def _on_written(self, written: ParameterWritten) -> None:
+        """The device confirmed a value (from the editor, or the speed control's 21/22)."""
+        info = self.info
+        if info is None or self.protocol is None:
+            return
+        name = written.parameter.name
+        values = {name: written.value, **written.device_values}
+        write_parameters(self.window.settings, info.protocol, info.port, values)
+        self.protocol.assume_parameters(values)
+        self.editor.set_status(written.parameter.id, "confirmed", "; ".join(written.notes))
+        self.editor.set_last_written({**self.editor.last_written(), **values})
+        for other, value in written.device_values.items():
+            self.editor.set_row_note(other, FORCED_NOTE.format(value=value))
+
+    def _on_job_finished(self, job: jobs.Job, result: object) -> None:
+        if job in self._writing:
+            self._writing.remove(job)
+            self._end_if_done()
+
+    def _on_job_timed_out(self, job: jobs.Job) -> None:
+        if isinstance(job, jobs.SetParameterJob) and job in self._writing:
+            self.editor.set_status(job.param_id, "timed out", "the device did not answer")
+
+    def _on_job_failed(self, job: jobs.Job, message: str) -> None:
+        if job not in self._writing:
+            return
+        self._writing.remove(job)
+        assert isinstance(job, jobs.SetParameterJob)
+        if self.editor.status(job.param_id) != "timed out":
+            self.editor.set_status(job.param_id, "error", message)
+        self._end_if_done()
+
+    # -- profiles ----------------------------------------------------------------------------
+    def load(self, path: str) -> None:
+        """Put a profile's values in the editor (nothing is sent)."""
+        if self.protocol is None:
+            self.editor.show_message("connect to a device with parameters first", error=True)
+            return
+        try:
+            values = read_profile(path, self.protocol.parameters, self.protocol.name)
+        except BadInput as exc:
+            self.editor.show_message(str(exc), error=True)
+            return
+        self.editor.set_values(values)
+        self.editor.show_message(
+            f"loaded {len(values)} values from {path}; nothing sent (Write changed sends them)"
+        )
+
+    def save(self, path: str) -> None:
+        """Save the editor's values as a profile."""
+        if self.protocol is None:
+            return
+        try:
+            write_profile(path, self.editor.values(), self.protocol.parameters, self.protocol.name)
+        except BadInput as exc:
+            self.editor.show_message(str(exc), error=True)
+            return
+        self.editor.show_message(f"saved {len(self.editor.values())} values to {path}")

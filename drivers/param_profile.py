@@ -1,0 +1,114 @@
+"""Parameter profiles: named sets of parameter values in a small, human-editable TOML file.
+
+    # Motion Panel parameter profile
+    protocol = "visiomex"
+
+    [parameters]
+    thread_distance_x = 10        # mm · Lead-screw pitch of the X axis
+    pulley_diameter_x = 38.2      # mm · sent as mm×10
+
+Only `protocol` and the `[parameters]` table are read; values are numbers; names are the
+protocol's. A file is data: nothing in it is executed, and it is refused whole (nothing sent) if
+any line is wrong, larger than `MAX_BYTES`, or not UTF-8 text.
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from pathlib import Path
+
+from drivers.errors import BadInput
+from drivers.parameters import Parameter
+
+MAX_BYTES = 64 * 1024
+HEADER = "# Motion Panel parameter profile"
+
+
+class ProfileError(BadInput):
+    """A profile file that cannot be used; says which file, and which line where it can."""
+
+
+def _line_of(text: str, name: str) -> int | None:
+    pattern = re.compile(rf"^\s*[\"']?{re.escape(name)}[\"']?\s*=", re.MULTILINE)
+    match = pattern.search(text)
+    return text.count("\n", 0, match.start()) + 1 if match else None
+
+
+def parse_profile(
+    text: str, parameters: tuple[Parameter, ...], protocol: str, source: str = "profile"
+) -> dict[str, float]:
+    """The values of a profile's text, every one checked; ProfileError on the first problem."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ProfileError(f"{source}: not a parameter profile: {exc}") from None
+    named = data.get("protocol")
+    if named is not None and named != protocol:
+        raise ProfileError(f"{source}: a profile for {named!r}, not for {protocol!r}")
+    unknown_keys = sorted(set(data) - {"protocol", "parameters"})
+    if unknown_keys:
+        line = _line_of(text, unknown_keys[0])
+        where = f" (line {line})" if line else ""
+        raise ProfileError(f"{source}{where}: unknown key {unknown_keys[0]!r}")
+    table = data.get("parameters")
+    if not isinstance(table, dict) or not table:
+        raise ProfileError(f"{source}: no [parameters] table with values in it")
+    by_name = {p.name: p for p in parameters}
+    values: dict[str, float] = {}
+    for name, value in table.items():
+        line = _line_of(text, name)
+        where = f"{source} line {line}" if line else source
+        parameter = by_name.get(name)
+        if parameter is None:
+            raise ProfileError(f"{where}: unknown parameter {name!r} for {protocol}")
+        try:
+            parameter.to_wire(value)
+        except BadInput as exc:
+            raise ProfileError(f"{where}: {exc}") from None
+        values[name] = float(value)
+    return values
+
+
+def read_profile(
+    path: str | Path, parameters: tuple[Parameter, ...], protocol: str
+) -> dict[str, float]:
+    """A profile file's values; ProfileError for a missing, large, binary or malformed file."""
+    file = Path(path)
+    try:
+        with file.open("rb") as stream:
+            raw = stream.read(MAX_BYTES + 1)
+    except OSError as exc:
+        raise ProfileError(f"cannot read the profile {file}: {exc.strerror or exc}") from None
+    if len(raw) > MAX_BYTES:
+        raise ProfileError(f"{file}: larger than {MAX_BYTES // 1024} KiB, not a parameter profile")
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        raise ProfileError(f"{file}: not UTF-8 text, not a parameter profile") from None
+    return parse_profile(text, parameters, protocol, str(file))
+
+
+def format_profile(
+    values: dict[str, float], parameters: tuple[Parameter, ...], protocol: str
+) -> str:
+    """A profile's text: every given value, in the protocol's order, with its unit and meaning."""
+    lines = [HEADER, f'protocol = "{protocol}"', "", "[parameters]"]
+    for parameter in parameters:
+        if parameter.name not in values:
+            continue
+        value = parameter.with_unit(values[parameter.name]).split(" ")[0]
+        comment = f"{parameter.unit} · " if parameter.unit else ""
+        kind = " (firmware output)" if parameter.output else ""
+        lines.append(f"{parameter.name} = {value:<10}# {comment}{parameter.description}{kind}")
+    return "\n".join(lines) + "\n"
+
+
+def write_profile(
+    path: str | Path, values: dict[str, float], parameters: tuple[Parameter, ...], protocol: str
+) -> None:
+    """Save a profile; ProfileError if the file cannot be written."""
+    try:
+        Path(path).write_text(format_profile(values, parameters, protocol), encoding="utf-8")
+    except OSError as exc:
+        raise ProfileError(f"cannot write the profile {path}: {exc.strerror or exc}") from None

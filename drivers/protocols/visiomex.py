@@ -1,0 +1,386 @@
+"""Visiomex VMR2P0R0001 packets (PROTOCOLS.md §2): `S` sets, `M` moves, `FS`/`FP`/`FA`/`E` lines.
+
+Packets have no terminator: the firmware ends one after 1 s of silence (`Serial.readString()`),
+so a reply comes about 1 s after the last byte and two packets within 1 s merge. The client keeps
+one packet in flight and never writes within `write_gap` of the last one unless it was answered.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+from dataclasses import dataclass
+
+from drivers.capabilities import Capabilities, Completion
+from drivers.commands import Command, Home, MoveBy, MoveTo, Raw, SetParameter, SetSpeed
+from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
+from drivers.events import ErrorReport, Event, Feedback, TextLine
+from drivers.framers.lines import LineFramer
+from drivers.parameters import ParameterWritten
+from drivers.protocols.base import Exchange, Point, Protocol, Variant
+from drivers.protocols.visiomex_model import (
+    SILENCE,
+    cycle_mm,
+    derived_values,
+    move_seconds,
+    steps_per_cycle,
+)
+from drivers.protocols.visiomex_params import (
+    BY_ID,
+    DEFAULTS,
+    DRIVING_MECHANISM_ID,
+    PARAMETERS,
+    SPEED_IDS,
+)
+
+REPLY_MARGIN = 0.5  # s beyond the silence window before a reply counts as missing
+PAD = "N"
+MOVE_TYPES = {"linear": "L", "rotational": "R", "steps": "S"}
+FEEDBACK = {"FP0001": "move package confirmed", "FA0001": "action accomplished"}
+ERRORS = {
+    "EP0001": "package size mismatch",
+    "EP0002": "invalid command type",
+    "EP0003": "invalid motion type",
+    "EP0004": "invalid direction for the X axis",
+    "EP0005": "invalid direction for the Y axis",
+    "EP0006": "invalid set parameter ID",
+    "EF0001": "parse function error in the firmware",
+    "EF0002": "invalid driving mechanism",
+}
+_CODE = re.compile(r"(?:FS|FP|FA|EP|EF)\d{4}")
+BOOT_ONLY = (1, 2, 3, 4)  # the cycle length is computed at boot only
+
+
+@dataclass(frozen=True)
+class PacketFormat:
+    """The shape of one wire variant's packets."""
+
+    length: int
+    digits: int  # digits per move axis
+    per_mm: int  # wire units per mm of a linear move (µm: 1000, mm: 1)
+    prefix: str  # what starts a feedback line ('>' in later firmware)
+    home: bool  # has the `D` go-home packet
+
+
+FORMATS = {
+    "seed": PacketFormat(18, 7, 1000, "", False),
+    "prefixed": PacketFormat(18, 7, 1000, ">", False),
+    "board12": PacketFormat(12, 4, 1, "", True),
+}
+
+CAPABILITIES = Capabilities(
+    axes=("x", "y"),
+    default_baud=9600,
+    absolute_moves=False,
+    homing=False,
+    set_home=False,
+    speed_range=(1.0, 50.0),
+    speed_readback=False,
+    speed_decimals=0,
+    identity_queryable=False,
+    position_feedback=False,
+    completion=Completion.FEEDBACK,
+    parameters=True,
+    resolution=0.001,  # µm on the wire
+    raw_line_end="",  # a packet has no terminator: the silence after it ends it
+    move_kinds=tuple(MOVE_TYPES),
+    speed_note=(
+        "Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times "
+        "its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace."
+    ),
+    home_note=(
+        "Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move "
+        "from the position the panel counted"
+    ),
+    notes=(
+        "no read-back: the panel keeps what was last written",
+        "positions are commanded, and confirmed by FA0001 when the move ends",
+        "a reply comes 1 s after a packet: the firmware waits for 1 s of silence",
+    ),
+)
+
+
+def _code_meaning(code: str) -> str:
+    if code in FEEDBACK:
+        return FEEDBACK[code]
+    if code.startswith("FS"):
+        number = int(code[2:])
+        name = BY_ID[number].name if number in BY_ID else f"parameter {number}"
+        return f"{'driving_mechanism_y' if number == 28 else name} set"
+    return f"feedback code {code} is not documented"
+
+
+class VisiomexExchange(Exchange):
+    """A set waits for its `FSnnnn`; a move takes the debug lines and `FP0001`, ends at `FA0001`.
+
+    Any `EP`/`EF` code fails the exchange at once with the firmware's message.
+    """
+
+    timeout = SILENCE + REPLY_MARGIN
+
+    def __init__(self, command: Command, what: str, expect: str | None, extra: float = 0.0):
+        super().__init__(command)
+        self.what = what
+        self.expect = expect  # None: a move (FP0001, then FA0001); "": any FS code
+        self.extra = extra
+        self.confirmed = False
+
+    def handle(self, event: Event) -> bool:
+        """Track one event of the reply."""
+        if isinstance(event, ErrorReport) and event.code:
+            message = f"{self.what}: the device answered {event.code} ({event.message})"
+            if self.expect is None and event.code == "EP0003":
+                message += "; this firmware revision runs the move anyway"
+            self.fail(DeviceError(message))
+            return True
+        if isinstance(event, Feedback):
+            if self.expect is None and event.code == "FP0001":
+                self.confirmed = True
+            elif self._ends(event.code):
+                self.finish(event)
+            else:
+                wanted = self.expect or "FP0001/FA0001"
+                self.fail(GarbledReply(f"{self.what}: expected {wanted}, got {event.code}"))
+            return True
+        if isinstance(event, TextLine) and self.expect is None:
+            self.notes.append(event.text)  # the firmware's debug lines before FP0001
+            return True
+        return False
+
+    def _ends(self, code: str) -> bool:
+        if self.expect is None:
+            return code == "FA0001"
+        return code == self.expect or (not self.expect and code.startswith("FS"))
+
+
+class VisiomexProtocol(Protocol):
+    """The Visiomex VMR2P0R0001 motor controller's packet protocol."""
+
+    name = "visiomex"
+    capabilities = CAPABILITIES
+    write_gap = SILENCE + 0.05
+    variants = (
+        Variant("seed", "18-character packets at 9600 baud, as the seed documents", 9600),
+        Variant("prefixed", "the seed's packets; feedback lines start with '>'", 9600),
+        Variant("board12", "12-character packets at 115200 baud, moves in mm, D goes home", 115200),
+    )
+    parameters = PARAMETERS
+
+    def __init__(self, variant: str | None = None) -> None:
+        super().__init__(variant)
+        assert self.variant is not None
+        self.format = FORMATS[self.variant.name]
+        if self.format.home:
+            self.capabilities = dataclasses.replace(
+                CAPABILITIES, default_baud=115200, resolution=1.0, homing=True, home_note=""
+            )
+        self.known: dict[int, float] = dict(DEFAULTS)
+        """What the device holds, as far as the panel knows: boot defaults and confirmed sets."""
+
+    def assume_parameters(self, values: dict[str, float]) -> None:
+        """Take values written earlier (saved by the panel) as what the device holds."""
+        for name, value in values.items():
+            try:
+                self.known[self.parameter(name).id] = value
+            except BadInput:
+                continue  # a name from an older version of the panel
+
+    # -- encoding ----------------------------------------------------------------------------
+    def new_framer(self) -> LineFramer:
+        """Replies are CR LF lines."""
+        return LineFramer(b"\n")
+
+    def packet(self, command: Command) -> str:
+        """The packet text for a typed command; BadInput before anything is sent."""
+        length = self.format.length
+        if isinstance(command, SetParameter):
+            parameter = self.parameter(command.param_id)
+            wire = parameter.to_wire(command.value)
+            return f"S{parameter.id:02d}{wire:06d}".ljust(length, PAD)
+        if isinstance(command, MoveBy):
+            return self._move_packet(command)
+        if isinstance(command, Home) and self.format.home:
+            return "D".ljust(length, PAD)
+        if isinstance(command, Raw):
+            return self._raw_text(command.data)
+        if isinstance(command, MoveTo):
+            raise BadInput("Visiomex moves are relative: the panel sends the distance to go")
+        if isinstance(command, SetSpeed):
+            raise BadInput("the speed is parameters 21 and 22: it is sent as two sets")
+        raise BadInput(f"Visiomex has no packet for {type(command).__name__}")
+
+    def _move_packet(self, command: MoveBy) -> str:
+        kind = command.kind
+        if kind not in MOVE_TYPES:
+            kinds = ", ".join(MOVE_TYPES)
+            raise BadInput(f"move kind {kind!r} refused: Visiomex moves are {kinds}")
+        if command.dz != 0:
+            raise BadInput(f"Z {command.dz:g} mm refused: the Visiomex controller has X and Y only")
+        digits, per_unit = self.format.digits, self.format.per_mm if kind == "linear" else 1
+        unit = {"linear": "mm", "rotational": "°", "steps": "steps"}[kind]
+        fields = []
+        for axis, value in (("X", command.dx), ("Y", command.dy)):
+            scaled = value * per_unit
+            wire = round(scaled)
+            if abs(scaled - wire) > 1e-6 * max(1.0, abs(scaled)):
+                finest = "1 µm" if per_unit == 1000 else f"whole {unit}"
+                raise BadInput(f"{axis} {value:g} {unit} refused: this device moves in {finest}")
+            if abs(wire) > 10**digits - 1:
+                most = f"{(10**digits - 1) / per_unit:.{len(str(per_unit)) - 1}f}"
+                raise BadInput(
+                    f"{axis} {value:g} {unit} refused: one move goes at most {most} {unit} "
+                    f"per axis ({digits} digits)"
+                )
+            fields.append(("N" if wire < 0 else "P") + f"{abs(wire):0{digits}d}")
+        return f"M{MOVE_TYPES[kind]}{fields[0]}{fields[1]}"
+
+    def _raw_text(self, data: bytes) -> str:
+        if not data.isascii():
+            raise BadInput("packet refused: Visiomex takes ASCII characters only")
+        if not data:
+            raise BadInput("packet refused: it is empty")
+        if len(data) > self.format.length:
+            raise BadInput(
+                f"packet refused: {len(data)} characters, a Visiomex packet has "
+                f"{self.format.length} (a line ending counts too)"
+            )
+        return data.decode("ascii")
+
+    def encode(self, command: Command) -> bytes:
+        """The packet's bytes, with no terminator."""
+        return self.packet(command).encode("ascii")
+
+    def expand(self, command: Command) -> list[Command]:
+        """A speed is two sets: input_speed_steady_x and _y."""
+        if isinstance(command, SetSpeed):
+            return [SetParameter(i, command.speed) for i in SPEED_IDS]
+        return [command]
+
+    # -- decoding ----------------------------------------------------------------------------
+    def decode(self, frame: bytes) -> list[Event]:
+        """A feedback or error code to a typed event; any other line is the device's own text."""
+        try:
+            text = frame.decode("ascii").rstrip("\r\n")
+        except UnicodeDecodeError as exc:
+            shown = frame.hex(" ").upper()
+            raise FrameError(f"non-ASCII bytes in a Visiomex line: {shown}") from exc
+        prefix = self.format.prefix
+        if prefix and not text.startswith(prefix):
+            return [TextLine(text)]
+        code = text[len(prefix) :]
+        if not _CODE.fullmatch(code):
+            return [TextLine(text)]
+        if code.startswith("E"):
+            meaning = ERRORS.get(code, "an error code the documentation does not list")
+            return [ErrorReport(meaning, code)]
+        return [Feedback(code, meaning=_code_meaning(code))]
+
+    # -- replies -----------------------------------------------------------------------------
+    def exchange(self, command: Command) -> VisiomexExchange:
+        """What answers the packet: `FSnnnn` for a set, `FP0001` then `FA0001` for a move."""
+        what = self.command_name(command)
+        if isinstance(command, SetParameter):
+            return VisiomexExchange(command, what, f"FS{self.parameter(command.param_id).id:04d}")
+        if isinstance(command, (MoveBy, Home)):
+            return VisiomexExchange(command, what, None)
+        if isinstance(command, Raw):
+            exchange = self.raw_exchange(command.data)
+            if exchange is None:
+                raise BadInput("that packet gets no reply: send it from the console instead")
+            return exchange
+        raise BadInput(f"Visiomex has no packet for {type(command).__name__}")
+
+    def raw_exchange(self, data: bytes) -> VisiomexExchange | None:
+        """A console packet followed by its first letter; `G` gets no reply at all."""
+        text = self._raw_text(data)
+        first = text[0]
+        what = f"packet {text}"
+        if first == "S":
+            return VisiomexExchange(Raw(data), what, "")
+        if first == "M" or (first == "D" and self.format.home):
+            return VisiomexExchange(Raw(data), what, None, extra=self._raw_move_seconds(text))
+        if first == "G":
+            return None  # the firmware answers G with nothing (PROTOCOLS.md §2)
+        return VisiomexExchange(Raw(data), what, "FS")
+
+    def _raw_move_seconds(self, text: str) -> float:
+        """Time a console move packet takes: its distances read as the firmware reads them."""
+        d, per = self.format.digits, self.format.per_mm
+        try:
+            dx = int(text[3 : 3 + d]) / per
+            dy = int(text[4 + d : 4 + 2 * d]) / per
+        except ValueError:
+            dx = dy = 10**d / per  # unreadable digits: allow the longest move
+        return move_seconds(self.known, dx, dy) * 1.5
+
+    def check_raw(self, data: bytes) -> None:
+        """Refuse what the firmware cannot take as one packet."""
+        self._raw_text(data)
+
+    def command_name(self, command: Command) -> str:
+        """The packet and what it does, e.g. `S03000382NNNNNNNNN (set pulley_diameter_x)`."""
+        try:
+            packet = self.packet(command)
+        except BadInput:
+            return type(command).__name__
+        if isinstance(command, SetParameter):
+            return f"{packet} (set {self.parameter(command.param_id).name})"
+        return packet
+
+    # -- what the panel knows of the device ---------------------------------------------------
+    def parameter_written(self, command: SetParameter) -> ParameterWritten:
+        """Keep the value; the firmware then forces driving_mechanism to 1 (PROTOCOLS.md §2)."""
+        parameter = self.parameter(command.param_id)
+        self.known[parameter.id] = command.value
+        notes = []
+        forced: dict[str, float] = {}
+        if self.known[DRIVING_MECHANISM_ID] != 1:
+            notes.append("the firmware forces driving_mechanism to 1 after every set")
+        self.known[DRIVING_MECHANISM_ID] = 1
+        forced[BY_ID[DRIVING_MECHANISM_ID].name] = 1.0
+        if parameter.id in BOOT_ONLY:
+            notes.append(
+                f"this firmware revision reads {parameter.name} only at boot (and keeps pulley "
+                "values divided by 4): moves do not change until the firmware is fixed"
+            )
+        return ParameterWritten(parameter, command.value, forced, tuple(notes))
+
+    def move_timing(self, command: Command, start: Point, target: Point) -> tuple[float, float]:
+        """The packet's silence window, then the firmware's stepping time."""
+        transmit = self.format.length * 10 / (self.variant_baud() or 9600)
+        dx, dy = target[0] - start[0], target[1] - start[1]
+        return SILENCE + transmit, move_seconds(self.known, dx, dy)
+
+    def derived_values(self, values: dict[str, float]) -> list[tuple[str, str]]:
+        """mm per step, steps per mm and a 10 mm move's time, from the values given by name."""
+        by_id = dict(self.known)
+        for name, value in values.items():
+            by_id[self.parameter(name).id] = value
+        rows = derived_values(by_id)
+        boot = {i: DEFAULTS[i] for i in BOOT_ONLY} | {DRIVING_MECHANISM_ID: 1.0}
+        if any(by_id[i] != boot[i] for i in boot):
+            rows.append(
+                (
+                    "Note",
+                    "this firmware revision moves by the cycle it computed at boot "
+                    "(10 mm lead screw), whatever 01-04 and 27 say",
+                )
+            )
+        return rows
+
+    def variant_baud(self) -> int:
+        """The line rate of the chosen variant."""
+        return type(self).default_baud(self.variant.name if self.variant else None)
+
+    def kind_to_length(self, command: MoveBy) -> Point:
+        """Degrees and steps to mm, by the cycle length and the steps per turn."""
+        if command.kind == "linear":
+            return (command.dx, command.dy, command.dz)
+        values = []
+        for axis, value in (("x", command.dx), ("y", command.dy)):
+            cycle = cycle_mm(DEFAULTS, axis)  # the firmware's boot-time cycle
+            if command.kind == "rotational":
+                values.append(value / 360 * cycle)
+            else:
+                values.append(value / max(steps_per_cycle(self.known, axis), 1) * cycle)
+        return (values[0], values[1], 0.0)

@@ -1,0 +1,70 @@
+"""Every exchange recorded from the public Visiomex firmware holds in the simulator, timing too."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from drivers.sim.clock import ManualClock
+from drivers.sim.visiomex_device import VisiomexDevice
+
+TRANSCRIPT = json.loads((Path(__file__).parent / "data" / "visiomex.json").read_text())
+CHUNK_GAP = 0.1  # output closer together than this is one chunk of the recording
+
+
+def _run(device: VisiomexDevice, clock: ManualClock, sent: str) -> list[tuple[float, bytes]]:
+    """Write `sent`, then follow `next_due()` until the device is idle; chunks by time."""
+    start = clock.now
+    device.receive(sent.encode("latin-1"))
+    chunks: list[tuple[float, bytes]] = []
+    last = start
+    while (due := device.next_due()) is not None:
+        clock.now = max(clock.now, due)
+        out = device.read_output()
+        if not out:
+            continue
+        if chunks and clock.now - last < CHUNK_GAP:
+            chunks[-1] = (chunks[-1][0], chunks[-1][1] + out)
+        else:
+            chunks.append((clock.now - start, out))
+        last = clock.now
+    return chunks
+
+
+@pytest.mark.parametrize("baud", [None, 9600])
+def test_transcript_in_order_byte_for_byte_and_in_time(baud: int | None) -> None:
+    clock = ManualClock()
+    device = VisiomexDevice(clock, baud)
+    device.boot()
+    clock.advance(0.1)
+    assert device.read_output() == TRANSCRIPT["boot_output"].encode()
+    for exchange in TRANSCRIPT["exchanges"]:
+        sent = exchange["sent"]
+        chunks = _run(device, clock, sent)
+        assert b"".join(data for _, data in chunks) == exchange["received"].encode("latin-1"), sent
+        recorded = exchange["chunks_with_seconds_after_write"]
+        assert len(chunks) == len(recorded), sent
+        if recorded:
+            assert chunks[0][0] == pytest.approx(recorded[0][0], abs=0.03), sent
+        for (at, data), (recorded_at, text) in zip(chunks[1:], recorded[1:], strict=True):
+            assert data == text.encode("latin-1"), sent
+            assert at == pytest.approx(recorded_at, abs=0.05), sent
+        clock.advance(0.2)
+
+
+def test_boot_prints_checkpoint_at_once() -> None:
+    clock = ManualClock()
+    device = VisiomexDevice(clock)
+    device.boot()
+    assert device.read_output() == b"Checkpoint 2\r\n"
+
+
+def test_g_gets_no_reply_even_after_five_seconds() -> None:
+    clock = ManualClock()
+    device = VisiomexDevice(clock)
+    device.receive(b"G")
+    clock.advance(5.0)
+    assert device.read_output() == b""
+    assert device.next_due() is None

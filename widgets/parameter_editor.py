@@ -1,0 +1,364 @@
+"""The service technician's parameter editor: numbered device parameters, checked and written.
+
+Protocol-independent: it takes `ParameterRow`s and values by name, and asks for writes with
+`write_requested([(id, value), …])`. The device cannot be read back, so the editor shows what was
+last written beside each value and marks the rows that differ.
+"""
+
+from __future__ import annotations
+
+from itertools import pairwise
+from pathlib import Path
+
+from PySide6.QtCore import Qt, Signal
+from PySide6.QtWidgets import (
+    QFileDialog,
+    QHBoxLayout,
+    QLabel,
+    QProgressBar,
+    QVBoxLayout,
+    QWidget,
+)
+
+from widgets.parameter_table import (
+    ERROR_STYLE,
+    Derivation,
+    DerivedValues,
+    ParameterModel,
+    ParameterTableView,
+    ValueDelegate,
+)
+from widgets.parameter_values import CANCELLED, CONFIRMED, PENDING, STATUS_COLOURS, ParameterRow
+
+__all__ = ["PROFILE_FILTER", "STATUSES", "Derivation", "ParameterEditor", "ParameterRow"]
+
+PROFILE_FILTER = "Parameter profiles (*.toml);;All files (*)"
+STATUSES = tuple(STATUS_COLOURS)  # not written, pending, confirmed, error, timed out, cancelled
+
+
+def _seconds(seconds: float) -> str:
+    return f"{seconds:.1f} s" if seconds < 10 else f"{seconds:.0f} s"
+
+
+class ParameterEditor(QWidget):
+    """A table of device parameters: edit, check, write, and follow each write's outcome."""
+
+    write_requested = Signal(list)  # [(id, value), …] in table order
+    cancel_requested = Signal()
+    load_requested = Signal(str)  # path of a profile to load
+    save_requested = Signal(str)  # path to save the values to
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("parameterEditorPanel")
+        self._connected = False
+        self._writing = False
+        self._cancelling = False
+        self._write_ids: list[int] = []
+        self._in_flight: dict[int, float] = {}
+        self._requested: dict[int, float] = {}
+        self._seconds_per_packet = 0.0
+        self._derivation: Derivation | None = None
+        self._last_dir = ""
+        self._message_error: bool | None = None
+
+        self.model = ParameterModel(self)
+        self.table = ParameterTableView(self.model)
+        self.delegate = ValueDelegate(self.table)
+        self.table.setItemDelegate(self.delegate)
+
+        self.changed_label = QLabel()
+        self.changed_label.setObjectName("changedSummary")
+        self.changed_label.setToolTip(
+            "The device cannot be read back: this compares with what this panel last wrote"
+        )
+        self.message_label = QLabel()
+        self.message_label.setObjectName("parameterMessage")
+        self.message_label.setWordWrap(True)
+        self.message_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        self.derived_box = DerivedValues()
+        self.derived_box.hide()
+        self.progress = QProgressBar()
+        self.progress.setObjectName("writeProgress")
+        self.progress.setToolTip("Packets written so far; each is confirmed before the next")
+        self.progress.hide()
+
+        button = self._button
+        self.write_selected_button = button(
+            "Write selected", "writeSelectedButton", "Write the values of the selected rows"
+        )
+        self.write_all_button = button(
+            "Write all", "writeAllButton", "Write every value in the table, one packet each"
+        )
+        self.write_changed_button = button(
+            "Write changed", "writeChangedButton", "Write the values marked • (not yet written)"
+        )
+        self.cancel_button = button(
+            "Cancel", "cancelWriteButton", "Stop writing after the packet under way"
+        )
+        self.load_button = button(
+            "Load profile…", "loadProfileButton", "Fill the table from a file"
+        )
+        self.save_button = button("Save profile…", "saveProfileButton", "Save the values to a file")
+        self.write_selected_button.clicked.connect(self._write_selected)
+        self.write_all_button.clicked.connect(self._write_all)
+        self.write_changed_button.clicked.connect(self._write_changed)
+        self.cancel_button.clicked.connect(self._cancel)
+        self.load_button.clicked.connect(lambda: self._ask_path(save=False))
+        self.save_button.clicked.connect(lambda: self._ask_path(save=True))
+        order = [self.table, self.write_selected_button, self.write_all_button]
+        order += [self.write_changed_button, self.cancel_button, self.load_button, self.save_button]
+
+        buttons = QHBoxLayout()
+        for widget in order[1:]:
+            buttons.addWidget(widget)
+            if widget is self.cancel_button:
+                buttons.addStretch(1)
+        layout = QVBoxLayout(self)
+        layout.addWidget(self.changed_label)
+        layout.addWidget(self.table, 1)
+        layout.addWidget(self.message_label)
+        layout.addWidget(self.derived_box)
+        layout.addWidget(self.progress)
+        layout.addLayout(buttons)
+        for first, second in pairwise(order):
+            QWidget.setTabOrder(first, second)
+
+        self.model.refused.connect(lambda why: self.show_message(why, error=True))
+        self.model.values_changed.connect(self._values_changed)
+        self.model.written_changed.connect(self._sync)
+        self.delegate.feedback.connect(self.show_message)
+        self.table.selectionModel().selectionChanged.connect(self._sync)
+        self._sync()
+
+    # -- table contents -----------------------------------------------------------------
+
+    def set_parameters(self, rows: list[ParameterRow]) -> None:
+        """Build the table; values, last written values, statuses and notes start empty."""
+        self._writing = self._cancelling = False
+        self._write_ids, self._in_flight, self._requested = [], {}, {}
+        self.progress.hide()
+        self.model.set_rows(list(rows))
+
+    def parameters(self) -> list[ParameterRow]:
+        return [state.row for state in self.model.states()]
+
+    def set_values(self, values: dict[str, float]) -> list[str]:
+        """Fill values by name (a profile, the defaults); refused ones are listed and shown."""
+        problems = self.model.set_values(values)
+        if problems:
+            self.show_message("Not loaded: " + "; ".join(problems), error=True)
+        return problems
+
+    def values(self) -> dict[str, float]:
+        """The editor's values by name (rows without a value are left out)."""
+        states = self.model.states()
+        return {s.row.name: s.value for s in states if s.value is not None}
+
+    def value(self, name: str) -> float | None:
+        return self.values().get(name)
+
+    def set_last_written(self, values: dict[str, float]) -> None:
+        """What this device was last sent, by name; names left out count as never written."""
+        self.model.set_written(values)
+
+    def last_written(self) -> dict[str, float]:
+        states = self.model.states()
+        return {s.row.name: s.written for s in states if s.written is not None}
+
+    def changed_names(self) -> list[str]:
+        """Names whose value differs from what was last written (or was never written)."""
+        return [s.row.name for s in self.model.states() if s.changed()]
+
+    def set_row_note(self, name: str, text: str) -> None:
+        """A note shown in the row's Status cell and tooltip ("" removes it)."""
+        self.model.set_note(self.model.index_of(name=name), text)
+
+    def show_message(self, text: str, error: bool = False) -> None:
+        """The message under the table (load/save results, refused values)."""
+        self.message_label.setText(text)
+        self.message_label.setToolTip(text)
+        if error != self._message_error:  # style sheets are costly: restyle on a change only
+            self._message_error = error
+            self.message_label.setStyleSheet(ERROR_STYLE if error else "")
+
+    def message(self) -> str:
+        return self.message_label.text()
+
+    # -- derived values -----------------------------------------------------------------
+
+    def set_derivation(self, fn: Derivation | None) -> None:
+        """fn(values()) → [(label, text), …], shown under the table and redone on every change.
+
+        A ValueError (also ArithmeticError, or KeyError for a value not there yet) shows its
+        message in place of the values.
+        """
+        self._derivation = fn
+        self.derived_box.setVisible(fn is not None)
+        self._derive()
+
+    def derived_values(self) -> list[tuple[str, str]]:
+        """The (label, text) pairs shown under the table."""
+        return list(self.derived_box.pairs) if self._derivation else []
+
+    def derived_error(self) -> str:
+        """The derivation's ValueError message shown instead ("" if none)."""
+        return self.derived_box.error if self._derivation else ""
+
+    def _derive(self) -> None:
+        if self._derivation is not None:
+            self.derived_box.show_derivation(self._derivation, self.values())
+
+    # -- writing ------------------------------------------------------------------------
+
+    def set_connected(self, connected: bool) -> None:
+        """Enable the write buttons (the table stays editable either way)."""
+        self._connected = connected
+        self._sync()
+
+    def writing(self) -> bool:
+        return self._writing
+
+    def begin_write(self, ids: list[int], seconds_per_packet: float) -> None:
+        """These rows are being written, one packet each: mark them pending, show progress."""
+        ids = list(dict.fromkeys(ids))
+        positions = [self.model.index_of(id=id_) for id_ in ids]
+        states = self.model.states()
+        self._in_flight = {}
+        for id_, position in zip(ids, positions, strict=True):
+            value = self._requested.get(id_, states[position].value)
+            if value is not None:
+                self._in_flight[id_] = value
+            self.model.set_status(position, PENDING)
+        self._write_ids, self._seconds_per_packet = ids, max(float(seconds_per_packet), 0.0)
+        self._writing, self._cancelling = True, False
+        self.progress.setRange(0, max(len(ids), 1))
+        self.progress.show()
+        self._update_progress()
+        self._sync()
+
+    def set_status(self, id: int, status: str, message: str = "") -> None:
+        """One row's write status; "confirmed" makes the value written its Last written."""
+        position = self.model.index_of(id=id)
+        self.model.set_status(position, status, message)
+        state = self.model.states()[position]
+        written = self._in_flight.get(id, state.value)  # outside a write: the value shown
+        if status == CONFIRMED and written is not None:
+            self.model.set_written({state.row.name: written}, replace=False)
+        if self._writing and id in self._write_ids:
+            self._update_progress()
+
+    def status(self, id: int) -> str:
+        return self.model.states()[self.model.index_of(id=id)].status
+
+    def end_write(self) -> None:
+        """The write is over: rows still pending become cancelled; a summary is shown."""
+        if not self._writing:
+            return
+        states = self.model.states()
+        counts = dict.fromkeys(STATUSES, 0)
+        for id_ in self._write_ids:
+            position = self.model.index_of(id=id_)
+            if states[position].status == PENDING:
+                self.model.set_status(position, CANCELLED)
+            counts[states[position].status] += 1
+        self._writing = self._cancelling = False
+        self._in_flight = {}
+        self.progress.hide()
+        parts = [f"{count} {status}" for status, count in counts.items() if count]
+        failed = any(count for status, count in counts.items() if status != CONFIRMED)
+        self.show_message("Write finished: " + ", ".join(parts or ["nothing sent"]), error=failed)
+        self._sync()
+
+    def progress_text(self) -> str:
+        return self.progress.format()
+
+    def _update_progress(self) -> None:
+        states = self.model.states()
+        total = len(self._write_ids)
+        done = sum(states[self.model.index_of(id=i)].status != PENDING for i in self._write_ids)
+        left = (total - done) * self._seconds_per_packet
+        self.progress.setValue(done)
+        self.progress.setFormat(f"{done} / {total} packets, about {_seconds(left)} left")
+
+    def _write_selected(self) -> None:
+        rows = {index.row() for index in self.table.selectionModel().selectedIndexes()}
+        self._request(sorted(rows), "no row selected")
+
+    def _write_all(self) -> None:
+        self._request(range(self.model.rowCount()), "the table has no values")
+
+    def _write_changed(self) -> None:
+        states = self.model.states()
+        self._request([p for p, s in enumerate(states) if s.changed()], "nothing differs")
+
+    def _request(self, positions: range | list[int], empty: str) -> None:
+        states = [self.model.states()[position] for position in positions]
+        pairs = [(s.row.id, s.value) for s in states if s.value is not None]
+        if not pairs:
+            self.show_message(f"Nothing to write: {empty}")
+            return
+        notes = [f"Writing {len(pairs)} value{'s' if len(pairs) != 1 else ''}"]
+        if skipped := [s.row.name for s in states if s.value is None]:
+            notes.append(f"no value, not written: {', '.join(skipped)}")
+        if outputs := [s.row.name for s in states if s.value is not None and s.row.output]:
+            notes.append(f"computed by the firmware, which may replace them: {', '.join(outputs)}")
+        self.show_message("; ".join(notes))
+        self._requested = dict(pairs)
+        self.write_requested.emit(pairs)
+
+    def _cancel(self) -> None:
+        self._cancelling = True
+        self._sync()
+        self.show_message("Cancelling: the packet under way finishes, the rest are not sent")
+        self.cancel_requested.emit()
+
+    # -- profiles -----------------------------------------------------------------------
+
+    def _choose_path(self, save: bool) -> str:
+        """Ask for a profile file ("" if the user gives up); tests replace this."""
+        if save:
+            path, _ = QFileDialog.getSaveFileName(
+                self, "Save parameter profile", self._last_dir, PROFILE_FILTER
+            )
+        else:
+            path, _ = QFileDialog.getOpenFileName(
+                self, "Load parameter profile", self._last_dir, PROFILE_FILTER
+            )
+        return path
+
+    def _ask_path(self, save: bool) -> None:
+        path = self._choose_path(save)
+        if not path:
+            return
+        if save and not Path(path).suffix:
+            path += ".toml"
+        self._last_dir = str(Path(path).parent)
+        (self.save_requested if save else self.load_requested).emit(path)
+
+    # -- keeping the display in step ----------------------------------------------------
+
+    def _values_changed(self) -> None:
+        self._derive()
+        self._sync()
+
+    def _sync(self) -> None:
+        """The changed-rows summary and which buttons can be used."""
+        changed = len(self.changed_names())
+        has_values = bool(self.values())
+        if not self.model.rowCount():
+            summary = "No parameters"
+        elif not has_values:
+            summary = "No values yet: load a profile or type them into the Value column"
+        elif changed:
+            verb = "value differs" if changed == 1 else "values differ"
+            summary = f"{changed} {verb} from what was last written to this device (marked •)"
+        else:
+            summary = "Every value is what was last written to this device"
+        self.changed_label.setText(summary)
+        can_write = self._connected and not self._writing
+        selected = self.table.selectionModel().hasSelection()
+        self.write_selected_button.setEnabled(can_write and has_values and selected)
+        self.write_all_button.setEnabled(can_write and has_values)
+        self.write_changed_button.setEnabled(can_write and changed > 0)
+        self.cancel_button.setEnabled(self._writing and not self._cancelling)

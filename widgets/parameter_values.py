@@ -1,0 +1,135 @@
+"""Parameter rows as plain data, and the checks and formats of their values (no Qt).
+
+A row is an id, a name, a unit, a range and a step; a value is acceptable when it is a finite
+number inside the range and a multiple of the step.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from decimal import Decimal
+
+
+@dataclass(frozen=True)
+class ParameterRow:
+    """One numbered device parameter, as plain data."""
+
+    id: int  # 1..27
+    name: str  # e.g. "pulley_diameter_x"
+    unit: str  # e.g. "mm", "steps", "µs", "mm/s", "mm/s²", "s", ""
+    minimum: float
+    maximum: float
+    step: float  # the finest value the wire carries, e.g. 0.1 for the pulley (mm * 10)
+    output: bool  # computed by the firmware: writing is allowed, the editor says so
+    description: str
+
+
+NOT_WRITTEN, PENDING, CONFIRMED, ERROR, TIMED_OUT, CANCELLED = (
+    "not written",
+    "pending",
+    "confirmed",
+    "error",
+    "timed out",
+    "cancelled",
+)
+STATUS_COLOURS = {
+    NOT_WRITTEN: "#616161",
+    PENDING: "#ef6c00",
+    CONFIRMED: "#2e7d32",
+    ERROR: "#c62828",
+    TIMED_OUT: "#ad1457",
+    CANCELLED: "#6d4c41",
+}
+OUTPUT_TIP = (
+    "Output: computed by the firmware. Writing it is allowed, but the firmware may replace "
+    "what is written."
+)
+
+
+def decimals(step: float) -> int:
+    """The decimals a multiple of `step` needs: 0.1 → 1, 0.25 → 2, 1 → 0."""
+    exponent = Decimal(repr(float(step))).normalize().as_tuple().exponent
+    return min(max(-int(exponent), 0), 9)
+
+
+def plain(value: float) -> str:
+    """A number without trailing zeros: 99999.9, 0, 0.025."""
+    text = f"{value:.9f}".rstrip("0").rstrip(".")
+    return "0" if text == "-0" else text
+
+
+def with_unit(text: str, unit: str) -> str:
+    return f"{text} {unit}" if unit else text
+
+
+def allowed(row: ParameterRow) -> str:
+    """E.g. "0 to 99999.9 mm in steps of 0.1 mm"."""
+    span = f"{plain(row.minimum)} to {with_unit(plain(row.maximum), row.unit)}"
+    if row.step == 1:
+        return f"{span}, whole numbers"
+    return f"{span} in steps of {with_unit(plain(row.step), row.unit)}"
+
+
+def format_value(row: ParameterRow, value: float) -> str:
+    """The value with the decimals of the row's step (no unit)."""
+    return f"{value:.{decimals(row.step)}f}"
+
+
+def check_value(row: ParameterRow, text: str) -> tuple[float | None, str]:
+    """(value on the step grid, "") for acceptable text, else (None, why it is refused)."""
+    typed = text.strip()
+
+    def refuse(shown: str, reason: str) -> tuple[None, str]:
+        return None, f"{row.name}: {shown} refused ({reason}): {allowed(row)}"
+
+    if not typed:
+        return refuse('""', "empty")
+    if "," in typed and "." not in typed:
+        return refuse(f'"{typed}"', "use a point for decimals")
+    try:
+        number = float(typed)
+    except ValueError:
+        return refuse(f'"{typed}"', "not a number")
+    shown = with_unit(typed, row.unit)
+    if not math.isfinite(number):
+        return refuse(shown, "not a finite number")
+    tolerance = 1e-9 * max(abs(row.minimum), abs(row.maximum), row.step)
+    if number < row.minimum - tolerance:
+        return refuse(shown, "below the minimum")
+    if number > row.maximum + tolerance:
+        return refuse(shown, "above the maximum")
+    snapped = round(number / row.step) * row.step
+    if abs(number - snapped) > 1e-9 * max(abs(number), row.step):
+        return refuse(shown, f"not a multiple of {with_unit(plain(row.step), row.unit)}")
+    return round(snapped, decimals(row.step)) + 0.0, ""  # + 0.0: no -0.0
+
+
+def check_row(row: ParameterRow) -> None:
+    finite = all(math.isfinite(v) for v in (row.minimum, row.maximum, row.step))
+    if not finite or row.step <= 0 or row.minimum > row.maximum:
+        raise ValueError(f"parameter {row.name}: bad range or step in {row}")
+
+
+@dataclass
+class RowState:
+    """One row as the editor holds it: its value, last written value and write status."""
+
+    row: ParameterRow
+    value: float | None = None
+    written: float | None = None
+    status: str = NOT_WRITTEN
+    message: str = ""
+    note: str = ""
+
+    def changed(self) -> bool:
+        """A value the device does not hold as far as we know (never written, or different)."""
+        if self.value is None:
+            return False
+        if self.written is None:
+            return True
+        return not math.isclose(self.value, self.written, rel_tol=1e-9, abs_tol=self.row.step / 1e6)
+
+    def status_text(self) -> str:
+        text = f"{self.status}: {self.message}" if self.message else self.status
+        return f"{text} — {self.note}" if self.note else text
