@@ -20,6 +20,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from widgets._buttons import make_button
 from widgets.parameter_table import (
     ERROR_STYLE,
     Derivation,
@@ -83,7 +84,7 @@ class ParameterEditor(QWidget):
         self.progress.setToolTip("Packets written so far; each is confirmed before the next")
         self.progress.hide()
 
-        button = self._button
+        button = make_button
         self.write_selected_button = button(
             "Write selected", "writeSelectedButton", "Write the values of the selected rows"
         )
