@@ -21,6 +21,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from bench.visiomex_write import bench_visiomex_write  # noqa: E402
 from drivers import commands as cmd  # noqa: E402
 from drivers.client import Client  # noqa: E402
 from drivers.framers.lines import LineFramer  # noqa: E402
@@ -166,6 +167,7 @@ def main() -> int:
         "move_overhead": bench_move_overhead(100 // scale),
         "traffic_memory": bench_traffic_memory(100_000 // scale),
         "gui_latency": bench_gui_latency(40 // scale),
+        "visiomex_profile_write": bench_visiomex_write(5 if options.quick else 27),
     }
     if options.json:
         print(json.dumps(results, indent=None))

@@ -1,0 +1,53 @@
+"""Benchmark: a Visiomex parameter profile written over a real pty, against the firmware's minimum.
+
+The firmware ends a packet after 1 s of silence, so N parameters need at least N seconds; the
+figure is the wall time over that minimum (the goal is at most 1.05).
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from drivers.client import Client
+from drivers.motion import Motion
+from drivers.protocols.visiomex import VisiomexProtocol
+from drivers.protocols.visiomex_model import SILENCE
+from drivers.protocols.visiomex_params import PARAMETERS
+from drivers.transport import open_link
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def bench_visiomex_write(count: int = len(PARAMETERS)) -> dict[str, float]:
+    """Write `count` parameters (defaults) to `motionsim visiomex` over a pty at 9600 baud."""
+    sim = subprocess.Popen(
+        [sys.executable, "-m", "app.simcli", "visiomex"],
+        stdout=subprocess.PIPE,
+        text=True,
+        cwd=ROOT,
+    )
+    try:
+        assert sim.stdout is not None
+        link = open_link(sim.stdout.readline().strip(), 9600)
+        try:
+            motion = Motion(Client(link, VisiomexProtocol()))
+            start = time.perf_counter()
+            for parameter in PARAMETERS[:count]:
+                motion.set_parameter(parameter.id, parameter.default)
+            seconds = time.perf_counter() - start
+        finally:
+            link.close()
+    finally:
+        sim.terminate()
+        sim.wait(10)
+    minimum = count * SILENCE
+    return {
+        "parameters": count,
+        "seconds": seconds,
+        "firmware_minimum_s": minimum,
+        "ratio_to_minimum": seconds / minimum,
+        "seconds_per_packet": seconds / count,
+    }

@@ -1,0 +1,112 @@
+"""The window on the simulated Visiomex controller: it adapts, and the parameter editor writes."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QDockWidget, QPushButton
+
+from app.main_window import MainWindow
+from app.settings import read_parameters
+from drivers.param_profile import format_profile
+from drivers.protocols.visiomex_params import PARAMETERS
+
+pytestmark = pytest.mark.timeout(40)
+URL = "sim://visiomex?instant=1"
+
+
+def _connect(qtbot, win: MainWindow, url: str = URL) -> None:
+    with qtbot.waitSignal(win.settled, timeout=8000):
+        win.connect_device(url, "visiomex", 9600, "seed")
+
+
+def test_the_window_adapts_to_two_axes_and_commanded_positions(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    dock = window.findChild(QDockWidget, "parameterEditor")
+    assert dock is not None and dock.isVisible()
+    assert window.readout.labels["z"].isHidden() and not window.readout.labels["y"].isHidden()
+    assert not window.coordinates.isHidden()
+    assert window.readout.position() == (0.0, 0.0, 0.0)
+    assert window.readout.measured_label.text() == "commanded, not measured"
+    assert "21 and 22" in window.speed.note_label.text()
+    assert window.connection_bar.variant() == "seed" and window.connection_bar.baud() == 9600
+    assert window.console.send_line.ending_combo.currentText() == "none"
+    assert "relative move" in window.coordinates.home_button.toolTip()
+
+    window.jog_panel.set_step(1)
+    qtbot.mouseClick(window.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.readout.position() == (1.0, 0.0, 0.0), timeout=8000)
+    assert window.readout.measured_label.text() == "commanded, move confirmed"
+
+    def console_shows_the_packet() -> None:
+        window.console.flush()
+        assert "MLP0001000P0000000" in window.console.text()
+        assert "FA0001" in window.console.text()
+
+    qtbot.waitUntil(console_shows_the_packet, timeout=5000)
+
+
+def test_editor_writes_a_profile_and_every_row_is_confirmed(
+    qtbot, window: MainWindow, tmp_path: Path
+) -> None:
+    _connect(qtbot, window)
+    editor = window.parameters.editor
+    chosen = [p for p in PARAMETERS if p.id in (3, 9, 27)]
+    values = {"pulley_diameter_x": 40.5, "max_speed_x": 30, "driving_mechanism": 0}
+    profile = tmp_path / "three.toml"
+    profile.write_text(format_profile(values, tuple(chosen), "visiomex"))
+    editor._choose_path = lambda save: str(profile)  # type: ignore[method-assign]
+    qtbot.mouseClick(editor.load_button, Qt.MouseButton.LeftButton)
+    assert editor.value("pulley_diameter_x") == 40.5
+    assert "nothing sent" in editor.message()
+
+    qtbot.mouseClick(editor.write_changed_button, Qt.MouseButton.LeftButton)
+    assert editor.writing()
+    qtbot.waitUntil(lambda: not editor.writing(), timeout=30000)
+    changed = set(editor.changed_names())
+    for parameter in chosen:
+        assert editor.status(parameter.id) == "confirmed", parameter.name
+    # The firmware forces driving_mechanism to 1 after every set: the editor says so.
+    assert editor.last_written()["driving_mechanism"] == 1
+    assert "driving_mechanism" in changed  # 0 in the editor, 1 on the device
+    saved = read_parameters(window.settings, "visiomex", URL)
+    assert saved["pulley_diameter_x"] == 40.5 and saved["driving_mechanism"] == 1
+
+
+def test_a_malformed_profile_is_refused_and_nothing_is_sent(
+    qtbot, window: MainWindow, tmp_path: Path
+) -> None:
+    _connect(qtbot, window)
+    editor = window.parameters.editor
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[parameters]\npulley_diameter_x = -4\n")
+    editor._choose_path = lambda save: str(bad)  # type: ignore[method-assign]
+    before = editor.values()
+    qtbot.mouseClick(editor.load_button, Qt.MouseButton.LeftButton)
+    assert "refused" in editor.message() and "line 2" in editor.message()
+    assert editor.values() == before
+    assert not editor.writing()
+
+
+def test_cancel_stops_after_the_packet_in_flight(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    editor = window.parameters.editor
+    qtbot.mouseClick(editor.write_all_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: editor.status(1) == "confirmed", timeout=5000)
+    qtbot.mouseClick(editor.cancel_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: not editor.writing(), timeout=5000)
+    statuses = [editor.status(p.id) for p in PARAMETERS]
+    assert statuses.count("cancelled") >= 20
+    assert statuses[0] == "confirmed"
+    assert "pending" not in statuses
+
+
+def test_speed_sets_parameters_21_and_22(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    editor = window.parameters.editor
+    window.speed.set_value(20)
+    window.speed.apply()
+    qtbot.waitUntil(lambda: editor.last_written().get("input_speed_steady_y") == 20, timeout=8000)
+    assert editor.last_written()["input_speed_steady_x"] == 20
