@@ -215,8 +215,17 @@ def _validate_offline(
         if kind == "linear":
             check_resolution((dx, dy, dz), ("dx", "dy", "dz"), caps.resolution)
     elif command == "speed" and args:
-        for part in protocol.expand(cmd.SetSpeed(parse_number(args[0], "speed"))):
-            protocol.encode(part)
+        speed = parse_number(args[0], "speed")
+        if caps.speed_range is not None and not caps.speed_range[0] <= speed <= caps.speed_range[1]:
+            low, high = caps.speed_range
+            raise BadInput(
+                f"speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s"
+            )
+        for part in protocol.expand(cmd.SetSpeed(speed)):
+            try:
+                protocol.encode(part)
+            except BadInput as exc:
+                raise BadInput(f"speed {speed:g} mm/s refused ({exc})") from None
     elif command == "raw":
         protocol.encode(cmd.Raw(args[0].encode("utf-8")))
     elif command == "param":

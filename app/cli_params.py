@@ -11,7 +11,7 @@ from drivers.errors import BadInput
 from drivers.motion import Motion
 from drivers.numbers import parse_number
 from drivers.param_profile import read_profile
-from drivers.parameters import ParameterWritten
+from drivers.parameters import Parameter, ParameterWritten
 from drivers.protocols.base import Protocol
 
 SECONDS_PER_PACKET = 1.05  # a Visiomex reply comes 1 s after the packet; used for "time left"
@@ -57,9 +57,17 @@ def check_param_offline(protocol: Protocol, args: list[str]) -> None:
         raise BadInput(f"{protocol.name} has no parameters")
     if args[0] == "set":
         parameter = protocol.parameter(args[1])
-        parameter.to_wire(parse_number(args[2], parameter.name))
+        parameter.to_wire(_value(parameter, args[2]))
     elif args[0] == "write":
         read_profile(args[1], protocol.parameters, protocol.name)
+
+
+def _value(parameter: Parameter, text: str) -> float:
+    """A value typed for a parameter; BadInput naming its unit and range."""
+    try:
+        return parse_number(text, parameter.name)
+    except BadInput as exc:
+        raise BadInput(f"{exc} ({parameter.range_text()})") from None
 
 
 def _written(item: ParameterWritten) -> dict[str, Any]:
@@ -90,7 +98,7 @@ def run_param(motion: Motion, args: list[str], remember: Remember) -> dict[str, 
     protocol = motion.client.protocol
     if args[0] == "set":
         parameter = protocol.parameter(args[1])
-        values = {parameter.name: parse_number(args[2], parameter.name)}
+        values = {parameter.name: _value(parameter, args[2])}
     else:
         values = read_profile(args[1], protocol.parameters, protocol.name)
     written = []

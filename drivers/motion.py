@@ -229,9 +229,10 @@ class Motion:
         """Run the device's diagnostics; DeviceError lists what it reported."""
         self.client.execute(cmd.CheckErrors())
 
-    def raw(self, data: bytes) -> Reply:
-        """Send a raw command line and return its reply."""
-        return self.client.execute(cmd.Raw(data))
+    def raw(self, data: bytes) -> Reply | None:
+        """Send a raw command (the protocol adds what ends it, e.g. COXIRIS's line feed) and
+        return its reply; None where the device answers nothing to it (Visiomex `G`)."""
+        return self.client.send_raw(self.client.protocol.encode(cmd.Raw(data)))
 
     def _move(
         self,

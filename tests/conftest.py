@@ -56,6 +56,14 @@ def sim_link(request: pytest.FixtureRequest) -> Iterator[tuple[Link, Recorder]]:
 
 
 @pytest.fixture
+def settings_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """The panel's (and motionctl's) settings in a file of the test's own."""
+    path = tmp_path / "settings.ini"
+    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(path))
+    return path
+
+
+@pytest.fixture
 def window(qtbot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[MainWindow]:
     """A shown, active main window with its settings in a temporary file; closed afterwards."""
     monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(tmp_path / "settings.ini"))

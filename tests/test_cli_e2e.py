@@ -37,11 +37,8 @@ def motionctl(port: str, *args: str, timeout: float = 2.0, log: Path | None = No
 
 
 @pytest.fixture(autouse=True)
-def settings_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
-    """motionctl reads the panel's saved travel limits: keep them in a file of the test's own."""
-    path = tmp_path / "settings.ini"
-    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(path))
-    return path
+def _own_settings(settings_file: Path) -> None:
+    """motionctl reads and writes the panel's settings: a file of the test's own."""
 
 
 @pytest.fixture

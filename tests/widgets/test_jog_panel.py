@@ -43,7 +43,7 @@ def _button(panel: JogPanel, name: str) -> QPushButton:
 def test_object_name_hint_and_tooltips(panel: JogPanel) -> None:
     assert panel.objectName() == "jogPanel"
     assert panel.hint_label.text().startswith(KEY_HINT)
-    assert "Shift ×10" in panel.hint_label.text()  # noqa: RUF001
+    assert "Shift ×10" in panel.hint_label.text()
     assert panel.step_spin.suffix() == " mm"
     for button in panel.findChildren(QPushButton):
         assert button.toolTip(), button.text()
