@@ -28,6 +28,7 @@ from drivers.registry import create_protocol
 from drivers.traffic import RX, Traffic, TrafficLogWriter
 from drivers.transport import open_link
 from drivers.travel import TravelLimits, check_resolution, parse_travel
+from drivers.urlhandler.protocol_sim import with_sim_variant
 
 log = logging.getLogger("motionctl")
 
@@ -300,7 +301,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         except OSError as exc:
             return report.fail(f"cannot write the log {options.log}: {exc}", EXIT_BAD_INPUT)
         try:
-            link = open_link(options.port, baud)
+            variant = protocol.variant.name if options.variant and protocol.variant else ""
+            link = open_link(with_sim_variant(options.port, variant), baud)
             stack.callback(link.close)
             if options.log:
                 link.listeners.append(TrafficLogWriter(stream))

@@ -39,6 +39,7 @@ from drivers.registry import get_protocol_class, protocol_names
 from drivers.sim.registry import simulator_names
 from drivers.traffic import Traffic
 from drivers.travel import TravelLimits
+from drivers.urlhandler.protocol_sim import with_sim_variant
 from widgets import status_line as status
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
@@ -257,7 +258,13 @@ class MainWindow(QMainWindow):
         self.console.append_note(f"connecting to {port} ({shown}, {baud} baud)")
         self._apply_travel(read_travel(self.settings, protocol, port))
         options = ConnectOptions(variant, read_parameters(self.settings, protocol, port))
-        self.worker_thread.open(port, protocol, baud, options)
+        # The built-in simulated device speaks the variant chosen for the protocol.
+        try:
+            default = next((v.name for v in get_protocol_class(protocol).variants), "")
+        except LookupError:
+            default = ""  # the worker reports the unknown protocol
+        sim_variant = variant if variant != default else ""
+        self.worker_thread.open(with_sim_variant(port, sim_variant), protocol, baud, options)
 
     def disconnect_device(self) -> None:
         """Ask the worker to close the port (and do not reconnect by itself)."""
@@ -325,6 +332,7 @@ class MainWindow(QMainWindow):
         self.parameters.device_ready(info)
         self.jog_panel.set_resolution(caps.resolution)
         self.coordinates.set_resolution(caps.resolution)
+        self.readout.set_resolution(caps.resolution)
         tip = STOP_TIP if caps.stop else NO_STOP_TIP.format(name=name)
         self.coordinates.set_stop_mode(caps.stop, tip)
         self.stop_action.setText("&Stop" if caps.stop else "&Drop queued commands")

@@ -20,7 +20,7 @@ _STATE_STYLE = {
     CONNECTED: ("Connected", "#2e7d32"),
     ERROR: ("Error", "#c62828"),
 }
-DESCRIPTION_WIDTH = 220  # px, fixed: a longer description is elided (whole in the tooltip)
+DESCRIPTION_WIDTH = 120  # px, fixed: a longer description is elided (whole in the tooltip)
 STATE_MAX_WIDTH = 360  # px: a longer state text is elided (whole in the tooltip)
 
 
@@ -55,7 +55,7 @@ class ConnectionBar(QWidget):
         self.port_combo.setObjectName("portCombo")
         self.port_combo.setEditable(True)
         self.port_combo.setInsertPolicy(QComboBox.InsertPolicy.NoInsert)
-        self.port_combo.setMinimumContentsLength(18)
+        self.port_combo.setMinimumContentsLength(13)
         self.port_combo.lineEdit().setPlaceholderText("/dev/ttyUSB0, COM3 or a URL")
         self.port_combo.setToolTip(
             "Serial port, or any pyserial URL (e.g. sim://coxiris, socket://host:port, loop://)"

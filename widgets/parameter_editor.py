@@ -107,16 +107,21 @@ class ParameterEditor(QWidget):
         self.cancel_button.clicked.connect(self._cancel)
         self.load_button.clicked.connect(lambda: self._ask_path(save=False))
         self.save_button.clicked.connect(lambda: self._ask_path(save=True))
-        order = [self.table, self.write_selected_button, self.write_all_button]
-        order += [self.write_changed_button, self.cancel_button, self.load_button, self.save_button]
+        order = [self.load_button, self.save_button, self.table, self.write_selected_button]
+        order += [self.write_all_button, self.write_changed_button, self.cancel_button]
 
+        # Profiles at the top, writing at the bottom: two short rows fit a 1024-pixel window.
+        top = QHBoxLayout()
+        top.addWidget(self.changed_label, 1)
+        top.addWidget(self.load_button)
+        top.addWidget(self.save_button)
         buttons = QHBoxLayout()
-        for widget in order[1:]:
+        for widget in order[3:]:
             buttons.addWidget(widget)
-            if widget is self.cancel_button:
-                buttons.addStretch(1)
+        buttons.addStretch(1)
+        self.changed_label.setWordWrap(True)
         layout = QVBoxLayout(self)
-        layout.addWidget(self.changed_label)
+        layout.addLayout(top)
         layout.addWidget(self.table, 1)
         layout.addWidget(self.message_label)
         layout.addWidget(self.derived_box)

@@ -402,7 +402,7 @@ class ParameterTableView(QTableView):
 
 
 class DerivedValues(QGroupBox):
-    """(label, text) pairs computed from the values, two to a line; or why they cannot be."""
+    """(label, text) pairs computed from the values, one to a line; or why they cannot be."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__("Derived values", parent)
@@ -411,7 +411,7 @@ class DerivedValues(QGroupBox):
         self.grid = QGridLayout(self)
         self.grid.setContentsMargins(6, 2, 6, 2)
         self.grid.setHorizontalSpacing(12)
-        self.grid.setColumnStretch(4, 1)  # the pairs keep to the left
+        self.grid.setColumnStretch(1, 1)  # the text takes the width, and wraps in a narrow dock
         self.pairs: list[tuple[str, str]] = []
         self.error = ""
 
@@ -432,11 +432,11 @@ class DerivedValues(QGroupBox):
             self._show_error(str(exc) or type(exc).__name__)
             return
         for position, (name, text) in enumerate(self.pairs):
-            row, column = divmod(position, 2)
             value = QLabel(text)
             value.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
-            self.grid.addWidget(QLabel(f"{name}:"), row, 2 * column)
-            self.grid.addWidget(value, row, 2 * column + 1)
+            value.setWordWrap(True)
+            self.grid.addWidget(QLabel(f"{name}:"), position, 0, Qt.AlignmentFlag.AlignTop)
+            self.grid.addWidget(value, position, 1)
 
     def _show_error(self, error: str) -> None:
         self.error = error
@@ -444,4 +444,4 @@ class DerivedValues(QGroupBox):
         label.setObjectName("derivedError")
         label.setStyleSheet(ERROR_STYLE)
         label.setWordWrap(True)
-        self.grid.addWidget(label, 0, 0, 1, 4)
+        self.grid.addWidget(label, 0, 0, 1, 2)

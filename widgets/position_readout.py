@@ -8,12 +8,11 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QFont, QFontDatabase
 from PySide6.QtWidgets import QGridLayout, QLabel, QSizePolicy, QVBoxLayout, QWidget
 
-from widgets._axes import AXES, normalize_axes
+from widgets._axes import AXES, decimals_for, normalize_axes
 
 UNKNOWN = "—"
 NOT_MEASURED_TEXT = "commanded, not measured"
 CONFIRMED_TEXT = "commanded, move confirmed"
-UNCONFIRMED_TEXT = "commanded, not confirmed yet"
 COMMANDED_TIP = "This device does not report its position: the numbers are where it was told to go."
 LIVE, ESTIMATED, STALE = "live", "estimated", "stale"
 _STATUS = {
@@ -122,12 +121,10 @@ class PositionReadout(QWidget):
         """False: the position is only commanded; say so visibly, and whether the device
         confirmed reaching it (`confirmed`: None where the device never says)."""
         self.measured_label.setVisible(not measured)
-        if confirmed is None:
-            text, tip = NOT_MEASURED_TEXT, COMMANDED_TIP
-        elif confirmed:
+        if confirmed:
             text, tip = CONFIRMED_TEXT, COMMANDED_TIP + " The device said the last move ended."
         else:
-            text, tip = UNCONFIRMED_TEXT, COMMANDED_TIP + " The device has not confirmed it yet."
+            text, tip = NOT_MEASURED_TEXT, COMMANDED_TIP
         if self.measured_label.text() != text:
             self.measured_label.setText(text)
             self.measured_label.setToolTip(tip)
@@ -135,6 +132,13 @@ class PositionReadout(QWidget):
     def is_measured(self) -> bool:
         """Whether the position is shown as measured."""
         return self.measured_label.isHidden()
+
+    def set_resolution(self, resolution: float | None) -> None:
+        """Show as many decimals as the device resolves (0.01 mm: 2; 1 µm: 3; 1 mm: 0)."""
+        decimals = 2 if resolution is None else decimals_for(resolution)
+        if decimals != self._decimals:
+            self._decimals = decimals
+            self._render()
 
     def set_axes_enabled(self, axes: Iterable[str]) -> None:
         """Grey out the axes the device lacks."""

@@ -59,8 +59,9 @@ def move_seconds(values: dict[int, float], dx_mm: float, dy_mm: float) -> float:
 
 
 def derived_values(values: dict[int, float]) -> list[tuple[str, str]]:
-    """What the technician sees beside the table: mm per step, steps per mm, a 10 mm move's time."""
-    rows: list[tuple[str, str]] = []
+    """What the technician sees beside the table: steps per turn, mm per step, steps per mm, and
+    how long a 10 mm move takes, for X and Y."""
+    per_axis: dict[str, list[str]] = {"turn": [], "mm_step": [], "step_mm": [], "ten": []}
     for axis in "xy":
         cycle = cycle_mm(values, axis)
         steps = steps_per_cycle(values, axis)
@@ -70,10 +71,14 @@ def derived_values(values: dict[int, float]) -> list[tuple[str, str]]:
                 "must both be above 0"
             )
         name = axis.upper()
-        full = values[_IDS[axis]["full"]]
-        rows.append((f"{name} steps per turn", f"{steps:g} microsteps ({full:g} full steps)"))
-        rows.append((f"{name} mm per step", f"{cycle / steps:.4f} mm"))
-        rows.append((f"{name} steps per mm", f"{steps / cycle:.3f} steps/mm"))
         ten_mm = int(10 / cycle * steps) * step_seconds(values, axis) + SILENCE
-        rows.append((f"{name} 10 mm move", f"{ten_mm:.2f} s (with the 1 s packet silence)"))
-    return rows
+        per_axis["turn"].append(f"{name} {steps:g}")
+        per_axis["mm_step"].append(f"{name} {cycle / steps:.4f} mm")
+        per_axis["step_mm"].append(f"{name} {steps / cycle:.3f}")
+        per_axis["ten"].append(f"{name} {ten_mm:.2f} s")
+    return [
+        ("Microsteps per turn", " · ".join(per_axis["turn"])),
+        ("Per step", " · ".join(per_axis["mm_step"])),
+        ("Steps per mm", " · ".join(per_axis["step_mm"])),
+        ("A 10 mm move", " · ".join(per_axis["ten"]) + " (1 s silence included)"),
+    ]

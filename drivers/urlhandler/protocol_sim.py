@@ -50,6 +50,19 @@ def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
     return name, options, line_timing
 
 
+def with_sim_variant(url: str, variant: str) -> str:
+    """A `sim://` URL with the protocol's wire variant added, so the simulated device speaks it
+    (a URL that names a variant already, or any other port, is kept as it is)."""
+    if not variant or not url.startswith("sim://"):
+        return url
+    parts = urllib.parse.urlsplit(url)
+    options = urllib.parse.parse_qsl(parts.query, keep_blank_values=True)
+    if any(key == "variant" for key, _ in options):
+        return url
+    query = urllib.parse.urlencode([*options, ("variant", variant)])
+    return urllib.parse.urlunsplit((parts.scheme, parts.netloc, parts.path, query, parts.fragment))
+
+
 class Serial(SerialBase):
     """A pyserial port whose other end is a simulated device running on the real clock."""
 
