@@ -43,7 +43,7 @@ PARAMETERS: tuple[Parameter, ...] = (
         scale=10,
     ),
     *_pair(5, "motor_fullcycle_step", "steps", "Full steps per motor turn, {axis} axis", 200),
-    *_pair(7, "microstep_coeff", "", "Microstepping factor of the {axis} driver (×)", 2),
+    *_pair(7, "microstep_coeff", "×", "Microstepping factor of the {axis} driver", 2),
     *_pair(9, "max_speed", "mm/s", "Highest speed allowed on the {axis} axis", 50),
     *_pair(
         11,
