@@ -21,6 +21,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from bench.motionsim import motionsim  # noqa: E402
 from bench.visiomex_write import bench_visiomex_write  # noqa: E402
 from drivers import commands as cmd  # noqa: E402
 from drivers.client import Client  # noqa: E402
@@ -77,19 +78,8 @@ def _round_trips(url: str, count: int) -> list[float]:
 def bench_round_trips(count: int) -> dict[str, float]:
     """GET_POSITION round trips: in-process sim:// and through motionsim on a real pty."""
     in_process = _round_trips("sim://coxiris", count)
-    sim = subprocess.Popen(
-        [sys.executable, "-m", "app.simcli", "coxiris"],
-        stdout=subprocess.PIPE,
-        text=True,
-        cwd=ROOT,
-    )
-    try:
-        assert sim.stdout is not None
-        path = sim.stdout.readline().strip()
+    with motionsim("coxiris") as path:
         over_pty = _round_trips(path, count)
-    finally:
-        sim.terminate()
-        sim.wait(10)
     reply_bytes = len(b"ACK GET_POSITION\r\nDONE GET_POSITION: 0.00 0.00 0.00\r\n")
     wire = (len(b"GET_POSITION\n") + reply_bytes) * 10 / 115200
     result = {

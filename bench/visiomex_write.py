@@ -6,11 +6,9 @@ figure is the wall time over that minimum (the goal is at most 1.05).
 
 from __future__ import annotations
 
-import subprocess
-import sys
 import time
-from pathlib import Path
 
+from bench.motionsim import motionsim
 from drivers.client import Client
 from drivers.motion import Motion
 from drivers.protocols.visiomex import VisiomexProtocol
@@ -18,20 +16,11 @@ from drivers.protocols.visiomex_model import SILENCE
 from drivers.protocols.visiomex_params import PARAMETERS
 from drivers.transport import open_link
 
-ROOT = Path(__file__).resolve().parent.parent
-
 
 def bench_visiomex_write(count: int = len(PARAMETERS)) -> dict[str, float]:
     """Write `count` parameters (defaults) to `motionsim visiomex` over a pty at 9600 baud."""
-    sim = subprocess.Popen(
-        [sys.executable, "-m", "app.simcli", "visiomex"],
-        stdout=subprocess.PIPE,
-        text=True,
-        cwd=ROOT,
-    )
-    try:
-        assert sim.stdout is not None
-        link = open_link(sim.stdout.readline().strip(), 9600)
+    with motionsim("visiomex") as path:
+        link = open_link(path, 9600)
         try:
             motion = Motion(Client(link, VisiomexProtocol()))
             start = time.perf_counter()
@@ -40,9 +29,6 @@ def bench_visiomex_write(count: int = len(PARAMETERS)) -> dict[str, float]:
             seconds = time.perf_counter() - start
         finally:
             link.close()
-    finally:
-        sim.terminate()
-        sim.wait(10)
     minimum = count * SILENCE
     return {
         "parameters": count,
