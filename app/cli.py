@@ -10,12 +10,15 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 from typing import Any
 
+from app.cli_devices import DEVICE_COMMANDS, check_device_offline, run_device
 from app.cli_params import check_param_offline, param_rows, param_table, run_param
 from app.settings import (
     open_settings,
     read_parameters,
+    read_protocol_settings,
     read_travel,
     write_parameters,
+    write_protocol_settings,
 )
 from drivers import commands as cmd
 from drivers.client import Client
@@ -41,11 +44,12 @@ EXIT_INTERRUPTED = 130  # Ctrl-C, as shells report it
 PROTOCOL_CHOICES = ("coxiris", "visiomex", "laser-frame", "pi-frame", "firmata")
 COMMANDS = (
     "id", "position", "home", "set-home", "move", "jog", "speed", "limits", "check", "raw", "param",
+    *DEVICE_COMMANDS,
 )  # fmt: skip
 _ARITY = {
     "id": (0, 0), "position": (0, 0), "home": (0, 0), "set-home": (0, 0), "limits": (0, 0),
-    "check": (0, 0), "move": (2, 3), "jog": (2, 3), "speed": (0, 1), "raw": (1, 1),
-    "param": (1, 3),
+    "check": (0, 0), "move": (1, 3), "jog": (1, 3), "speed": (0, 1), "raw": (1, 1),
+    "param": (1, 3), **{name: (0, 20) for name in DEVICE_COMMANDS},
 }  # fmt: skip
 _USAGE = {
     "move": "move X Y [Z]",
@@ -95,6 +99,16 @@ def build_parser() -> argparse.ArgumentParser:
         help="a move beyond the travel limits goes to their edge instead of being refused",
     )
     parser.add_argument(
+        "--ticks-per-mm",
+        type=float,
+        help="pi-frame: encoder ticks per mm (default: the panel's for this port, else 100)",
+    )
+    parser.add_argument(
+        "--steps-per-mm",
+        type=float,
+        help="firmata: motor steps per mm (default: the panel's for this port, else 80)",
+    )
+    parser.add_argument(
         "--kind",
         default="linear",
         choices=("linear", "rotational", "steps"),
@@ -137,7 +151,17 @@ def _text(result: dict[str, Any]) -> str:
     if "min_speed" in result:
         return f"min {result['min_speed']:g} mm/s, max {result['max_speed']:g} mm/s"
     if "reply" in result:
-        return "\n".join(result["reply"])
+        return "\n".join(result["reply"]) or "sent; the device answered nothing"
+    if "configured" in result:
+        done = result["configured"]
+        pins = " ".join(str(p) for p in done["pins"])
+        library = result["version"]
+        return f"configured: {done['steps_per_rev']} steps/rev on pins {pins} (library {library})"
+    if "messages" in result:
+        count, seconds = result["messages"], result["seconds"]
+        return f"{result['steps']} steps in {count} message(s), about {seconds:.1f} s"
+    if "version" in result:
+        return f"stepper library version {result['version']}"
     if "parameters" in result:
         return param_table(result["parameters"])
     if "written" in result:
@@ -153,6 +177,8 @@ def run_command(
     """Carry out one motionctl command; returns the JSON-able result."""
     if command == "param":
         return run_param(motion, args, remember or (lambda values: None))
+    if command in DEVICE_COMMANDS:
+        return run_device(motion, command, args)
     if command == "id":
         return {"id": motion.identify()}
     if command == "position":
@@ -199,6 +225,9 @@ def _validate_offline(
     """Refuse what can be refused before the port is even opened."""
     _check_arity(command, args)
     caps = protocol.capabilities
+    if command in ("move", "jog") and len(args) < min(2, len(caps.axes)):
+        axes = " ".join(a.upper() for a in caps.axes)
+        raise UsageError(f"usage: {command} {axes} ({protocol.name} has {len(caps.axes)} axes)")
     if kind not in caps.move_kinds and command == "jog":
         raise BadInput(
             f"--kind {kind} refused: {protocol.name} moves are {', '.join(caps.move_kinds)}"
@@ -231,6 +260,8 @@ def _validate_offline(
         protocol.encode(cmd.Raw(args[0].encode("utf-8")))
     elif command == "param":
         check_param_offline(protocol, args)
+    elif command in DEVICE_COMMANDS:
+        check_device_offline(protocol, command, args)
 
 
 def _travel(options: argparse.Namespace) -> TravelLimits | None:
@@ -242,6 +273,20 @@ def _travel(options: argparse.Namespace) -> TravelLimits | None:
     if limits is not None and options.clamp:
         limits = TravelLimits(limits.box, clamp=True)
     return limits
+
+
+def _protocol_settings(options: argparse.Namespace, protocol: Protocol) -> dict[str, float]:
+    """The protocol's settings: the options given, else those the panel saved for this port."""
+    values = read_protocol_settings(open_settings(), protocol.name, options.port)
+    given = {"ticks_per_mm": options.ticks_per_mm, "steps_per_mm": options.steps_per_mm}
+    names = {s.name for s in protocol.settings}
+    for name, value in given.items():
+        if value is None:
+            continue
+        if name not in names:
+            raise UsageError(f"--{name.replace('_', '-')} is not a {protocol.name} setting")
+        values[name] = value
+    return {name: value for name, value in values.items() if name in names}
 
 
 def _join_travel(arguments: list[str]) -> list[str]:
@@ -276,6 +321,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     report = _Reporter(options.json)
     try:
         protocol = create_protocol(options.protocol, options.variant)
+        protocol.configure(_protocol_settings(options, protocol))
         travel = _travel(options)
         _validate_offline(options.command, options.args, protocol, travel, options.kind)
         if options.timeout <= 0:
@@ -302,14 +348,21 @@ def main(argv: Sequence[str] | None = None) -> int:
             return report.fail(f"cannot write the log {options.log}: {exc}", EXIT_BAD_INPUT)
         try:
             variant = protocol.variant.name if options.variant and protocol.variant else ""
-            link = open_link(with_sim_variant(options.port, variant), baud)
+            link = open_link(
+                with_sim_variant(options.port, variant), baud, dtr=protocol.capabilities.dtr
+            )
             stack.callback(link.close)
             if options.log:
                 link.listeners.append(TrafficLogWriter(stream))
             motion = Motion(Client(link, protocol, timeout=options.timeout))
             motion.travel = travel
             motion.notice_listeners.append(report.notice)
+            if options.command != "config":
+                motion.start()  # e.g. the saved Firmata config: the board reset when opened
             result = run_command(motion, options.command, options.args, options.kind, remember)
+            if options.command == "config":
+                saved = {s.name: protocol.values[s.name] for s in protocol.settings}
+                write_protocol_settings(settings, options.protocol, options.port, saved)
         except BadInput as exc:
             return report.fail(exc, EXIT_BAD_INPUT)
         except DeviceError as exc:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from drivers.commands import Arc
 from widgets.traffic_format import escape
 
 
@@ -85,6 +86,64 @@ class SetParameterJob(Job):
     def describe(self) -> str:
         """E.g. `set pulley_diameter_x = 38.2 mm`."""
         return f"set {self.name or self.param_id} = {self.value:g} {self.unit}".rstrip()
+
+
+@dataclass(frozen=True, eq=False)
+class ArcJob(Job):
+    """An arc move (pi-frame)."""
+
+    arc: Arc
+
+    def describe(self) -> str:
+        """E.g. `arc around (0, 0) r 10 mm from 0° to 90° CCW`."""
+        a = self.arc
+        turn = "CCW" if a.ccw else "CW"
+        angles = f"from {a.start:g}° to {a.end:g}° {turn}"
+        return f"arc around ({a.cx:g}, {a.cy:g}) mm, radius {a.radius:g} mm, {angles}"
+
+
+@dataclass(frozen=True, eq=False)
+class DwellJob(Job):
+    """Pause the device's queue (pi-frame)."""
+
+    ms: int
+
+    def describe(self) -> str:
+        """E.g. `dwell 500 ms`."""
+        return f"dwell {self.ms} ms"
+
+
+@dataclass(frozen=True, eq=False)
+class SettingsJob(Job):
+    """New protocol settings (ticks per mm, steps per mm...)."""
+
+    values: dict[str, float]
+
+    def describe(self) -> str:
+        """E.g. `set ticks_per_mm = 100`."""
+        return "set " + ", ".join(f"{k} = {v:g}" for k, v in self.values.items())
+
+
+@dataclass(frozen=True, eq=False)
+class StepperConfigJob(Job):
+    """Configure the Firmata stepper (and read the library version back)."""
+
+    steps_per_rev: int
+    pins: tuple[int, ...]
+
+    def describe(self) -> str:
+        """E.g. `configure the stepper: 200 steps/rev on pins 8 9`."""
+        pins = " ".join(str(p) for p in self.pins)
+        return f"configure the stepper: {self.steps_per_rev} steps/rev on pins {pins}"
+
+
+@dataclass(frozen=True, eq=False)
+class StepperVersionJob(Job):
+    """Ask the Firmata stepper library's version."""
+
+    def describe(self) -> str:
+        """`ask the stepper library version`."""
+        return "ask the stepper library version"
 
 
 @dataclass(frozen=True)

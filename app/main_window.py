@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import time
 
@@ -16,6 +17,7 @@ from PySide6.QtWidgets import (
 )
 
 from app import jobs
+from app.device_docks import DeviceDocks
 from app.keyboard_jog import KeyboardJog
 from app.move_estimate import MoveEstimate
 from app.parameter_dock import ParameterDock
@@ -26,13 +28,14 @@ from app.settings import (
     open_settings,
     read_number,
     read_parameters,
+    read_protocol_settings,
     read_str,
     read_travel,
     write_travel,
 )
 from app.worker import ConnectOptions, DeviceInfo, SerialWorker
 from app.worker_thread import WorkerThread
-from drivers.capabilities import Completion
+from drivers.capabilities import Capabilities, Completion
 from drivers.events import PositionReport
 from drivers.motion import MoveStart
 from drivers.registry import get_protocol_class, protocol_names
@@ -139,9 +142,14 @@ class MainWindow(QMainWindow):
             self._dock("Speed", self.speed, left),
             self._dock("Console", self.console, bottom, scroll=False),
         ]
+        self.coordinates_dock = docks[2]
         self.parameters = ParameterDock(self)
         self.tabifyDockWidget(docks[-1], self.parameters.dock)
         docks.append(self.parameters.dock)
+        self.devices = DeviceDocks(self)
+        for dock in self.devices.docks[:2]:
+            self.tabifyDockWidget(docks[-2], dock)
+        docks.extend(self.devices.docks)
         self._build_menus(docks)
         # The left panels run the full height; the console sits under the views only.
         self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
@@ -211,6 +219,7 @@ class MainWindow(QMainWindow):
         w.notice.connect(self._on_notice)
         w.device_error.connect(self._on_device_error)
         w.device_note.connect(self._on_device_note)
+        w.capabilities_changed.connect(self._on_capabilities_changed)
         self.estimate.estimated.connect(self._on_estimate)
 
         bar = self.connection_bar
@@ -257,7 +266,11 @@ class MainWindow(QMainWindow):
         shown = f"{protocol} {variant}" if variant else protocol
         self.console.append_note(f"connecting to {port} ({shown}, {baud} baud)")
         self._apply_travel(read_travel(self.settings, protocol, port))
-        options = ConnectOptions(variant, read_parameters(self.settings, protocol, port))
+        options = ConnectOptions(
+            variant,
+            read_parameters(self.settings, protocol, port),
+            read_protocol_settings(self.settings, protocol, port),
+        )
         # The built-in simulated device speaks the variant chosen for the protocol.
         try:
             default = next((v.name for v in get_protocol_class(protocol).variants), "")
@@ -287,6 +300,7 @@ class MainWindow(QMainWindow):
         if not self.connected:
             self._set_controls_enabled(False)
             self.parameters.disconnected()
+            self.devices.disconnected()
             self._end_move()
             self.jog_panel.release()
             self._jog_job = self._jog_next = None
@@ -311,39 +325,51 @@ class MainWindow(QMainWindow):
 
     def _on_device_ready(self, info: DeviceInfo) -> None:
         self.info = info
-        caps = info.capabilities
-        name = info.protocol.upper()
         self.console.append_note(f"connected to {info.identity} on {info.port}")
         self._say(f"connected to {info.identity} on {info.port}", note=False)
+        self.readout.set_status("live")
+        self._adapt(info.capabilities)
+        self.parameters.device_ready(info)
+        self.devices.device_ready(info)
+        self._set_controls_enabled(True)
+        self.travel_action.setEnabled(True)
+        self._show_machine_state()
+        QTimer.singleShot(100, self, self.settled.emit)  # cancelled if the window goes first
+
+    def _adapt(self, caps: Capabilities) -> None:
+        """Fit the controls to what the device can do (on connection, and after new settings)."""
+        name = self.info.protocol.upper() if self.info is not None else "the device"
         for widget in (self.jog_panel, self.coordinates, self.readout):
             widget.set_axes_enabled(caps.axes)
         self.readout.set_measured(caps.position_feedback)
-        self.readout.set_status("live")
         self.speed.set_note(caps.speed_note)
         self.speed.set_decimals(caps.speed_decimals)
         self.coordinates.set_home_tips(
             caps.home_note or "Go to the home position (0, 0, 0)",
             "Make the current position the origin (asks first)"
-            if caps.set_home
+            if caps.set_home or caps.position_feedback
             else f"Restart the panel's count of the position here (asks first); {name} has no "
             "set-home command, so nothing is sent",
         )
-        self.console.send_line.set_line_ending(caps.raw_line_end.encode("ascii"))
-        self.parameters.device_ready(info)
-        self.jog_panel.set_resolution(caps.resolution)
-        self.coordinates.set_resolution(caps.resolution)
-        self.readout.set_resolution(caps.resolution)
+        self.console.set_line_ending(caps.raw_line_end.encode("ascii"))
+        mode = "text" if caps.raw_text else "hex"  # a binary protocol's bytes read as hex
+        self.console.set_display_mode(mode)
+        self.console.set_send_mode(mode)
+        for widget in (self.jog_panel, self.coordinates, self.readout):
+            widget.set_resolution(caps.resolution)
         tip = STOP_TIP if caps.stop else NO_STOP_TIP.format(name=name)
         self.coordinates.set_stop_mode(caps.stop, tip)
         self.stop_action.setText("&Stop" if caps.stop else "&Drop queued commands")
         self.stop_action.setToolTip(tip)
-        self._set_controls_enabled(True)
-        self.travel_action.setEnabled(True)
         self.speed.setEnabled(caps.speed)
         if caps.speed_range is not None:
             self.speed.set_range(*caps.speed_range)
-        self._show_machine_state()
-        QTimer.singleShot(100, self, self.settled.emit)  # cancelled if the window goes first
+
+    def _on_capabilities_changed(self, caps: Capabilities) -> None:
+        if self.info is not None:
+            self.info = dataclasses.replace(self.info, capabilities=caps)
+        self._adapt(caps)
+        self.devices.adapt(caps)
 
     def _on_protocol_changed(self, name: str) -> None:
         try:
@@ -508,6 +534,7 @@ class MainWindow(QMainWindow):
             )
         if self.estimate.active():
             self._end_move_estimate()
+        self.devices.arc.set_start_z(report.z)
         if not report.measured and self.info is not None:
             feedback = self.info.capabilities.completion is Completion.FEEDBACK
             self.readout.set_measured(False, report.confirmed if feedback else None)
@@ -554,6 +581,7 @@ class MainWindow(QMainWindow):
     def _on_speed(self, speed: float) -> None:
         self.speed.set_reported(speed)
         self.speed.set_value(speed)
+        self.devices.firmata.set_speed_mm_s(speed)
 
     def _on_notice(self, text: str) -> None:
         self._say(text, status.WARNING)

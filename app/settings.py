@@ -101,3 +101,28 @@ def write_parameters(
     for name, value in values.items():
         settings.setValue(f"{group}/{name}", repr(float(value)))
     settings.sync()
+
+
+def read_protocol_settings(settings: QSettings, protocol: str, port: str) -> dict[str, float]:
+    """A device's protocol settings kept by the panel (ticks per mm, steps per mm...)."""
+    group = f"{device_key(protocol, port)}/settings"
+    values: dict[str, float] = {}
+    settings.beginGroup(group)
+    try:
+        for name in settings.childKeys():
+            try:
+                values[name] = float(settings.value(name))  # type: ignore[arg-type]
+            except (TypeError, ValueError):
+                continue
+        return values
+    finally:
+        settings.endGroup()
+
+
+def write_protocol_settings(
+    settings: QSettings, protocol: str, port: str, values: dict[str, float]
+) -> None:
+    """Remember a device's protocol settings."""
+    group = f"{device_key(protocol, port)}/settings"
+    for name, value in values.items():
+        settings.setValue(f"{group}/{name}", repr(float(value)))

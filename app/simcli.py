@@ -46,6 +46,12 @@ def build_parser() -> argparse.ArgumentParser:
         action="store_true",
         help="Visiomex: the documented firmware instead of the public one's bugs",
     )
+    parser.add_argument(
+        "--reset-delay",
+        type=float,
+        metavar="S",
+        help="Firmata: seconds the board ignores input after the port opens (default: 2)",
+    )
     parser.add_argument("--instant", action="store_true", help="moves take no time")
     parser.add_argument("--speed", type=float, help="initial speed (mm/s)")
     parser.add_argument(
@@ -77,6 +83,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         device_options["bugs"] = not options.no_bugs
         if options.variant is not None:
             device_options["variant"] = options.variant
+    elif options.protocol == "firmata" and options.reset_delay is not None:
+        device_options["reset_delay"] = options.reset_delay
     try:
         probe = create_device(options.protocol, **device_options)
     except UnknownProtocol as exc:

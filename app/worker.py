@@ -14,9 +14,11 @@ from app import jobs
 from drivers.capabilities import Capabilities
 from drivers.client import Client
 from drivers.errors import Aborted, CommunicationError, DeviceTimeout, MotionError, PortError
-from drivers.events import ErrorReport, Event, Undecodable
+from drivers.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.motion import Motion, MoveStart
 from drivers.parameters import Parameter
+from drivers.protocols.base import Setting
+from drivers.protocols.firmata import StepperVersion, configure_stepper
 from drivers.registry import create_protocol
 from drivers.traffic import Traffic
 from drivers.transport import Link, open_link
@@ -38,6 +40,9 @@ class DeviceInfo:
     capabilities: Capabilities
     variant: str = ""
     parameters: tuple[Parameter, ...] = ()
+    settings: tuple[Setting, ...] = ()
+    """The protocol's settings (ticks per mm...), with their values at connection."""
+    values: dict[str, float] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -45,6 +50,8 @@ class ConnectOptions:
     """How to talk to the device beyond port, protocol and baud."""
 
     variant: str = ""  # the protocol's wire variant ("": its default)
+    settings: dict[str, float] = field(default_factory=dict)
+    """The protocol's settings kept by the panel (ticks per mm...)."""
     parameters: dict[str, float] = field(default_factory=dict)
     """Values written earlier and kept by the panel (the device may have no read-back)."""
 
@@ -72,6 +79,7 @@ class SerialWorker(QObject):
     device_note = Signal(str)  # an unsolicited frame that could not be decoded
     parameter_written = Signal(object)  # ParameterWritten: the device confirmed a parameter
     job_timed_out = Signal(object)  # Job: the device did not answer it (before job_failed)
+    capabilities_changed = Signal(object)  # Capabilities, after new protocol settings
 
     def __init__(self, poll_moving_hz: float = 10.0, poll_idle_s: float = 1.0) -> None:
         super().__init__()
@@ -136,7 +144,8 @@ class SerialWorker(QObject):
         try:
             protocol = create_protocol(protocol_name, options.variant or None)
             protocol.assume_parameters(options.parameters)
-            link = open_link(url, baud)
+            protocol.configure(options.settings)
+            link = open_link(url, baud, dtr=protocol.capabilities.dtr)
         except MotionError as exc:
             self.state_changed.emit("error", str(exc))
             return
@@ -155,6 +164,7 @@ class SerialWorker(QObject):
         self._motion.travel = self._travel
         try:
             identity = self._motion.identify()
+            self._motion.start()
             self._refresh()
         except MotionError as exc:
             self._fail_connection(exc)
@@ -164,7 +174,14 @@ class SerialWorker(QObject):
         variant = protocol.variant.name if protocol.variant else ""
         self.device_ready.emit(
             DeviceInfo(
-                url, protocol_name, identity, protocol.capabilities, variant, protocol.parameters
+                url,
+                protocol_name,
+                identity,
+                protocol.capabilities,
+                variant,
+                protocol.parameters,
+                protocol.settings,
+                dict(protocol.values),
             )
         )
         self._next_poll = time.monotonic() + self.poll_idle_s
@@ -266,6 +283,20 @@ class SerialWorker(QObject):
             return None if reply is None else reply.value
         if isinstance(job, jobs.SetParameterJob):
             return motion.set_parameter(job.param_id, job.value)
+        if isinstance(job, jobs.ArcJob):
+            return motion.arc(job.arc)
+        if isinstance(job, jobs.DwellJob):
+            motion.dwell(job.ms)
+            return None
+        if isinstance(job, jobs.SettingsJob):
+            motion.client.protocol.configure(job.values)
+            motion.capabilities = motion.client.protocol.capabilities
+            self.capabilities_changed.emit(motion.capabilities)
+            return None
+        if isinstance(job, jobs.StepperConfigJob):
+            return configure_stepper(motion.client, job.steps_per_rev, job.pins)
+        if isinstance(job, jobs.StepperVersionJob):
+            return int(str(motion.client.execute(StepperVersion()).value))
         if isinstance(job, jobs.RefreshJob):
             self._refresh()
             return None
@@ -316,10 +347,13 @@ class SerialWorker(QObject):
         self.move_started.emit(start)
 
     def _on_event(self, event: Event, solicited: bool) -> None:
-        # Unsolicited text lines are in the console's RX already: not repeated as notes.
-        if solicited:
+        # Unsolicited text lines are in the console's RX already (as text): not repeated, except
+        # for a binary protocol, whose console shows hex (Firmata's STRING_DATA).
+        if solicited or self._motion is None:
             return
         if isinstance(event, ErrorReport):
             self.device_error.emit(event.message)
         elif isinstance(event, Undecodable):
             self.device_note.emit(str(event))
+        elif isinstance(event, TextLine) and not self._motion.capabilities.raw_text:
+            self.device_note.emit(f"the device says: {event.text}")

@@ -46,4 +46,9 @@ class Capabilities:
     speed_decimals: int = 2  # the decimals a speed may have (Visiomex: whole mm/s)
     speed_note: str = ""  # what setting the speed does on this device, where it is not obvious
     home_note: str = ""  # how Home is done, where the device has no homing of its own
+    speed_in_moves: bool = False  # the speed goes with every move (MoveTo/MoveBy.speed)
+    dtr: bool | None = None  # the DTR line the device needs when the port opens (None: as is)
+    startup_wait: float = 0.0  # seconds the device needs after the port opens (Arduino reset)
+    arcs: bool = False  # Arc moves
+    dwell: bool = False  # Dwell on the device
     notes: tuple[str, ...] = field(default_factory=tuple)

@@ -41,6 +41,7 @@ class Client:
         self._last_rx = clock()
         self._last_reply = 0.0
         self._last_write = -1e9
+        self._opened = clock()
         self.wait_hooks: list[Callable[[], None]] = []
         """Called every read while waiting (about every 20 ms), e.g. to hand on traffic."""
         self.abort = threading.Event()
@@ -58,6 +59,7 @@ class Client:
         self.poll()
         self._pace()
         self._write(data)
+        self.protocol.on_sent(command)
         silence = timeout if timeout is not None else (exchange.timeout or self.timeout)
         self._await(exchange, silence, max(extra, exchange.extra))
         self._last_reply = self.clock()
@@ -69,6 +71,7 @@ class Client:
         self.poll()
         self._pace()
         self._write(data)
+        self.protocol.on_sent(command)
         self._last_reply = self.clock()
 
     def send_raw(self, data: bytes) -> Reply | None:
@@ -95,6 +98,19 @@ class Client:
             events.append(event)
         return events
 
+    def listen(self, seconds: float) -> list[Event]:
+        """Read and decode for `seconds` (a write-only device's move under way); Aborted if the
+        owner gives up meanwhile."""
+        end = self.clock() + seconds
+        events: list[Event] = []
+        while True:
+            self._check_abort()
+            for event in self._read_events(wait=True):
+                self._notify(event, False)
+                events.append(event)
+            if self.clock() >= end:
+                return events
+
     def close(self) -> None:
         """Close the link."""
         self.link.close()
@@ -106,6 +122,10 @@ class Client:
     def _gap(self) -> float:
         """Seconds to wait before the next write may go."""
         gap = self.protocol.min_gap - (self.clock() - self._last_reply)
+        if self._last_write < 0 and self._last_rx <= self._opened:
+            # Nothing written or heard yet: a device that resets when the port opens (Arduino)
+            # needs its start-up time; anything it says first ends the wait.
+            gap = max(gap, self.protocol.capabilities.startup_wait - (self.clock() - self._opened))
         if self._last_rx <= self._last_write:
             # Unanswered: the device may still be reading that packet (Visiomex: it ends after
             # 1 s of silence, and a packet sent sooner merges with it).

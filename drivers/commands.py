@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 
@@ -37,11 +38,16 @@ class SetHome(Command):
 
 @dataclass(frozen=True)
 class MoveTo(Command):
-    """Absolute move, in the protocol's length unit (mm unless its capabilities say otherwise)."""
+    """Absolute move, in the protocol's length unit (mm unless its capabilities say otherwise).
+
+    `speed` (mm/s) is filled in where the device takes the speed with every move (pi-frame,
+    Firmata); None: the device's own speed.
+    """
 
     x: float
     y: float
     z: float = 0.0
+    speed: float | None = None
 
 
 @dataclass(frozen=True)
@@ -56,6 +62,7 @@ class MoveBy(Command):
     dy: float
     dz: float = 0.0
     kind: str = "linear"
+    speed: float | None = None  # as for MoveTo
 
 
 @dataclass(frozen=True)
@@ -95,6 +102,31 @@ class Dwell(Command):
     """Wait on the device for a time, in milliseconds."""
 
     ms: int
+
+
+@dataclass(frozen=True)
+class Arc(Command):
+    """A circular move in the XY plane around (cx, cy), from angle `start` to `end` (degrees,
+    counter-clockwise from +X), clockwise unless `ccw`; Z goes to `z` on the way."""
+
+    cx: float
+    cy: float
+    radius: float
+    start: float
+    end: float
+    ccw: bool
+    z: float = 0.0
+    speed: float | None = None  # mm/s along the arc
+
+    def point(self, angle: float) -> tuple[float, float]:
+        """The point of the circle at `angle` degrees."""
+        rad = math.radians(angle)
+        return (self.cx + self.radius * math.cos(rad), self.cy + self.radius * math.sin(rad))
+
+    def sweep(self) -> float:
+        """Degrees travelled (positive), a full circle when start equals end."""
+        turn = (self.end - self.start) % 360 if self.ccw else (self.start - self.end) % 360
+        return turn or 360.0
 
 
 @dataclass(frozen=True)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import math
 import time
@@ -12,7 +13,7 @@ from drivers import commands as cmd
 from drivers.capabilities import Completion
 from drivers.client import Client
 from drivers.errors import Aborted, BadInput, DeviceError, DeviceTimeout
-from drivers.events import PositionReport
+from drivers.events import ErrorReport, PositionReport
 from drivers.parameters import ParameterWritten
 from drivers.protocols.base import Reply
 from drivers.travel import Point, TravelLimits, check_resolution
@@ -33,14 +34,30 @@ class MoveStart:
     speed: float
     started: float
     duration: float
+    path: Callable[[float], Point] | None = None
+    """The point at a fraction 0..1 of the move (an arc); None: a straight line."""
 
     def estimate(self, now: float) -> Point:
-        """Where the stage should be at `now`, moving in a straight line at `speed`."""
+        """Where the stage should be at `now`, moving along its path at `speed`."""
         if self.duration <= 0 or now >= self.started + self.duration:
             return self.target
         f = max(0.0, (now - self.started) / self.duration)
+        if self.path is not None:
+            return self.path(f)
         x, y, z = (a + (b - a) * f for a, b in zip(self.start, self.target, strict=True))
         return (x, y, z)
+
+
+def arc_point(arc: cmd.Arc, z0: float, fraction: float) -> Point:
+    """The point a fraction 0..1 along an arc, Z going linearly from `z0` to the arc's Z."""
+    sweep = arc.sweep() if arc.ccw else -arc.sweep()
+    x, y = arc.point(arc.start + sweep * fraction)
+    return (x, y, z0 + (arc.z - z0) * fraction)
+
+
+def arc_points(arc: cmd.Arc, z0: float, count: int) -> list[Point]:
+    """`count` + 1 points along an arc, its ends included."""
+    return [arc_point(arc, z0, i / count) for i in range(count + 1)]
 
 
 class Motion:
@@ -51,7 +68,7 @@ class Motion:
         self.capabilities = client.protocol.capabilities
         self.position_listeners: list[Callable[[PositionReport], None]] = []
         self.poll_interval = POLL_INTERVAL
-        self.wait = wait or client.abort.wait
+        self.wait = wait or self._listen
         """Waits the given seconds; returns True when the wait was aborted."""
         self.travel: TravelLimits | None = None
         """Where moves may go; None: anywhere the device accepts."""
@@ -66,6 +83,23 @@ class Motion:
         if not self.capabilities.position_feedback:
             # Write-only devices: the position is what was commanded, from the power-on origin.
             self.last_position = PositionReport(0.0, 0.0, 0.0, measured=False)
+
+    def _listen(self, seconds: float) -> bool:
+        """Wait while reading the port: an error the device reports meanwhile (Firmata's
+        STRING_DATA) is raised; True when the wait was abandoned."""
+        try:
+            events = self.client.listen(seconds)
+        except Aborted:
+            return True
+        errors = [e for e in events if isinstance(e, ErrorReport)]
+        if errors:
+            raise DeviceError("the device reported: " + "; ".join(e.message for e in errors))
+        return False
+
+    def start(self) -> None:
+        """Send what the device needs once identified (the protocol's startup commands)."""
+        for command in self.client.protocol.startup_commands():
+            self.client.execute(command)
 
     def identify(self) -> str:
         """The device's identifier (the protocol's name where the device cannot say)."""
@@ -181,13 +215,20 @@ class Motion:
         return self._move(
             f"jog by ({dx:g}, {dy:g}, {dz:g}) {'mm' if kind == 'linear' else kind}",
             lambda here: (here.x + lx, here.y + ly, here.z + lz),
-            lambda here, t: (
-                command
-                if t == (here.x + lx, here.y + ly, here.z + lz)
-                else cmd.MoveBy(*self._deltas(here, t))
-            ),
-            check=command,
+            lambda here, t: self._relative(command, here, t, (lx, ly, lz)),
+            check=command if self.capabilities.relative_moves else cmd.MoveTo(dx, dy, dz),
         )
+
+    def _relative(
+        self, command: cmd.MoveBy, here: PositionReport, target: Point, deltas: Point
+    ) -> cmd.Command:
+        """The command for a relative move: as asked, or (clamped, or for a device that moves
+        only to absolute positions) rebuilt for the target."""
+        if not self.capabilities.relative_moves:
+            return cmd.MoveTo(*target)
+        if target == (here.x + deltas[0], here.y + deltas[1], here.z + deltas[2]):
+            return command
+        return cmd.MoveBy(*self._deltas(here, target))
 
     def home(self) -> PositionReport:
         """Go to (0, 0, 0); returns the position once there.
@@ -195,7 +236,7 @@ class Motion:
         A device with no homing command of its own is moved back by a relative move.
         """
         if not self.capabilities.homing:
-            if self.capabilities.relative_moves and not self.capabilities.position_feedback:
+            if not self.capabilities.position_feedback:  # the panel knows where (0, 0, 0) is
                 return self.move_to(0.0, 0.0, 0.0)
             raise BadInput(f"{self.client.protocol.name} has no way to go home")
         return self._move("go home", lambda here: (0.0, 0.0, 0.0), None, check=cmd.Home())
@@ -257,7 +298,26 @@ class Motion:
                 protocol.encode(command)
                 for listener in list(self.notice_listeners):
                     listener(note)
-        start = (here.x, here.y, here.z)
+        return self._run_move(command, (here.x, here.y, here.z), target)
+
+    def _with_speed(self, command: cmd.Command) -> cmd.Command:
+        """Where the speed goes with every move (pi-frame, Firmata): the speed set, filled in."""
+        if self.capabilities.speed_in_moves and getattr(command, "speed", 0.0) is None:
+            speed = self._speed if self._speed is not None else self.speed()
+            return dataclasses.replace(command, speed=speed)  # type: ignore[type-var]
+        return command
+
+    def _run_move(
+        self,
+        command: cmd.Command,
+        start: Point,
+        target: Point,
+        path: Callable[[float], Point] | None = None,
+    ) -> PositionReport:
+        """Send a move whose target is known, wait for its end, and report the position."""
+        protocol = self.client.protocol
+        command = self._with_speed(command)
+        protocol.encode(command)
         timing = protocol.move_timing(command, start, target)
         if timing is None:
             speed = self._speed if self._speed is not None else self.speed()
@@ -266,15 +326,20 @@ class Motion:
             delay, duration = timing
             speed = math.dist(start, target) / duration if duration > 0 else 0.0
         completion = self.capabilities.completion
-        waits_in_reply = completion is not Completion.ESTIMATE
-        started = MoveStart(start, target, speed, time.monotonic() + delay, duration)
+        started = MoveStart(start, target, speed, time.monotonic() + delay, duration, path)
         for move_listener in list(self.move_listeners):
             move_listener(started)
-        extra = (delay + duration) * ESTIMATE_MARGIN if waits_in_reply else 0.0
-        self.client.execute(command, extra=extra)
-        # Where the device never says when it is done (PROTOCOLS.md §4, §5): wait the estimate.
-        if completion is Completion.ESTIMATE and self.wait(delay + duration):
-            raise Aborted("abandoned: the connection is closing")
+        if completion is Completion.ESTIMATE:
+            # The device never says when it is done (PROTOCOLS.md §4, §5): each part is sent
+            # once the previous one should have ended (Firmata splits long moves).
+            parts = protocol.expand(command)
+            for part in parts:
+                self.client.send_only(part)
+                part_timing = protocol.move_timing(part, start, target) if len(parts) > 1 else None
+                if self.wait(sum(part_timing) if part_timing else delay + duration):
+                    raise Aborted("abandoned: the connection is closing")
+        else:
+            self.client.execute(command, extra=(delay + duration) * ESTIMATE_MARGIN)
         if not self.capabilities.position_feedback:
             confirmed = completion is Completion.FEEDBACK  # the device said the move ended
             self._set_position(PositionReport(*target, measured=False, confirmed=confirmed))
@@ -282,6 +347,35 @@ class Motion:
         if completion is Completion.REPLY:
             return self._wait_until_at(target, duration)
         return self.position()
+
+    def arc(self, arc: cmd.Arc) -> PositionReport:
+        """An arc: a straight move to its start point first where the stage is elsewhere."""
+        if not self.capabilities.arcs:
+            raise BadInput(f"{self.client.protocol.name} has no arc moves")
+        self.client.protocol.encode(self._with_speed(arc))  # refused before anything is sent
+        here = self.position()
+        sx, sy = arc.point(arc.start)
+        if math.dist((here.x, here.y), (sx, sy)) > (self.capabilities.resolution or 1e-6):
+            here = self.move_to(sx, sy, here.z)
+        ex, ey = arc.point(arc.end)
+        target = (ex, ey, arc.z)
+        if self.travel is not None:
+            for point in arc_points(arc, here.z, 72):
+                self.travel.apply(point, "arc")  # refuses an arc that leaves the box
+        z0 = here.z
+        return self._run_move(
+            arc, (here.x, here.y, here.z), target, lambda f: arc_point(arc, z0, f)
+        )
+
+    def dwell(self, ms: int) -> None:
+        """Wait on the device (its queue pauses) for `ms` milliseconds."""
+        if not self.capabilities.dwell:
+            raise BadInput(f"{self.client.protocol.name} has no dwell")
+        command = cmd.Dwell(ms)
+        self.client.protocol.encode(command)
+        self.client.send_only(command)
+        if self.wait(ms / 1000):
+            raise Aborted("abandoned: the connection is closing")
 
     def _wait_until_at(self, target: tuple[float, float, float], estimate: float) -> PositionReport:
         """After DONE: poll until the position reaches the target (non-blocking firmware style)."""

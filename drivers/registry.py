@@ -10,8 +10,10 @@ from drivers.protocols.base import Protocol
 PROTOCOLS: dict[str, tuple[str, str]] = {
     "coxiris": ("drivers.protocols.coxiris", "CoxirisProtocol"),
     "visiomex": ("drivers.protocols.visiomex", "VisiomexProtocol"),
+    "pi-frame": ("drivers.protocols.piframe", "PiFrameProtocol"),
+    "firmata": ("drivers.protocols.firmata", "FirmataProtocol"),
 }
-PLANNED = ("laser-frame", "pi-frame", "firmata")
+PLANNED = ("laser-frame",)
 
 
 def protocol_names() -> list[str]:

@@ -219,3 +219,27 @@ def overlay_buttons(parent: QWidget) -> list[QToolButton]:
         x += button.width() + 2
         buttons.append(button)
     return buttons
+
+
+def preview_array(points: object) -> np.ndarray:
+    """A planned path's points as (n, 3) float64 mm; None or [] give (0, 3).
+
+    Each point is (x, y, z); x and y must be finite, a missing (NaN) z counts as 0.
+    """
+    if points is None:
+        return np.zeros((0, 3))
+    array = np.asarray(points, dtype=float)
+    if array.size == 0:
+        return np.zeros((0, 3))
+    if array.ndim != 2 or array.shape[1] != 3:
+        raise ValueError(f"a preview is a list of (x, y, z) points, not shape {array.shape}")
+    if not np.isfinite(array[:, :2]).all():
+        raise ValueError("a preview's X and Y must be finite")
+    array = array.copy()
+    array[~np.isfinite(array[:, 2]), 2] = 0.0
+    return array
+
+
+def preview_tuples(array: np.ndarray) -> list[tuple[float, float, float]]:
+    """The rows of a preview array as (x, y, z) tuples."""
+    return [(float(x), float(y), float(z)) for x, y, z in array]

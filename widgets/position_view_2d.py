@@ -9,6 +9,7 @@ from PySide6.QtGui import QBrush, QResizeEvent
 from PySide6.QtWidgets import QHBoxLayout, QPushButton, QSplitter, QVBoxLayout, QWidget
 
 from widgets._axes import AXES, Box, target_point
+from widgets._gl_scene import preview_array, preview_tuples
 from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
@@ -23,6 +24,7 @@ TRAIL_COLOUR = "#5c6bc0"
 CURRENT_COLOUR = "#ffb300"
 TARGET_COLOUR = "#d81b60"
 WORKSPACE_COLOUR = "#26a69a"
+PREVIEW_COLOUR = "#ffcc80"  # light orange: a planned path, not yet run
 
 
 def _padded(values: np.ndarray) -> tuple[float, float]:
@@ -55,6 +57,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self._target: tuple[float, float, float] | None = None
         self._workspace: Box | None = None
         self._estimated = False
+        self._preview = np.zeros((0, 3))
 
         self.xy_plot = pg.PlotWidget()
         self.xy_plot.setObjectName("positionXYPlot")
@@ -73,6 +76,11 @@ class PositionView2D(BufferedViewMixin, QWidget):
         )
         self.workspace_outline.setVisible(False)
         xy.addItem(self.workspace_outline, ignoreBounds=True)  # fitted by _follow_xy, not auto
+        self.preview_curve = pg.PlotCurveItem(
+            pen=pg.mkPen(PREVIEW_COLOUR, width=1.5, style=Qt.PenStyle.DashLine)
+        )
+        self.preview_curve.setVisible(False)
+        xy.addItem(self.preview_curve, ignoreBounds=True)  # fitted by _follow_xy, not auto
         self.trail = xy.plot(pen=pg.mkPen(TRAIL_COLOUR, width=1.5), name="trail")
         self.current_marker = pg.ScatterPlotItem(
             size=12, brush=pg.mkBrush(CURRENT_COLOUR), pen=pg.mkPen("k", width=1)
@@ -219,6 +227,9 @@ class PositionView2D(BufferedViewMixin, QWidget):
         if self._target is not None:
             lows.append(np.array(self._target[:2]))
             highs.append(np.array(self._target[:2]))
+        if len(self._preview):
+            lows.append(self._preview_bounds[0])
+            highs.append(self._preview_bounds[1])
         if not lows and self._workspace is None:
             return
         xy = self.xy_plot.getPlotItem()
@@ -294,6 +305,28 @@ class PositionView2D(BufferedViewMixin, QWidget):
         """The travel box shown, or None."""
         return self._workspace
 
+    def set_preview(self, points: object) -> None:
+        """Draw a planned path, dashed, in the XY plot: a list of (x, y, z) in mm; None or []
+        removes it.
+
+        Like the target, while following the XY view widens to hold it.
+        """
+        self._preview = preview_array(points)
+        if not len(self._preview):
+            self.preview_curve.setData([], [])
+            self.preview_curve.setVisible(False)
+            return
+        xy = self._preview[:, :2]
+        self._preview_bounds = (xy.min(axis=0), xy.max(axis=0))
+        self.preview_curve.setData(xy[:, 0], xy[:, 1])
+        self.preview_curve.setVisible(True)
+        if self._following:
+            self._follow_xy(self.buffer.view())
+
+    def preview(self) -> list[tuple[float, float, float]]:
+        """The planned path shown, as (x, y, z) points in mm; [] when none."""
+        return preview_tuples(self._preview)
+
     def set_estimated(self, estimated: bool) -> None:
         """Draw the current-position marker hollow while the position is estimated, not read."""
         self._estimated = bool(estimated)
@@ -319,7 +352,8 @@ class PositionView2D(BufferedViewMixin, QWidget):
         for plot in (self.xy_plot, self.time_plot):
             plot.getPlotItem().disableAutoRange()
         rows = self.buffer.view()
-        if len(rows) or self._target is not None or self._workspace is not None:
+        fit = self._target is not None or self._workspace is not None or len(self._preview)
+        if len(rows) or fit:
             self._follow_xy(rows, force=True)
         else:
             self.xy_plot.getPlotItem().setRange(xRange=(-1, 1), yRange=(-1, 1), padding=0)

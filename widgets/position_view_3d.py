@@ -36,6 +36,8 @@ from widgets._gl_scene import (
     fit_camera,
     grid_for,
     overlay_buttons,
+    preview_array,
+    preview_tuples,
 )
 from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
@@ -57,6 +59,7 @@ ESTIMATED_COLOUR = (*CURRENT_COLOUR[:3], 0.5)  # a position estimated, not measu
 AXIS_COLOURS = ((0.90, 0.22, 0.21, 1.0), (0.26, 0.63, 0.28, 1.0), (0.12, 0.53, 0.90, 1.0))
 GRID_COLOUR = (1.0, 1.0, 1.0, 0.3)
 WORKSPACE_COLOUR = (0.30, 0.80, 0.78, 0.9)
+PREVIEW_COLOUR = (1.0, 0.80, 0.50, 1.0)  # light orange (#ffcc80): a planned path, not yet run
 BACKGROUND = (24, 24, 28, 255)
 SCALE_COLOUR = (200, 200, 200)
 
@@ -103,6 +106,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self.buffer = buffer
         self._target: tuple[float, float, float] | None = None
         self._workspace: Box | None = None
+        self._preview = np.zeros((0, 3))
         self._current: np.ndarray | None = None
         self._follow = False
         self._estimated = False
@@ -143,6 +147,9 @@ class PositionView3D(BufferedViewMixin, QWidget):
         for item in (self.trail, self.current_marker, self.target_marker):
             item.setVisible(False)
             self.addItem(item)
+        self.preview_item = _lines(PREVIEW_COLOUR, 1.5, mode="line_strip")
+        self.preview_item.setVisible(False)
+        self.addItem(self.preview_item)
 
         self._make_buttons()
         self.start_refresh_timer()
@@ -198,6 +205,22 @@ class PositionView3D(BufferedViewMixin, QWidget):
             self.workspace_item.setData(pos=box_edges(box))
         self._fit_grid()
         self._redraw()
+
+    def set_preview(self, points: object) -> None:
+        """Draw a planned path (a list of (x, y, z) in mm) as a light orange line; None or []
+        removes it. The grid grows to hold it."""
+        self._preview = preview_array(points)
+        shown = len(self._preview) >= 2
+        self.preview_item.setVisible(shown)
+        if shown:
+            self.preview_item.setData(pos=self._preview.astype(np.float32))
+        if not self._grid.contains(self._preview):
+            self._fit_grid()
+        self._redraw()
+
+    def preview(self) -> list[tuple[float, float, float]]:
+        """The planned path shown, as (x, y, z) points in mm; [] when none."""
+        return preview_tuples(self._preview)
 
     def grid_spacing(self) -> float:
         """The distance between grid lines, in mm."""
@@ -288,6 +311,9 @@ class PositionView3D(BufferedViewMixin, QWidget):
             parts.append(np.array([self._target], dtype=np.float32))
         if self._workspace is not None:
             parts.append(box_corners(self._workspace))
+        if len(self._preview):
+            low, high = self._preview.min(axis=0), self._preview.max(axis=0)
+            parts.append(box_corners(tuple(zip(low, high, strict=True))))
         return np.vstack(parts)
 
     def _fit_points(self, data_only: bool) -> tuple[np.ndarray, np.ndarray]:
@@ -426,6 +452,13 @@ class PositionView3DPlaceholder(QLabel):
 
     def set_workspace(self, box: Box | None) -> None:
         """Nothing to draw."""
+
+    def set_preview(self, points: object) -> None:
+        """Nothing to draw."""
+
+    def preview(self) -> list[tuple[float, float, float]]:
+        """Nothing drawn: []."""
+        return []
 
     def grid_spacing(self) -> float:
         """No grid: 0.0."""

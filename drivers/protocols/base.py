@@ -17,6 +17,26 @@ Point = tuple[float, float, float]
 
 
 @dataclass(frozen=True)
+class Setting:
+    """A number the panel keeps for a protocol (e.g. pi-frame ticks per mm), with its range."""
+
+    name: str
+    unit: str
+    default: float
+    minimum: float
+    maximum: float
+    description: str
+
+    def check(self, value: float) -> float:
+        """The value if it is in range; BadInput naming the setting, its unit and its range."""
+        if not isinstance(value, (int, float)) or not self.minimum <= value <= self.maximum:
+            raise BadInput(
+                f"{self.name} {value} refused: {self.minimum:g} to {self.maximum:g} {self.unit}"
+            )
+        return float(value)
+
+
+@dataclass(frozen=True)
 class Variant:
     """A wire profile of a protocol (e.g. Visiomex's 12-character board): name and line rate."""
 
@@ -116,9 +136,34 @@ class Protocol(ABC):
     variants: ClassVar[tuple[Variant, ...]] = ()
     #: Numbered device parameters (empty: none).
     parameters: ClassVar[tuple[Parameter, ...]] = ()
+    #: Numbers the panel keeps for the protocol (ticks per mm...), set with `configure`.
+    settings: ClassVar[tuple[Setting, ...]] = ()
 
     def __init__(self, variant: str | None = None) -> None:
         self.variant = self._choose_variant(variant)
+        self.values: dict[str, float] = {s.name: s.default for s in self.settings}
+
+    def configure(self, values: dict[str, float]) -> None:
+        """Take new setting values (each checked, none taken if one is refused)."""
+        known = {s.name: s for s in self.settings}
+        checked = {}
+        for name, value in values.items():
+            if name not in known:
+                raise BadInput(f"{self.name} has no setting {name!r}")
+            checked[name] = known[name].check(value)
+        self.values.update(checked)
+        self.configured()
+
+    def configured(self) -> None:
+        """Settings changed: recompute what depends on them (capabilities, limits)."""
+
+    def startup_commands(self) -> list[Command]:
+        """Commands to send once the device is identified (e.g. a Firmata stepper's config,
+        which an Arduino forgets at every reset)."""
+        return []
+
+    def on_sent(self, command: Command) -> None:
+        """`command` went on the wire (a write-only device's commanded state follows it)."""
 
     @classmethod
     def _choose_variant(cls, name: str | None) -> Variant | None:

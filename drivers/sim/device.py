@@ -27,6 +27,7 @@ class SimulatedDevice(ABC):
     protocol: ClassVar[str]
     default_baud: ClassVar[int] = 115200
     rx_capacity: ClassVar[int] = 63  # Arduino's 64-byte ring buffer holds 63
+    resets_on_open: ClassVar[bool] = False  # an Arduino resets when its port opens (DTR)
 
     def __init__(self, clock: Clock = monotonic, baud: int | None = None) -> None:
         self.clock = clock
@@ -41,6 +42,13 @@ class SimulatedDevice(ABC):
     # -- host side -------------------------------------------------------------------------
     def boot(self) -> None:
         """Power-on: schedule whatever the firmware prints at start."""
+
+    def power_cycle(self) -> None:
+        """A reset (an Arduino's, when its port opens): what was in flight is gone, then boot."""
+        self._rx.clear()
+        self._tx.clear()
+        self.busy_until = 0.0
+        self.boot()
 
     def receive(self, data: bytes) -> None:
         """Bytes written by the host at the current time."""

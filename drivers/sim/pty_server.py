@@ -19,6 +19,7 @@ log = logging.getLogger(__name__)
 
 USB_FRAME = 0.002  # deliver paced output in chunks, like a USB-serial adapter
 IDLE_WAKE = 0.5
+CLIENT_POLL = 0.01  # seconds between looks for a client opening a resetting device's port
 
 
 class PtyServer:
@@ -31,6 +32,12 @@ class PtyServer:
         tty.setraw(self.slave)
         os.set_blocking(self.master, False)
         self.path = os.ttyname(self.slave)
+        self.client_open = not device.resets_on_open
+        if device.resets_on_open:
+            # Without a slave descriptor of our own, the master reads EIO until a client opens
+            # the path: that is how an open is seen, and the board resets then.
+            os.close(self.slave)
+            self.slave = -1
         self._stop = threading.Event()
         self._wake_r, self._wake_w = os.pipe()
         self._unsent = bytearray()
@@ -45,6 +52,9 @@ class PtyServer:
         """Move bytes between the pty and the device until stopped."""
         self.device.boot()
         while not self._stop.is_set():
+            if not self.client_open:
+                self._wait_for_client()
+                continue
             self._unsent += self.device.read_output()
             self._flush()
             due = self.device.next_due()
@@ -56,10 +66,32 @@ class PtyServer:
                 self._read()
         self.close()
 
+    def _wait_for_client(self) -> None:
+        """No client has the port open: look again soon; on an open, the board resets."""
+        data = b""
+        try:
+            data = os.read(self.master, 4096)
+        except OSError as exc:
+            if exc.errno == errno.EIO:
+                self._stop.wait(CLIENT_POLL)  # still closed
+                return
+            if exc.errno != errno.EAGAIN:
+                raise
+        self.client_open = True
+        self._unsent.clear()
+        self.device.power_cycle()
+        log.debug("a client opened %s: the device resets", self.path)
+        if data:  # written at once: it reaches a board that is still resetting
+            self._record(RX, data)
+            self.device.receive(data)
+
     def _read(self) -> None:
         try:
             data = os.read(self.master, 4096)
         except OSError as exc:
+            if exc.errno == errno.EIO and self.device.resets_on_open:
+                self.client_open = False  # the client closed the port
+                return
             if exc.errno in (errno.EAGAIN, errno.EIO):
                 return
             raise

@@ -12,6 +12,8 @@ from drivers.sim.device import SimulatedDevice
 SIMULATORS: dict[str, tuple[str, str]] = {
     "coxiris": ("drivers.sim.coxiris_device", "CoxirisDevice"),
     "visiomex": ("drivers.sim.visiomex_device", "VisiomexDevice"),
+    "pi-frame": ("drivers.sim.piframe_device", "PiFrameDevice"),
+    "firmata": ("drivers.sim.firmata_device", "FirmataDevice"),
 }
 
 

@@ -2,7 +2,8 @@
 
 Options: `instant=0|1`, `mute=0|1`, `line_timing=0|1` (emulate the baud rate, on by default);
 COXIRIS: `blocking=0|1`, `speed=S`, `fault=TEXT` (repeatable, CHECK_ERRORS);
-Visiomex: `variant=seed|prefixed|board12`, `bugs=0|1` (the public firmware's bugs, on by default).
+Visiomex: `variant=seed|prefixed|board12`, `bugs=0|1` (the public firmware's bugs, on by default);
+Firmata: `reset_delay=S` (seconds the board ignores input after the port opens).
 Only the options given are passed to the device.
 """
 
@@ -41,6 +42,8 @@ def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
                 options[key] = flag
         elif key == "speed":
             options["speed"] = float(value)
+        elif key == "reset_delay":
+            options["reset_delay"] = float(value)
         elif key == "variant":
             options["variant"] = value
         elif key == "fault":

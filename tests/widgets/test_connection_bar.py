@@ -173,7 +173,7 @@ def test_a_port_with_options_stays_after_refreshes_and_states(bar: ConnectionBar
     edit.clear()
     qtbot.keyClicks(edit, "sim://coxiris?mute=1")  # completed inline from the list on the way
     assert bar.port() == "sim://coxiris?mute=1"
-    assert bar.description_label.toolTip() == "simulated coxiris device"  # the port's, options aside
+    assert bar.description_label.toolTip() == "simulated coxiris device"  # options aside
     for state in ("connecting", "connected", "error", "disconnected"):
         bar.set_ports(ports)  # every 2 s
         assert bar.port() == "sim://coxiris?mute=1"

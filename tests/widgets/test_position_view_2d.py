@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
 from PySide6.QtCore import QPointF, QRectF, Qt
@@ -341,3 +343,91 @@ def test_a_position_without_y_does_not_break_the_fit(view: PositionView2D, buffe
     (x0, x1), (y0, y1) = view.xy_plot.getPlotItem().viewRange()
     assert np.isfinite([x0, x1, y0, y1]).all()
     assert x0 < 300.0 < x1
+
+
+# -- preview of a planned path ---------------------------------------------------------------
+def _quarter_circle(radius: float = 5.0) -> list[tuple[float, float, float]]:
+    angles = np.linspace(0.0, np.pi / 2, 50)
+    return [(radius * np.cos(a), radius * np.sin(a), 0.1 * i) for i, a in enumerate(angles)]
+
+
+def test_preview_set_and_cleared(view: PositionView2D) -> None:
+    assert view.preview() == []
+    assert not view.preview_curve.isVisible()
+    points = _quarter_circle()
+    view.set_preview(points)
+    assert np.allclose(view.preview(), points)
+    assert all(isinstance(p, tuple) and len(p) == 3 for p in view.preview())
+    assert view.preview_curve.isVisible()
+    x, y = view.preview_curve.getData()
+    assert x.tolist() == pytest.approx([p[0] for p in points])
+    assert y.tolist() == pytest.approx([p[1] for p in points])
+    pen = view.preview_curve.opts["pen"]
+    assert pen.style() == Qt.PenStyle.DashLine
+    others = {
+        view.trail.opts["pen"].color().name(),
+        view.workspace_outline.opts["pen"].color().name(),
+        CURRENT_COLOUR,
+    }
+    assert pen.color().name() not in others
+    vb = view.xy_plot.getPlotItem().getViewBox()
+    assert view.preview_curve not in vb.addedItems  # no part in pyqtgraph's auto-range
+    view.set_preview([])
+    assert view.preview() == []
+    assert not view.preview_curve.isVisible()
+    view.set_preview(points)
+    view.set_preview(None)
+    assert view.preview() == []
+    assert not view.preview_curve.isVisible()
+    x, _ = view.preview_curve.getData()
+    assert x is None or len(x) == 0
+    assert view.trail.isVisible()  # the rest of the plot is untouched
+
+
+def test_preview_rejects_bad_points(view: PositionView2D) -> None:
+    with pytest.raises(ValueError):
+        view.set_preview([(1.0, 2.0)])
+    with pytest.raises(ValueError):
+        view.set_preview([(float("nan"), 2.0, 0.0), (1.0, 2.0, 0.0)])
+    view.set_preview([(0.0, 0.0, float("nan")), (1.0, 1.0, float("nan"))])  # a device without Z
+    assert view.preview() == [(0.0, 0.0, 0.0), (1.0, 1.0, 0.0)]
+
+
+def test_a_preview_outside_the_view_widens_it(view: PositionView2D) -> None:
+    view.refresh()
+    far = [(300.0 + x, -200.0 + y, z) for x, y, z in _quarter_circle(20.0)]
+    view.set_preview(far)
+    rows = view.buffer.view()
+    xs, ys = [p[0] for p in far], [p[1] for p in far]
+    _assert_clear_of_the_edges(view, [*rows[:, 1], *xs], [*rows[:, 2], *ys])
+    before = view.xy_plot.getPlotItem().viewRange()
+    view.refresh()
+    assert view.xy_plot.getPlotItem().viewRange() == before
+    view.reset_view()
+    _assert_clear_of_the_edges(view, [*rows[:, 1], *xs], [*rows[:, 2], *ys])
+
+
+def test_preview_is_drawn(view: PositionView2D, qtbot) -> None:
+    view.resize(900, 500)
+    view.show()
+    qtbot.waitExposed(view)
+    view.set_preview([(x, 30.0, 0.0) for x in np.linspace(-20.0, 20.0, 81)])
+    view.reset_view()
+    colour = view.preview_curve.opts["pen"].color()
+    image = view.xy_plot.grab().toImage()
+    ratio = image.devicePixelRatio()
+    vb = view.xy_plot.getPlotItem().getViewBox()
+    left = view.xy_plot.mapFromScene(vb.mapViewToScene(QPointF(-15.0, 30.0)))
+    right = view.xy_plot.mapFromScene(vb.mapViewToScene(QPointF(15.0, 30.0)))
+    drawn = []
+    for px in range(left.x(), right.x()):  # every pixel along the line
+        near = False
+        for dy in (-1, 0, 1):
+            found = image.pixelColor(int(px * ratio), int((left.y() + dy) * ratio))
+            pairs = zip(found.getRgb()[:3], colour.getRgb()[:3], strict=True)
+            near = near or sum(abs(a - b) for a, b in pairs) < 90
+        drawn.append(near)
+    assert len(drawn) > 50
+    assert sum(drawn) > len(drawn) / 3  # drawn
+    gaps = sum(1 for a, b in itertools.pairwise(drawn) if a and not b)
+    assert gaps >= 5, drawn  # dashed: the line breaks again and again

@@ -1,0 +1,291 @@
+"""Firmata with the FirmataPlus stepper extension (PROTOCOLS.md §5), one motor as the X axis.
+
+Stepper messages are SysEx `F0 72 <sub> ... F7` with 7-bit data: config (steps per revolution,
+2 or 4 pins), step (speed in rpm on 21 bits, steps on 14 bits, direction), library version. The
+firmware sends no completion: a move is estimated from speed and steps, and a move longer than
+16383 steps is split into messages, each sent once the previous one should have ended.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+from drivers.capabilities import Capabilities, Completion
+from drivers.client import Client
+from drivers.commands import Command, GetId, MoveBy, Raw, SetSpeed
+from drivers.errors import BadInput, DeviceError
+from drivers.events import ErrorReport, Event, Feedback, TextLine
+from drivers.framers.sysex import SysexFramer
+from drivers.protocols.base import Exchange, Point, Protocol, Setting
+from drivers.protocols.piframe import NoReply
+
+START, END = 0xF0, 0xF7
+REPORT_VERSION = 0xF9
+REPORT_FIRMWARE = 0x79
+STRING_DATA = 0x71
+STEPPER_DATA = 0x72
+CAPABILITY_RESPONSE, ANALOG_MAPPING_RESPONSE = 0x6C, 0x6A
+CONFIGURE, STEP, LIBRARY_VERSION = 0x00, 0x01, 0x02
+MAX_STEPS = 16383  # 14 bits: PyMata masks more (a bug); the driver splits instead
+MAX_RPM = 2**21 - 1
+USEFUL_RPM = 1000  # the speed control's top: Arduino's Stepper.step cannot go much faster
+STEPS_PER_REV = Setting("steps_per_rev", "steps/rev", 200, 1, MAX_STEPS, "Motor steps per turn")
+STEPS_PER_MM = Setting("steps_per_mm", "steps/mm", 80, 0.001, 1e6, "Motor steps per millimetre")
+PINS = tuple(
+    Setting(f"pin{i}", "", -1, -1, 127, f"Motor control pin {i} (-1: none)") for i in range(1, 5)
+)
+IDENTIFY_TIMEOUT = 3.0  # s for the version and firmware name, after the board's reset
+
+CAPABILITIES = Capabilities(
+    axes=("x",),
+    default_baud=57600,
+    absolute_moves=False,
+    homing=False,
+    set_home=False,
+    speed_readback=False,
+    position_feedback=False,
+    completion=Completion.ESTIMATE,
+    raw_text=False,
+    raw_line_end="",
+    speed_in_moves=True,
+    startup_wait=2.0,  # an Arduino resets when the port opens; its bootloader runs ~2 s
+    home_note="Moves back to 0 by a relative move: the board has no homing",
+    notes=("no completion message: moves are estimated from speed and steps",),
+)
+
+
+@dataclass(frozen=True)
+class StepperConfig(Command):
+    """Configure the motor: steps per revolution and its 2 or 4 control pins."""
+
+    steps_per_rev: int
+    pins: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class StepperStep(Command):
+    """Step the motor: speed in rpm, steps signed (negative: reverse)."""
+
+    rpm: int
+    steps: int
+
+
+@dataclass(frozen=True)
+class StepperVersion(Command):
+    """Ask the stepper library's version."""
+
+
+def step_parts(rpm: int, steps: int) -> list[StepperStep]:
+    """Step messages of at most 16383 steps each, summing to `steps` (never masked)."""
+    sign = 1 if steps >= 0 else -1
+    parts = []
+    left = abs(steps)
+    while left > 0:
+        chunk = min(left, MAX_STEPS)
+        parts.append(StepperStep(rpm, sign * chunk))
+        left -= chunk
+    return parts
+
+
+def seven_bit_pairs(text: bytes) -> bytes:
+    """Firmata's string encoding: every byte as its low 7 bits, then its high bit."""
+    return bytes(b for c in text for b in (c & 0x7F, c >> 7))
+
+
+def from_pairs(data: bytes) -> str:
+    """Bytes sent as 7-bit pairs, back to text."""
+    chars = bytes((data[i] | (data[i + 1] << 7)) & 0xFF for i in range(0, len(data) - 1, 2))
+    return chars.decode("latin-1")
+
+
+def _check(value: int, low: int, high: int, what: str) -> int:
+    if not isinstance(value, int) or not low <= value <= high:
+        raise BadInput(f"{what} {value} refused: the stepper takes {low} to {high}")
+    return value
+
+
+class _Reply(Exchange):
+    """Waits for one kind of message: the firmware name (identity) or the library version."""
+
+    def __init__(self, command: Command, code: str, timeout: float | None = None) -> None:
+        super().__init__(command)
+        self.code = code
+        self.timeout = timeout
+        self.version = ""
+
+    def handle(self, event: Event) -> bool:
+        """The wanted message ends it; a STRING_DATA error fails it."""
+        if isinstance(event, ErrorReport):
+            self.fail(DeviceError(f"the board answered: {event.message}"))
+            return True
+        if isinstance(event, Feedback) and event.code == "version":
+            self.version = event.meaning.removeprefix("Firmata protocol ")
+            return self.code == "version"
+        if isinstance(event, Feedback) and event.code == self.code:
+            self.finish(event.meaning)
+            return True
+        return False
+
+
+class FirmataProtocol(Protocol):
+    """PyMata-compatible stepper messages, plus what the base protocol sends."""
+
+    name = "firmata"
+    capabilities = CAPABILITIES
+    settings = (STEPS_PER_REV, STEPS_PER_MM, *PINS)
+
+    def __init__(self, variant: str | None = None) -> None:
+        super().__init__(variant)
+        self.configured()
+
+    def configured(self) -> None:
+        """Resolution and speed range follow steps per mm and per revolution."""
+        per_rpm = self.values["steps_per_rev"] / 60 / self.values["steps_per_mm"]  # mm/s per rpm
+        self.capabilities = dataclasses.replace(
+            CAPABILITIES,
+            resolution=1 / self.values["steps_per_mm"],
+            speed_range=(per_rpm, USEFUL_RPM * per_rpm),
+        )
+
+    def pins(self) -> tuple[int, ...]:
+        """The motor's control pins as configured (empty: not configured)."""
+        return tuple(int(self.values[p.name]) for p in PINS if self.values[p.name] >= 0)
+
+    def startup_commands(self) -> list[Command]:
+        """The saved stepper config, sent again after the board's reset, then confirmed."""
+        pins = self.pins()
+        if len(pins) not in (2, 4):
+            return []
+        return [StepperConfig(int(self.values["steps_per_rev"]), pins), StepperVersion()]
+
+    def new_framer(self) -> SysexFramer:
+        """SysEx and the base protocol's short messages."""
+        return SysexFramer()
+
+    def rpm(self, speed: float) -> int:
+        """The motor speed in rpm for `speed` mm/s."""
+        steps_per_s = speed * self.values["steps_per_mm"]
+        return _check(
+            max(1, round(steps_per_s * 60 / self.values["steps_per_rev"])),
+            1,
+            MAX_RPM,
+            "speed (rpm)",
+        )
+
+    def steps(self, mm: float) -> int:
+        """Whole steps for a distance; BadInput where it is finer than one step."""
+        steps = mm * self.values["steps_per_mm"]
+        if abs(steps - round(steps)) > 1e-6 * max(1.0, abs(steps)):
+            raise BadInput(
+                f"{mm:g} mm refused: the motor moves in steps of "
+                f"{1 / self.values['steps_per_mm']:g} mm ({self.values['steps_per_mm']:g} steps/mm)"
+            )
+        return round(steps)
+
+    def expand(self, command: Command) -> list[Command]:
+        """A move as step messages of at most 16383 steps; a speed is kept, not sent."""
+        if isinstance(command, MoveBy):
+            if command.dy or command.dz:
+                raise BadInput("the Firmata stepper is one axis (X): Y and Z must be 0")
+            rpm = self.rpm(command.speed or self.capabilities.default_speed)
+            return list(step_parts(rpm, self.steps(command.dx)))
+        if isinstance(command, SetSpeed):
+            return []  # the speed goes with every step message
+        return [command]
+
+    def encode(self, command: Command) -> bytes:
+        """The bytes of a command (a move: all its step messages)."""
+        if isinstance(command, GetId):
+            return bytes((REPORT_VERSION, START, REPORT_FIRMWARE, END))
+        if isinstance(command, StepperConfig):
+            _check(command.steps_per_rev, 1, MAX_STEPS, "steps per revolution")
+            if len(command.pins) not in (2, 4):
+                raise BadInput(f"{len(command.pins)} pins refused: a stepper has 2 or 4 pins")
+            for pin in command.pins:
+                _check(pin, 0, 127, "pin")
+            spr = command.steps_per_rev
+            return bytes((START, STEPPER_DATA, CONFIGURE, spr & 0x7F, spr >> 7, *command.pins, END))
+        if isinstance(command, StepperStep):
+            rpm = _check(command.rpm, 1, MAX_RPM, "speed (rpm)")
+            steps = _check(abs(command.steps), 0, MAX_STEPS, "steps")
+            direction = 1 if command.steps >= 0 else 0
+            speed = (rpm & 0x7F, (rpm >> 7) & 0x7F, rpm >> 14)
+            return bytes(
+                (START, STEPPER_DATA, STEP, *speed, steps & 0x7F, steps >> 7, direction, END)
+            )
+        if isinstance(command, StepperVersion):
+            return bytes((START, STEPPER_DATA, LIBRARY_VERSION, END))
+        if isinstance(command, MoveBy):
+            return b"".join(self.encode(part) for part in self.expand(command))
+        if isinstance(command, Raw):
+            return command.data
+        raise BadInput(f"Firmata has no message for {type(command).__name__}")
+
+    def decode(self, frame: bytes) -> list[Event]:
+        """Every Firmata message named; STRING_DATA as the board's own words."""
+        status = frame[0]
+        if status == REPORT_VERSION and len(frame) == 3:
+            return [Feedback("version", frame, f"Firmata protocol {frame[1]}.{frame[2]}")]
+        if 0xE0 <= status <= 0xEF and len(frame) == 3:
+            return [
+                Feedback("analog", frame, f"analog pin {status & 0x0F}: {frame[1] | frame[2] << 7}")
+            ]
+        if 0x90 <= status <= 0x9F and len(frame) == 3:
+            bits = frame[1] | frame[2] << 7
+            return [Feedback("digital", frame, f"digital port {status & 0x0F}: {bits:08b}")]
+        if status != START or len(frame) < 3:
+            return [Feedback("firmata", frame, f"message {frame.hex(' ').upper()}")]
+        command, data = frame[1], frame[2:-1]
+        if command == STRING_DATA:
+            text = from_pairs(data)
+            return [ErrorReport(text, "STRING_DATA") if "error" in text.lower() else TextLine(text)]
+        if command == REPORT_FIRMWARE and len(data) >= 2:
+            name = from_pairs(data[2:])
+            return [Feedback("firmware", frame, f"{name} {data[0]}.{data[1]}")]
+        if command == STEPPER_DATA and len(data) == 2:
+            return [Feedback("stepper_version", frame, str(data[0] | data[1] << 7))]
+        names = {
+            CAPABILITY_RESPONSE: "capability response",
+            ANALOG_MAPPING_RESPONSE: "analog mapping",
+        }
+        return [Feedback("sysex", frame, names.get(command, f"SysEx {command:#04x}"))]
+
+    def exchange(self, command: Command) -> Exchange:
+        """Identity: the firmware name; config and version: the library version reply."""
+        if isinstance(command, GetId):
+            return _Reply(command, "firmware", IDENTIFY_TIMEOUT)
+        if isinstance(command, StepperVersion):
+            return _Reply(command, "stepper_version")
+        return NoReply(command)
+
+    def command_name(self, command: Command) -> str:
+        """What the board was asked, in Firmata's words."""
+        names = {
+            GetId: "the version and firmware name (is a Firmata board on this port?)",
+            StepperConfig: "STEPPER_CONFIGURE",
+            StepperVersion: "STEPPER_LIBRARY_VERSION",
+            StepperStep: "STEPPER_STEP",
+        }
+        return names.get(type(command), type(command).__name__)
+
+    def move_timing(
+        self, command: Command, start: Point, target: Point
+    ) -> tuple[float, float] | None:
+        """Steps at rpm × steps per revolution / 60 steps a second."""
+        parts = self.expand(command) if isinstance(command, MoveBy) else [command]
+        if not all(isinstance(p, StepperStep) for p in parts):
+            return None
+        spr = self.values["steps_per_rev"]
+        return 0.0, sum(abs(p.steps) * 60 / (p.rpm * spr) for p in parts)  # type: ignore[attr-defined]
+
+
+def configure_stepper(client: Client, steps_per_rev: int, pins: tuple[int, ...]) -> int:
+    """Configure the motor, then ask the library version: the board answers it once the config
+    is taken, and a wrong config's STRING_DATA error comes before, failing it. Returns the
+    version."""
+    client.execute(StepperConfig(steps_per_rev, pins))
+    version = int(str(client.execute(StepperVersion()).value))
+    saved = {f"pin{i}": float(pins[i - 1]) if i <= len(pins) else -1.0 for i in range(1, 5)}
+    client.protocol.configure({"steps_per_rev": steps_per_rev, **saved})
+    return version

@@ -1,0 +1,349 @@
+"""Type an arc in the XY plane (centre, radius, angles, direction, final Z) and run it."""
+
+from __future__ import annotations
+
+import itertools
+import logging
+import math
+
+from PySide6.QtCore import Signal
+from PySide6.QtWidgets import (
+    QButtonGroup,
+    QCheckBox,
+    QDoubleSpinBox,
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QRadioButton,
+    QVBoxLayout,
+    QWidget,
+)
+
+from widgets._axes import Box, decimals_for
+from widgets._buttons import make_button
+
+log = logging.getLogger(__name__)
+
+UNBOUNDED_MM = 99999.0  # the fields' range: the travel box is checked on the whole arc instead
+MAX_POINTS = 720
+POINTS_PER_DEGREE = 2
+TOLERANCE_MM = 1e-6
+ARC_KEYS = ("cx", "cy", "radius", "start", "end", "ccw", "z")
+
+Point = tuple[float, float, float]
+
+
+def arc_sweep(start: float, end: float, ccw: bool) -> float:
+    """Degrees swept from `start` to `end` (0 < sweep <= 360); end == start is a full circle."""
+    sweep = ((end - start) if ccw else (start - end)) % 360.0
+    return 360.0 if sweep < 1e-9 or sweep > 360.0 - 1e-9 else sweep
+
+
+def arc_path(
+    cx: float,
+    cy: float,
+    radius: float,
+    start: float,
+    end: float,
+    ccw: bool,
+    z_start: float,
+    z_end: float,
+) -> list[Point]:
+    """Points (x, y, z) in mm from the start to the end angle, angles in degrees from +X.
+
+    CCW means increasing angle (counter-clockwise seen from above). At least 2 points per degree
+    swept, at most 720; Z goes linearly from `z_start` to `z_end`. Empty when radius <= 0.
+    """
+    if not radius > 0 or not all(map(math.isfinite, (cx, cy, radius, start, end))):
+        return []
+    sweep = arc_sweep(start, end, ccw)
+    count = max(2, min(MAX_POINTS, math.ceil(POINTS_PER_DEGREE * sweep) + 1))
+    sign = 1.0 if ccw else -1.0
+    points = []
+    for i in range(count):
+        share = i / (count - 1)
+        angle = math.radians(start + sign * sweep * share)
+        points.append(
+            (
+                cx + radius * math.cos(angle),
+                cy + radius * math.sin(angle),
+                z_start + (z_end - z_start) * share,
+            )
+        )
+    return points
+
+
+def arc_extent(
+    cx: float, cy: float, radius: float, start: float, end: float, ccw: bool
+) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The exact XY bounding box ((x_min, x_max), (y_min, y_max)) of the arc, in mm."""
+    sweep = arc_sweep(start, end, ccw)
+    angles = [start, start + (sweep if ccw else -sweep)]
+    for quarter in (0.0, 90.0, 180.0, 270.0):  # where the circle reaches its extremes
+        offset = ((quarter - start) if ccw else (start - quarter)) % 360.0
+        if offset <= sweep:
+            angles.append(quarter)
+    xs = [cx + radius * math.cos(math.radians(a)) for a in angles]
+    ys = [cy + radius * math.sin(math.radians(a)) for a in angles]
+    return (min(xs), max(xs)), (min(ys), max(ys))
+
+
+def _spin(name: str, suffix: str, low: float, high: float, decimals: int) -> QDoubleSpinBox:
+    """A field with its unit; the value is taken on Enter, arrow steps or when focus leaves."""
+    field = QDoubleSpinBox()
+    field.setObjectName(name)
+    field.setDecimals(decimals)
+    field.setRange(low, high)
+    field.setSuffix(suffix)
+    field.setKeyboardTracking(False)
+    field.setAccelerated(True)
+    field.setMinimumWidth(100)
+    return field
+
+
+class ArcEntry(QWidget):
+    """Centre, radius, start and end angle, direction and final Z of an arc; Preview; Run arc.
+
+    `preview_changed` carries the arc's points (or [] when Preview is off or the arc is invalid)
+    whenever a value changes; `arc_requested` carries `values()` when Run arc is pressed.
+    """
+
+    preview_changed = Signal(object)  # list of (x, y, z) mm, [] for no preview
+    arc_requested = Signal(object)  # {"cx", "cy", "radius", "start", "end", "ccw", "z"}
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("arcEntry")
+        self._start_z = 0.0
+        self._box: Box | None = None
+        self._points: list[Point] = []
+
+        self.cx_field = _spin("arcCentreX", " mm", -UNBOUNDED_MM, UNBOUNDED_MM, 3)
+        self.cx_field.setToolTip("X of the arc's centre, in mm from home")
+        self.cy_field = _spin("arcCentreY", " mm", -UNBOUNDED_MM, UNBOUNDED_MM, 3)
+        self.cy_field.setToolTip("Y of the arc's centre, in mm from home")
+        self.radius_field = _spin("arcRadius", " mm", 0.001, UNBOUNDED_MM, 3)
+        self.radius_field.setValue(10.0)
+        self.radius_field.setToolTip("Radius of the arc, in mm (more than 0)")
+        self.start_field = _spin("arcStart", " °", 0.0, 360.0, 1)
+        self.start_field.setWrapping(True)
+        self.start_field.setSingleStep(15.0)
+        self.start_field.setToolTip(
+            "Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above"
+        )
+        self.end_field = _spin("arcEnd", " °", 0.0, 360.0, 1)
+        self.end_field.setWrapping(True)
+        self.end_field.setSingleStep(15.0)
+        self.end_field.setValue(90.0)
+        self.end_field.setToolTip(
+            "Angle of the end point, 0 to 360°, counter-clockwise from +X seen from above;"
+            "\nthe same as the start angle: a full circle"
+        )
+        self.z_field = _spin("arcFinalZ", " mm", -UNBOUNDED_MM, UNBOUNDED_MM, 3)
+        self.z_field.setToolTip(
+            "Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc"
+            "\n(a helix when it differs)"
+        )
+        self.fields: dict[str, QDoubleSpinBox] = {
+            "cx": self.cx_field,
+            "cy": self.cy_field,
+            "radius": self.radius_field,
+            "start": self.start_field,
+            "end": self.end_field,
+            "z": self.z_field,
+        }
+
+        grid = QGridLayout()
+        labels = (
+            ("Centre X:", self.cx_field),
+            ("Centre Y:", self.cy_field),
+            ("Radius:", self.radius_field),
+            ("Start:", self.start_field),
+            ("End:", self.end_field),
+            ("Final Z:", self.z_field),
+        )
+        for index, (text, field) in enumerate(labels):
+            label = QLabel(text)
+            label.setBuddy(field)
+            label.setToolTip(field.toolTip())
+            row, column = divmod(index, 3)
+            grid.addWidget(label, row, 2 * column)
+            grid.addWidget(field, row, 2 * column + 1)
+            grid.setColumnStretch(2 * column + 1, 1)
+
+        self.cw_radio = QRadioButton("CW")
+        self.cw_radio.setObjectName("arcCw")
+        self.cw_radio.setToolTip("Clockwise seen from above: the angle decreases")
+        self.ccw_radio = QRadioButton("CCW")
+        self.ccw_radio.setObjectName("arcCcw")
+        self.ccw_radio.setToolTip("Counter-clockwise seen from above: the angle increases")
+        self._direction = QButtonGroup(self)
+        self._direction.addButton(self.cw_radio)
+        self._direction.addButton(self.ccw_radio)
+        self.ccw_radio.setChecked(True)
+
+        self.preview_check = QCheckBox("Preview")
+        self.preview_check.setObjectName("arcPreview")
+        self.preview_check.setToolTip("Draw the arc, dashed, in the position views")
+        self.preview_check.setChecked(True)
+
+        self.run_button = make_button(
+            "Run arc", "runArcButton", "Move along the arc, from its start point to its end point"
+        )
+        self.run_button.clicked.connect(self._run)
+
+        self.problem_label = QLabel()
+        self.problem_label.setObjectName("arcProblem")
+        self.problem_label.setWordWrap(True)
+        self.problem_label.setStyleSheet("color: #c62828;")
+        self.problem_label.setToolTip("Why the arc cannot run")
+        self.problem_label.setVisible(False)
+
+        actions = QHBoxLayout()
+        actions.addWidget(self.cw_radio)
+        actions.addWidget(self.ccw_radio)
+        actions.addSpacing(12)
+        actions.addWidget(self.preview_check)
+        actions.addStretch(1)
+        actions.addWidget(self.run_button)
+        layout = QVBoxLayout(self)
+        layout.addLayout(grid)
+        layout.addLayout(actions)
+        layout.addWidget(self.problem_label)
+        layout.addStretch(1)
+
+        order = [
+            *self.fields.values(),
+            self.cw_radio,
+            self.ccw_radio,
+            self.preview_check,
+            self.run_button,
+        ]
+        for first, second in itertools.pairwise(order):
+            QWidget.setTabOrder(first, second)
+
+        for field in self.fields.values():
+            field.valueChanged.connect(self._changed)
+        self.ccw_radio.toggled.connect(self._changed)
+        self.preview_check.toggled.connect(self._changed)
+        self._changed()
+
+    # -- values ----------------------------------------------------------------------------
+
+    def values(self) -> dict:
+        """{"cx", "cy", "radius", "start", "end", "z"} as floats (mm, degrees), "ccw" a bool."""
+        out: dict = {}
+        for key, field in self.fields.items():
+            field.interpretText()
+            out[key] = float(field.value())
+        out["ccw"] = self.ccw_radio.isChecked()
+        return {key: out[key] for key in ARC_KEYS}
+
+    def set_values(self, **values: float | bool) -> None:
+        """Set some of cx, cy, radius, start, end, z (clamped to the fields) and ccw.
+
+        Emits `preview_changed` once afterwards.
+        """
+        unknown = set(values) - set(ARC_KEYS)
+        if unknown:
+            raise TypeError(f"unknown arc values {sorted(unknown)}; known: {ARC_KEYS}")
+        widgets = [*self.fields.values(), self.ccw_radio, self.cw_radio]
+        for widget in widgets:
+            widget.blockSignals(True)
+        try:
+            for key, value in values.items():
+                if key == "ccw":
+                    (self.ccw_radio if value else self.cw_radio).setChecked(True)
+                else:
+                    self.fields[key].setValue(float(value))
+        finally:
+            for widget in widgets:
+                widget.blockSignals(False)
+        self._changed()
+
+    def set_start_z(self, z: float | None) -> None:
+        """The Z the arc starts at (the current Z), in mm; None: 0. Updates the preview."""
+        self._start_z = 0.0 if z is None else float(z)
+        self._changed()
+
+    def start_z(self) -> float:
+        """The Z the arc starts at, in mm."""
+        return self._start_z
+
+    def set_box(self, box: Box | None) -> None:
+        """Check the arc against the travel box in mm (None: no travel limits are known)."""
+        self._box = None if box is None else tuple(tuple(map(float, pair)) for pair in box)
+        self._check()
+
+    def box(self) -> Box | None:
+        """The travel box the arc is checked against, or None."""
+        return self._box
+
+    def set_resolution(self, resolution: float | None) -> None:
+        """Type lengths to the device's resolution in mm (None: 0.001 mm)."""
+        decimals = decimals_for(resolution)
+        lengths = (self.cx_field, self.cy_field, self.radius_field, self.z_field)
+        for field in lengths:
+            field.blockSignals(True)
+        try:
+            for field in lengths:
+                field.setDecimals(decimals)
+            self.radius_field.setMinimum(10.0**-decimals)
+        finally:
+            for field in lengths:
+                field.blockSignals(False)
+        self._changed()
+
+    def arc_points(self) -> list[Point]:
+        """The arc's points (x, y, z) in mm, whether or not Preview is on; [] if invalid."""
+        return list(self._points)
+
+    def problem(self) -> str:
+        """Why the arc cannot run, or ""."""
+        return self.problem_label.text()
+
+    # -- updates -----------------------------------------------------------------------------
+
+    def _changed(self, *_: object) -> None:
+        v = self.values()
+        self._points = arc_path(
+            v["cx"], v["cy"], v["radius"], v["start"], v["end"], v["ccw"], self._start_z, v["z"]
+        )
+        self._check()
+        shown = self._points if self.preview_check.isChecked() else []
+        self.preview_changed.emit(list(shown))
+
+    def _check(self) -> None:
+        problem = self._find_problem()
+        self.problem_label.setText(problem)
+        self.problem_label.setVisible(bool(problem))
+        self.run_button.setEnabled(not problem)
+        tip = "Move along the arc, from its start point to its end point"
+        self.run_button.setToolTip(f"{tip}\n{problem}" if problem else tip)
+
+    def _find_problem(self) -> str:
+        v = self.values()
+        if not v["radius"] > 0:
+            return "The radius must be more than 0 mm."
+        if self._box is None:
+            return ""
+        xs, ys = arc_extent(v["cx"], v["cy"], v["radius"], v["start"], v["end"], v["ccw"])
+        zs = (min(self._start_z, v["z"]), max(self._start_z, v["z"]))
+        outside = []
+        for name, (low, high), (lo, hi) in zip("XYZ", (xs, ys, zs), self._box, strict=True):
+            if low < lo - TOLERANCE_MM or high > hi + TOLERANCE_MM:
+                outside.append(
+                    f"{name} {low:.3f} to {high:.3f} mm (travel {lo:g} to {hi:g} mm)"
+                    if low != high
+                    else f"{name} {low:.3f} mm (travel {lo:g} to {hi:g} mm)"
+                )
+        if not outside:
+            return ""
+        return "The arc leaves the travel limits: " + "; ".join(outside) + "."
+
+    def _run(self) -> None:
+        values = self.values()  # takes a half-typed field first, which rechecks the arc
+        if not self.isEnabled() or not self.run_button.isEnabled():
+            return
+        log.debug("arc requested: %s", values)
+        self.arc_requested.emit(values)

@@ -1,0 +1,64 @@
+"""Pause the device for a number of milliseconds (a dwell)."""
+
+from __future__ import annotations
+
+import logging
+
+from PySide6.QtCore import Signal
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QSpinBox, QWidget
+
+from widgets._buttons import make_button
+
+log = logging.getLogger(__name__)
+
+MAX_DWELL_MS = 65535
+
+
+class DwellEntry(QWidget):
+    """A milliseconds field and a Dwell button; `dwell_requested(ms)` on the button or Enter."""
+
+    dwell_requested = Signal(int)
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("dwellEntry")
+        label = QLabel("Dwell:")
+        self.spin = QSpinBox()
+        self.spin.setObjectName("dwellMs")
+        self.spin.setRange(0, MAX_DWELL_MS)
+        self.spin.setSuffix(" ms")
+        self.spin.setValue(500)
+        self.spin.setSingleStep(100)
+        self.spin.setAccelerated(True)
+        self.spin.setMinimumWidth(100)
+        self.spin.setToolTip(
+            f"How long the device waits, 0 to {MAX_DWELL_MS} ms; press Enter or Dwell to send"
+        )
+        self.spin.lineEdit().returnPressed.connect(self._dwell)
+        label.setBuddy(self.spin)
+        label.setToolTip(self.spin.toolTip())
+        self.dwell_button = make_button(
+            "Dwell", "dwellButton", "Make the device wait this long before its next command"
+        )
+        self.dwell_button.clicked.connect(self._dwell)
+        layout = QHBoxLayout(self)
+        layout.addWidget(label)
+        layout.addWidget(self.spin, 1)
+        layout.addWidget(self.dwell_button)
+        QWidget.setTabOrder(self.spin, self.dwell_button)
+
+    def value(self) -> int:
+        """The dwell in the field, in ms."""
+        self.spin.interpretText()
+        return int(self.spin.value())
+
+    def set_value(self, ms: int) -> None:
+        """Fill the field (clamped to 0..65535 ms); emits nothing."""
+        self.spin.setValue(int(ms))
+
+    def _dwell(self) -> None:
+        if not self.isEnabled() or not self.dwell_button.isEnabled():
+            return
+        ms = self.value()
+        log.debug("dwell requested: %d ms", ms)
+        self.dwell_requested.emit(ms)
