@@ -290,7 +290,6 @@ class SerialWorker(QObject):
             return None
         if isinstance(job, jobs.SettingsJob):
             motion.client.protocol.configure(job.values)
-            motion.capabilities = motion.client.protocol.capabilities
             self.capabilities_changed.emit(motion.capabilities)
             return None
         if isinstance(job, jobs.StepperConfigJob):

@@ -10,7 +10,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from drivers import commands as cmd
-from drivers.capabilities import Completion
+from drivers.capabilities import Capabilities, Completion
 from drivers.client import Client
 from drivers.errors import Aborted, BadInput, DeviceError, DeviceTimeout
 from drivers.events import ErrorReport, PositionReport
@@ -65,7 +65,6 @@ class Motion:
 
     def __init__(self, client: Client, wait: Callable[[float], bool] | None = None) -> None:
         self.client = client
-        self.capabilities = client.protocol.capabilities
         self.position_listeners: list[Callable[[PositionReport], None]] = []
         self.poll_interval = POLL_INTERVAL
         self.wait = wait or self._listen
@@ -83,6 +82,11 @@ class Motion:
         if not self.capabilities.position_feedback:
             # Write-only devices: the position is what was commanded, from the power-on origin.
             self.last_position = PositionReport(0.0, 0.0, 0.0, measured=False)
+
+    @property
+    def capabilities(self) -> Capabilities:
+        """The protocol's capabilities as they are now (settings may change them)."""
+        return self.client.protocol.capabilities
 
     def _listen(self, seconds: float) -> bool:
         """Wait while reading the port: an error the device reports meanwhile (Firmata's
@@ -135,7 +139,7 @@ class Motion:
                 high = float(self.client.execute(cmd.GetMaxSpeed()).value)  # type: ignore[arg-type]
                 self._limits = (low, high)
             elif self.capabilities.speed_range is not None:
-                self._limits = self.capabilities.speed_range
+                return self.capabilities.speed_range  # not kept: settings may change it
             else:
                 raise BadInput(f"{self.client.protocol.name} has no speed limits to report")
         return self._limits
@@ -155,7 +159,9 @@ class Motion:
             raise BadInput(
                 f"speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}"
             )
-        parts = self.client.protocol.expand(cmd.SetSpeed(speed))
+        # Where the speed goes with every move (pi-frame, Firmata), nothing is sent now.
+        speed_in_moves = self.capabilities.speed_in_moves
+        parts = [] if speed_in_moves else self.client.protocol.expand(cmd.SetSpeed(speed))
         for part in parts:
             self.client.protocol.encode(part)  # every packet checked before the first is sent
         for part in parts:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from drivers.capabilities import Capabilities, Completion
 from drivers.client import Client
-from drivers.commands import Command, GetId, MoveBy, Raw, SetSpeed
+from drivers.commands import Command, GetId, MoveBy, Raw
 from drivers.errors import BadInput, DeviceError
 from drivers.events import ErrorReport, Event, Feedback, TextLine
 from drivers.framers.sysex import SysexFramer
@@ -190,8 +190,6 @@ class FirmataProtocol(Protocol):
                 raise BadInput("the Firmata stepper is one axis (X): Y and Z must be 0")
             rpm = self.rpm(command.speed or self.capabilities.default_speed)
             return list(step_parts(rpm, self.steps(command.dx)))
-        if isinstance(command, SetSpeed):
-            return []  # the speed goes with every step message
         return [command]
 
     def encode(self, command: Command) -> bytes:
