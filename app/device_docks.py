@@ -82,8 +82,10 @@ class DeviceDocks(QObject):
         if "ticks_per_mm" in names:
             self.piframe.set_ticks_per_mm(values["ticks_per_mm"])
         self.adapt(info.capabilities)
-        if self.arc_dock.isVisible():
-            self.window.tabifyDockWidget(self.window.coordinates_dock, self.arc_dock)
+        for dock in (self.arc_dock, self.dwell_dock):  # one place for moves: Go to, Arc, Dwell
+            if dock.isVisible():
+                self.window.tabifyDockWidget(self.window.coordinates_dock, dock)
+        self.window.coordinates_dock.raise_()
 
     def adapt(self, caps: Capabilities) -> None:
         """Follow the capabilities (after a connection, or new settings)."""

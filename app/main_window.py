@@ -534,7 +534,8 @@ class MainWindow(QMainWindow):
             )
         if self.estimate.active():
             self._end_move_estimate()
-        self.devices.arc.set_start_z(report.z)
+        if self.devices.arc_dock.isVisible() and self.devices.arc.start_z() != report.z:
+            self.devices.arc.set_start_z(report.z)  # the arc preview starts at the stage's Z
         if not report.measured and self.info is not None:
             feedback = self.info.capabilities.completion is Completion.FEEDBACK
             self.readout.set_measured(False, report.confirmed if feedback else None)
@@ -596,7 +597,7 @@ class MainWindow(QMainWindow):
 
     def _job_ended(self, job: jobs.Job) -> None:
         self._busy_job = None
-        if isinstance(job, (jobs.MoveToJob, jobs.MoveByJob, jobs.HomeJob)):
+        if self._moving:  # one job at a time: when it ends, nothing moves (arcs and jogs alike)
             self._end_move()
         if isinstance(job, jobs.SetHomeJob):
             self._home_from = None

@@ -3,7 +3,7 @@
 Both devices are write-only: nothing ends a move but motionctl's own estimate, so moves are short
 or fast. What went on the wire is read back from motionctl's `--log` hexdump (the hex columns) and
 from the device's `--record`. The Firmata board announces itself `--reset-delay` seconds after it
-boots; motionctl waits up to 2 s for it after opening the port, so each Firmata run costs ~2.3 s.
+boots; motionctl waits up to 2.5 s for it after opening the port, so each Firmata run costs ~2.3 s.
 """
 
 from __future__ import annotations

@@ -8,6 +8,7 @@ from PySide6.QtWidgets import QDockWidget, QPushButton
 
 from app.main_window import MainWindow
 from app.settings import read_protocol_settings
+from widgets import status_line as status
 
 pytestmark = pytest.mark.timeout(40)
 
@@ -43,6 +44,7 @@ def test_piframe_arc_is_previewed_then_run(qtbot, window: MainWindow) -> None:
     )
     device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
     assert [action for action, _ in device.history] == [1, 2]  # to the start, then the arc
+    qtbot.waitUntil(lambda: window.status_line.state() == status.IDLE, timeout=5000)
 
 
 def test_piframe_ticks_per_mm_is_used_and_remembered(qtbot, window: MainWindow) -> None:

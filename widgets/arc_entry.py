@@ -101,6 +101,9 @@ def _spin(name: str, suffix: str, low: float, high: float, decimals: int) -> QDo
     return field
 
 
+FIELDS_PER_ROW = 2  # two columns: the panel fits the left column of a 1024-pixel window
+
+
 class ArcEntry(QWidget):
     """Centre, radius, start and end angle, direction and final Z of an arc; Preview; Run arc.
 
@@ -166,7 +169,7 @@ class ArcEntry(QWidget):
             label = QLabel(text)
             label.setBuddy(field)
             label.setToolTip(field.toolTip())
-            row, column = divmod(index, 3)
+            row, column = divmod(index, FIELDS_PER_ROW)
             grid.addWidget(label, row, 2 * column)
             grid.addWidget(field, row, 2 * column + 1)
             grid.setColumnStretch(2 * column + 1, 1)

@@ -49,7 +49,7 @@ CAPABILITIES = Capabilities(
     raw_text=False,
     raw_line_end="",
     speed_in_moves=True,
-    startup_wait=2.0,  # an Arduino resets when the port opens; its bootloader runs ~2 s
+    startup_wait=2.5,  # an Arduino resets when the port opens; its bootloader runs up to ~2 s
     home_note="Moves back to 0 by a relative move: the board has no homing",
     notes=("no completion message: moves are estimated from speed and steps",),
 )
