@@ -13,7 +13,14 @@ from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, S
 from app import jobs
 from drivers.capabilities import Capabilities
 from drivers.client import Client
-from drivers.errors import Aborted, CommunicationError, DeviceTimeout, MotionError, PortError
+from drivers.errors import (
+    Aborted,
+    CommunicationError,
+    DeviceError,
+    DeviceTimeout,
+    MotionError,
+    PortError,
+)
 from drivers.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.motion import Motion, MoveStart
 from drivers.parameters import Parameter
@@ -164,7 +171,10 @@ class SerialWorker(QObject):
         self._motion.travel = self._travel
         try:
             identity = self._motion.identify()
-            self._motion.start()
+            try:
+                self._motion.start()
+            except DeviceError as exc:  # a saved setup the device refuses: say so, stay connected
+                self.notice.emit(f"the saved setup was refused: {exc}")
             self._refresh()
         except MotionError as exc:
             self._fail_connection(exc)
