@@ -157,6 +157,15 @@ def _text(result: dict[str, Any]) -> str:
         pins = " ".join(str(p) for p in done["pins"])
         library = result["version"]
         return f"configured: {done['steps_per_rev']} steps/rev on pins {pins} (library {library})"
+    if "frames" in result:
+        return (
+            f"{result['executed']}/{result['instructions']} instructions executed in "
+            f"{result['frames']} frames, {result['retransmissions']} retransmission(s), "
+            f"{result['seconds']:.1f} s"
+        )
+    if "status" in result:
+        status = result["status"]
+        return f"queue {status['queue']}, {'moving' if status['moving'] else 'idle'}"
     if "messages" in result:
         count, seconds = result["messages"], result["seconds"]
         return f"{result['steps']} steps in {count} message(s), about {seconds:.1f} s"

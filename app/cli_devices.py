@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import sys
+import time
 from typing import Any
 
 from drivers import commands as cmd
 from drivers.errors import BadInput
 from drivers.motion import Motion
 from drivers.numbers import parse_number
+from drivers.program import ProgramPoint, read_program
 from drivers.protocols.base import Protocol
 from drivers.protocols.firmata import (
     StepperConfig,
@@ -16,6 +18,8 @@ from drivers.protocols.firmata import (
     configure_stepper,
     step_parts,
 )
+from drivers.protocols.laser import GetStatus, move_instruction
+from drivers.streaming import Streamer, StreamProgress
 
 DEVICE_COMMANDS = {
     "config": ("firmata", "config --steps-per-rev N --pins P1 P2 [P3 P4]"),
@@ -23,7 +27,13 @@ DEVICE_COMMANDS = {
     "version": ("firmata", "version"),
     "dwell": ("pi-frame", "dwell MS"),
     "arc": ("pi-frame", "arc CX CY RADIUS START END --cw|--ccw"),
+    "status": ("laser-frame", "status"),
+    "stop": ("laser-frame", "stop"),
+    "run": ("laser-frame", "run FILE.csv|FILE.json"),
 }
+
+
+PROGRESS_EVERY = 0.5  # s between progress lines of `run`
 
 
 class DeviceUsageError(BadInput):
@@ -69,6 +79,40 @@ def _arc(args: list[str]) -> cmd.Arc:
     return cmd.Arc(cx, cy, radius, start, end, directions[0] == "--ccw")
 
 
+def _run_program(motion: Motion, points: list[ProgramPoint]) -> dict[str, Any]:
+    """Stream a program with progress on stderr; a summary at the end."""
+    shown = [0.0]
+
+    def progress(state: StreamProgress) -> None:
+        now = time.monotonic()
+        if now - shown[0] < PROGRESS_EVERY and not state.finished:
+            return
+        shown[0] = now
+        left = state.seconds_left()
+        print(
+            f"motionctl: {state.sent}/{state.total} sent, {state.acknowledged} acknowledged, "
+            f"{state.executed} executed, {state.rate:.0f}/s"
+            + (f", about {left:.0f} s left" if left is not None else ""),
+            file=sys.stderr,
+            flush=True,
+        )
+
+    streamer = Streamer(motion.client, points, progress=progress)
+    try:
+        state = streamer.run()
+    except KeyboardInterrupt:
+        streamer.stop()
+        motion.client.execute(cmd.Stop())  # the device's queue is flushed
+        raise
+    return {
+        "instructions": state.total,
+        "executed": state.executed,
+        "frames": state.frames,
+        "retransmissions": state.retransmissions,
+        "seconds": round(state.seconds, 3),
+    }
+
+
 def check_device_offline(protocol: Protocol, command: str, args: list[str]) -> None:
     """Refuse a device command that is wrong before the port is opened (BadInput)."""
     owner, usage = DEVICE_COMMANDS[command]
@@ -90,6 +134,13 @@ def check_device_offline(protocol: Protocol, command: str, args: list[str]) -> N
         protocol.encode(cmd.Dwell(_whole(args[0], "dwell (ms)")))
     elif command == "arc":
         protocol.encode(_arc(args))
+    elif command in ("status", "stop") and args:
+        raise DeviceUsageError(f"usage: {usage}")
+    elif command == "run":
+        if len(args) != 1:
+            raise DeviceUsageError(f"usage: {usage}")
+        for point in read_program(args[0]):
+            move_instruction(point.x, point.y, point.z, point.speed).encode()
 
 
 def run_device(motion: Motion, command: str, args: list[str]) -> dict[str, Any]:
@@ -121,5 +172,12 @@ def run_device(motion: Motion, command: str, args: list[str]) -> dict[str, Any]:
     if command == "dwell":
         motion.dwell(_whole(args[0], "dwell (ms)"))
         return {"ok": True}
+    if command == "status":
+        return {"status": client.execute(GetStatus()).value}
+    if command == "stop":
+        client.execute(cmd.Stop())
+        return {"ok": True}
+    if command == "run":
+        return _run_program(motion, read_program(args[0]))
     report = motion.arc(_arc(args))
     return {"position": [report.x, report.y, report.z], "measured": False}

@@ -16,6 +16,8 @@ from drivers.traffic import TrafficLogWriter
 
 log = logging.getLogger("motionsim")
 
+_LASER_OPTIONS = ("corrupt", "drop", "drop_reply", "delay_reply", "garbage", "seed", "queue")
+
 
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser for motionsim."""
@@ -52,6 +54,22 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="S",
         help="Firmata: seconds the board ignores input after the port opens (default: 2)",
     )
+    for flag, what in (
+        ("--corrupt", "each received byte is flipped"),
+        ("--drop", "a received frame is ignored"),
+        ("--drop-reply", "a reply is not sent"),
+        ("--delay-reply", "a reply is sent 0.5 s late"),
+        ("--garbage", "noise bytes precede a reply"),
+    ):
+        parser.add_argument(
+            flag, type=float, metavar="F", help=f"laser-frame: probability that {what}"
+        )
+    parser.add_argument(
+        "--seed", type=int, metavar="N", help="laser-frame: seed of the fault generator"
+    )
+    parser.add_argument(
+        "--queue", type=int, metavar="N", help="laser-frame: queue depth in instructions"
+    )
     parser.add_argument("--instant", action="store_true", help="moves take no time")
     parser.add_argument("--speed", type=float, help="initial speed (mm/s)")
     parser.add_argument(
@@ -85,9 +103,13 @@ def main(argv: Sequence[str] | None = None) -> int:
             device_options["variant"] = options.variant
     elif options.protocol == "firmata" and options.reset_delay is not None:
         device_options["reset_delay"] = options.reset_delay
+    elif options.protocol == "laser-frame":
+        for key in _LASER_OPTIONS:
+            if getattr(options, key) is not None:
+                device_options[key] = getattr(options, key)
     try:
         probe = create_device(options.protocol, **device_options)
-    except UnknownProtocol as exc:
+    except (UnknownProtocol, ValueError) as exc:  # ValueError: a fault rate out of range
         print(f"motionsim: {exc}", file=sys.stderr)
         return 2
     baud = None if options.no_line_timing else (options.baud or probe.default_baud)

@@ -8,7 +8,14 @@ import time
 from collections.abc import Callable
 
 from drivers.commands import Command
-from drivers.errors import Aborted, DeviceTimeout, FrameError
+from drivers.errors import (
+    Aborted,
+    DeviceError,
+    DeviceTimeout,
+    FrameError,
+    QueueFull,
+    Retransmit,
+)
 from drivers.events import Event, Undecodable
 from drivers.protocols.base import Exchange, Protocol, Reply
 from drivers.transport import Link
@@ -18,6 +25,8 @@ log = logging.getLogger(__name__)
 EventListener = Callable[[Event, bool], None]
 """Called with every decoded event and whether it answered the command in flight."""
 
+BACKPRESSURE_WAIT = 0.05  # s to let a full device queue work itself down before sending again
+BACKPRESSURE_LIMIT = 120.0  # s of queue-full replies before giving up
 MAX_TIMEOUT_EXTENSION = 5  # a chattering device extends the wait at most this many timeouts
 
 
@@ -44,6 +53,10 @@ class Client:
         self._opened = clock()
         self.wait_hooks: list[Callable[[], None]] = []
         """Called every read while waiting (about every 20 ms), e.g. to hand on traffic."""
+        self.retransmissions = 0
+        """Frames sent again (a damaged-frame reply, or no reply in time)."""
+        self.backpressure_waits = 0
+        """Waits for room in the device's queue (queue-full replies)."""
         self.abort = threading.Event()
         """Set from any thread to make a waiting `execute` raise Aborted."""
 
@@ -52,18 +65,49 @@ class Client:
 
         `timeout` is the silence allowed before the reply is complete (the exchange's or the
         client's default); `extra` adds the time the device is expected to be busy (a blocking
-        move). Raises BadInput before writing, DeviceError, DeviceTimeout or PortError.
+        move). Where the protocol retransmits, the kept copy is sent again on a damaged-frame
+        reply or a timeout (`protocol.attempts` in all), and again after a queue-full reply.
+        Raises BadInput before writing, DeviceError, DeviceTimeout or PortError.
         """
         data = self.protocol.encode(command)
-        exchange = self.protocol.exchange(command)
         self.poll()
-        self._pace()
-        self._write(data)
-        self.protocol.on_sent(command)
-        silence = timeout if timeout is not None else (exchange.timeout or self.timeout)
-        self._await(exchange, silence, max(extra, exchange.extra))
-        self._last_reply = self.clock()
-        return exchange.result()
+        attempt = 0
+        full_since: float | None = None
+        while True:
+            exchange = self.protocol.exchange(command)
+            self._pace()
+            self._write(data)
+            if attempt == 0 and full_since is None:
+                self.protocol.on_sent(command)
+            silence = timeout if timeout is not None else (exchange.timeout or self.timeout)
+            try:
+                self._await(exchange, silence, max(extra, exchange.extra))
+                self._last_reply = self.clock()
+                return exchange.result()
+            except QueueFull as exc:
+                full_since = self.clock() if full_since is None else full_since
+                if self.clock() - full_since > BACKPRESSURE_LIMIT:
+                    raise DeviceError(
+                        f"{exc}; still full after {BACKPRESSURE_LIMIT:.0f} s"
+                    ) from exc
+                self.backpressure_waits += 1
+                self.listen(BACKPRESSURE_WAIT)  # the device works its queue down meanwhile
+            except (DeviceTimeout, Retransmit) as exc:
+                attempt += 1
+                if attempt >= self.protocol.attempts:
+                    if self.protocol.attempts == 1:
+                        raise
+                    name = self.protocol.command_name(command)
+                    raise type(exc)(
+                        f"{name} failed after {attempt} tries; the last: {exc}"
+                    ) from exc
+                self.retransmissions += 1
+                log.info(
+                    "retransmitting %s (try %d): %s",
+                    self.protocol.command_name(command),
+                    attempt + 1,
+                    exc,
+                )
 
     def send_only(self, command: Command) -> None:
         """Write a command that gets no reply (write-only devices)."""

@@ -41,3 +41,11 @@ class UnknownProtocol(MotionError, LookupError):
 
 class Aborted(MotionError):
     """The wait was abandoned because the owner is closing or cancelled it."""
+
+
+class Retransmit(CommunicationError):
+    """The reply says the frame was damaged on the way: send the kept copy again."""
+
+
+class QueueFull(DeviceError):
+    """The device's queue has no room now: wait and send again (back-pressure, not a loss)."""

@@ -379,7 +379,7 @@ class Motion:
             raise BadInput(f"{self.client.protocol.name} has no dwell")
         command = cmd.Dwell(ms)
         self.client.protocol.encode(command)
-        self.client.send_only(command)
+        self.client.execute(command)  # acknowledged where the protocol acknowledges (laser)
         if self.wait(ms / 1000):
             raise Aborted("abandoned: the connection is closing")
 

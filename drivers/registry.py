@@ -12,8 +12,9 @@ PROTOCOLS: dict[str, tuple[str, str]] = {
     "visiomex": ("drivers.protocols.visiomex", "VisiomexProtocol"),
     "pi-frame": ("drivers.protocols.piframe", "PiFrameProtocol"),
     "firmata": ("drivers.protocols.firmata", "FirmataProtocol"),
+    "laser-frame": ("drivers.protocols.laser", "LaserProtocol"),
 }
-PLANNED = ("laser-frame",)
+PLANNED: tuple[str, ...] = ()
 
 
 def protocol_names() -> list[str]:

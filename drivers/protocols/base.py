@@ -132,6 +132,8 @@ class Protocol(ABC):
     #: Seconds of silence the device needs after a packet before the next one, unless it has
     #: answered meanwhile (Visiomex: a packet ends after 1 s without bytes).
     write_gap: ClassVar[float] = 0.0
+    #: How many times a frame is sent before its failure is final (Retransmit, DeviceTimeout).
+    attempts: ClassVar[int] = 1
     #: Wire profiles; the first is the default. Empty: the protocol has one.
     variants: ClassVar[tuple[Variant, ...]] = ()
     #: Numbered device parameters (empty: none).

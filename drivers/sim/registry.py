@@ -14,6 +14,7 @@ SIMULATORS: dict[str, tuple[str, str]] = {
     "visiomex": ("drivers.sim.visiomex_device", "VisiomexDevice"),
     "pi-frame": ("drivers.sim.piframe_device", "PiFrameDevice"),
     "firmata": ("drivers.sim.firmata_device", "FirmataDevice"),
+    "laser-frame": ("drivers.sim.laser_device", "LaserDevice"),
 }
 
 

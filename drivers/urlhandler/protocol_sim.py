@@ -3,7 +3,9 @@
 Options: `instant=0|1`, `mute=0|1`, `line_timing=0|1` (emulate the baud rate, on by default);
 COXIRIS: `blocking=0|1`, `speed=S`, `fault=TEXT` (repeatable, CHECK_ERRORS);
 Visiomex: `variant=seed|prefixed|board12`, `bugs=0|1` (the public firmware's bugs, on by default);
-Firmata: `reset_delay=S` (seconds the board ignores input after the port opens).
+Firmata: `reset_delay=S` (seconds the board ignores input after the port opens);
+laser-frame: fault rates `corrupt=F`, `drop=F`, `drop_reply=F`, `delay_reply=F`, `garbage=F`
+(probabilities 0..1), `seed=N` (their random generator), `queue=N` (queue depth in instructions).
 Only the options given are passed to the device.
 """
 
@@ -23,6 +25,8 @@ from drivers.sim.registry import create_device
 
 USB_FRAME = 0.002
 _FLAGS = {"blocking", "instant", "mute", "line_timing", "bugs"}
+_RATES = {"corrupt", "drop", "drop_reply", "delay_reply", "garbage"}
+_INTEGERS = {"seed", "queue"}
 
 
 def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
@@ -44,6 +48,10 @@ def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
             options["speed"] = float(value)
         elif key == "reset_delay":
             options["reset_delay"] = float(value)
+        elif key in _RATES:
+            options[key] = float(value)
+        elif key in _INTEGERS:
+            options[key] = int(value)
         elif key == "variant":
             options["variant"] = value
         elif key == "fault":

@@ -1,0 +1,126 @@
+"""Programs: a list of points (x, y, z mm, speed mm/s) read from CSV or from the panel's JSON.
+
+CSV: a header line `x,y,z,speed` (any order, case and spaces ignored), then one point per line;
+blank lines and lines starting with `#` are skipped. JSON: `{"points": [[x, y, z, speed], ...]}`.
+A file is data: it is refused whole, naming the line, if anything in it is wrong; nothing is sent.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+from drivers.errors import BadInput
+
+MAX_BYTES = 64 * 1024 * 1024
+MAX_POINTS = 1_000_000
+COLUMNS = ("x", "y", "z", "speed")
+
+
+class ProgramError(BadInput):
+    """A program file that cannot be used (which file, which line, why)."""
+
+
+@dataclass(frozen=True)
+class ProgramPoint:
+    """One point of a program."""
+
+    x: float
+    y: float
+    z: float
+    speed: float
+
+
+def _point(values: list[str | float], where: str) -> ProgramPoint:
+    numbers = []
+    for name, value in zip(COLUMNS, values, strict=True):
+        try:
+            number = float(value)
+        except (TypeError, ValueError):
+            raise ProgramError(f"{where}: {name} {value!r} is not a number") from None
+        if not math.isfinite(number):
+            raise ProgramError(f"{where}: {name} {value!r} is not a finite number")
+        numbers.append(number)
+    if numbers[3] <= 0:
+        raise ProgramError(f"{where}: speed {numbers[3]:g} mm/s must be above 0")
+    return ProgramPoint(*numbers)
+
+
+def parse_csv(text: str, source: str = "program") -> list[ProgramPoint]:
+    """Points from CSV text with an `x,y,z,speed` header."""
+    rows = csv.reader(io.StringIO(text))
+    header: list[str] | None = None
+    points: list[ProgramPoint] = []
+    for number, row in enumerate(rows, start=1):
+        if not row or not "".join(row).strip() or row[0].lstrip().startswith("#"):
+            continue
+        if header is None:
+            header = [c.strip().lower() for c in row]
+            if sorted(header) != sorted(COLUMNS):
+                raise ProgramError(
+                    f"{source} line {number}: the header must name x, y, z and speed "
+                    f"(got {', '.join(header) or 'nothing'})"
+                )
+            continue
+        if len(row) != len(header):
+            raise ProgramError(f"{source} line {number}: {len(row)} values, expected 4")
+        by_name = dict(zip(header, row, strict=True))
+        points.append(_point([by_name[c].strip() for c in COLUMNS], f"{source} line {number}"))
+        if len(points) > MAX_POINTS:
+            raise ProgramError(f"{source}: more than {MAX_POINTS} points")
+    if header is None:
+        raise ProgramError(f"{source}: no header line (x,y,z,speed)")
+    if not points:
+        raise ProgramError(f"{source}: no points")
+    return points
+
+
+def parse_json(text: str, source: str = "program") -> list[ProgramPoint]:
+    """Points from the panel's JSON."""
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise ProgramError(f"{source} line {exc.lineno}: not JSON ({exc.msg})") from None
+    points = data.get("points") if isinstance(data, dict) else None
+    if not isinstance(points, list) or not points:
+        raise ProgramError(f'{source}: no "points" list')
+    if len(points) > MAX_POINTS:
+        raise ProgramError(f"{source}: more than {MAX_POINTS} points")
+    result = []
+    for index, point in enumerate(points):
+        if not isinstance(point, list) or len(point) != 4:
+            raise ProgramError(f"{source} point {index + 1}: expected [x, y, z, speed]")
+        result.append(_point(point, f"{source} point {index + 1}"))
+    return result
+
+
+def read_program(path: str | Path) -> list[ProgramPoint]:
+    """A program file's points (`.json`: the panel's JSON, anything else: CSV)."""
+    file = Path(path)
+    try:
+        with file.open("rb") as stream:
+            raw = stream.read(MAX_BYTES + 1)
+    except OSError as exc:
+        raise ProgramError(f"cannot read the program {file}: {exc.strerror or exc}") from None
+    if len(raw) > MAX_BYTES:
+        raise ProgramError(f"{file}: larger than {MAX_BYTES // 2**20} MiB")
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError:
+        raise ProgramError(f"{file}: not UTF-8 text, not a program") from None
+    if file.suffix.lower() == ".json":
+        return parse_json(text, str(file))
+    return parse_csv(text, str(file))
+
+
+def write_program(path: str | Path, points: list[ProgramPoint]) -> None:
+    """Save points as the panel's JSON."""
+    data = {"points": [[p.x, p.y, p.z, p.speed] for p in points]}
+    try:
+        Path(path).write_text(json.dumps(data), encoding="utf-8")
+    except OSError as exc:
+        raise ProgramError(f"cannot write the program {path}: {exc.strerror or exc}") from None
