@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import logging
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QObject, Qt
@@ -14,11 +15,15 @@ from app.settings import write_protocol_settings
 from app.worker import DeviceInfo
 from drivers.capabilities import Capabilities
 from drivers.commands import Arc
+from drivers.errors import BadInput
+from drivers.program import ProgramPoint, read_program
+from drivers.streaming import StreamProgress
 from widgets.arc_entry import ArcEntry
 from widgets.dwell_entry import DwellEntry
 from widgets.firmata_panel import FirmataPanel
 from widgets.panel_scroll_area import PanelScrollArea
 from widgets.piframe_panel import PiFramePanel
+from widgets.program_panel import ProgramPanel
 
 if TYPE_CHECKING:
     from app.main_window import MainWindow
@@ -37,12 +42,22 @@ class DeviceDocks(QObject):
         self.piframe = PiFramePanel(window)
         self.arc = ArcEntry(window)
         self.dwell = DwellEntry(window)
+        self.program = ProgramPanel(window)
+        self.points: list[ProgramPoint] = []
+        self.program_name = ""
         left, bottom = Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
         self.firmata_dock = self._dock("Stepper setup", self.firmata, bottom)
         self.piframe_dock = self._dock("Frame setup", self.piframe, bottom)
         self.arc_dock = self._dock("Arc", self.arc, left)
         self.dwell_dock = self._dock("Dwell", self.dwell, left)
-        self.docks = (self.firmata_dock, self.piframe_dock, self.arc_dock, self.dwell_dock)
+        self.program_dock = self._dock("Program", self.program, bottom)
+        self.docks = (
+            self.firmata_dock,
+            self.piframe_dock,
+            self.program_dock,
+            self.arc_dock,
+            self.dwell_dock,
+        )
         self._wire()
 
     def _dock(self, title: str, widget: QWidget, area: Qt.DockWidgetArea) -> QDockWidget:
@@ -64,6 +79,13 @@ class DeviceDocks(QObject):
         self.arc.arc_requested.connect(self._run_arc)
         self.dwell.dwell_requested.connect(lambda ms: self.window.submit_job(jobs.DwellJob(ms)))
         self.window.worker.job_finished.connect(self._on_job_finished)
+        self.window.worker.job_failed.connect(self._on_job_failed)
+        self.window.worker.stream_progress.connect(self._on_stream_progress)
+        self.program.load_requested.connect(self.load_program)
+        self.program.run_requested.connect(self.run_program)
+        self.program.pause_requested.connect(lambda: self._pause(True))
+        self.program.resume_requested.connect(lambda: self._pause(False))
+        self.program.stop_requested.connect(self.window.worker_thread.stream_stop)
 
     # -- connection --------------------------------------------------------------------------
     def device_ready(self, info: DeviceInfo) -> None:
@@ -93,6 +115,7 @@ class DeviceDocks(QObject):
             self.info = dataclasses.replace(self.info, capabilities=caps)
         self.arc_dock.setVisible(caps.arcs)
         self.dwell_dock.setVisible(caps.dwell)
+        self.program_dock.setVisible(caps.streaming)
         self.arc.set_resolution(caps.resolution)
         self.arc.set_box(self.window.travel.box if self.window.travel is not None else caps.travel)
         self.piframe.set_dtr(caps.dtr)
@@ -132,6 +155,54 @@ class DeviceDocks(QObject):
         )
         self.window.submit_job(jobs.ArcJob(arc))
 
+    # -- programs ----------------------------------------------------------------------------
+    def load_program(self, path: str) -> None:
+        """Read a program and draw its whole path; nothing is sent."""
+        try:
+            points = read_program(path)
+        except BadInput as exc:
+            self.program.show_error(str(exc))
+            return
+        self.points = points
+        self.program_name = Path(path).name
+        self.program.set_program(self.program_name, len(points))
+        self._show_path(0)
+        self.window.say(f"program {self.program_name}: {len(points)} points, nothing sent yet")
+
+    def run_program(self) -> None:
+        """Stream the loaded program (the worker runs it; progress comes by signal)."""
+        if not self.points:
+            return
+        job = jobs.StreamJob(tuple(self.points), self.program_name)
+        if self.window.submit_job(job):
+            self.program.set_running(True)
+
+    def _pause(self, paused: bool) -> None:
+        self.window.worker_thread.stream_pause(paused)
+        self.program.set_paused(paused)
+
+    def _show_path(self, executed: int) -> None:
+        """What is left of the program, drawn as the preview; what is done is the trail."""
+        left = [(p.x, p.y, p.z) for p in self.points[max(executed - 1, 0) :]]
+        self.window.view2d.set_preview(left or None)
+        self.window.view3d.set_preview(left or None)  # type: ignore[attr-defined]
+
+    def _on_stream_progress(self, state: StreamProgress) -> None:
+        self.program.show_progress(
+            state.sent,
+            state.acknowledged,
+            state.executed,
+            state.rate,
+            state.seconds_left(),
+            state.retransmissions,
+        )
+        self._show_path(state.executed)
+
+    def _on_job_failed(self, job: jobs.Job, message: str) -> None:
+        if isinstance(job, jobs.StreamJob):
+            self.program.set_running(False)
+            self.program.show_error(f"the program stopped: {message}")
+
     def _preview(self, points: list[tuple[float, float, float]]) -> None:
         if self.info is None or not self.info.capabilities.arcs:
             points = []  # no arcs on this device: nothing to preview
@@ -139,6 +210,15 @@ class DeviceDocks(QObject):
         self.window.view3d.set_preview(points or None)  # type: ignore[attr-defined]
 
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
+        if isinstance(job, jobs.StreamJob) and isinstance(result, StreamProgress):
+            self.program.set_running(False)
+            self._on_stream_progress(result)
+            done = "done" if result.finished else "stopped, the device's queue flushed"
+            self.window.say(
+                f"program {job.name} {done}: {result.executed}/{result.total} executed, "
+                f"{result.frames} frames, {result.retransmissions} retransmission(s), "
+                f"{result.seconds:.1f} s"
+            )
         if isinstance(job, (jobs.StepperConfigJob, jobs.StepperVersionJob)):
             self.firmata.set_library_version(str(result))
         if isinstance(job, jobs.StepperConfigJob) and self.info is not None:

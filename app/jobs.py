@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from drivers.commands import Arc
+from drivers.program import ProgramPoint
 from widgets.traffic_format import escape
 
 
@@ -144,6 +145,18 @@ class StepperVersionJob(Job):
     def describe(self) -> str:
         """`ask the stepper library version`."""
         return "ask the stepper library version"
+
+
+@dataclass(frozen=True, eq=False)
+class StreamJob(Job):
+    """Stream a program to the device's queue."""
+
+    points: tuple[ProgramPoint, ...]
+    name: str = "program"
+
+    def describe(self) -> str:
+        """E.g. `run square.csv (1000 points)`."""
+        return f"run {self.name} ({len(self.points)} points)"
 
 
 @dataclass(frozen=True)

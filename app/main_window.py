@@ -147,7 +147,7 @@ class MainWindow(QMainWindow):
         self.tabifyDockWidget(docks[-1], self.parameters.dock)
         docks.append(self.parameters.dock)
         self.devices = DeviceDocks(self)
-        for dock in self.devices.docks[:2]:
+        for dock in self.devices.docks[:3]:
             self.tabifyDockWidget(docks[-2], dock)
         docks.extend(self.devices.docks)
         self._build_menus(docks)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import logging
 import queue
 import threading
@@ -13,6 +14,7 @@ from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, S
 from app import jobs
 from drivers.capabilities import Capabilities
 from drivers.client import Client
+from drivers.commands import Stop
 from drivers.errors import (
     Aborted,
     CommunicationError,
@@ -27,12 +29,14 @@ from drivers.parameters import Parameter
 from drivers.protocols.base import Setting
 from drivers.protocols.firmata import StepperVersion, configure_stepper
 from drivers.registry import create_protocol
+from drivers.streaming import Streamer, StreamProgress
 from drivers.traffic import Traffic
 from drivers.transport import Link, open_link
 from drivers.travel import TravelLimits
 
 log = logging.getLogger(__name__)
 
+STREAM_POSITION_S = 0.2  # s between position reads while a program streams
 TICK_MS = 20  # the worker's loop period: queue, unsolicited input, polling
 TRAFFIC_BATCH_S = 0.05  # traffic is handed to the GUI at most this often (20 Hz)
 
@@ -87,6 +91,7 @@ class SerialWorker(QObject):
     parameter_written = Signal(object)  # ParameterWritten: the device confirmed a parameter
     job_timed_out = Signal(object)  # Job: the device did not answer it (before job_failed)
     capabilities_changed = Signal(object)  # Capabilities, after new protocol settings
+    stream_progress = Signal(object)  # StreamProgress (a copy), while a program streams
 
     def __init__(self, poll_moving_hz: float = 10.0, poll_idle_s: float = 1.0) -> None:
         super().__init__()
@@ -101,6 +106,8 @@ class SerialWorker(QObject):
         self._next_poll = 0.0
         self._abort = threading.Event()
         self._travel: TravelLimits | None = None
+        self._streamer: Streamer | None = None
+        self._last_stream_position = 0.0
 
     # -- thread-safe API ---------------------------------------------------------------------
     def submit(self, job: jobs.Job) -> None:
@@ -119,6 +126,21 @@ class SerialWorker(QObject):
     def abort(self) -> None:
         """Make a wait in progress give up at once (any thread)."""
         self._abort.set()
+
+    def stream_pause(self, paused: bool) -> None:
+        """Pause or resume the program under way (any thread)."""
+        streamer = self._streamer
+        if streamer is not None:
+            if paused:
+                streamer.pause()
+            else:
+                streamer.resume()
+
+    def stream_stop(self) -> None:
+        """Stop the program under way; the device's queue is flushed (any thread)."""
+        streamer = self._streamer
+        if streamer is not None:
+            streamer.stop()
 
     def abort_clear(self) -> None:
         """Allow waits again (before a new connection)."""
@@ -302,6 +324,8 @@ class SerialWorker(QObject):
             motion.client.protocol.configure(job.values)
             self.capabilities_changed.emit(motion.capabilities)
             return None
+        if isinstance(job, jobs.StreamJob):
+            return self._stream(motion, job)
         if isinstance(job, jobs.StepperConfigJob):
             return configure_stepper(motion.client, job.steps_per_rev, job.pins)
         if isinstance(job, jobs.StepperVersionJob):
@@ -310,6 +334,26 @@ class SerialWorker(QObject):
             self._refresh()
             return None
         raise MotionError(f"unknown job {job!r}")
+
+    def _stream(self, motion: Motion, job: jobs.StreamJob) -> StreamProgress:
+        def progress(state: StreamProgress) -> None:
+            self.stream_progress.emit(dataclasses.replace(state))
+            now = time.monotonic()
+            if now - self._last_stream_position >= STREAM_POSITION_S:
+                self._last_stream_position = now
+                motion.position()  # the live position moves along the program
+            self._flush_traffic_if_due()
+
+        self._streamer = Streamer(motion.client, list(job.points), progress=progress)
+        try:
+            state = self._streamer.run()
+        finally:
+            stopped = self._streamer.stopped
+            self._streamer = None
+        if stopped:
+            motion.client.execute(Stop())  # flushes the device's queue
+        motion.position()
+        return state
 
     def _refresh(self) -> None:
         motion = self._motion

@@ -37,6 +37,14 @@ class WorkerThread(QObject):
         """Ask the worker to use these travel limits (a TravelLimits, or None)."""
         self.travel_requested.emit(limits)
 
+    def stream_pause(self, paused: bool) -> None:
+        """Pause or resume the program under way."""
+        self.worker.stream_pause(paused)
+
+    def stream_stop(self) -> None:
+        """Stop the program under way (the device's queue is flushed)."""
+        self.worker.stream_stop()
+
     def close(self) -> None:
         """Ask the worker to disconnect (a wait in progress is abandoned)."""
         self.worker.cancel_pending()

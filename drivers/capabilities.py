@@ -51,4 +51,5 @@ class Capabilities:
     startup_wait: float = 0.0  # seconds the device needs after the port opens (Arduino reset)
     arcs: bool = False  # Arc moves
     dwell: bool = False  # Dwell on the device
+    streaming: bool = False  # programs stream to a queue on the device (grouped, acknowledged)
     notes: tuple[str, ...] = field(default_factory=tuple)

@@ -13,10 +13,19 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from drivers.client import Client
-from drivers.errors import Aborted
+from drivers.errors import Aborted, DeviceTimeout, Retransmit
 from drivers.program import ProgramPoint
-from drivers.protocols.laser import GROUP, GetStatus, QueuedGroup, move_instruction
+from drivers.protocols.laser import (
+    GROUP,
+    GetStatus,
+    LaserProtocol,
+    QueuedGroup,
+    move_instruction,
+)
+from drivers.protocols.laser_codec import Instruction
 
+ROUNDS = 10  # a frame is sent in up to this many rounds of the client's tries before failing
+CLEAN_TO_GROW = 8  # frames without a retransmission before the group grows by one
 STATUS_EVERY = 0.25  # s between queue-depth questions while sending
 DRAIN_POLL = 0.1  # s between questions while the device works its queue down
 
@@ -85,21 +94,37 @@ class Streamer:
         self._stopped.set()
         self._running.set()
 
+    @property
+    def stopped(self) -> bool:
+        """Whether `stop` was called."""
+        return self._stopped.is_set()
+
     def run(self) -> StreamProgress:
         """Send every point, then wait until the device has executed them; the final progress."""
         retransmissions_before = self.client.retransmissions
-        for start in range(0, len(self.points), self.group):
+        start = 0
+        size, clean = self.group, 0
+        while start < len(self.points):
             while not self._running.wait(0.05):
                 self._check_status(force=True)
             if self._stopped.is_set():
                 break
-            chunk = self.points[start : start + self.group]
+            chunk = self.points[start : start + size]
             instructions = tuple(move_instruction(p.x, p.y, p.z, p.speed) for p in chunk)
             self.state.sent += len(chunk)
-            self.client.execute(QueuedGroup(instructions))
+            before = self.client.retransmissions
+            self._send(instructions)
+            start += len(chunk)
             self.state.acknowledged += len(chunk)
             self.state.frames += 1
             self.state.retransmissions = self.client.retransmissions - retransmissions_before
+            # Reliability first: a damaged line gets smaller frames, a clean one larger again.
+            if self.client.retransmissions > before:
+                size, clean = max(1, size - 1), 0
+            else:
+                clean += 1
+                if clean >= CLEAN_TO_GROW:
+                    size, clean = min(self.group, size + 1), 0
             self._check_status()
             self.progress(self.state)
         while not self._stopped.is_set() and self.state.executed < self.state.acknowledged:
@@ -111,6 +136,24 @@ class Streamer:
         self.state.finished = not self._stopped.is_set()
         self.progress(self.state)
         return self.state
+
+    def _send(self, instructions: tuple[Instruction, ...]) -> None:
+        """One frame, sent again with its number until acknowledged (the device executes a
+        frame once, however many copies arrive), for up to ROUNDS rounds of tries."""
+        protocol = self.client.protocol
+        assert isinstance(protocol, LaserProtocol)
+        frame = QueuedGroup(instructions, protocol.next_sequence())
+        for round_number in range(1, ROUNDS + 1):
+            try:
+                self.client.execute(frame)
+                return
+            except (Retransmit, DeviceTimeout) as exc:
+                if round_number == ROUNDS:
+                    raise type(exc)(
+                        f"{exc} (after {ROUNDS} rounds; {self.state.acknowledged} of "
+                        f"{self.state.total} instructions were acknowledged before it)"
+                    ) from exc
+                self.client.retransmissions += 1
 
     def _check_status(self, force: bool = False) -> None:
         now = time.monotonic()

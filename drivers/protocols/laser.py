@@ -66,9 +66,11 @@ class GetStatus(Command):
 
 @dataclass(frozen=True)
 class QueuedGroup(Command):
-    """Up to 7 queued instructions in one frame (program streaming)."""
+    """Up to 7 queued instructions in one frame (program streaming); `sequence` fixes the frame
+    number, so that the same frame can be sent again later (None: the protocol's next)."""
 
     instructions: tuple[Instruction, ...]
+    sequence: int | None = None
 
 
 @dataclass(frozen=True)
@@ -184,6 +186,7 @@ class LaserProtocol(Protocol):
         raw_line_end="",
         speed_in_moves=True,
         dwell=True,
+        streaming=True,
         notes=("moves are queued on the device; the position is read back while they run",),
     )
     attempts = 3
@@ -217,7 +220,8 @@ class LaserProtocol(Protocol):
                 raise BadInput(f"a queued frame holds 1 to {GROUP} queued instructions")
         else:
             raise BadInput(f"the laser link has no instruction for {type(command).__name__}")
-        return [Instruction(SEQUENCE, (Field(INT16, (self.sequence,)),)), *queued]
+        number = getattr(command, "sequence", None) or self.sequence
+        return [Instruction(SEQUENCE, (Field(INT16, (number,)),)), *queued]
 
     def encode(self, command: Command) -> bytes:
         """The frame's bytes (raw console bytes go as they are)."""
@@ -236,13 +240,21 @@ class LaserProtocol(Protocol):
     def exchange(self, command: Command) -> LaserExchange:
         """The reply carries the first instruction's word (and, queued, the frame number)."""
         first = self.instructions(command)[0]
-        sequence = self.sequence if first.word == SEQUENCE else None
+        sequence = int(first.values(INT16)[0]) if first.word == SEQUENCE else None
         return LaserExchange(command, first.word, sequence, self.command_name(command))
 
     def on_sent(self, command: Command) -> None:
         """A queued frame went out: the next one gets the next number."""
+        if isinstance(command, QueuedGroup) and command.sequence is not None:
+            return  # numbered by its sender
         if isinstance(command, (MoveTo, Home, Dwell, QueuedGroup)):
-            self.sequence = self.sequence % 32767 + 1
+            self.next_sequence()
+
+    def next_sequence(self) -> int:
+        """Take a frame number (for a frame its sender may have to send again)."""
+        number = self.sequence
+        self.sequence = self.sequence % 32767 + 1
+        return number
 
     def command_name(self, command: Command) -> str:
         """E.g. `GET_POSITION`, or `frame 12 (MOVE_LINEAR ×7)`."""
@@ -255,4 +267,4 @@ class LaserProtocol(Protocol):
         words = [WORD_NAMES.get(i.word, "?") for i in instructions[1:]]
         shown = words[0] if len(set(words)) == 1 else "+".join(words)
         count = f" ×{len(words)}" if len(words) > 1 else ""
-        return f"frame {self.sequence} ({shown}{count})"
+        return f"frame {instructions[0].values(INT16)[0]} ({shown}{count})"

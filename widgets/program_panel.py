@@ -1,0 +1,133 @@
+"""A program of points: load it, see it, stream it with progress, pause, resume and stop."""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Signal
+from PySide6.QtWidgets import (
+    QFileDialog,
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QProgressBar,
+    QVBoxLayout,
+    QWidget,
+)
+
+from widgets._buttons import make_button
+
+PROGRAM_FILTER = "Programs (*.csv *.json);;All files (*)"
+
+
+class ProgramPanel(QWidget):
+    """Buttons and progress for streaming; the app loads files and runs the stream."""
+
+    load_requested = Signal(str)  # a path
+    run_requested = Signal()
+    pause_requested = Signal()
+    resume_requested = Signal()
+    stop_requested = Signal()
+
+    def __init__(self, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self.setObjectName("programPanel")
+        self.file_label = QLabel("no program loaded")
+        self.file_label.setObjectName("programFile")
+        self.file_label.setWordWrap(True)
+        self.load_button = make_button(
+            "Load…", "programLoad", "Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON"
+        )
+        self.run_button = make_button(
+            "Run", "programRun", "Stream the program to the device, 7 moves a frame"
+        )
+        self.pause_button = make_button(
+            "Pause", "programPause", "Send nothing more until Resume (queued moves go on)"
+        )
+        self.stop_button = make_button(
+            "Stop", "programStop", "Send nothing more and flush the device's queue (STOP)"
+        )
+        self.progress = QProgressBar()
+        self.progress.setObjectName("programProgress")
+        self.progress.setToolTip("Instructions executed by the device")
+        self.progress.setFormat("%v / %m executed")
+        self.figures = QLabel()
+        self.figures.setObjectName("programFigures")
+        self.figures.setWordWrap(True)
+        self.load_button.clicked.connect(self._load)
+        self.run_button.clicked.connect(self.run_requested)
+        self.pause_button.clicked.connect(self._pause_clicked)
+        self.stop_button.clicked.connect(self.stop_requested)
+        buttons = QHBoxLayout()
+        for button in (self.load_button, self.run_button, self.pause_button, self.stop_button):
+            buttons.addWidget(button)
+        grid = QGridLayout()
+        grid.addWidget(QLabel("Program:"), 0, 0)
+        grid.addWidget(self.file_label, 0, 1)
+        grid.setColumnStretch(1, 1)
+        layout = QVBoxLayout(self)
+        layout.addLayout(grid)
+        layout.addLayout(buttons)
+        layout.addWidget(self.progress)
+        layout.addWidget(self.figures)
+        layout.addStretch(1)
+        self._paused = False
+        self.set_program("", 0)
+        self.set_running(False)
+
+    def _choose_path(self) -> str:
+        path, _ = QFileDialog.getOpenFileName(self, "Load a program", "", PROGRAM_FILTER)
+        return path
+
+    def _load(self) -> None:
+        path = self._choose_path()
+        if path:
+            self.load_requested.emit(path)
+
+    def _pause_clicked(self) -> None:
+        if self._paused:
+            self.resume_requested.emit()
+        else:
+            self.pause_requested.emit()
+
+    def set_program(self, name: str, points: int) -> None:
+        """Show the loaded program (an empty name: none)."""
+        self.file_label.setText(f"{name} ({points} points)" if name else "no program loaded")
+        self.progress.setRange(0, max(points, 1))
+        self.progress.setValue(0)
+        self.run_button.setEnabled(bool(name))
+
+    def show_error(self, text: str) -> None:
+        """A load or run problem, in red."""
+        self.figures.setStyleSheet("color: #c62828;")
+        self.figures.setText(text)
+
+    def set_running(self, running: bool) -> None:
+        """While streaming: Run and Load off, Pause and Stop on."""
+        self.load_button.setEnabled(not running)
+        self.run_button.setEnabled(not running and self.file_label.text() != "no program loaded")
+        self.pause_button.setEnabled(running)
+        self.stop_button.setEnabled(running)
+        if not running:
+            self.set_paused(False)
+
+    def set_paused(self, paused: bool) -> None:
+        """Show Pause or Resume."""
+        self._paused = paused
+        self.pause_button.setText("Resume" if paused else "Pause")
+
+    def show_progress(
+        self,
+        sent: int,
+        acknowledged: int,
+        executed: int,
+        rate: float,
+        seconds_left: float | None,
+        retransmissions: int,
+    ) -> None:
+        """Counts, rate, time left."""
+        self.progress.setValue(executed)
+        left = f", about {seconds_left:.0f} s left" if seconds_left is not None else ""
+        self.figures.setStyleSheet("")
+        self.figures.setText(
+            f"sent {sent}, acknowledged {acknowledged}, executed {executed}; "
+            f"{rate:.0f} instructions/s{left}; {retransmissions} retransmission(s)"
+        )
