@@ -21,6 +21,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from bench.laser_stream import bench_laser_stream  # noqa: E402
 from bench.motionsim import motionsim  # noqa: E402
 from bench.visiomex_write import bench_visiomex_write  # noqa: E402
 from drivers import commands as cmd  # noqa: E402
@@ -158,6 +159,9 @@ def main() -> int:
         "traffic_memory": bench_traffic_memory(100_000 // scale),
         "gui_latency": bench_gui_latency(40 // scale),
         "visiomex_profile_write": bench_visiomex_write(5 if options.quick else 27),
+        "laser_stream": bench_laser_stream(
+            200 if options.quick else 2000, 1000 if options.quick else 10_000
+        ),
     }
     if options.json:
         print(json.dumps(results, indent=None))

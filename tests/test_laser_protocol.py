@@ -28,6 +28,7 @@ from drivers.protocols.laser_codec import (
     UINT8,
     Field,
     Instruction,
+    crc16,
     decode_instructions,
 )
 
@@ -82,10 +83,11 @@ def test_queued_frames_carry_a_sequence_that_advances_only_when_sent() -> None:
     protocol = LaserProtocol()
     move = cmd.MoveTo(1, 2, 3, 10)
     first = protocol.instructions(move)
-    assert first[0] == Instruction(0x20, (Field(INT16, (1,)),))
+    check = crc16(first[1].encode())  # the frame's CRC-16 of the queued instructions
+    assert first[0] == Instruction(0x20, (Field(INT16, (1, check - 0x10000 * (check >= 0x8000))),))
     assert protocol.instructions(move)[0] == first[0]  # encoding alone takes no number
     protocol.on_sent(move)
-    assert protocol.instructions(move)[0].values(INT16) == (2,)
+    assert protocol.instructions(move)[0].values(INT16)[0] == 2
     protocol.on_sent(cmd.GetPosition())  # immediate frames take none
     assert protocol.sequence == 2
     protocol.sequence = 32767
@@ -174,3 +176,27 @@ def test_programs_from_csv_and_json_and_their_errors() -> None:
         parse_json("{nope")
     with pytest.raises(ProgramError, match="point 1"):
         parse_json('{"points": [[1, 2]]}')
+
+
+def test_crc16_is_ccitt_false() -> None:
+    assert crc16(b"123456789") == 0x29B1
+
+
+def test_the_simulator_refuses_queued_instructions_whose_crc_differs() -> None:
+    from drivers.sim.clock import ManualClock
+    from drivers.sim.laser_device import LaserDevice
+
+    clock = ManualClock()
+    device = LaserDevice(clock, instant=True)
+    protocol = LaserProtocol()
+    good = protocol.instructions(cmd.MoveTo(1, 2, 3, 10))
+    damaged = Instruction(0x01, (Field(FLOAT, (1.0, 2.0, 3.5, 10.0)),))  # a changed z
+    data = good[0].encode() + damaged.encode()
+    device.receive(StuffedFramer().encode(data))
+    clock.advance(0.1)
+    frames, _ = StuffedFramer().split(device.read_output())
+    assert decode_instructions(frames[0]) == [Instruction(0x7F, (Field(UINT8, (0x20, 2)),))]
+    assert device.executed == []
+    device.receive(protocol.encode(cmd.MoveTo(1, 2, 3, 10)))
+    clock.advance(0.1)
+    assert [word for word, *_ in device.executed] == [0x01]

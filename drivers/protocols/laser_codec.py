@@ -99,3 +99,18 @@ def decode_instructions(data: bytes) -> list[Instruction]:
             index = end
         instructions.append(Instruction(word, tuple(fields)))
     return instructions
+
+
+def crc16(data: bytes) -> int:
+    """CRC-16/CCITT-FALSE (poly 0x1021, init 0xFFFF) of `data`."""
+    crc = 0xFFFF
+    for byte in data:
+        crc ^= byte << 8
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0x1021) & 0xFFFF if crc & 0x8000 else (crc << 1) & 0xFFFF
+    return crc
+
+
+def as_int16(value: int) -> int:
+    """A 16-bit pattern as the int16 that carries it."""
+    return value - 0x10000 if value >= 0x8000 else value

@@ -10,6 +10,8 @@ import math
 import struct
 from dataclasses import dataclass
 
+from drivers.protocols.laser_codec import crc16
+
 MOVE_LINEAR, DWELL, GO_HOME = 0x01, 0x02, 0x03
 GET_POSITION, GET_STATUS, SET_HOME, STOP, GET_ID = 0x10, 0x11, 0x12, 0x13, 0x14
 SEQUENCE, ERROR = 0x20, 0x7F
@@ -90,7 +92,10 @@ def _values(word: int, fields: list[tuple[int, bytes]]) -> Values:
     signature = SIGNATURES.get(word)
     if signature is None:
         raise Refused(word, UNKNOWN, f"unknown command word {word:#04x}")
-    if tuple((marker, raw[1]) for marker, raw in fields) != signature:
+    shape = tuple((marker, raw[1]) for marker, raw in fields)
+    if word == SEQUENCE and shape == ((INT16, 2),):
+        signature = shape  # the frame number and the queued instructions' CRC-16
+    if shape != signature:
         raise Refused(word, BAD_ARGUMENTS, f"fields of {word:#04x} do not match {signature}")
     if not fields:
         return ()
@@ -107,10 +112,15 @@ def parse(data: bytes) -> Parsed:
     first = instructions[0][0]
     sequence: int | None = None
     if first == SEQUENCE:
-        sequence = int(instructions[0][1][0]) & 0xFFFF  # an int16 field read as 16 bits
+        values = instructions[0][1]
+        sequence = int(values[0]) & 0xFFFF  # an int16 field read as 16 bits
         instructions = instructions[1:]
         if not instructions:
             raise Refused(SEQUENCE, BAD_ARGUMENTS, "SEQUENCE without queued instructions")
+        if len(values) == 2:  # the frame's CRC-16 of the queued instructions' bytes
+            queued = data[3 + 2 * len(values) :]
+            if int(values[1]) & 0xFFFF != crc16(queued):
+                raise Refused(SEQUENCE, CHECKSUM, "the queued instructions' CRC-16 differs")
     for word, values in instructions:
         if word == SEQUENCE:
             raise Refused(word, BAD_ARGUMENTS, "SEQUENCE is not first in its frame")
