@@ -1,0 +1,85 @@
+"""The window on the simulated laser robot: a program loaded, previewed, streamed, stopped."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QDockWidget
+
+from app.main_window import MainWindow
+
+pytestmark = pytest.mark.timeout(60)
+
+
+def _connect(qtbot, win: MainWindow, url: str) -> None:
+    with qtbot.waitSignal(win.settled, timeout=10000):
+        win.connect_device(url, "laser-frame", 115200)
+
+
+def _program(path: Path, count: int, speed: float = 1000.0) -> Path:
+    lines = ["x,y,z,speed"] + [f"{i % 10},{i // 10},0,{speed}" for i in range(count)]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def _acknowledged(figures: str) -> int:
+    found = re.search(r"acknowledged (\d+)", figures)
+    return int(found.group(1)) if found else 0
+
+
+def test_a_program_streams_under_corruption_with_progress(
+    qtbot, window: MainWindow, tmp_path: Path
+) -> None:
+    _connect(qtbot, window, "sim://laser-frame?instant=1&corrupt=0.01&seed=5")
+    dock = window.findChild(QDockWidget, "programPanelDock")
+    assert dock is not None and dock.isVisible()
+    panel = window.devices.program
+    path = _program(tmp_path / "grid.csv", 100)
+    panel._choose_path = lambda: str(path)  # type: ignore[method-assign]
+    qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
+    assert len(window.view2d.preview()) == 100  # the whole path, before anything is sent
+    qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: panel.progress.value() == 100, timeout=40000)
+    qtbot.waitUntil(lambda: panel.run_button.isEnabled(), timeout=5000)
+    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    moves = [values[:2] for word, values, *_ in device.executed if word == 0x01]
+    assert moves == [(float(i % 10), float(i // 10)) for i in range(100)]  # once each, in order
+    assert "executed 100" in panel.figures.text()
+    assert window.readout.position()[:2] == (9.0, 9.0)  # type: ignore[index]
+
+
+def test_a_malformed_program_is_refused_and_nothing_is_sent(
+    qtbot, window: MainWindow, tmp_path: Path
+) -> None:
+    _connect(qtbot, window, "sim://laser-frame?instant=1")
+    panel = window.devices.program
+    bad = tmp_path / "bad.csv"
+    bad.write_text("x,y,z,speed\n1,2,3,4\n1,2,three,4\n")
+    panel._choose_path = lambda: str(bad)  # type: ignore[method-assign]
+    qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
+    assert "line 3" in panel.figures.text() and "three" in panel.figures.text()
+    assert not panel.run_button.isEnabled()
+
+
+def test_stop_flushes_the_queue(qtbot, window: MainWindow, tmp_path: Path) -> None:
+    _connect(qtbot, window, "sim://laser-frame")
+    panel = window.devices.program
+    path = _program(tmp_path / "slow.csv", 40, speed=5.0)  # 1 mm moves at 5 mm/s: 8 s in all
+    panel._choose_path = lambda: str(path)  # type: ignore[method-assign]
+    qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
+    qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: panel.stop_button.isEnabled(), timeout=5000)
+    qtbot.waitUntil(
+        lambda: (
+            "acknowledged 14" in panel.figures.text() or "acknowledged 2" in panel.figures.text()
+        ),
+        timeout=5000,
+    )
+    qtbot.mouseClick(panel.stop_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: panel.run_button.isEnabled(), timeout=10000)
+    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    assert device.queue_length() == 0
+    assert len([w for w, *_ in device.executed if w == 0x01]) < 40
