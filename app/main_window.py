@@ -495,12 +495,17 @@ class MainWindow(QMainWindow):
             self._home_from = self._last_position
 
     def stop(self) -> None:
-        """Cancel what is queued and say what was not sent."""
+        """Cancel what is queued and say what was not sent; where the device can stop, stop
+        the move (or program) under way too."""
         self.jog_panel.release()
         self._jog_next = None
         dropped = self.worker.cancel_pending()
         self._report_dropped(dropped)
-        if not dropped:
+        can_stop = self.info is not None and self.info.capabilities.stop
+        if can_stop and (self._busy_job is not None or self._moving):
+            self.worker.stop_now()
+            self._say("stopping the move under way", status.WARNING, note=False)
+        elif not dropped:
             self._say("nothing queued; the move under way finishes", note=False)
 
     def _report_dropped(self, dropped: list[jobs.Job]) -> None:

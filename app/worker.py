@@ -136,6 +136,13 @@ class SerialWorker(QObject):
             else:
                 streamer.resume()
 
+    def stop_now(self) -> None:
+        """Stop the move or program under way, where the device has a stop (any thread)."""
+        motion = self._motion
+        if motion is not None:
+            motion.stop_requested.set()
+        self.stream_stop()
+
     def stream_stop(self) -> None:
         """Stop the program under way; the device's queue is flushed (any thread)."""
         streamer = self._streamer
@@ -271,6 +278,7 @@ class SerialWorker(QObject):
     def _run(self, job: jobs.Job) -> None:
         motion = self._motion
         assert motion is not None
+        motion.stop_requested.clear()  # a stop asked before this job is not for it
         self.busy_changed.emit(True)
         try:
             result = self._dispatch(motion, job)

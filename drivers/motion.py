@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 import logging
 import math
+import threading
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -72,6 +73,8 @@ class Motion:
         self.travel: TravelLimits | None = None
         """Where moves may go; None: anywhere the device accepts."""
         self.move_listeners: list[Callable[[MoveStart], None]] = []
+        self.stop_requested = threading.Event()
+        """Set from any thread: a move being waited on is stopped (where the device can stop)."""
         self.parameter_listeners: list[Callable[[ParameterWritten], None]] = []
         """Told of every parameter the device confirmed (and what it changed by itself)."""
         self.notice_listeners: list[Callable[[str], None]] = []
@@ -389,6 +392,13 @@ class Motion:
         deadline = time.monotonic() + allowed
         previous: PositionReport | None = None
         while True:
+            if self.stop_requested.is_set() and self.capabilities.stop:
+                self.stop_requested.clear()
+                self.client.execute(cmd.Stop())  # halts the move under way and flushes the queue
+                stopped = self.position()
+                for listener in list(self.notice_listeners):
+                    listener(f"stopped at ({stopped.x:g}, {stopped.y:g}, {stopped.z:g}) mm")
+                return stopped
             now = self.position()
             here = (now.x, now.y, now.z)
             if all(abs(a - b) <= POSITION_TOLERANCE for a, b in zip(here, target, strict=True)):

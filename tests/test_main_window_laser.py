@@ -10,6 +10,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget
 
 from app.main_window import MainWindow
+from widgets import status_line as status
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -83,3 +84,19 @@ def test_stop_flushes_the_queue(qtbot, window: MainWindow, tmp_path: Path) -> No
     device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
     assert device.queue_length() == 0
     assert len([w for w, *_ in device.executed if w == 0x01]) < 40
+
+
+def test_stop_halts_a_move_under_way(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window, "sim://laser-frame")
+    window.speed.set_value(10)
+    window.speed.apply()
+    window.coordinates.set_values(100, 0, 0)  # 10 s at 10 mm/s
+    qtbot.mouseClick(window.coordinates.go_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: (window.readout.position() or (0, 0, 0))[0] > 2, timeout=5000)
+    assert window.stop_action.text() == "&Stop"
+    window.stop_action.trigger()
+    qtbot.waitUntil(lambda: window.status_line.state() == status.IDLE, timeout=5000)
+    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    x = device.position()[0]
+    assert 2 < x < 50
+    assert window.readout.position()[0] == pytest.approx(x, abs=0.5)  # type: ignore[index]
