@@ -16,7 +16,7 @@ from app.worker import DeviceInfo
 from drivers.capabilities import Capabilities
 from drivers.commands import Arc
 from drivers.errors import BadInput
-from drivers.program import ProgramPoint, read_program
+from drivers.program import ProgramPoint, read_program, write_program
 from drivers.streaming import StreamProgress
 from widgets.arc_entry import ArcEntry
 from widgets.dwell_entry import DwellEntry
@@ -82,6 +82,7 @@ class DeviceDocks(QObject):
         self.window.worker.job_failed.connect(self._on_job_failed)
         self.window.worker.stream_progress.connect(self._on_stream_progress)
         self.program.load_requested.connect(self.load_program)
+        self.program.save_requested.connect(self.save_program)
         self.program.run_requested.connect(self.run_program)
         self.program.pause_requested.connect(lambda: self._pause(True))
         self.program.resume_requested.connect(lambda: self._pause(False))
@@ -168,6 +169,15 @@ class DeviceDocks(QObject):
         self.program.set_program(self.program_name, len(points))
         self._show_path(0)
         self.window.say(f"program {self.program_name}: {len(points)} points, nothing sent yet")
+
+    def save_program(self, path: str) -> None:
+        """Save the loaded program as the panel's JSON."""
+        try:
+            write_program(path, self.points)
+        except BadInput as exc:
+            self.program.show_error(str(exc))
+            return
+        self.window.say(f"program saved to {path} ({len(self.points)} points)")
 
     def run_program(self) -> None:
         """Stream the loaded program (the worker runs it; progress comes by signal)."""

@@ -200,3 +200,9 @@ def test_the_simulator_refuses_queued_instructions_whose_crc_differs() -> None:
     device.receive(protocol.encode(cmd.MoveTo(1, 2, 3, 10)))
     clock.advance(0.1)
     assert [word for word, *_ in device.executed] == [0x01]
+
+
+@pytest.mark.parametrize("code", [3, 4])
+def test_a_queued_frame_refused_as_malformed_is_sent_again(code: int) -> None:
+    with pytest.raises(Retransmit, match=f"error {code}"):
+        _exchange_result(cmd.MoveTo(1, 2, 3, 10), bytes((0x7F, UINT8, 2, 0x20, code)))

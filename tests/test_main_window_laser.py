@@ -10,6 +10,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget
 
 from app.main_window import MainWindow
+from drivers.program import read_program
 from widgets import status_line as status
 
 pytestmark = pytest.mark.timeout(60)
@@ -49,6 +50,10 @@ def test_a_program_streams_under_corruption_with_progress(
     moves = [values[:2] for word, values, *_ in device.executed if word == 0x01]
     assert moves == [(float(i % 10), float(i // 10)) for i in range(100)]  # once each, in order
     assert "executed 100" in panel.figures.text()
+    saved = tmp_path / "grid.json"
+    panel._choose_save_path = lambda: str(saved)  # type: ignore[method-assign]
+    qtbot.mouseClick(panel.save_button, Qt.MouseButton.LeftButton)
+    assert [(p.x, p.y) for p in read_program(saved)] == [(i % 10, i // 10) for i in range(100)]
     assert window.readout.position()[:2] == (9.0, 9.0)  # type: ignore[index]
 
 

@@ -22,6 +22,7 @@ class ProgramPanel(QWidget):
     """Buttons and progress for streaming; the app loads files and runs the stream."""
 
     load_requested = Signal(str)  # a path
+    save_requested = Signal(str)  # a path (the panel's JSON)
     run_requested = Signal()
     pause_requested = Signal()
     resume_requested = Signal()
@@ -35,6 +36,9 @@ class ProgramPanel(QWidget):
         self.file_label.setWordWrap(True)
         self.load_button = make_button(
             "Load…", "programLoad", "Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON"
+        )
+        self.save_button = make_button(
+            "Save…", "programSave", "Save the loaded program as JSON (x, y, z, speed per point)"
         )
         self.run_button = make_button(
             "Run", "programRun", "Stream the program to the device, 7 moves a frame"
@@ -53,11 +57,18 @@ class ProgramPanel(QWidget):
         self.figures.setObjectName("programFigures")
         self.figures.setWordWrap(True)
         self.load_button.clicked.connect(self._load)
+        self.save_button.clicked.connect(self._save)
         self.run_button.clicked.connect(self.run_requested)
         self.pause_button.clicked.connect(self._pause_clicked)
         self.stop_button.clicked.connect(self.stop_requested)
         buttons = QHBoxLayout()
-        for button in (self.load_button, self.run_button, self.pause_button, self.stop_button):
+        for button in (
+            self.load_button,
+            self.save_button,
+            self.run_button,
+            self.pause_button,
+            self.stop_button,
+        ):
             buttons.addWidget(button)
         grid = QGridLayout()
         grid.addWidget(QLabel("Program:"), 0, 0)
@@ -77,6 +88,15 @@ class ProgramPanel(QWidget):
         path, _ = QFileDialog.getOpenFileName(self, "Load a program", "", PROGRAM_FILTER)
         return path
 
+    def _choose_save_path(self) -> str:
+        path, _ = QFileDialog.getSaveFileName(self, "Save the program", "", "JSON (*.json)")
+        return path if not path or path.endswith(".json") else path + ".json"
+
+    def _save(self) -> None:
+        path = self._choose_save_path()
+        if path:
+            self.save_requested.emit(path)
+
     def _load(self) -> None:
         path = self._choose_path()
         if path:
@@ -94,6 +114,7 @@ class ProgramPanel(QWidget):
         self.progress.setRange(0, max(points, 1))
         self.progress.setValue(0)
         self.run_button.setEnabled(bool(name))
+        self.save_button.setEnabled(bool(name))
 
     def show_error(self, text: str) -> None:
         """A load or run problem, in red."""

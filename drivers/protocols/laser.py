@@ -154,7 +154,9 @@ class LaserExchange(Exchange):
                 return False  # a late error reply to another frame
             meaning = ERROR_CODES.get(code, f"undocumented code {code}")
             message = f"{self.what}: the device answered error {code} ({meaning})"
-            if code in (1, 2):
+            # A queued frame the driver built cannot be malformed unless damaged on the way past
+            # the one-byte sum (its header, so that the CRC is not even read): sent again too.
+            if code in (1, 2) or (code in (3, 4) and self.sequence is not None):
                 self.fail(Retransmit(message))
             elif code == 5:
                 self.fail(QueueFull(message))

@@ -107,6 +107,10 @@ def _values(word: int, fields: list[tuple[int, bytes]]) -> Values:
 
 def parse(data: bytes) -> Parsed:
     """Check a frame's data as the firmware does; Refused (word, code) when it is not accepted."""
+    # The CRC first: a damaged frame whose one-byte sum still matches may not even parse.
+    numbered = data[:3] == bytes((SEQUENCE, INT16, 2)) and len(data) >= 7
+    if numbered and struct.unpack("<H", data[5:7])[0] != crc16(data[7:]):
+        raise Refused(SEQUENCE, CHECKSUM, "the queued instructions' CRC-16 differs")
     raw = split_instructions(data)
     instructions = [(word, _values(word, fields)) for word, fields in raw]
     first = instructions[0][0]
@@ -117,10 +121,6 @@ def parse(data: bytes) -> Parsed:
         instructions = instructions[1:]
         if not instructions:
             raise Refused(SEQUENCE, BAD_ARGUMENTS, "SEQUENCE without queued instructions")
-        if len(values) == 2:  # the frame's CRC-16 of the queued instructions' bytes
-            queued = data[3 + 2 * len(values) :]
-            if int(values[1]) & 0xFFFF != crc16(queued):
-                raise Refused(SEQUENCE, CHECKSUM, "the queued instructions' CRC-16 differs")
     for word, values in instructions:
         if word == SEQUENCE:
             raise Refused(word, BAD_ARGUMENTS, "SEQUENCE is not first in its frame")
