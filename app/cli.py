@@ -250,7 +250,10 @@ def _validate_offline(
             travel.apply((x, y, z), f"move to ({x:g}, {y:g}, {z:g}) mm")
     elif command == "jog":
         dx, dy, dz = _numbers(args, ("dx", "dy", "dz"))
-        protocol.encode(cmd.MoveBy(dx, dy, dz, kind))
+        # A device with absolute moves only is sent the target: checked here from the origin.
+        protocol.encode(
+            cmd.MoveBy(dx, dy, dz, kind) if caps.relative_moves else cmd.MoveTo(dx, dy, dz)
+        )
         if kind == "linear":
             check_resolution((dx, dy, dz), ("dx", "dy", "dz"), caps.resolution)
     elif command == "speed" and args:
@@ -296,6 +299,14 @@ def _protocol_settings(options: argparse.Namespace, protocol: Protocol) -> dict[
             raise UsageError(f"--{name.replace('_', '-')} is not a {protocol.name} setting")
         values[name] = value
     return {name: value for name, value in values.items() if name in names}
+
+
+def _keep_numbering(protocol: Protocol, settings: Any, options: argparse.Namespace) -> None:
+    """The next frame number, for the next run to go on from (laser link)."""
+    following = getattr(protocol, "sequence", None)
+    if isinstance(following, int) and any(s.name == "next_sequence" for s in protocol.settings):
+        values = {"next_sequence": float(following)}
+        write_protocol_settings(settings, options.protocol, options.port, values)
 
 
 def _join_travel(arguments: list[str]) -> list[str]:
@@ -361,6 +372,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 with_sim_variant(options.port, variant), baud, dtr=protocol.capabilities.dtr
             )
             stack.callback(link.close)
+            stack.callback(_keep_numbering, protocol, settings, options)  # failed or not
             if options.log:
                 link.listeners.append(TrafficLogWriter(stream))
             motion = Motion(Client(link, protocol, timeout=options.timeout))

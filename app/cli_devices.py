@@ -139,7 +139,13 @@ def check_device_offline(protocol: Protocol, command: str, args: list[str]) -> N
     elif command == "run":
         if len(args) != 1:
             raise DeviceUsageError(f"usage: {usage}")
-        for point in read_program(args[0]):
+        low, high = protocol.capabilities.speed_range or (0.0, float("inf"))
+        for index, point in enumerate(read_program(args[0]), start=1):
+            if not low <= point.speed <= high:
+                raise DeviceUsageError(
+                    f"{args[0]} point {index}: speed {point.speed:g} mm/s refused: "
+                    f"the device takes {low:g} to {high:g} mm/s"
+                )
             move_instruction(point.x, point.y, point.z, point.speed).encode()
 
 

@@ -211,7 +211,7 @@ class Client:
     ) -> str:
         name = self.protocol.command_name(exchange.command)
         what = "did not finish its reply" if exchange.events else "did not answer"
-        message = f"the device {what} to {name} within {silence + extra:.1f} s"
+        message = f"the device {what} to {name} within {silence + extra:.3g} s"
         if stray:
             message += f"; it sent {len(stray)} unexpected frame(s), the last: {stray[-1]}"
         if self.protocol.capabilities.busy_silent:

@@ -18,6 +18,7 @@ from drivers.errors import BadInput
 
 MAX_BYTES = 64 * 1024 * 1024
 MAX_POINTS = 1_000_000
+FLOAT32_MAX = 3.4028234663852886e38
 COLUMNS = ("x", "y", "z", "speed")
 
 
@@ -42,8 +43,8 @@ def _point(values: list[str | float], where: str) -> ProgramPoint:
             number = float(value)
         except (TypeError, ValueError):
             raise ProgramError(f"{where}: {name} {value!r} is not a number") from None
-        if not math.isfinite(number):
-            raise ProgramError(f"{where}: {name} {value!r} is not a finite number")
+        if not math.isfinite(number) or abs(number) > FLOAT32_MAX:
+            raise ProgramError(f"{where}: {name} {value!r} is not a finite float32 number")
         numbers.append(number)
     if numbers[3] <= 0:
         raise ProgramError(f"{where}: speed {numbers[3]:g} mm/s must be above 0")
@@ -109,7 +110,7 @@ def read_program(path: str | Path) -> list[ProgramPoint]:
     if len(raw) > MAX_BYTES:
         raise ProgramError(f"{file}: larger than {MAX_BYTES // 2**20} MiB")
     try:
-        text = raw.decode("utf-8")
+        text = raw.decode("utf-8-sig")  # a spreadsheet's "CSV UTF-8" starts with a BOM
     except UnicodeDecodeError:
         raise ProgramError(f"{file}: not UTF-8 text, not a program") from None
     if file.suffix.lower() == ".json":

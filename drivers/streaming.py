@@ -7,6 +7,7 @@ device's queue depth, asked now and then, tells how many have been executed.
 
 from __future__ import annotations
 
+import logging
 import threading
 import time
 from collections.abc import Callable
@@ -26,6 +27,8 @@ from drivers.protocols.laser_codec import Instruction
 
 ROUNDS = 10  # a frame is sent in up to this many rounds of the client's tries before failing
 CLEAN_TO_GROW = 8  # frames without a retransmission before the group grows by one
+log = logging.getLogger(__name__)
+
 STATUS_EVERY = 0.25  # s between queue-depth questions while sending
 DRAIN_POLL = 0.1  # s between questions while the device works its queue down
 
@@ -160,7 +163,12 @@ class Streamer:
         if not force and now - self._last_status < STATUS_EVERY:
             return
         self._last_status = now
-        status = self.client.execute(GetStatus()).value
+        try:
+            status = self.client.execute(GetStatus()).value
+        except (Retransmit, DeviceTimeout) as exc:
+            # The count of executed instructions only informs: asked again a moment later.
+            log.info("queue depth not read this time: %s", exc)
+            return
         depth = int(status["queue"]) if isinstance(status, dict) else 0
         moving = bool(status["moving"]) if isinstance(status, dict) else False
         waiting = depth + (1 if moving and depth == 0 else 0)

@@ -274,12 +274,6 @@ def test_id_move_set_home_status_stop(start_sim, tmp_path: Path) -> None:
 
 @pytest.mark.e2e
 @pytest.mark.timeout(15)
-@pytest.mark.xfail(
-    strict=True,
-    reason="PRODUCT BUG: app/cli.py:253 (_validate_offline) encodes cmd.MoveBy for `jog`, which "
-    "the laser protocol (absolute moves only) refuses: `jog 1 0 0` exits 2 with 'the laser link "
-    "has no instruction for MoveBy', though Motion.move_by would send a MoveTo",
-)
 def test_jog_moves_by_the_distance(start_sim, host_log: Path) -> None:
     sim, _ = start_sim("--instant")
     jogged = ok(motionctl(sim.path, "jog", "1", "0", "0", log=host_log))
@@ -288,22 +282,14 @@ def test_jog_moves_by_the_distance(start_sim, host_log: Path) -> None:
     assert [moves_of(f) for f in queued] == [[(1.0, 0.0, 0.0, 10.0)]]
 
 
-SECOND_RUN = (
-    "PRODUCT BUG: drivers/protocols/laser.py:200 starts every motionctl process at frame "
-    "number 1, and the device (drivers/sim/laser_device.py:256) acknowledges a frame with the "
-    "number it accepted last without running it: after `move 10 5 0`, the next motionctl run's "
-    "first queued frame is acknowledged and silently dropped, with exit 0"
-)
-
-
 @pytest.mark.e2e
 @pytest.mark.timeout(20)
 @pytest.mark.parametrize(
     "follow_up",
     [
-        pytest.param("home", marks=pytest.mark.xfail(strict=True, reason=SECOND_RUN)),
-        pytest.param("move", marks=pytest.mark.xfail(strict=True, reason=SECOND_RUN)),
-        pytest.param("run", marks=pytest.mark.xfail(strict=True, reason=SECOND_RUN)),
+        pytest.param("home"),
+        pytest.param("move"),
+        pytest.param("run"),
     ],
 )
 def test_a_second_run_queued_command_is_executed(start_sim, tmp_path: Path, follow_up: str) -> None:
@@ -415,11 +401,6 @@ BAD_PROGRAMS = [
         b"x,y,z,speed\n1,2,3,10\n1e39,2,3,10\n",
         ("line 3", "float32"),
         id="beyond float32",
-        marks=pytest.mark.xfail(
-            strict=True,
-            reason="PRODUCT BUG: app/cli_devices.py:143 (check_device_offline, run) encodes each "
-            "point without naming its line: the message is only '1e+39 does not fit a float32'",
-        ),
     ),
 ]
 
@@ -448,12 +429,6 @@ def test_bad_program_is_refused_before_sending(
 
 @pytest.mark.e2e
 @pytest.mark.timeout(15)
-@pytest.mark.xfail(
-    strict=True,
-    reason="PRODUCT BUG: drivers/program.py:112 decodes programs as 'utf-8', so the BOM a "
-    "spreadsheet's 'CSV UTF-8' export starts with stays in the first column's name: the file is "
-    "refused with 'line 1: the header must name x, y, z and speed (got \\ufeffx, y, z, speed)'",
-)
 def test_program_saved_with_a_byte_order_mark_runs(start_sim, tmp_path: Path) -> None:
     sim, _ = start_sim("--instant")
     program = tmp_path / "excel.csv"

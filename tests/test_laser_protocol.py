@@ -81,6 +81,8 @@ def test_a_0x90_inside_the_data_is_stuffed_and_survives() -> None:
 
 def test_queued_frames_carry_a_sequence_that_advances_only_when_sent() -> None:
     protocol = LaserProtocol()
+    assert 1 <= protocol.sequence <= 32767  # a session starts at a random number
+    protocol.configure({"next_sequence": 1})  # or where the last one left off
     move = cmd.MoveTo(1, 2, 3, 10)
     first = protocol.instructions(move)
     check = crc16(first[1].encode())  # the frame's CRC-16 of the queued instructions

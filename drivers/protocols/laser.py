@@ -11,6 +11,7 @@ again (3 tries); a queue-full reply waits and sends again.
 
 from __future__ import annotations
 
+import random
 from dataclasses import dataclass
 
 from drivers.capabilities import Capabilities, Completion
@@ -28,7 +29,7 @@ from drivers.commands import (
 from drivers.errors import BadInput, DeviceError, FrameError, QueueFull, Retransmit
 from drivers.events import Event, PositionReport, Undecodable
 from drivers.framers.stuffed import StuffedFramer
-from drivers.protocols.base import Exchange, Protocol
+from drivers.protocols.base import Exchange, Protocol, Setting
 from drivers.protocols.laser_codec import (
     CHAR,
     FLOAT,
@@ -196,11 +197,22 @@ class LaserProtocol(Protocol):
         notes=("moves are queued on the device; the position is read back while they run",),
     )
     attempts = 3
+    settings = (
+        Setting("next_sequence", "", 0, 0, 32767, "The next queued frame's number (0: random)"),
+    )
 
     def __init__(self, variant: str | None = None) -> None:
         super().__init__(variant)
-        self.sequence = 1
-        """The number the next queued frame gets (1..32767, wrapping)."""
+        self.sequence = random.randint(1, 32767)
+        """The number the next queued frame gets (1..32767, wrapping). A session starts where
+        the last one left off (`configure`) or, with nothing kept, at a random number: a first
+        frame numbered like the device's last accepted one would be taken for its copy."""
+
+    def configured(self) -> None:
+        """A kept frame number continues the numbering of the last session."""
+        kept = int(self.values.get("next_sequence", 0))
+        if kept:
+            self.sequence = kept
 
     def new_framer(self) -> StuffedFramer:
         """`EB 90 82 F0`, stuffed data, `90 82`, checksum."""
