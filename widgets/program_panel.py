@@ -113,6 +113,7 @@ class ProgramPanel(QWidget):
         self.file_label.setText(f"{name} ({points} points)" if name else "no program loaded")
         self.progress.setRange(0, max(points, 1))
         self.progress.setValue(0)
+        self.progress.setFormat("%v / %m executed" if name else "no program")
         self.run_button.setEnabled(bool(name))
         self.save_button.setEnabled(bool(name))
 
