@@ -5,9 +5,10 @@ from __future__ import annotations
 import dataclasses
 import logging
 import time
+from pathlib import Path
 
-from PySide6.QtCore import Qt, QTimer, Signal
-from PySide6.QtGui import QCloseEvent, QKeySequence
+from PySide6.QtCore import Qt, QTimer, QUrl, Signal
+from PySide6.QtGui import QCloseEvent, QDesktopServices, QKeySequence
 from PySide6.QtWidgets import (
     QDockWidget,
     QMainWindow,
@@ -22,6 +23,7 @@ from app.keyboard_jog import KeyboardJog
 from app.move_estimate import MoveEstimate
 from app.parameter_dock import ParameterDock
 from app.ports import PortWatcher
+from app.session_log import log_folder, open_session_log
 from app.settings import (
     DEFAULT_PORT,
     DEFAULT_PROTOCOL,
@@ -102,6 +104,24 @@ class MainWindow(QMainWindow):
         self._restore()
         self._set_controls_enabled(False)
         self.keyboard_jog = KeyboardJog(self, self.jog_panel)
+        self.session_log_path = self._start_session_log()
+
+    def _start_session_log(self) -> Path | None:
+        """Every byte of this session to a file in the log folder (on unless turned off)."""
+        if str(self.settings.value("session_log", "true")).lower() == "false":
+            return None
+        try:
+            path, stream = open_session_log()
+        except OSError as exc:
+            self._say(f"no session log: {exc}", status.WARNING)
+            return None
+        self.worker_thread.set_session_log(stream)
+        self.console.append_note(f"session log: {path}")
+        return path
+
+    def open_log_folder(self) -> None:
+        """Show the session logs' folder in the desktop's file manager."""
+        QDesktopServices.openUrl(QUrl.fromLocalFile(str(log_folder())))
 
     def _make_worker(self) -> SerialWorker:
         """A worker with the saved polling rates (5-10 Hz while a move is confirmed, 1 s idle)."""
@@ -164,6 +184,8 @@ class MainWindow(QMainWindow):
         export = file_menu.addAction("&Export traffic log…", self.console.export_interactively)
         export.setShortcut(QKeySequence("Ctrl+E"))
         export.setToolTip("Save every byte sent and received, with timestamps, to a text file")
+        folder = file_menu.addAction("Open the session &log folder", self.open_log_folder)
+        folder.setToolTip("Every byte of every session is kept there, one file a session")
         file_menu.addSeparator()
         file_menu.addAction("&Quit", QKeySequence.StandardKey.Quit, self.close)
         motion_menu = self.menuBar().addMenu("&Motion")

@@ -8,6 +8,7 @@ import queue
 import threading
 import time
 from dataclasses import dataclass, field
+from typing import TextIO
 
 from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, Slot
 
@@ -30,7 +31,7 @@ from drivers.protocols.base import Setting
 from drivers.protocols.firmata import StepperVersion, configure_stepper
 from drivers.registry import create_protocol
 from drivers.streaming import Streamer, StreamProgress
-from drivers.traffic import Traffic
+from drivers.traffic import Traffic, TrafficLogWriter
 from drivers.transport import Link, open_link
 from drivers.travel import TravelLimits
 
@@ -107,6 +108,7 @@ class SerialWorker(QObject):
         self._abort = threading.Event()
         self._travel: TravelLimits | None = None
         self._streamer: Streamer | None = None
+        self._session_log: TrafficLogWriter | None = None
         self._last_stream_position = 0.0
 
     # -- thread-safe API ---------------------------------------------------------------------
@@ -161,6 +163,17 @@ class SerialWorker(QObject):
         if self._motion is not None:
             self._motion.travel = limits
 
+    @Slot(object)
+    def set_session_log(self, stream: TextIO | None) -> None:
+        """Write every byte of every connection to `stream` from now on (None: stop)."""
+        if self._session_log is not None:
+            self._session_log.stream.close()
+        self._session_log = TrafficLogWriter(stream) if stream is not None else None
+
+    def _log_note(self, text: str) -> None:
+        if self._session_log is not None:
+            self._session_log.note(text)
+
     @Slot()
     def start(self) -> None:
         """Create the loop timer in the worker's thread."""
@@ -186,6 +199,9 @@ class SerialWorker(QObject):
             self.state_changed.emit("error", str(exc))
             return
         link.listeners.append(self._on_traffic)
+        if self._session_log is not None:
+            link.listeners.append(self._session_log)
+            self._log_note(f"connected to {url} ({protocol_name}, {baud} baud)")
         client = Client(link, protocol)
         client.abort = self._abort
         client.wait_hooks.append(self._flush_traffic_if_due)
@@ -243,6 +259,7 @@ class SerialWorker(QObject):
             self._timer.stop()
         self.cancel_pending()
         self.close_port()
+        self.set_session_log(None)
         # Hand the worker (and its timer) back to the main thread, so that it can be deleted
         # there once this thread has ended.
         app = QCoreApplication.instance()

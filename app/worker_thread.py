@@ -14,6 +14,7 @@ class WorkerThread(QObject):
     close_requested = Signal()
     shutdown_requested = Signal()
     travel_requested = Signal(object)
+    session_log_requested = Signal(object)
 
     def __init__(self, worker: SerialWorker | None = None, parent: QObject | None = None) -> None:
         super().__init__(parent)
@@ -26,12 +27,17 @@ class WorkerThread(QObject):
         self.close_requested.connect(self.worker.close_port)
         self.shutdown_requested.connect(self.worker.shutdown)
         self.travel_requested.connect(self.worker.set_travel)
+        self.session_log_requested.connect(self.worker.set_session_log)
         self.thread.start()
 
     def open(self, url: str, protocol: str, baud: int, options: object = None) -> None:
         """Ask the worker to connect (`options`: a ConnectOptions, or None for the defaults)."""
         self.worker.abort_clear()
         self.open_requested.emit(url, protocol, baud, options)
+
+    def set_session_log(self, stream: object) -> None:
+        """Hand the worker the session log's stream (it writes it from then on)."""
+        self.session_log_requested.emit(stream)
 
     def set_travel(self, limits: object) -> None:
         """Ask the worker to use these travel limits (a TravelLimits, or None)."""

@@ -117,6 +117,7 @@ def main() -> int:
     if not options.display:
         os.environ["QT_QPA_PLATFORM"] = "offscreen"
     os.environ.setdefault("MOTIONPANEL_SETTINGS", os.path.join(tempfile.mkdtemp(), "bench.ini"))
+    os.environ.setdefault("MOTIONPANEL_LOG_DIR", tempfile.mkdtemp())  # the session log
     print(json.dumps(measure(options.jogs)))
     return 0
 

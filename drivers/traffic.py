@@ -39,6 +39,11 @@ class TrafficLogWriter:
         self.stream = stream
         self.start = time.monotonic() if start is None else start
 
+    def note(self, text: str) -> None:
+        """A `#` line (a connection, a disconnection) with its time, flushed."""
+        self.stream.write(f"{time.monotonic() - self.start:010.3f} # {text}\n")
+        self.stream.flush()
+
     def __call__(self, record: Traffic) -> None:
         """Append one record as hexdump lines with their text column."""
         for line in hexdump_lines(record, self.start):

@@ -55,6 +55,14 @@ def sim_link(request: pytest.FixtureRequest) -> Iterator[tuple[Link, Recorder]]:
     link.close()
 
 
+@pytest.fixture(autouse=True)
+def _session_logs_in_tmp(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """Session logs of the panels a test opens go to the test's own folder."""
+    folder = tmp_path / "session-logs"
+    monkeypatch.setenv("MOTIONPANEL_LOG_DIR", str(folder))
+    return folder
+
+
 @pytest.fixture
 def settings_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     """The panel's (and motionctl's) settings in a file of the test's own."""

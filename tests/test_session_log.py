@@ -1,0 +1,73 @@
+"""The session log: every byte on disk as it crosses, even when the panel is killed."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from app.session_log import PATTERN, open_session_log, prune
+from tests.simproc import ROOT, SimProcess
+
+pytestmark = pytest.mark.timeout(60)
+
+
+def _bytes(log: Path, direction: str) -> bytes:
+    """The bytes of one direction in a hexdump log (hex columns, not the text)."""
+    out = bytearray()
+    for line in log.read_text(encoding="utf-8").splitlines():
+        parts = line.split("   ")
+        if len(parts) >= 2 and parts[0].endswith(f" {direction}"):
+            out += bytes.fromhex(parts[1])
+    return bytes(out)
+
+
+def test_old_sessions_are_pruned_to_the_budget(tmp_path: Path) -> None:
+    for index in range(5):
+        path = tmp_path / f"session-2026010{index}-000000-1.log"
+        path.write_bytes(b"x" * 1000)
+        os.utime(path, (index, index))
+    path, stream = open_session_log(tmp_path)
+    stream.close()
+    deleted = prune(tmp_path, budget=2500, keep=path)
+    assert [p.name[8:16] for p in deleted] == ["20260100", "20260101", "20260102"]
+    assert path.exists() and len(list(tmp_path.glob(PATTERN))) == 3
+
+
+@pytest.mark.e2e
+def test_a_killed_panel_leaves_its_log_complete(tmp_path: Path) -> None:
+    record = tmp_path / "device.log"
+    sim = SimProcess("coxiris", "--record", str(record))
+    logs = tmp_path / "logs"
+    env = dict(os.environ, MOTIONPANEL_LOG_DIR=str(logs), QT_QPA_PLATFORM="offscreen")
+    env["MOTIONPANEL_SETTINGS"] = str(tmp_path / "settings.ini")
+    env.pop("DISPLAY", None)  # offscreen under a display crashes in pyqtgraph's GL (issue 11)
+    panel = subprocess.Popen(
+        [sys.executable, "-m", "app.main", "--port", sim.path, "--protocol", "coxiris"],
+        cwd=ROOT,
+        env=env,
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
+    try:
+        deadline = time.monotonic() + 30
+        while time.monotonic() < deadline:  # the idle poll asks GET_POSITION every second
+            if record.exists() and record.read_text().count("GET_POSITION") >= 6:
+                break
+            time.sleep(0.1)  # polling another process's file: nothing to wait on
+        panel.send_signal(signal.SIGKILL)
+        panel.wait(10)
+    finally:
+        if panel.poll() is None:
+            panel.kill()
+        sim.stop()
+    (session,) = logs.glob(PATTERN)
+    # What the device received is what the panel sent, and the other way: none of it lost.
+    assert _bytes(session, "TX") == _bytes(record, "RX")
+    assert _bytes(session, "RX") == _bytes(record, "TX")
+    assert b"GET_POSITION" in _bytes(session, "TX")
