@@ -11,6 +11,7 @@ from contextlib import ExitStack
 from typing import Any
 
 from app.cli_devices import DEVICE_COMMANDS, check_device_offline, run_device
+from app.cli_log import check_log_offline, decode_log
 from app.cli_params import check_param_offline, param_rows, param_table, run_param
 from app.settings import (
     open_settings,
@@ -44,12 +45,12 @@ EXIT_INTERRUPTED = 130  # Ctrl-C, as shells report it
 PROTOCOL_CHOICES = ("coxiris", "visiomex", "laser-frame", "pi-frame", "firmata")
 COMMANDS = (
     "id", "position", "home", "set-home", "move", "jog", "speed", "limits", "check", "raw", "param",
-    *DEVICE_COMMANDS,
+    *DEVICE_COMMANDS, "log",
 )  # fmt: skip
 _ARITY = {
     "id": (0, 0), "position": (0, 0), "home": (0, 0), "set-home": (0, 0), "limits": (0, 0),
     "check": (0, 0), "move": (1, 3), "jog": (1, 3), "speed": (0, 1), "raw": (1, 1),
-    "param": (1, 3), **{name: (0, 20) for name in DEVICE_COMMANDS},
+    "param": (1, 3), "log": (2, 4), **{name: (0, 20) for name in DEVICE_COMMANDS},
 }  # fmt: skip
 _USAGE = {
     "move": "move X Y [Z]",
@@ -157,6 +158,8 @@ def _text(result: dict[str, Any]) -> str:
         pins = " ".join(str(p) for p in done["pins"])
         library = result["version"]
         return f"configured: {done['steps_per_rev']} steps/rev on pins {pins} (library {library})"
+    if "text" in result:
+        return "\n".join(result["text"])
     if "frames" in result:
         return (
             f"{result['executed']}/{result['instructions']} instructions executed in "
@@ -272,6 +275,8 @@ def _validate_offline(
         protocol.encode(cmd.Raw(args[0].encode("utf-8")))
     elif command == "param":
         check_param_offline(protocol, args)
+    elif command == "log":
+        check_log_offline(args)
     elif command in DEVICE_COMMANDS:
         check_device_offline(protocol, command, args)
 
@@ -356,6 +361,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     protocol.assume_parameters(last_written)
     if options.command == "param" and options.args[0] == "list":
         return report.done({"parameters": param_rows(protocol, last_written)})
+    if options.command == "log":  # offline: no port is opened
+        try:
+            return report.done(decode_log(protocol, options.args))
+        except BadInput as exc:
+            return report.fail(exc, EXIT_BAD_INPUT)
 
     def remember(values: dict[str, float]) -> None:
         write_parameters(settings, options.protocol, options.port, values)

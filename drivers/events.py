@@ -69,8 +69,9 @@ class Feedback(Event):
     meaning: str = ""
 
     def __str__(self) -> str:
-        text = f"feedback {self.code}" + (f" {self.value.hex(' ').upper()}" if self.value else "")
-        return f"{text} ({self.meaning})" if self.meaning else text
+        if self.meaning:  # the bytes are shown beside it where they matter
+            return f"feedback {self.code} ({self.meaning})"
+        return f"feedback {self.code}" + (f" {self.value.hex(' ').upper()}" if self.value else "")
 
 
 @dataclass(frozen=True)

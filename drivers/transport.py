@@ -40,14 +40,18 @@ class Link:
             listener(record)
 
     def write(self, data: bytes) -> None:
-        """Write all of `data`."""
+        """Write all of `data`.
+
+        The bytes are reported before they are written, so that a log on disk holds every byte
+        that may have reached the device even if this process is killed during the write; a
+        write that fails is then a PortError saying so.
+        """
+        self._report(TX, data)
         try:
             written = self.port.write(data)
             self.port.flush()
         except (serial.SerialException, OSError, ValueError) as exc:
             raise PortError(f"writing to {self.url} failed: {exc}") from exc
-        sent = data if written is None else data[:written]
-        self._report(TX, sent)
         if written is not None and written != len(data):
             raise PortError(f"writing to {self.url}: only {written} of {len(data)} bytes sent")
 

@@ -67,7 +67,11 @@ def test_a_killed_panel_leaves_its_log_complete(tmp_path: Path) -> None:
             panel.kill()
         sim.stop()
     (session,) = logs.glob(PATTERN)
-    # What the device received is what the panel sent, and the other way: none of it lost.
-    assert _bytes(session, "TX") == _bytes(record, "RX")
-    assert _bytes(session, "RX") == _bytes(record, "TX")
-    assert b"GET_POSITION" in _bytes(session, "TX")
+    # Every byte the device received is in the panel's log (logged before it is written, so
+    # the log may end with one write the kill cut short), and what the panel read is what the
+    # device sent (the device may have sent a last reply the panel never read).
+    sent, received = _bytes(session, "TX"), _bytes(session, "RX")
+    assert sent.startswith(_bytes(record, "RX"))
+    assert len(sent) - len(_bytes(record, "RX")) <= len(b"GET_POSITION\n")
+    assert _bytes(record, "TX").startswith(received)
+    assert sent.count(b"GET_POSITION") >= 6

@@ -8,7 +8,7 @@ from typing import ClassVar
 
 from drivers.capabilities import Capabilities
 from drivers.commands import Command, MoveBy, SetParameter
-from drivers.errors import BadInput, MotionError
+from drivers.errors import BadInput, FrameError, MotionError
 from drivers.events import Event
 from drivers.framers.base import Framer
 from drivers.parameters import Parameter, ParameterWritten, find_parameter
@@ -235,6 +235,17 @@ class Protocol(ABC):
     @abstractmethod
     def exchange(self, command: Command) -> Exchange:
         """A tracker for the reply to `command`."""
+
+    def new_tx_framer(self) -> Framer | None:
+        """A framer for what the host sends (None: every write is one frame)."""
+        return self.new_framer()
+
+    def describe_sent(self, frame: bytes) -> str:
+        """What a frame the host sent means, in the protocol's words (for logs and consoles)."""
+        try:
+            return "; ".join(str(e) for e in self.decode(frame))
+        except FrameError as exc:
+            return f"unreadable: {exc}"
 
     def check_raw(self, data: bytes) -> None:
         """Refuse raw console bytes the device cannot take (BadInput); the default takes all."""

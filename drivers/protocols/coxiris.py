@@ -230,6 +230,10 @@ class CoxirisProtocol(Protocol):
             return [ErrorReport(text[6:].lstrip(" "))]
         return [TextLine(text)]
 
+    def describe_sent(self, frame: bytes) -> str:
+        """The command line as sent."""
+        return frame.decode("latin-1").strip()
+
     def check_raw(self, data: bytes) -> None:
         """Refuse any line over 63 characters: the firmware would overflow its buffer."""
         for line in data.replace(b"\r", b"\n").split(b"\n"):

@@ -105,6 +105,16 @@ def _check(value: int, low: int, high: int, what: str) -> int:
     return value
 
 
+class HostFramer(SysexFramer):
+    """What a host sends: as the board reads it, where `F9` alone asks the version."""
+
+    def decode(self, buffer: bytes) -> tuple[int, bytes | None]:
+        """A lone `F9` is a whole message from the host."""
+        if buffer[:1] == bytes((REPORT_VERSION,)):
+            return 1, buffer[:1]
+        return super().decode(buffer)
+
+
 class _Reply(Exchange):
     """Waits for one kind of message: the firmware name (identity) or the library version."""
 
@@ -248,6 +258,29 @@ class FirmataProtocol(Protocol):
             ANALOG_MAPPING_RESPONSE: "analog mapping",
         }
         return [Feedback("sysex", frame, names.get(command, f"SysEx {command:#04x}"))]
+
+    def new_tx_framer(self) -> HostFramer:
+        """The host's messages, `F9` alone included."""
+        return HostFramer()
+
+    def describe_sent(self, frame: bytes) -> str:
+        """What the host asked the board, e.g. `STEPPER_STEP 300 rpm, 500 steps forward`."""
+        if frame == bytes((REPORT_VERSION,)):
+            return "version request"
+        if frame[:2] == bytes((START, REPORT_FIRMWARE)):
+            return "firmware name request"
+        if frame[:2] == bytes((START, STEPPER_DATA)) and len(frame) >= 4:
+            sub, data = frame[2], frame[3:-1]
+            if sub == CONFIGURE and len(data) >= 2:
+                pins = " ".join(str(p) for p in data[2:])
+                return f"STEPPER_CONFIGURE {data[0] | data[1] << 7} steps/rev, pins {pins}"
+            if sub == STEP and len(data) == 6:
+                rpm = data[0] | data[1] << 7 | data[2] << 14
+                way = "forward" if data[5] else "reverse"
+                return f"STEPPER_STEP {rpm} rpm, {data[3] | data[4] << 7} steps {way}"
+            if sub == LIBRARY_VERSION:
+                return "STEPPER_LIBRARY_VERSION request"
+        return super().describe_sent(frame)
 
     def exchange(self, command: Command) -> Exchange:
         """Identity: the firmware name; config and version: the library version reply."""

@@ -187,6 +187,27 @@ class PiFrameProtocol(Protocol):
         action = frame[2] if len(frame) > 2 else -1
         return [Feedback("frame", frame, ACTION_NAMES.get(action, f"action {action}"))]
 
+    def describe_sent(self, frame: bytes) -> str:
+        """A frame's action and fields, e.g. `Linear X=100 Y=50 Z=0 ticks at 9/5/0 ticks/s`."""
+        if len(frame) != 25:
+            return f"a {len(frame)}-byte frame"
+        action, x, y, z, sx, sy, sz, radius, angular, a0, a1, direction = struct.unpack(
+            ">B3h7HB", frame[2:-1]
+        )
+        if action == LINEAR:
+            return f"Linear X={x} Y={y} Z={z} ticks at {sx}/{sy}/{sz} ticks/s"
+        if action == CIRCULAR:
+            turn = "CCW" if direction else "CW"
+            return (
+                f"Circular centre ({x}, {y}) radius {radius} ticks, {a0 / 100:g}° to "
+                f"{a1 / 100:g}° {turn} at {angular / 100:g}°/s, Z to {z}"
+            )
+        if action == DWELL:
+            return f"Dwell {x & 0xFFFF} ms"
+        if action == SET_HOME:
+            return "SetHome"
+        return f"action {action}"
+
     def exchange(self, command: Command) -> NoReply:
         """No reply ever comes."""
         return NoReply(command)

@@ -313,6 +313,27 @@ class VisiomexProtocol(Protocol):
             dx = dy = 10**d / per  # unreadable digits: allow the longest move
         return move_seconds(self.known, dx, dy) * 1.5
 
+    def new_tx_framer(self) -> None:
+        """A packet has no terminator: each write is one packet."""
+        return None
+
+    def describe_sent(self, frame: bytes) -> str:
+        """A set or a move in words, e.g. `set pulley_diameter_x = 38.2 mm`."""
+        text = frame.decode("latin-1")
+        if text.startswith("S") and text[1:3].isdigit() and text[3:9].isdigit():
+            number = int(text[1:3])
+            if number in BY_ID:
+                parameter = BY_ID[number]
+                value = parameter.from_wire(int(text[3:9]))
+                return f"set {parameter.name} = {parameter.with_unit(value)}"
+        if text.startswith("M") and len(text) >= 2 + 2 * (self.format.digits + 1):
+            d, kinds = self.format.digits, {"L": "linear", "R": "rotational", "S": "steps"}
+            x, y = text[2 : 3 + d], text[3 + d : 4 + 2 * d]
+            return f"move {kinds.get(text[1], text[1])} X {x[0]}{x[1:]} Y {y[0]}{y[1:]}"
+        if text.startswith("D") and self.format.home:
+            return "go home"
+        return f"packet {text!r}"
+
     def check_raw(self, data: bytes) -> None:
         """Refuse what the firmware cannot take as one packet."""
         self._raw_text(data)

@@ -1,0 +1,74 @@
+"""Traffic decoded by the protocols' own decoders: each frame with its meaning beside its bytes.
+
+The same decoders serve the driver, the log reader and `motionctl log decode`: replies through
+the protocol's framer and `decode`, what was sent through its TX framer and `describe_sent`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from drivers.errors import FrameError
+from drivers.events import ErrorReport, TextLine, Undecodable
+from drivers.framers.base import Framer
+from drivers.log_reader import LogRecord
+from drivers.protocols.base import Protocol
+
+
+@dataclass(frozen=True)
+class DecodedFrame:
+    """One frame (or note) of the traffic and what it means; `kind`: frame, error, text, note."""
+
+    time: float
+    direction: str
+    data: bytes
+    meaning: str
+    kind: str
+
+    def line(self) -> str:
+        """E.g. `000001.039 TX  EB 90 82 F0 10 90 82 10  GET_POSITION`."""
+        if self.kind == "note":
+            return f"{self.time:010.3f} #   {self.meaning}"
+        shown = self.data.hex(" ").upper()
+        return f"{self.time:010.3f} {self.direction.upper()}  {shown}  {self.meaning}"
+
+
+def _received(protocol: Protocol, frame: bytes) -> tuple[str, str]:
+    try:
+        events = protocol.decode(frame)
+    except FrameError as exc:
+        return f"unreadable: {exc}", "error"
+    kind = "frame"
+    if any(isinstance(e, (ErrorReport, Undecodable)) for e in events):
+        kind = "error"
+    elif events and all(isinstance(e, TextLine) for e in events):
+        kind = "text"
+    return "; ".join(str(e) for e in events), kind
+
+
+def decode_records(protocol: Protocol, records: list[LogRecord]) -> list[DecodedFrame]:
+    """Every frame of the records, in order, with its meaning."""
+    framers: dict[str, Framer | None] = {
+        "rx": protocol.new_framer(),
+        "tx": protocol.new_tx_framer(),
+    }
+    pending = {"rx": b"", "tx": b""}
+    out: list[DecodedFrame] = []
+    for record in records:
+        if record.note:
+            out.append(DecodedFrame(record.time, "", b"", record.note, "note"))
+            continue
+        framer = framers[record.direction]
+        if framer is None:  # the record is the frame (packets ended by silence)
+            frames, pending[record.direction] = [record.data], b""
+        else:
+            frames, pending[record.direction] = framer.split(
+                pending[record.direction] + record.data
+            )
+        for frame in frames:
+            if record.direction == "rx":
+                meaning, kind = _received(protocol, frame)
+            else:
+                meaning, kind = protocol.describe_sent(frame), "frame"
+            out.append(DecodedFrame(record.time, record.direction, frame, meaning, kind))
+    return out
