@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from drivers.errors import BadInput
+from drivers.files import read_text
 
 MAX_BYTES = 512 * 1024 * 1024
 _LINE = re.compile(r"^(\d{6,}\.\d{3}) (TX|RX)   ((?:[0-9A-F]{2} ?){1,16})")
@@ -71,15 +72,5 @@ def parse_log(text: str, source: str = "log") -> list[LogRecord]:
 def read_log(path: str | Path) -> list[LogRecord]:
     """A log file's records; LogError for a missing, binary, huge or foreign file."""
     file = Path(path)
-    try:
-        with file.open("rb") as stream:
-            raw = stream.read(MAX_BYTES + 1)
-    except OSError as exc:
-        raise LogError(f"cannot read the log {file}: {exc.strerror or exc}") from None
-    if len(raw) > MAX_BYTES:
-        raise LogError(f"{file}: larger than {MAX_BYTES // 2**20} MiB")
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError:
-        raise LogError(f"{file}: not text, not a traffic log") from None
+    text = read_text(file, MAX_BYTES, "traffic log", LogError)
     return parse_log(text, str(file))

@@ -19,6 +19,7 @@ import tomllib
 from pathlib import Path
 
 from drivers.errors import BadInput
+from drivers.files import read_text
 from drivers.parameters import Parameter
 
 MAX_BYTES = 64 * 1024
@@ -75,17 +76,7 @@ def read_profile(
 ) -> dict[str, float]:
     """A profile file's values; ProfileError for a missing, large, binary or malformed file."""
     file = Path(path)
-    try:
-        with file.open("rb") as stream:
-            raw = stream.read(MAX_BYTES + 1)
-    except OSError as exc:
-        raise ProfileError(f"cannot read the profile {file}: {exc.strerror or exc}") from None
-    if len(raw) > MAX_BYTES:
-        raise ProfileError(f"{file}: larger than {MAX_BYTES // 1024} KiB, not a parameter profile")
-    try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError:
-        raise ProfileError(f"{file}: not UTF-8 text, not a parameter profile") from None
+    text = read_text(file, MAX_BYTES, "profile", ProfileError)
     return parse_profile(text, parameters, protocol, str(file))
 
 

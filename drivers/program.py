@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from drivers.errors import BadInput
+from drivers.files import read_text
 
 MAX_BYTES = 64 * 1024 * 1024
 MAX_POINTS = 1_000_000
@@ -102,17 +103,8 @@ def parse_json(text: str, source: str = "program") -> list[ProgramPoint]:
 def read_program(path: str | Path) -> list[ProgramPoint]:
     """A program file's points (`.json`: the panel's JSON, anything else: CSV)."""
     file = Path(path)
-    try:
-        with file.open("rb") as stream:
-            raw = stream.read(MAX_BYTES + 1)
-    except OSError as exc:
-        raise ProgramError(f"cannot read the program {file}: {exc.strerror or exc}") from None
-    if len(raw) > MAX_BYTES:
-        raise ProgramError(f"{file}: larger than {MAX_BYTES // 2**20} MiB")
-    try:
-        text = raw.decode("utf-8-sig")  # a spreadsheet's "CSV UTF-8" starts with a BOM
-    except UnicodeDecodeError:
-        raise ProgramError(f"{file}: not UTF-8 text, not a program") from None
+    # a spreadsheet's "CSV UTF-8" starts with a BOM
+    text = read_text(file, MAX_BYTES, "program", ProgramError, "utf-8-sig")
     if file.suffix.lower() == ".json":
         return parse_json(text, str(file))
     return parse_csv(text, str(file))

@@ -113,7 +113,7 @@ def test_motionctl_log_decode_filters_and_prints_json(tmp_path: Path) -> None:
     frames = json.loads(as_json.stdout)["frames"]
     assert [f["meaning"] for f in frames] == ["GET_ID", "ACK GET_ID", "DONE GET_ID: CX25F7TK9P"]
     missing = _motionctl("--protocol", "coxiris", "log", "decode", str(tmp_path / "none.log"))
-    assert missing.returncode == 2 and "cannot read the log" in missing.stderr
+    assert missing.returncode == 2 and "cannot read the traffic log" in missing.stderr
     foreign = tmp_path / "notes.txt"
     foreign.write_text("shopping list\n")
     refused = _motionctl("--protocol", "coxiris", "log", "decode", str(foreign))
