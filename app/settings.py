@@ -77,35 +77,8 @@ def write_travel(
     settings.setValue(f"{key}/travel_clamp", "true" if limits.clamp else "false")
 
 
-def read_parameters(settings: QSettings, protocol: str, port: str) -> dict[str, float]:
-    """The parameter values last written to a device and confirmed (the device has no read-back)."""
-    group = f"{device_key(protocol, port)}/parameters"
-    settings.beginGroup(group)
-    try:
-        values: dict[str, float] = {}
-        for name in settings.childKeys():
-            try:
-                values[name] = float(settings.value(name))  # type: ignore[arg-type]
-            except (TypeError, ValueError):
-                continue  # an edited settings file: the value is forgotten, not fatal
-        return values
-    finally:
-        settings.endGroup()
-
-
-def write_parameters(
-    settings: QSettings, protocol: str, port: str, values: dict[str, float]
-) -> None:
-    """Remember values the device confirmed (merged with those written before)."""
-    group = f"{device_key(protocol, port)}/parameters"
-    for name, value in values.items():
-        settings.setValue(f"{group}/{name}", repr(float(value)))
-    settings.sync()
-
-
-def read_protocol_settings(settings: QSettings, protocol: str, port: str) -> dict[str, float]:
-    """A device's protocol settings kept by the panel (ticks per mm, steps per mm...)."""
-    group = f"{device_key(protocol, port)}/settings"
+def _read_numbers(settings: QSettings, group: str) -> dict[str, float]:
+    """The numbers kept under `group`; an unreadable one (an edited file) is forgotten."""
     values: dict[str, float] = {}
     settings.beginGroup(group)
     try:
@@ -119,10 +92,32 @@ def read_protocol_settings(settings: QSettings, protocol: str, port: str) -> dic
         settings.endGroup()
 
 
+def _write_numbers(settings: QSettings, group: str, values: dict[str, float]) -> None:
+    """Keep numbers under `group` (merged with those kept before)."""
+    for name, value in values.items():
+        settings.setValue(f"{group}/{name}", repr(float(value)))
+
+
+def read_parameters(settings: QSettings, protocol: str, port: str) -> dict[str, float]:
+    """The parameter values last written to a device and confirmed (the device has no read-back)."""
+    return _read_numbers(settings, f"{device_key(protocol, port)}/parameters")
+
+
+def write_parameters(
+    settings: QSettings, protocol: str, port: str, values: dict[str, float]
+) -> None:
+    """Remember values the device confirmed (merged with those written before)."""
+    _write_numbers(settings, f"{device_key(protocol, port)}/parameters", values)
+    settings.sync()
+
+
+def read_protocol_settings(settings: QSettings, protocol: str, port: str) -> dict[str, float]:
+    """A device's protocol settings kept by the panel (ticks per mm, steps per mm...)."""
+    return _read_numbers(settings, f"{device_key(protocol, port)}/settings")
+
+
 def write_protocol_settings(
     settings: QSettings, protocol: str, port: str, values: dict[str, float]
 ) -> None:
     """Remember a device's protocol settings."""
-    group = f"{device_key(protocol, port)}/settings"
-    for name, value in values.items():
-        settings.setValue(f"{group}/{name}", repr(float(value)))
+    _write_numbers(settings, f"{device_key(protocol, port)}/settings", values)
