@@ -46,29 +46,42 @@ def _received(protocol: Protocol, frame: bytes) -> tuple[str, str]:
     return "; ".join(str(e) for e in events), kind
 
 
+class StreamDecoder:
+    """Decodes traffic as it comes, record by record, keeping each direction's partial frame."""
+
+    def __init__(self, protocol: Protocol) -> None:
+        self.protocol = protocol
+        self._framers: dict[str, Framer | None] = {
+            "rx": protocol.new_framer(),
+            "tx": protocol.new_tx_framer(),
+        }
+        self._pending = {"rx": b"", "tx": b""}
+
+    def feed(self, record: LogRecord) -> list[DecodedFrame]:
+        """The frames a record completes (a note is one DecodedFrame of kind `note`)."""
+        if record.note:
+            return [DecodedFrame(record.time, "", b"", record.note, "note")]
+        direction = record.direction
+        framer = self._framers[direction]
+        if framer is None:  # the record is the frame (packets ended by silence)
+            frames, self._pending[direction] = [record.data], b""
+        else:
+            frames, self._pending[direction] = framer.split(self._pending[direction] + record.data)
+        out = []
+        for frame in frames:
+            if direction == "rx":
+                meaning, kind = _received(self.protocol, frame)
+            else:
+                meaning, kind = self.protocol.describe_sent(frame), "frame"
+            out.append(DecodedFrame(record.time, direction, frame, meaning, kind))
+        return out
+
+    def pending(self, direction: str) -> bytes:
+        """Bytes of `direction` not yet a whole frame."""
+        return self._pending[direction]
+
+
 def decode_records(protocol: Protocol, records: list[LogRecord]) -> list[DecodedFrame]:
     """Every frame of the records, in order, with its meaning."""
-    framers: dict[str, Framer | None] = {
-        "rx": protocol.new_framer(),
-        "tx": protocol.new_tx_framer(),
-    }
-    pending = {"rx": b"", "tx": b""}
-    out: list[DecodedFrame] = []
-    for record in records:
-        if record.note:
-            out.append(DecodedFrame(record.time, "", b"", record.note, "note"))
-            continue
-        framer = framers[record.direction]
-        if framer is None:  # the record is the frame (packets ended by silence)
-            frames, pending[record.direction] = [record.data], b""
-        else:
-            frames, pending[record.direction] = framer.split(
-                pending[record.direction] + record.data
-            )
-        for frame in frames:
-            if record.direction == "rx":
-                meaning, kind = _received(protocol, frame)
-            else:
-                meaning, kind = protocol.describe_sent(frame), "frame"
-            out.append(DecodedFrame(record.time, record.direction, frame, meaning, kind))
-    return out
+    decoder = StreamDecoder(protocol)
+    return [frame for record in records for frame in decoder.feed(record)]
