@@ -38,9 +38,10 @@ from app.settings import (
 from app.worker import ConnectOptions, DeviceInfo, SerialWorker
 from app.worker_thread import WorkerThread
 from drivers.capabilities import Capabilities, Completion
+from drivers.errors import BadInput
 from drivers.events import PositionReport
 from drivers.motion import MoveStart
-from drivers.registry import get_protocol_class, protocol_names
+from drivers.registry import create_protocol, get_protocol_class, protocol_names
 from drivers.sim.registry import simulator_names
 from drivers.traffic import Traffic
 from drivers.travel import TravelLimits
@@ -287,6 +288,10 @@ class MainWindow(QMainWindow):
             self.settings.setValue(f"variant/{protocol}", variant)
         shown = f"{protocol} {variant}" if variant else protocol
         self.console.append_note(f"connecting to {port} ({shown}, {baud} baud)")
+        try:
+            self.console.set_protocol(create_protocol(protocol, variant or None))
+        except (LookupError, BadInput):
+            self.console.set_protocol(None)  # the worker reports it; traffic is shown undecoded
         self._apply_travel(read_travel(self.settings, protocol, port))
         options = ConnectOptions(
             variant,
@@ -547,7 +552,7 @@ class MainWindow(QMainWindow):
     # -- worker results ----------------------------------------------------------------------
     def _on_traffic(self, records: list[Traffic]) -> None:
         for record in records:
-            self.console.append_traffic(record.direction, record.data, record.time)
+            self.console.append_traffic(record.direction, record.data, record.time, record.wall)
 
     def _on_position(self, report: PositionReport) -> None:
         if self._home_from is not None and (report.x, report.y, report.z) == (0.0, 0.0, 0.0):

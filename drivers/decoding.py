@@ -6,10 +6,10 @@ the protocol's framer and `decode`, what was sent through its TX framer and `des
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from drivers.errors import FrameError
-from drivers.events import ErrorReport, TextLine, Undecodable
+from drivers.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.framers.base import Framer
 from drivers.log_reader import LogRecord
 from drivers.protocols.base import Protocol
@@ -24,6 +24,13 @@ class DecodedFrame:
     data: bytes
     meaning: str
     kind: str
+    wire: bytes = b""  # the exact bytes that crossed, terminator and all, where known
+    events: tuple[Event, ...] = field(default=(), compare=False, repr=False)  # received only
+
+    @property
+    def raw(self) -> bytes:
+        """The bytes as they crossed (`wire`), else the frame as the framer gave it."""
+        return self.wire or self.data
 
     def line(self) -> str:
         """E.g. `000001.039 TX  EB 90 82 F0 10 90 82 10  GET_POSITION`."""
@@ -33,17 +40,38 @@ class DecodedFrame:
         return f"{self.time:010.3f} {self.direction.upper()}  {shown}  {self.meaning}"
 
 
-def _received(protocol: Protocol, frame: bytes) -> tuple[str, str]:
+def _received(protocol: Protocol, frame: bytes) -> tuple[str, str, tuple[Event, ...]]:
     try:
         events = protocol.decode(frame)
     except FrameError as exc:
-        return f"unreadable: {exc}", "error"
+        return f"unreadable: {exc}", "error", ()
     kind = "frame"
     if any(isinstance(e, (ErrorReport, Undecodable)) for e in events):
         kind = "error"
     elif events and all(isinstance(e, TextLine) for e in events):
         kind = "text"
-    return "; ".join(str(e) for e in events), kind
+    return "; ".join(str(e) for e in events), kind, tuple(events)
+
+
+def _wire_spans(consumed: bytes, frames: list[bytes]) -> list[bytes]:
+    """Each frame's bytes as they crossed (terminators, skipped noise before it); where a frame
+    is not found verbatim in them (escaped or stuffed), its decoded bytes stand for it."""
+    spans: list[bytes] = []
+    position = 0
+    starts = []
+    for frame in frames:
+        start = consumed.find(frame, position) if frame else -1
+        if start < 0:
+            return [b""] * len(frames)
+        starts.append(start)
+        position = start + len(frame)
+    for index in range(len(frames)):
+        end = starts[index + 1] if index + 1 < len(frames) else len(consumed)
+        begin = starts[index]
+        if index == 0 and consumed[:begin].strip(b"\r\n"):
+            begin = 0  # noise before the frame crossed with it; a bare line end is the last one's
+        spans.append(consumed[begin:end])
+    return spans
 
 
 class StreamDecoder:
@@ -65,15 +93,20 @@ class StreamDecoder:
         framer = self._framers[direction]
         if framer is None:  # the record is the frame (packets ended by silence)
             frames, self._pending[direction] = [record.data], b""
+            spans = [record.data]
         else:
-            frames, self._pending[direction] = framer.split(self._pending[direction] + record.data)
+            buffer = self._pending[direction] + record.data
+            frames, rest = framer.split(buffer)
+            self._pending[direction] = rest
+            spans = _wire_spans(buffer[: len(buffer) - len(rest)], frames)
         out = []
-        for frame in frames:
+        for frame, wire in zip(frames, spans, strict=True):
+            events: tuple[Event, ...] = ()
             if direction == "rx":
-                meaning, kind = _received(self.protocol, frame)
+                meaning, kind, events = _received(self.protocol, frame)
             else:
                 meaning, kind = self.protocol.describe_sent(frame), "frame"
-            out.append(DecodedFrame(record.time, direction, frame, meaning, kind))
+            out.append(DecodedFrame(record.time, direction, frame, meaning, kind, wire, events))
         return out
 
     def pending(self, direction: str) -> bytes:

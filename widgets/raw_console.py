@@ -1,140 +1,276 @@
-"""Raw serial traffic for firmware developers: TX/RX log, text or hex, and a send line."""
+"""The traffic console: every frame decoded, filtered and searched, and a send line.
+
+Lines live in a TrafficIndex (on disk, a few bytes each in memory), shown by a table that reads
+only the rows on screen, so a million lines stay light. New traffic is decoded as it comes and
+shown at ~20 Hz.
+"""
 
 from __future__ import annotations
 
+import csv
 import logging
 import time
 from collections import deque
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from pathlib import Path
 
-from PySide6.QtCore import QTimer, Signal
-from PySide6.QtGui import QColor, QFontDatabase, QTextCharFormat, QTextCursor
+import numpy as np
+from PySide6.QtCore import QModelIndex, Qt, QTimer, Signal
+from PySide6.QtGui import QFontDatabase, QKeySequence, QShortcut
 from PySide6.QtWidgets import (
+    QAbstractItemView,
     QCheckBox,
     QComboBox,
     QFileDialog,
     QHBoxLayout,
+    QHeaderView,
     QLabel,
-    QPlainTextEdit,
+    QLineEdit,
+    QMenu,
     QPushButton,
+    QTableView,
+    QToolButton,
     QVBoxLayout,
     QWidget,
 )
 
-from widgets import traffic_format as fmt
+from drivers.protocols.base import Protocol
+from drivers.traffic_index import KINDS, FilterError, TrafficIndex, compile_filter
 from widgets.send_line import SendLine
+from widgets.traffic_table import (
+    BYTES,
+    COLUMNS,
+    DISPLAY_MODES,
+    HEX,
+    LINE,
+    MEANING,
+    REPLY,
+    TEXT,
+    TIME,
+    TIME_MODES,
+    TrafficModel,
+    reply_text,
+    shown_bytes,
+    stamp,
+)
 
 log = logging.getLogger(__name__)
 
 TX, RX, NOTE = "tx", "rx", "note"
-TEXT, HEX = "text", "hex"
 FLUSH_INTERVAL_MS = 50  # ~20 Hz
-DEFAULT_MAX_LINES = 5000
-DEFAULT_MAX_RECORDS = 100_000
-COLOURS = {TX: "#1565c0", RX: "#2e7d32", NOTE: "#757575"}
+RECENT_RECORDS = 20_000  # raw records kept for `records()`; the index keeps every line
+HIDDEN_BY_DEFAULT = ("poll",)
 
 Record = tuple[str, bytes, float]  # (direction or "note", data, timestamp in seconds)
 
 
-def _time(record: Record) -> float:
-    return record[2]
-
-
-Piece = tuple[str, bool, str]  # (colour kind, starts a line, text)
-
-
 def ask_save_path(parent: QWidget) -> str:
-    """Ask where to export the log; "" when cancelled."""
-    path, _ = QFileDialog.getSaveFileName(
-        parent, "Export traffic", "traffic.txt", "Text files (*.txt);;All files (*)"
+    """Ask where to export the view (.txt or .csv); "" when cancelled."""
+    path, chosen = QFileDialog.getSaveFileName(
+        parent, "Export traffic", "traffic.txt", "Text (*.txt);;CSV (*.csv);;All files (*)"
     )
+    if path and "CSV" in chosen and not path.lower().endswith(".csv"):
+        path += ".csv"
     return path
 
 
 class RawConsole(QWidget):
-    """Buffered, bounded traffic log (flushed at ~20 Hz) and a send line emitting bytes."""
+    """Decoded traffic with filters, search and export, and a send line emitting bytes."""
 
     send_requested = Signal(object)  # bytes
+    lines_added = Signal(int, int)  # first new line, how many
+    line_activated = Signal(int)  # a line the user chose (double-click)
 
-    def __init__(
-        self,
-        parent: QWidget | None = None,
-        max_lines: int = DEFAULT_MAX_LINES,
-        max_records: int = DEFAULT_MAX_RECORDS,
-    ) -> None:
+    def __init__(self, parent: QWidget | None = None, sending: bool = True) -> None:
         super().__init__(parent)
         self.setObjectName("rawConsole")
         self.ask_export_path: Callable[[], str] = lambda: ask_save_path(self)
-        # time.monotonic, as the traffic's timestamps: notes' default time and the hex tail wait
-        self.clock: Callable[[], float] = time.monotonic
-        self._records: deque[Record] = deque(maxlen=max_records)
-        self._pending: deque[Record] = deque(maxlen=max(max_lines - 1, 1))  # room for a note
-        self._origin: float | None = None
-        self._origin_set = False  # by set_time_origin (else: the earliest record)
-        self._shown_until: float | None = None  # time of the latest record rendered in the view
-        self._tail_since = 0.0  # clock() when the held hex row last got bytes
-        self._mode = TEXT
-        self._timestamps = True
+        self.clock: Callable[[], float] = time.monotonic  # the traffic's clock, for notes
+        self._recent: deque[Record] = deque(maxlen=RECENT_RECORDS)
+        self._pending: list[tuple[float, str, bytes, float | None]] = []
+        self.index = TrafficIndex()
+        self._model = TrafficModel(self.index)
+        self._origin_set = False
+        self._shown_until = 0  # lines up to here have been through the filter
         self._follow = True
-        self._writing = False
-        self._assembler = fmt.TextAssembler()
-        self._hex = fmt.HexAssembler()
-        self._skipped = 0
-        self._formats = {}
-        for kind, colour in COLOURS.items():
-            char_format = QTextCharFormat()
-            char_format.setForeground(QColor(colour))
-            char_format.setFontItalic(kind == NOTE)
-            self._formats[kind] = char_format
-
-        self._build(max_lines)
+        self._scrolling = False
+        self._pattern = None
+        self._search = None
+        self._kinds = {k for k in KINDS if k not in HIDDEN_BY_DEFAULT}
+        self._directions = {"tx", "rx", ""}
+        self._build(sending)
         self._flush_timer = QTimer(self)
         self._flush_timer.setSingleShot(True)
         self._flush_timer.setInterval(FLUSH_INTERVAL_MS)
         self._flush_timer.timeout.connect(self.flush)
 
-    def _build(self, max_lines: int) -> None:
-        self.mode_combo = QComboBox()
-        self.mode_combo.setObjectName("consoleDisplayMode")
-        self.mode_combo.addItems([TEXT, HEX])
-        self.mode_combo.setToolTip("text: bytes as text with \\r \\n \\xNN escapes; hex: hexdump")
-        self.mode_combo.currentTextChanged.connect(self.set_display_mode)
-        self.timestamps_check = QCheckBox("Timestamps")
+    # -- building --------------------------------------------------------------------------
+
+    def _combo(self, name: str, items: tuple[str, ...], tip: str, slot: Callable) -> QComboBox:
+        combo = QComboBox()
+        combo.setObjectName(name)
+        combo.addItems(list(items))
+        combo.setToolTip(tip)
+        combo.currentTextChanged.connect(slot)
+        return combo
+
+    def _check(self, text: str, name: str, tip: str, checked: bool = True) -> QCheckBox:
+        box = QCheckBox(text)
+        box.setObjectName(name)
+        box.setChecked(checked)
+        box.setToolTip(tip)
+        box.toggled.connect(self._filters_changed)
+        return box
+
+    def _button(self, text: str, name: str, tip: str, slot: Callable) -> QPushButton:
+        button = QPushButton(text)
+        button.setObjectName(name)
+        button.setToolTip(tip)
+        button.clicked.connect(slot)
+        return button
+
+    def _build(self, sending: bool) -> None:
+        self.mode_combo = self._combo(
+            "consoleDisplayMode",
+            DISPLAY_MODES,
+            "Bytes as text (\\r \\n \\xNN escapes), hex (47 45 54), or mixed (text, <0A> for "
+            "the rest)",
+            self.set_display_mode,
+        )
+        self.time_combo = self._combo(
+            "consoleTimeMode",
+            TIME_MODES,
+            "Times: seconds since the session start, wall-clock time, or the gap since the line "
+            "above",
+            self.set_time_mode,
+        )
+        self.timestamps_check = QCheckBox("Time")
         self.timestamps_check.setObjectName("consoleTimestamps")
         self.timestamps_check.setChecked(True)
-        self.timestamps_check.setToolTip("Show seconds since the first record (000003.001 s)")
+        self.timestamps_check.setToolTip("Show the time column")
         self.timestamps_check.toggled.connect(self.set_timestamps)
-        self.paused_label = QLabel("⏸ autoscroll paused: scroll to the bottom to resume")
+        self.tx_check = self._check("TX", "consoleShowTx", "Show what was sent to the device")
+        self.rx_check = self._check("RX", "consoleShowRx", "Show what the device sent")
+        self.kind_button = QToolButton()
+        self.kind_button.setObjectName("consoleKinds")
+        self.kind_button.setText("Kinds ▾")
+        self.kind_button.setToolTip("Which kinds of lines to show")
+        self.kind_button.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
+        menu = QMenu(self.kind_button)
+        self.kind_actions = {}
+        for kind in KINDS:
+            action = menu.addAction(kind)
+            action.setCheckable(True)
+            action.setChecked(kind in self._kinds)
+            action.setObjectName(f"consoleKind_{kind}")
+            action.toggled.connect(self._kinds_changed)
+            self.kind_actions[kind] = action
+        self.kind_button.setMenu(menu)
+        self.poll_check = QCheckBox("Poll")
+        self.poll_check.setObjectName("consoleShowPoll")
+        self.poll_check.setToolTip(
+            "Show the idle position queries and their replies (hidden by default; counted below)"
+        )
+        self.poll_check.toggled.connect(self.kind_actions["poll"].setChecked)
+        self.filter_edit = QLineEdit()
+        self.filter_edit.setObjectName("consoleFilter")
+        self.filter_edit.setPlaceholderText("filter (regex)")
+        self.filter_edit.setClearButtonEnabled(True)
+        self.filter_edit.setToolTip(
+            "Show only lines matching this regular expression (case-insensitive) in their "
+            "direction, kind, hex, text or meaning, e.g. error|FA00"
+        )
+        self.filter_edit.textChanged.connect(self._filters_changed)
+        self.paused_label = QLabel("⏸ paused: scroll to the bottom to follow")
         self.paused_label.setObjectName("consolePaused")
         self.paused_label.setStyleSheet("color: #8a4b00;")
         self.paused_label.setVisible(False)
-        export_button = QPushButton("Export…")
-        export_button.setObjectName("consoleExport")
-        export_button.setToolTip("Save the whole retained log (not only what is shown) as text")
-        export_button.clicked.connect(self.export_interactively)
-        clear_button = QPushButton("Clear")
-        clear_button.setObjectName("consoleClear")
-        clear_button.setToolTip("Forget the log")
-        clear_button.clicked.connect(self.clear)
         top = QHBoxLayout()
-        top.addWidget(QLabel("Show:"))
-        top.addWidget(self.mode_combo)
-        top.addWidget(self.timestamps_check)
-        top.addWidget(self.paused_label)
-        top.addStretch(1)
-        top.addWidget(export_button)
-        top.addWidget(clear_button)
+        for widget in (
+            self.mode_combo,
+            self.time_combo,
+            self.timestamps_check,
+            self.tx_check,
+            self.rx_check,
+            self.kind_button,
+            self.poll_check,
+        ):
+            top.addWidget(widget)
+        top.addWidget(self.filter_edit, 1)
 
-        self.view = QPlainTextEdit()
+        self.search_edit = QLineEdit()
+        self.search_edit.setObjectName("consoleSearch")
+        self.search_edit.setPlaceholderText("search (regex)")
+        self.search_edit.setClearButtonEnabled(True)
+        self.search_edit.setToolTip(
+            "Highlight matching lines; Enter or F3: next, Shift+F3: previous"
+        )
+        self.search_edit.textChanged.connect(self._search_changed)
+        self.search_edit.returnPressed.connect(self.find_next)
+        previous = self._button(
+            "◀", "consoleSearchPrevious", "Previous match (Shift+F3)", self.find_previous
+        )
+        following = self._button("▶", "consoleSearchNext", "Next match (F3)", self.find_next)
+        for button in (previous, following):
+            button.setMaximumWidth(32)
+        QShortcut(
+            QKeySequence("F3"),
+            self,
+            self.find_next,
+            context=Qt.ShortcutContext.WidgetWithChildrenShortcut,
+        )
+        QShortcut(
+            QKeySequence("Shift+F3"),
+            self,
+            self.find_previous,
+            context=Qt.ShortcutContext.WidgetWithChildrenShortcut,
+        )
+        self.status_label = QLabel()
+        self.status_label.setObjectName("consoleStatus")
+        self.status_label.setToolTip("Lines in the session, shown, hidden polls, errors, matches")
+        export_button = self._button(
+            "Export…",
+            "consoleExport",
+            "Save the lines shown (filtered) as text or CSV",
+            self.export_interactively,
+        )
+        clear_button = self._button(
+            "Clear", "consoleClear", "Forget the lines (the session log keeps them)", self.clear
+        )
+        second = QHBoxLayout()
+        second.addWidget(self.search_edit, 1)
+        second.addWidget(previous)
+        second.addWidget(following)
+        second.addWidget(self.status_label)
+        second.addWidget(self.paused_label)
+        second.addStretch(0)
+        second.addWidget(export_button)
+        second.addWidget(clear_button)
+
+        self.view = QTableView()
         self.view.setObjectName("consoleView")
-        self.view.setReadOnly(True)
-        self.view.setUndoRedoEnabled(False)
-        self.view.setLineWrapMode(QPlainTextEdit.LineWrapMode.NoWrap)
-        self.view.setMaximumBlockCount(max_lines)
+        self.view.setModel(self._model)
         self.view.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
-        self.view.setToolTip("TX (blue): sent to the device; RX (green): received; grey: notes")
+        self.view.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
+        self.view.setWordWrap(False)
+        self.view.setShowGrid(False)
+        self.view.verticalHeader().setVisible(False)
+        rows = self.view.verticalHeader()
+        rows.setSectionResizeMode(QHeaderView.ResizeMode.Fixed)
+        rows.setDefaultSectionSize(self.view.fontMetrics().height() + 4)
+        header = self.view.horizontalHeader()
+        header.setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
+        width = self.view.fontMetrics().horizontalAdvance("0")
+        for column, chars in ((LINE, 8), (TIME, 13), (2, 4), (BYTES, 44), (MEANING, 40)):
+            header.resizeSection(column, width * chars + 12)
+        header.setStretchLastSection(True)
+        self.view.setToolTip(
+            "TX (blue): sent to the device; RX (green): received; grey: notes and the device's "
+            "own text; red: errors. Double-click a line to go to its request, reply or first copy."
+        )
+        self.view.doubleClicked.connect(self._double_clicked)
         self.view.verticalScrollBar().valueChanged.connect(self._scrolled)
+        self.view.verticalScrollBar().rangeChanged.connect(self._range_changed)
 
         self.send_line = SendLine()
         self.send_line.send_requested.connect(self.send_requested)
@@ -143,214 +279,416 @@ class RawConsole(QWidget):
         self.ending_combo = self.send_line.ending_combo
         self.send_button = self.send_line.button
         self.error_label = self.send_line.error_label
+        self.send_line.setVisible(sending)
 
         layout = QVBoxLayout(self)
         layout.addLayout(top)
+        layout.addLayout(second)
         layout.addWidget(self.view, 1)
         layout.addWidget(self.send_line)
+        self._update_status()
 
-    # -- traffic in ----------------------------------------------------------------------
+    # -- traffic in ------------------------------------------------------------------------
 
-    def append_traffic(self, direction: str, data: bytes, timestamp: float) -> None:
-        """Log bytes sent ("tx") or received ("rx") at `timestamp` (s); shown at the next flush."""
+    def set_protocol(self, protocol: Protocol | None) -> None:
+        """Decode the traffic that comes next with `protocol`'s own decoders."""
+        self.flush()
+        self.index.set_protocol(protocol)
+
+    def append_traffic(
+        self, direction: str, data: bytes, timestamp: float, wall: float | None = None
+    ) -> None:
+        """Take bytes sent ("tx") or received ("rx") at `timestamp` (s); shown at the next flush."""
         if direction not in (TX, RX):
             raise ValueError(f"direction must be 'tx' or 'rx', not {direction!r}")
-        self._add((direction, bytes(data), timestamp))
+        data = bytes(data)
+        self._recent.append((direction, data, timestamp))
+        self._pending.append((timestamp, direction, data, wall))
+        self._schedule()
 
     def append_note(self, text: str, timestamp: float | None = None) -> None:
-        """Log an information line such as "connected" (timestamp: monotonic now by default)."""
+        """Log an information line such as "connected" (timestamp: the clock's now by default)."""
         when = self.clock() if timestamp is None else timestamp
-        self._add((NOTE, text.encode("utf-8"), when))
+        self._recent.append((NOTE, text.encode("utf-8"), when))
+        self._pending.append((when, "", text.encode("utf-8"), time.time() - (self.clock() - when)))
+        self._schedule()
 
-    def _add(self, record: Record) -> None:
-        when = record[2]
-        if self._origin is None or (not self._origin_set and when < self._origin):
-            if self._origin is not None:
-                self._shown_until = float("inf")  # every shown time moves: re-render at flush
-            self._origin = when
-        records = self._records
-        if not records or records[-1][2] <= when:
-            records.append(record)  # nearly always: in time order
-        else:  # late (a note is stamped when added, traffic comes in batches): insert in place
-            index = len(records) - 1
-            while index > 0 and records[index - 1][2] > when:
-                index -= 1
-            if len(records) == records.maxlen:
-                records.popleft()
-                index = max(index - 1, 0)
-            records.insert(index, record)
-        if len(self._pending) == self._pending.maxlen:
-            self._skipped += 1  # a flood: the oldest unshown record will never be shown
-        self._pending.append(record)
+    def _take_pending(self) -> None:
+        """Into the index, in time order: a note is stamped when added, traffic comes batched."""
+        if not self._pending:
+            return
+        pending = sorted(self._pending, key=lambda item: item[0])  # stable: ties keep order
+        self._pending.clear()
+        if not self._origin_set and not len(self.index):
+            self._model.origin = pending[0][0]
+        for when, direction, data, wall in pending:
+            if direction:
+                self.index.add(direction, data, when, wall if wall is not None else time.time())
+            else:
+                self.index.add_note(data.decode("utf-8"), when, wall)
+
+    def _schedule(self) -> None:
         if not self._flush_timer.isActive():
             self._flush_timer.start()
 
     def set_time_origin(self, timestamp: float) -> None:
-        """Timestamps are shown as seconds since `timestamp` (default: the first record)."""
-        self._origin = timestamp
+        """Times are shown as seconds since `timestamp` (default: the first line)."""
+        self._model.origin = timestamp
         self._origin_set = True
-        self._rerender()
+        self._model.refresh()
+
+    def time_origin(self) -> float:
+        """What relative times count from."""
+        return self._model.origin
 
     def records(self) -> list[Record]:
-        """The retained records (bounded), in time order: (direction or "note", data, time)."""
-        return list(self._records)
+        """The latest raw records (bounded), as they came: (direction or "note", data, time)."""
+        return list(self._recent)
 
     def flush(self) -> None:
-        """Show the records appended since the last flush (the timer calls this at ~20 Hz)."""
+        """Show the lines added since the last flush (the timer calls this at ~20 Hz)."""
         self._flush_timer.stop()
-        if self._pending:
-            records = sorted(self._pending, key=_time)  # stable: ties keep their arrival order
-            self._pending.clear()
-            if self._shown_until is not None and records[0][2] < self._shown_until:
-                self._rerender()  # older than what is shown: redo the view in time order
-                return
-            if self._skipped:
-                text = f"{self._skipped} records not shown here (too many at once; export has them)"
-                records.insert(0, (NOTE, text.encode(), records[0][2]))
-                self._skipped = 0
-            self._write(records)
-        elif self._hex.pending():
-            if self.clock() - self._tail_since >= fmt.HEX_IDLE:
-                self._emit([(kind, True, row) for kind, row in self._hex.close()])
-            else:
-                self._flush_timer.start()  # look again soon
-
-    # -- rendering -----------------------------------------------------------------------
-
-    def _pieces(
-        self,
-        record: Record,
-        timestamps: bool,
-        mode: str,
-        assembler: fmt.TextAssembler,
-        hex_assembler: fmt.HexAssembler,
-    ) -> list[Piece]:
-        """(colour, starts a line, text) pieces of a record; see TextAssembler, HexAssembler."""
-        kind, data, when = record
-        seconds = when - (self._origin or 0.0) if timestamps else None
-        if kind == NOTE:
-            assembler.close()
-            pieces: list[Piece] = [(d, True, row) for d, row in hex_assembler.close()]
-            pieces.append((NOTE, True, fmt.note_line(data.decode("utf-8", "replace"), seconds)))
-            return pieces
-        if mode == HEX:
-            return [(d, True, row) for d, row in hex_assembler.feed(kind, data, seconds, when)]
-        return [(kind, starts, text) for starts, text in assembler.feed(kind, data, seconds)]
-
-    def _write(self, records: Iterable[Record]) -> None:
-        pieces: list[Piece] = []
-        for record in records:
-            pieces += self._pieces(record, self._timestamps, self._mode, self._assembler, self._hex)
-            self._shown_until = record[2]
-        if self._hex.pending():
-            self._tail_since = self.clock()
-            if not self._flush_timer.isActive():
-                self._flush_timer.start()  # shown if no more bytes come for it
-        self._emit(pieces)
-
-    def _emit(self, pieces: list[Piece]) -> None:
-        if not pieces:
+        self._take_pending()
+        total = len(self.index)
+        if total == self._shown_until:
             return
-        document = self.view.document()
-        first = document.isEmpty()
-        runs: list[tuple[str, list[str]]] = []  # consecutive pieces of one colour, as one string
-        for kind, starts_line, text in pieces:
-            if not runs or runs[-1][0] != kind:
-                runs.append((kind, []))
-            runs[-1][1].append(text if first or not starts_line else "\n" + text)
-            first = False
-        cursor = QTextCursor(document)
-        cursor.movePosition(QTextCursor.MoveOperation.End)
-        scroll = self.view.verticalScrollBar()
-        self._writing = True
+        first = self._shown_until
+        rows = self.index.select(self._directions, self._kinds, self._pattern, start=first)
+        if self._search is not None:
+            hits = self.index.select(None, None, self._search, start=first)
+            if len(hits):
+                self._model.matches = np.concatenate((self._model.matches, hits))
+        self._shown_until = total
+        self._model.append_rows(rows)
+        self._update_status()
+        self.lines_added.emit(first, total - first)
+        if self._follow:
+            self._scroll_to_end()
+
+    # -- filters and modes -----------------------------------------------------------------
+
+    def _kinds_changed(self) -> None:
+        self._kinds = {kind for kind, action in self.kind_actions.items() if action.isChecked()}
+        self.poll_check.blockSignals(True)
+        self.poll_check.setChecked("poll" in self._kinds)
+        self.poll_check.blockSignals(False)
+        self._refilter()
+
+    def _filters_changed(self) -> None:
         try:
-            cursor.beginEditBlock()
-            for kind, texts in runs:
-                cursor.insertText("".join(texts), self._formats[kind])  # "\n" starts a block
-            cursor.endEditBlock()
-            if self._follow:
-                scroll.setValue(scroll.maximum())
+            self._pattern = compile_filter(self.filter_edit.text())
+        except FilterError as exc:
+            self.filter_edit.setStyleSheet("color: #c62828;")
+            self.filter_edit.setToolTip(str(exc))
+            return
+        self.filter_edit.setStyleSheet("")
+        self._directions = {
+            d for d, box in (("tx", self.tx_check), ("rx", self.rx_check)) if box.isChecked()
+        }
+        self._directions.add("")
+        self._refilter()
+
+    def set_filter(
+        self,
+        pattern: str | None = None,
+        directions: set[str] | None = None,
+        kinds: set[str] | None = None,
+    ) -> None:
+        """Set the filters (None: leave as is); raises FilterError for a bad expression."""
+        if pattern is not None:
+            compile_filter(pattern)
+            self.filter_edit.setText(pattern)
+        if directions is not None:
+            self.tx_check.setChecked("tx" in directions)
+            self.rx_check.setChecked("rx" in directions)
+        if kinds is not None:
+            for kind, action in self.kind_actions.items():
+                action.setChecked(kind in kinds)
+
+    def show_poll(self, shown: bool) -> None:
+        """Show or hide the position poll's lines."""
+        self.poll_check.setChecked(shown)
+
+    def _refilter(self) -> None:
+        self.flush()
+        current = self._current_line()
+        rows = self.index.select(self._directions, self._kinds, self._pattern)
+        self._shown_until = len(self.index)
+        self._model.set_rows(rows)
+        self._update_status()
+        if self._follow or current is None:
+            self._scroll_to_end()
+        else:
+            self._go_to_row(min(self._model.row_of(current), len(rows) - 1))
+
+    def kinds(self) -> set[str]:
+        """The kinds of lines shown."""
+        return set(self._kinds)
+
+    def display_mode(self) -> str:
+        """`"text"`, `"hex"` or `"mixed"`."""
+        return self._model.mode
+
+    def set_display_mode(self, mode: str) -> None:
+        """Show bytes as escaped text, hex, or mixed."""
+        if mode not in DISPLAY_MODES:
+            raise ValueError(f"display mode must be one of {DISPLAY_MODES}, not {mode!r}")
+        if mode != self._model.mode:
+            self._model.mode = mode
+            self.mode_combo.setCurrentText(mode)
+            self._model.refresh()
+
+    def time_mode(self) -> str:
+        """`"relative"`, `"absolute"` or `"delta"`."""
+        return self._model.time_mode
+
+    def set_time_mode(self, mode: str) -> None:
+        """Show times since the session start, as wall-clock times, or as gaps."""
+        if mode not in TIME_MODES:
+            raise ValueError(f"time mode must be one of {TIME_MODES}, not {mode!r}")
+        if mode != self._model.time_mode:
+            self._model.time_mode = mode
+            self.time_combo.setCurrentText(mode)
+            self._model.refresh()
+
+    def timestamps(self) -> bool:
+        """Whether the time column is shown."""
+        return not self.view.isColumnHidden(TIME)
+
+    def set_timestamps(self, shown: bool) -> None:
+        """Show or hide the time column."""
+        self.view.setColumnHidden(TIME, not shown)
+        self.timestamps_check.setChecked(shown)
+
+    # -- search ----------------------------------------------------------------------------
+
+    def _search_changed(self, text: str) -> None:
+        try:
+            self._search = compile_filter(text)
+        except FilterError as exc:
+            self.search_edit.setStyleSheet("color: #c62828;")
+            self.search_edit.setToolTip(str(exc))
+            return
+        self.search_edit.setStyleSheet("")
+        self.flush()
+        hits = (
+            self.index.select(None, None, self._search)
+            if self._search is not None
+            else np.zeros(0, dtype=np.int64)
+        )
+        self._model.set_matches(hits)
+        self._update_status()
+
+    def search(self, text: str) -> int:
+        """Highlight lines matching `text` (a regex); returns how many match."""
+        self.search_edit.setText(text)
+        return len(self._model.matches)
+
+    def _visible_matches(self) -> np.ndarray:
+        matches = self._model.matches
+        return matches[np.isin(matches, self._model.rows)]
+
+    def find_next(self) -> int | None:
+        """Go to the next shown line that matches the search; returns its line number."""
+        return self._find(forward=True)
+
+    def find_previous(self) -> int | None:
+        """Go to the previous shown line that matches the search; returns its line number."""
+        return self._find(forward=False)
+
+    def _find(self, forward: bool) -> int | None:
+        self.flush()
+        matches = self._visible_matches()
+        if not len(matches):
+            return None
+        current = self._current_line()
+        if current is None:
+            target = matches[0] if forward else matches[-1]
+        elif forward:
+            after = matches[matches > current]
+            target = after[0] if len(after) else matches[0]  # wraps around
+        else:
+            before = matches[matches < current]
+            target = before[-1] if len(before) else matches[-1]
+        self.jump_to_line(int(target))
+        return int(target)
+
+    # -- moving around ---------------------------------------------------------------------
+
+    def _current_line(self) -> int | None:
+        index = self.view.currentIndex()
+        if not index.isValid() or index.row() >= len(self._model.rows):
+            return None
+        return int(self._model.rows[index.row()])
+
+    def current_line(self) -> int | None:
+        """The line of the selected row."""
+        return self._current_line()
+
+    def jump_to_line(self, line: int) -> None:
+        """Select `line` (or the next shown line after it) and scroll to it; stops following."""
+        self.flush()
+        row = self._model.row_of(line)
+        if row >= len(self._model.rows):
+            row = len(self._model.rows) - 1
+        if row < 0:
+            return
+        self._go_to_row(row)
+
+    def _go_to_row(self, row: int) -> None:
+        if row < 0:
+            return
+        index = self._model.index(row, BYTES)
+        self._scrolling = True
+        try:
+            self.view.setCurrentIndex(index)
+            self.view.scrollTo(index, QAbstractItemView.ScrollHint.PositionAtCenter)
         finally:
-            self._writing = False
+            self._scrolling = False
+        self._set_follow(row == len(self._model.rows) - 1)  # a line chosen stays in view
 
-    def _reset_view(self) -> None:
-        self._pending.clear()
-        self._skipped = 0
-        self._assembler = fmt.TextAssembler()
-        self._hex = fmt.HexAssembler()
-        self._shown_until = None
-        self.view.clear()
+    def _double_clicked(self, index: QModelIndex) -> None:
+        line = self._model.line_at(index.row())
+        target = line.pair if line.pair >= 0 else line.first_copy
+        if index.column() == REPLY and line.first_copy >= 0:
+            target = line.first_copy
+        if target >= 0:
+            self.jump_to_line(target)
+        self.line_activated.emit(line.number)
 
-    def _rerender(self) -> None:
-        self._reset_view()
-        count = self.view.maximumBlockCount()
-        recent = list(self._records)[-count:] if count > 0 else list(self._records)
-        if recent:
-            self._write(recent)
+    def _scroll_to_end(self) -> None:
+        self._scrolling = True
+        try:
+            self.view.scrollToBottom()
+        finally:
+            self._scrolling = False
+
+    def _range_changed(self) -> None:
+        if self._follow:
+            self._scroll_to_end()
 
     def _scrolled(self, value: int) -> None:
-        if self._writing:
+        if self._scrolling:
             return
-        self._follow = value >= self.view.verticalScrollBar().maximum()
-        self.paused_label.setVisible(not self._follow)
+        self._set_follow(value >= self.view.verticalScrollBar().maximum())
+
+    def _set_follow(self, follow: bool) -> None:
+        self._follow = follow
+        self.paused_label.setVisible(not follow)
 
     def is_following(self) -> bool:
         """Whether new lines scroll the view (False while the user has scrolled up)."""
         return self._follow
 
-    def display_mode(self) -> str:
-        """`"text"` or `"hex"`."""
-        return self._mode
+    def _update_status(self) -> None:
+        counts = self.index.counts
+        parts = [f"{len(self.index):,} lines", f"{len(self._model.rows):,} shown"]
+        if "poll" not in self._kinds and counts["poll"]:
+            parts.append(f"{counts['poll']:,} poll hidden")
+        if counts["error"]:
+            parts.append(f"{counts['error']:,} errors")
+        if self._search is not None:
+            parts.append(f"{len(self._model.matches):,} matches")
+        self.status_label.setText(" · ".join(parts))
 
-    def set_display_mode(self, mode: str) -> None:
-        """Show the traffic as escaped text (`"text"`) or as a hexdump (`"hex"`)."""
-        if mode not in (TEXT, HEX):
-            raise ValueError(f"display mode must be 'text' or 'hex', not {mode!r}")
-        if mode != self._mode:
-            self._mode = mode
-            self.mode_combo.setCurrentText(mode)
-            self._rerender()
+    def status_text(self) -> str:
+        """The counts under the filters (lines, shown, hidden polls, errors, matches)."""
+        return self.status_label.text()
 
-    def timestamps(self) -> bool:
-        """Whether timestamps are shown."""
-        return self._timestamps
+    # -- text out --------------------------------------------------------------------------
 
-    def set_timestamps(self, shown: bool) -> None:
-        """Show or hide the timestamps."""
-        if shown != self._timestamps:
-            self._timestamps = shown
-            self.timestamps_check.setChecked(shown)
-            self._rerender()
+    def row_text(self, row: int) -> str:
+        """One shown line as text: `time DIR  bytes  meaning  reply` (time if shown)."""
+        model = self._model
+        line = model.line_at(row)
+        if line.direction == "":
+            head = "--  " + line.meaning
+        else:
+            shown = shown_bytes(line.data, model.mode)
+            head = f"{line.direction.upper()}  {shown}"
+            plain = line.data.decode("latin-1").strip()
+            if line.meaning and line.meaning != plain and line.kind != "debug":
+                head += f"  {line.meaning}"
+        reply = reply_text(line)
+        if reply:
+            head += f"  [{reply}]"
+        if self.timestamps():
+            head = f"{model.cell(row, TIME)} {head}"
+        return head
 
     def text(self) -> str:
-        """The text in the view (what has been flushed)."""
-        return self.view.toPlainText()
+        """The shown (filtered) lines as text, one a line (after a flush)."""
+        return "\n".join(self.row_text(row) for row in range(len(self._model.rows)))
+
+    def shown_lines(self) -> list[int]:
+        """The line numbers shown, in order."""
+        return [int(n) for n in self._model.rows]
 
     def clear(self) -> None:
-        """Forget all records and empty the view."""
-        self._records.clear()
-        self._reset_view()
-        self._follow = True
-        self.paused_label.setVisible(False)
+        """Forget all lines (the session log on disk keeps them) and empty the view."""
+        protocol = self.index.protocol
+        self.index.close()
+        self.index = TrafficIndex(protocol)
+        self._recent.clear()
+        self._pending.clear()
+        self._shown_until = 0
+        self._model.set_index(self.index)
+        self._set_follow(True)
+        self._update_status()
+
+    def load(self, index: TrafficIndex) -> None:
+        """Show another index (an opened log) in place of the session's."""
+        self.index.close()
+        self.index = index
+        self._recent.clear()
+        self._pending.clear()
+        self._shown_until = 0
+        self._model.set_index(index)
+        self._model.origin = index.time(0) if len(index) else 0.0
+        self._origin_set = True
+        self.flush()
 
     def export(self, path: str | Path) -> int:
-        """Write every retained record as text, with timestamps, in the display mode; lines."""
-        lines: list[str] = []
-        assembler, hex_assembler = fmt.TextAssembler(), fmt.HexAssembler()
-        for record in self._records:
-            for _, starts_line, text in self._pieces(
-                record, True, self._mode, assembler, hex_assembler
-            ):
-                if starts_line or not lines:
-                    lines.append(text)
-                else:
-                    lines[-1] += text
-        lines += [row for _, row in hex_assembler.close()]
-        Path(path).write_text("".join(line + "\n" for line in lines), encoding="utf-8")
-        return len(lines)
+        """Write the shown lines as text (or CSV for a `.csv` path); returns the lines written."""
+        self.flush()
+        target = Path(path)
+        if target.suffix.lower() == ".csv":
+            return self.export_csv(target)
+        with target.open("w", encoding="utf-8") as out:
+            for row in range(len(self._model.rows)):
+                out.write(self.row_text(row) + "\n")
+        return len(self._model.rows)
+
+    def export_csv(self, path: str | Path) -> int:
+        """Write the shown lines as CSV: line, time, direction, kind, hex, text, meaning, pairs."""
+        self.flush()
+        model = self._model
+        with Path(path).open("w", encoding="utf-8", newline="") as out:
+            writer = csv.writer(out)
+            writer.writerow(
+                ["line", "time_s", "direction", "kind", "hex", "text", "meaning", "pair",
+                 "latency_ms", "first_copy"]
+            )  # fmt: skip
+            for row in range(len(model.rows)):
+                line = model.line_at(row)
+                writer.writerow(
+                    [
+                        line.number,
+                        f"{line.time - model.origin:.3f}",
+                        line.direction,
+                        line.kind,
+                        line.data.hex(" ").upper(),
+                        shown_bytes(line.data, TEXT),
+                        line.meaning,
+                        line.pair if line.pair >= 0 else "",
+                        "" if np.isnan(line.latency_ms) else f"{line.latency_ms:.1f}",
+                        line.first_copy if line.first_copy >= 0 else "",
+                    ]
+                )
+        return len(model.rows)
 
     def export_interactively(self) -> None:
-        """Ask for a file and export the log to it, saying how it went."""
+        """Ask for a file and export the shown lines to it, saying how it went."""
         path = self.ask_export_path()
         if not path:
             return
@@ -388,3 +726,6 @@ class RawConsole(QWidget):
     def show_error(self, message: str) -> None:
         """Show a problem under the send line ("" hides it)."""
         self.send_line.show_error(message)
+
+
+__all__ = ["COLUMNS", "HEX", "TEXT", "RawConsole", "stamp"]

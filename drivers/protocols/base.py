@@ -247,6 +247,14 @@ class Protocol(ABC):
         except FrameError as exc:
             return f"unreadable: {exc}"
 
+    def sent_kind(self, frame: bytes) -> str:
+        """What a sent frame is, for consoles' filters: `motion`, `poll`, `setting` or `query`."""
+        return "query"
+
+    def expects_reply(self, frame: bytes) -> bool:
+        """Whether the device answers a sent frame (consoles pair a reply with its request)."""
+        return True
+
     def check_raw(self, data: bytes) -> None:
         """Refuse raw console bytes the device cannot take (BadInput); the default takes all."""
 

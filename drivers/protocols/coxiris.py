@@ -234,6 +234,15 @@ class CoxirisProtocol(Protocol):
         """The command line as sent."""
         return frame.decode("latin-1").strip()
 
+    def sent_kind(self, frame: bytes) -> str:
+        """Moves and homing are motion, GET_POSITION the poll, SET_* settings, the rest queries."""
+        name = frame.decode("latin-1").strip().split(" ", 1)[0].upper()
+        if name in ("ABSOLUTE_MOVE", "DELTA_MOVE", "GO_HOME"):
+            return "motion"
+        if name == "GET_POSITION":
+            return "poll"
+        return "setting" if name.startswith("SET_") else "query"
+
     def check_raw(self, data: bytes) -> None:
         """Refuse any line over 63 characters: the firmware would overflow its buffer."""
         for line in data.replace(b"\r", b"\n").split(b"\n"):

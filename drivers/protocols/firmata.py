@@ -282,6 +282,16 @@ class FirmataProtocol(Protocol):
                 return "STEPPER_LIBRARY_VERSION request"
         return super().describe_sent(frame)
 
+    def sent_kind(self, frame: bytes) -> str:
+        """STEPPER_STEP is motion, STEPPER_CONFIGURE a setting, the requests queries."""
+        if frame[:2] == bytes((START, STEPPER_DATA)) and len(frame) >= 3:
+            return {STEP: "motion", CONFIGURE: "setting"}.get(frame[2], "query")
+        return "query"
+
+    def expects_reply(self, frame: bytes) -> bool:
+        """Only the version, firmware-name and library-version requests are answered."""
+        return self.sent_kind(frame) == "query"
+
     def exchange(self, command: Command) -> Exchange:
         """Identity: the firmware name; config and version: the library version reply."""
         if isinstance(command, GetId):

@@ -264,6 +264,34 @@ class LaserProtocol(Protocol):
         sequence = int(first.values(INT16)[0]) if first.word == SEQUENCE else None
         return LaserExchange(command, first.word, sequence, self.command_name(command))
 
+    def sent_kind(self, frame: bytes) -> str:
+        """Queued instructions and STOP are motion, GET_POSITION the poll, SET_HOME a setting."""
+        try:
+            words = {i.word for i in decode_instructions(frame)}
+        except FrameError:
+            return "query"
+        if words & {*QUEUED, STOP}:
+            return "motion"
+        if SET_HOME in words:
+            return "setting"
+        return "poll" if words == {GET_POSITION} else "query"
+
+    def raw_exchange(self, data: bytes) -> LaserExchange | None:
+        """A whole frame is followed by its first instruction's word (and frame number)."""
+        frames, rest = self.new_framer().split(data)
+        if len(frames) != 1 or rest:
+            return None
+        try:
+            instructions = decode_instructions(frames[0])
+        except FrameError:
+            return None
+        if not instructions:
+            return None
+        first = instructions[0]
+        sequence = int(first.values(INT16)[0]) if first.word == SEQUENCE else None
+        name = WORD_NAMES.get(first.word, f"word {first.word:#04x}")
+        return LaserExchange(Raw(data), first.word, sequence, name)
+
     def on_sent(self, command: Command) -> None:
         """A queued frame went out: the next one gets the next number."""
         if isinstance(command, QueuedGroup) and command.sequence is not None:

@@ -208,6 +208,14 @@ class PiFrameProtocol(Protocol):
             return "SetHome"
         return f"action {action}"
 
+    def sent_kind(self, frame: bytes) -> str:
+        """Every action moves (or waits) but SetHome, a setting."""
+        return "setting" if len(frame) == 25 and frame[2] == SET_HOME else "motion"
+
+    def expects_reply(self, frame: bytes) -> bool:
+        """The board answers nothing."""
+        return False
+
     def exchange(self, command: Command) -> NoReply:
         """No reply ever comes."""
         return NoReply(command)

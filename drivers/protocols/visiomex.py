@@ -334,6 +334,13 @@ class VisiomexProtocol(Protocol):
             return "go home"
         return f"packet {text!r}"
 
+    def sent_kind(self, frame: bytes) -> str:
+        """`M…` moves and `D` (home) are motion, `S…` sets a parameter; the rest queries."""
+        head = frame[:1]
+        if head == b"M" or (head == b"D" and self.format.home):
+            return "motion"
+        return "setting" if head == b"S" else "query"
+
     def check_raw(self, data: bytes) -> None:
         """Refuse what the firmware cannot take as one packet."""
         self._raw_text(data)

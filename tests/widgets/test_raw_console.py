@@ -1,16 +1,20 @@
-"""RawConsole: buffered rendering, text/hex, colours, autoscroll, bounds, export, send line."""
+"""RawConsole: decoded lines, filters, poll hiding, search, modes, pairing, export, send line."""
 
 from __future__ import annotations
 
-import time
+import csv
 from pathlib import Path
 
 import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QColor
 
-from widgets.raw_console import COLOURS, DEFAULT_MAX_LINES, RawConsole
+from drivers.registry import create_protocol
+from drivers.traffic_index import KINDS
+from widgets.raw_console import RawConsole
+from widgets.traffic_table import BYTES, ERROR_BACKGROUND, MATCH_BACKGROUND, REPLY
 
+pytestmark = pytest.mark.timeout(60)
 LEFT = Qt.MouseButton.LeftButton
 
 
@@ -18,194 +22,254 @@ LEFT = Qt.MouseButton.LeftButton
 def console(qtbot) -> RawConsole:
     widget = RawConsole()
     qtbot.addWidget(widget)
-    widget.resize(700, 300)
+    widget.resize(900, 300)
     widget.show()
     widget.set_time_origin(0.0)
+    widget.set_protocol(create_protocol("coxiris"))
     return widget
 
 
 def _lines(console: RawConsole) -> list[str]:
+    console.flush()
     return console.text().splitlines()
 
 
-def test_object_name_and_defaults(console: RawConsole) -> None:
+def _session(console: RawConsole) -> None:
+    """A COXIRIS session: a poll, a move, a refused speed, an unknown command."""
+    feed = [
+        ("tx", b"GET_POSITION\n", 1.0),
+        ("rx", b"ACK GET_POSITION\r\nDONE GET_POSITION: 0.00 0.00 0.00\r\n", 1.005),
+        ("tx", b"DELTA_MOVE 1 0 0\n", 2.0),
+        ("rx", b"ACK DELTA_MOVE\r\n", 2.012),
+        ("rx", b"DONE DELTA_MOVE\r\n", 2.5),
+        ("tx", b"SET_SPEED 0\n", 3.0),
+        ("rx", b"ACK SET_SPEED\r\nERROR: Speed must be positive\r\nDONE SET_SPEED\r\n", 3.004),
+        ("tx", b"GET_POSITION\n", 4.0),
+        ("rx", b"ACK GET_POSITION\r\nDONE GET_POSITION: 1.00 0.00 0.00\r\n", 4.003),
+    ]
+    for direction, data, when in feed:
+        console.append_traffic(direction, data, when, 1_700_000_000.0 + when)
+    console.flush()
+
+
+def test_object_names_and_defaults(console: RawConsole) -> None:
     assert console.objectName() == "rawConsole"
-    assert console.view.maximumBlockCount() == DEFAULT_MAX_LINES == 5000
+    assert console.view.objectName() == "consoleView"
     assert console.display_mode() == "text"
-    assert console.timestamps()
+    assert console.time_mode() == "relative"
+    assert console.kinds() == set(KINDS) - {"poll"}  # the poll is hidden by default
+    assert not console.poll_check.isChecked()
 
 
-def test_appends_are_buffered_until_flush(console: RawConsole, qtbot) -> None:
-    console.append_traffic("tx", b"GET_POSITION\n", 1.0)
-    assert console.text() == ""
+def test_lines_are_decoded_paired_and_timed(console: RawConsole) -> None:
+    _session(console)
+    lines = _lines(console)
+    assert lines[0] == "000002.000 TX  DELTA_MOVE 1 0 0\\n  [→ #4]"
+    assert lines[1] == "000002.012 RX  ACK DELTA_MOVE\\r\\n  [↩ #3  12.0 ms]"
+    assert lines[2] == "000002.500 RX  DONE DELTA_MOVE\\r\\n  [↩ #3]"
+    assert (
+        "000003.004 RX  ERROR: Speed must be positive\\r\\n  error: Speed must be positive"
+        in (lines[5])
+    )
+    model = console.view.model()
+    error_row = console.shown_lines().index(8)
+    assert model.data(model.index(error_row, BYTES), Qt.ItemDataRole.BackgroundRole) == (
+        ERROR_BACKGROUND
+    )
+    tx = model.data(model.index(0, BYTES), Qt.ItemDataRole.ForegroundRole).color()
+    rx = model.data(model.index(1, BYTES), Qt.ItemDataRole.ForegroundRole).color()
+    assert tx == QColor("#1565c0") and rx == QColor("#2e7d32")
+
+
+def test_the_poll_is_hidden_counted_and_shown_on_demand(console: RawConsole, qtbot) -> None:
+    _session(console)
+    assert not any("GET_POSITION" in line for line in _lines(console))
+    assert "6 poll hidden" in console.status_text()
+    qtbot.mouseClick(console.poll_check, LEFT)
+    lines = _lines(console)
+    assert lines[0] == "000001.000 TX  GET_POSITION\\n  [→ #1]"
+    assert lines[1].startswith("000001.005 RX  ACK GET_POSITION")
+    assert "poll hidden" not in console.status_text()
+    assert console.kind_actions["poll"].isChecked()
+
+
+def test_filters_by_direction_kind_and_expression(console: RawConsole, qtbot) -> None:
+    _session(console)
+    console.show_poll(True)
+    qtbot.mouseClick(console.rx_check, LEFT)  # RX off
+    assert all(" TX " in line for line in _lines(console))
+    qtbot.mouseClick(console.rx_check, LEFT)
+    console.set_filter(kinds={"error"})
+    assert [line.split("  ")[0] for line in _lines(console)] == ["000003.004 RX"]
+    console.set_filter(kinds=set(KINDS))
+    qtbot.keyClicks(console.filter_edit, "move|speed")
+    lines = _lines(console)
+    assert len(lines) == 7 and all(("MOVE" in x or "SPEED" in x or "Speed" in x) for x in lines)
+    console.filter_edit.setText("(unclosed")
+    assert console.filter_edit.styleSheet()  # shown in red, the view keeps the last good filter
+    assert "is not a regular expression" in console.filter_edit.toolTip()
+    assert len(_lines(console)) == 7
+    console.filter_edit.clear()
+    assert len(_lines(console)) == 13
+
+
+def test_new_traffic_passes_the_filter_as_it_comes(console: RawConsole) -> None:
+    console.set_filter(pattern="DELTA")
+    _session(console)
+    console.append_traffic("tx", b"DELTA_MOVE 0 1 0\n", 5.0)
+    console.append_traffic("tx", b"GET_SPEED\n", 5.1)
+    lines = _lines(console)
+    assert len(lines) == 4 and lines[-1].startswith("000005.000 TX  DELTA_MOVE 0 1 0")
+
+
+def test_search_highlights_and_goes_next_and_previous(console: RawConsole, qtbot) -> None:
+    _session(console)
+    assert console.search("done") == 4  # 2 DONE lines hidden with the poll, 2 shown
+    model = console.view.model()
+    first = console.find_next()
+    assert first == 5
+    row = console.view.currentIndex().row()
+    assert model.data(model.index(row, BYTES), Qt.ItemDataRole.BackgroundRole) == MATCH_BACKGROUND
+    assert console.find_next() == 9
+    assert console.find_next() == 5  # wraps around
+    assert console.find_previous() == 9
+    console.view.setFocus()
+    qtbot.keyClick(console.view, Qt.Key.Key_F3)
+    assert console.current_line() == 5
+    qtbot.keyClick(console.view, Qt.Key.Key_F3, Qt.KeyboardModifier.ShiftModifier)
+    assert console.current_line() == 9
+    assert "4 matches" in console.status_text()
+
+
+def test_display_modes(console: RawConsole) -> None:
+    console.append_traffic("tx", b"A\x00B\n", 1.0)
     console.flush()
-    assert _lines(console) == ["000001.000 TX  GET_POSITION\\n"]
-    console.append_traffic("rx", b"OK\r\n", 1.25)
-    qtbot.waitUntil(lambda: len(_lines(console)) == 2, timeout=1000)  # the ~20 Hz timer
-
-
-def test_text_mode_escapes(console: RawConsole) -> None:
-    console.append_traffic("rx", b"POS 1.00\r\n\x02\xff\\", 3.001)
-    console.flush()
-    assert _lines(console) == ["000003.001 RX  POS 1.00\\r\\n", "000003.001 RX  \\x02\\xff\\\\"]
-
-
-def test_text_mode_joins_reads_into_lines(console: RawConsole) -> None:
-    for when, chunk in enumerate([b"A", b"CK GET_POSITIO", b"N\r\nDONE GET_POS", b"ITION\r\n"]):
-        console.append_traffic("rx", chunk, float(when))
-        console.flush()  # also across flushes
-    console.append_traffic("tx", b"GET_SPEED\n", 5.0)
-    console.append_traffic("rx", b"A", 6.0)
-    console.append_note("busy", 6.5)
-    console.append_traffic("rx", b"CK\r\n", 7.0)
-    console.flush()
-    assert _lines(console) == [
-        "000000.000 RX  ACK GET_POSITION\\r\\n",
-        "000002.000 RX  DONE GET_POSITION\\r\\n",
-        "000005.000 TX  GET_SPEED\\n",
-        "000006.000 RX  A",
-        "000006.500 --  busy",
-        "000007.000 RX  CK\\r\\n",
-    ]
-    console.set_display_mode("hex")  # reads 1 s apart (>= HEX_IDLE): a hexdump block each
-    assert [line[:13] for line in _lines(console)] == [
-        "000000.000 RX",  # A
-        "000001.000 RX",  # CK GET_POSITIO (1 s later: a new block)
-        "000002.000 RX",  # N\r\n
-        "000002.000 RX",  # DONE GET_POS
-        "000003.000 RX",  # ITION\r\n
-        "000005.000 TX",
-        "000006.000 RX",  # A, ended by the note
-        "000006.500 --",
-        "000007.000 RX",
-    ]
-
-
-def test_hex_mode(console: RawConsole, qtbot) -> None:
+    assert _lines(console)[0].startswith("000001.000 TX  A\\x00B\\n")
     console.set_display_mode("hex")
-    console.append_traffic("tx", b"HELLO", 3.001)
-    console.flush()
-    assert console.text() == ""  # no LF: held in case more of the line comes...
-    qtbot.waitUntil(lambda: len(_lines(console)) == 1, timeout=2000)  # ...for HEX_IDLE s
-    (line,) = _lines(console)
-    assert line.startswith("000003.001 TX  48 45 4C 4C 4F ")
-    assert line.endswith("  HELLO")
-    assert console.mode_combo.currentText() == "hex"
-
-
-def test_switching_mode_and_timestamps_rerenders(console: RawConsole) -> None:
-    console.append_traffic("tx", b"AB", 2.0)
-    console.append_note("connected", 2.5)
-    console.flush()
-    console.mode_combo.setCurrentText("hex")  # as the user does
-    assert _lines(console)[0].startswith("000002.000 TX  41 42 ")
-    console.timestamps_check.setChecked(False)
-    assert _lines(console)[0].startswith("TX  41 42")
-    assert _lines(console)[1] == "--  connected"
+    assert _lines(console)[0].startswith("000001.000 TX  41 00 42 0A")
+    console.set_display_mode("mixed")
+    assert _lines(console)[0].startswith("000001.000 TX  A<00>B<0A>")
+    assert console.mode_combo.currentText() == "mixed"
     with pytest.raises(ValueError):
         console.set_display_mode("octal")
 
 
-def test_tx_rx_and_notes_have_their_colours(console: RawConsole) -> None:
-    console.append_traffic("tx", b"A", 0.0)
-    console.append_traffic("rx", b"B", 0.1)
-    console.append_note("info", 0.2)
+def test_time_modes(console: RawConsole) -> None:
+    _session(console)
+    console.set_time_mode("delta")
+    assert [line.split(" ")[0] for line in _lines(console)[:3]] == ["+0.000", "+0.012", "+0.488"]
+    console.set_time_mode("absolute")
+    first = _lines(console)[0].split(" ")[0]
+    assert len(first) == 12 and first[2] == ":" and first.endswith(".000")
+    console.set_timestamps(False)
+    assert _lines(console)[0].startswith("TX  DELTA_MOVE")
+
+
+def test_a_retransmission_links_to_its_first_copy(qtbot) -> None:
+    console = RawConsole()
+    qtbot.addWidget(console)
+    console.set_protocol(create_protocol("laser-frame"))
+    from drivers.commands import GetPosition
+
+    frame = create_protocol("laser-frame").encode(GetPosition())
+    console.append_traffic("tx", frame, 1.0)  # no answer
+    console.append_traffic("tx", frame, 1.3)  # sent again
     console.flush()
-    document = console.view.document()
-    colours = []
-    for index in range(3):
-        block = document.findBlockByNumber(index)
-        char_format = block.begin().fragment().charFormat()
-        colours.append(char_format.foreground().color())
-    assert colours == [QColor(COLOURS["tx"]), QColor(COLOURS["rx"]), QColor(COLOURS["note"])]
-    assert document.findBlockByNumber(2).begin().fragment().charFormat().fontItalic()
+    console.show_poll(True)
+    lines = _lines(console)
+    assert "[↻ copy of #0]" in lines[1]
+    model = console.view.model()
+    assert model.data(model.index(1, REPLY)) == "↻ copy of #0"
+    console.view.doubleClicked.emit(model.index(1, REPLY))
+    assert console.current_line() == 0
+
+
+def test_double_click_goes_to_the_reply(console: RawConsole) -> None:
+    _session(console)
+    model = console.view.model()
+    console.view.doubleClicked.emit(model.index(0, BYTES))  # DELTA_MOVE
+    assert console.current_line() == 4
+    assert not console.is_following()
+
+
+def test_export_text_and_csv_of_the_filtered_view(console: RawConsole, tmp_path: Path) -> None:
+    _session(console)
+    console.set_filter(pattern="speed")
+    text_file, csv_file = tmp_path / "view.txt", tmp_path / "view.csv"
+    assert console.export(text_file) == 4
+    assert text_file.read_text().splitlines()[0] == "000003.000 TX  SET_SPEED 0\\n  [→ #7]"
+    assert console.export(csv_file) == 4
+    rows = list(csv.DictReader(csv_file.open(encoding="utf-8")))
+    assert [r["line"] for r in rows] == ["6", "7", "8", "9"]
+    assert rows[0]["hex"].startswith("53 45 54 5F") and rows[0]["kind"] == "setting"
+    assert rows[1]["latency_ms"] == "4.0" and rows[1]["pair"] == "6"
+    assert rows[2]["kind"] == "error" and rows[3]["kind"] == "setting"
+
+
+def test_export_and_clear_buttons(console: RawConsole, qtbot, tmp_path: Path) -> None:
+    _session(console)
+    target = tmp_path / "out.txt"
+    console.ask_export_path = lambda: str(target)
+    qtbot.mouseClick(console.findChild(type(console.send_button), "consoleExport"), LEFT)
+    assert "DELTA_MOVE" in target.read_text()
+    qtbot.mouseClick(console.findChild(type(console.send_button), "consoleClear"), LEFT)
+    assert _lines(console) == []
+    assert console.status_text().startswith("0 lines")
+
+
+def test_notes_and_late_traffic_are_put_in_time_order(console: RawConsole) -> None:
+    console.append_traffic("tx", b"DELTA_MOVE 1 0 0\n", 1.0)
+    console.append_note("moving", 3.0)  # stamped when the GUI adds it...
+    console.append_traffic("rx", b"ACK DELTA_MOVE\r\n", 2.0)  # ...earlier traffic comes later
+    console.append_traffic("rx", b"DONE DELTA_MOVE\r\n", 4.0)
+    assert [line.split("  ")[0] for line in _lines(console)] == [
+        "000001.000 TX",
+        "000002.000 RX",
+        "000003.000 --",
+        "000004.000 RX",
+    ]
+
+
+def test_without_a_protocol_each_read_is_a_line(qtbot) -> None:
+    console = RawConsole()
+    qtbot.addWidget(console)
+    console.append_traffic("rx", b"\x01\x02", 1.0)
+    assert _lines(console)[0].endswith("RX  \\x01\\x02")
+
+
+def test_many_lines_stay_scrollable_and_filterable(console: RawConsole) -> None:
+    for i in range(20_000):
+        console.append_traffic("tx", b"GET_POSITION\n", i * 0.01)
+        console.append_traffic("rx", b"ACK GET_POSITION\r\nDONE GET_POSITION: 1 2 3\r\n", i * 0.01)
+    console.append_traffic("tx", b"GO_HOME\n", 999.0)
+    console.flush()
+    assert len(console.index) == 60_001
+    assert console.shown_lines() == [60_000]  # every poll line hidden
+    console.show_poll(True)
+    assert len(console.shown_lines()) == 60_001
+    console.jump_to_line(30_000)
+    assert console.current_line() == 30_000
+    assert console.search("GO_HOME") == 1 and console.find_next() == 60_000
+
+
+def test_autoscroll_pauses_when_scrolled_up(console: RawConsole) -> None:
+    for i in range(200):
+        console.append_traffic("tx", f"GET_SPEED {i}\n".encode(), i * 0.1)
+    console.flush()
+    bar = console.view.verticalScrollBar()
+    assert bar.value() == bar.maximum() and console.is_following()
+    bar.setValue(0)
+    assert not console.is_following() and console.paused_label.isVisibleTo(console)
+    console.append_traffic("tx", b"GET_SPEED\n", 30.0)
+    console.flush()
+    assert bar.value() == 0
+    bar.setValue(bar.maximum())
+    assert console.is_following()
 
 
 def test_bad_direction(console: RawConsole) -> None:
     with pytest.raises(ValueError):
         console.append_traffic("up", b"x", 0.0)
-
-
-def test_memory_is_bounded_and_appends_are_cheap(qtbot) -> None:
-    console = RawConsole(max_records=20_000)
-    qtbot.addWidget(console)
-    started = time.perf_counter()
-    for i in range(50_000):
-        console.append_traffic("rx" if i % 2 else "tx", b"line %d\n" % i, i * 1e-4)
-    appended = time.perf_counter() - started
-    console.flush()
-    assert console.view.document().blockCount() <= DEFAULT_MAX_LINES
-    assert console.text().splitlines()[-1].endswith("line 49999\\n")
-    assert len(console.records()) == 20_000
-    assert console.records()[0][1] == b"line 30000\n"
-    assert appended < 1.0  # well over 10k appends per second
-
-
-def test_a_flood_says_what_it_skipped(qtbot) -> None:
-    console = RawConsole(max_lines=10)
-    qtbot.addWidget(console)
-    for i in range(25):
-        console.append_traffic("tx", b"%d\n" % i, 0.0)
-    console.flush()
-    lines = console.text().splitlines()
-    assert "16 records not shown here" in lines[0]
-    assert lines[-1].endswith("TX  24\\n")
-    assert len(console.records()) == 25
-
-
-def test_export_writes_everything_retained(qtbot, tmp_path: Path) -> None:
-    console = RawConsole(max_lines=10)
-    qtbot.addWidget(console)
-    console.set_time_origin(0.0)
-    for i in range(100):
-        console.append_traffic("tx", b"%d\n" % i, float(i))
-    console.flush()
-    assert console.view.document().blockCount() == 10  # the view is bounded...
-    path = tmp_path / "log.txt"
-    console.set_timestamps(False)  # the export keeps its timestamps anyway
-    assert console.export(path) == 100  # ...the export is complete
-    lines = path.read_text(encoding="utf-8").splitlines()
-    assert lines[0] == "000000.000 TX  0\\n"
-    assert lines[99] == "000099.000 TX  99\\n"
-
-
-def test_export_and_clear_buttons(console: RawConsole, qtbot, tmp_path: Path) -> None:
-    console.append_traffic("rx", b"OK\n", 0.5)
-    console.flush()
-    console.ask_export_path = lambda: ""  # cancelled
-    qtbot.mouseClick(console.findChild(type(console.send_button), "consoleExport"), LEFT)
-    path = tmp_path / "out.txt"
-    console.ask_export_path = lambda: str(path)
-    qtbot.mouseClick(console.findChild(type(console.send_button), "consoleExport"), LEFT)
-    assert path.read_text(encoding="utf-8") == "000000.500 RX  OK\\n\n"
-    console.ask_export_path = lambda: str(tmp_path / "missing" / "dir" / "x.txt")
-    qtbot.mouseClick(console.findChild(type(console.send_button), "consoleExport"), LEFT)
-    assert "export failed" in console.error_label.text()
-    qtbot.mouseClick(console.findChild(type(console.send_button), "consoleClear"), LEFT)
-    console.flush()
-    assert console.text() == ""
-    assert console.records() == []
-
-
-def test_autoscroll_pauses_when_scrolled_up(console: RawConsole) -> None:
-    bar = console.view.verticalScrollBar()
-    for i in range(300):
-        console.append_traffic("rx", b"%d\n" % i, 0.0)
-    console.flush()
-    assert bar.maximum() > 0
-    assert bar.value() == bar.maximum()
-    bar.setValue(0)  # the user scrolls up
-    assert not console.is_following()
-    assert console.paused_label.isVisible()
-    console.append_traffic("rx", b"more\n", 0.0)
-    console.flush()
-    assert bar.value() == 0
-    bar.setValue(bar.maximum())  # back at the bottom: follow again
-    assert console.is_following()
-    assert not console.paused_label.isVisible()
-    console.append_traffic("rx", b"even more", 0.0)
-    console.flush()
-    assert bar.value() == bar.maximum()
 
 
 def _type_and_enter(console: RawConsole, qtbot, text: str) -> None:
@@ -278,177 +342,3 @@ def test_send_disabled(console: RawConsole, qtbot, record) -> None:
     console.set_send_enabled(True)
     console.send()
     assert calls == [(b"X\n",)]
-
-
-# -- time order ---------------------------------------------------------------------------
-
-
-def test_a_note_is_shown_and_exported_after_earlier_traffic_that_comes_late(
-    console: RawConsole, tmp_path: Path
-) -> None:
-    console.append_traffic("tx", b"MOVE 1\n", 1.0)
-    console.flush()
-    console.append_note("moving", 3.0)  # stamped when the GUI adds it...
-    console.flush()
-    console.append_traffic("rx", b"OK\n", 2.0)  # ...the traffic of before comes in a later batch
-    console.append_traffic("rx", b"DONE\n", 4.0)
-    console.flush()
-    expected = [
-        "000001.000 TX  MOVE 1\\n",
-        "000002.000 RX  OK\\n",
-        "000003.000 --  moving",
-        "000004.000 RX  DONE\\n",
-    ]
-    assert _lines(console) == expected
-    assert [when for _, _, when in console.records()] == [1.0, 2.0, 3.0, 4.0]
-    path = tmp_path / "log.txt"
-    assert console.export(path) == 4
-    assert path.read_text(encoding="utf-8").splitlines() == expected
-
-
-def test_time_order_within_one_flush_and_with_the_default_note_time(
-    console: RawConsole, tmp_path: Path
-) -> None:
-    console.clock = lambda: 10.0
-    console.append_note("error: timeout")  # now, 10.0
-    console.append_traffic("rx", b"PART", 9.5)
-    console.append_traffic("rx", b"IAL\r\n", 9.9)
-    console.flush()
-    expected = ["000009.500 RX  PARTIAL\\r\\n", "000010.000 --  error: timeout"]
-    assert _lines(console) == expected
-    console.export(tmp_path / "log.txt")
-    assert (tmp_path / "log.txt").read_text(encoding="utf-8").splitlines() == expected
-
-
-def test_a_late_read_still_joins_its_line(console: RawConsole) -> None:
-    console.append_traffic("rx", b"A", 1.0)
-    console.append_note("busy", 1.5)
-    console.flush()
-    assert _lines(console) == ["000001.000 RX  A", "000001.500 --  busy"]
-    console.append_traffic("rx", b"CK\r\n", 1.2)
-    console.flush()
-    assert _lines(console) == ["000001.000 RX  ACK\\r\\n", "000001.500 --  busy"]
-    console.append_traffic("rx", b"OK\n", 2.0)  # in order again: appended
-    console.flush()
-    assert _lines(console)[-1] == "000002.000 RX  OK\\n"
-
-
-def test_in_order_flushes_append_without_rerendering(console: RawConsole, monkeypatch) -> None:
-    calls: list[int] = []
-    original = console._rerender
-    monkeypatch.setattr(console, "_rerender", lambda: calls.append(1) or original())
-    for i in range(5):
-        console.append_traffic("rx", b"%d\n" % i, float(i))
-        console.append_note(f"n{i}", i + 0.5)
-        console.flush()
-    assert calls == []
-    console.append_traffic("rx", b"late\n", 0.2)
-    console.flush()
-    assert calls == [1]
-    assert _lines(console)[1] == "000000.200 RX  late\\n"
-
-
-def test_the_time_origin_is_the_earliest_record(qtbot) -> None:
-    console = RawConsole()
-    qtbot.addWidget(console)
-    console.append_note("connecting", 100.0)
-    console.flush()
-    console.append_traffic("tx", b"HELLO\n", 99.5)
-    console.flush()
-    assert _lines(console) == ["000000.000 TX  HELLO\\n", "000000.500 --  connecting"]
-
-
-def test_a_late_record_in_a_full_log_keeps_it_bounded_and_sorted(qtbot) -> None:
-    console = RawConsole(max_records=3)
-    qtbot.addWidget(console)
-    for when in (1.0, 2.0, 3.0):
-        console.append_traffic("rx", b"x", when)
-    console.append_traffic("rx", b"y", 2.5)
-    assert [when for _, _, when in console.records()] == [2.0, 2.5, 3.0]
-
-
-# -- hex blocks across reads ------------------------------------------------------------
-
-REPLY = b"ACK GET_POSITION\r\nDONE GET_POSITION: 0.00 0.00 0.00\r\n"
-CHUNKS = [b"ACK GET_PO", b"SITION\r\nDONE", b" GET_POSITION: 0.0", b"0 0.00 0.0", b"0\r\n"]
-
-
-def _bytes_of_rows(rows: list[str]) -> bytes:
-    """The bytes of hexdump rows, read back from their hex columns."""
-    return b"".join(bytes.fromhex(row[15 : 15 + 47]) for row in rows)
-
-
-def test_a_reply_in_several_reads_is_one_hex_block_per_line(
-    console: RawConsole, tmp_path: Path
-) -> None:
-    assert b"".join(CHUNKS) == REPLY
-    console.set_display_mode("hex")
-    for i, chunk in enumerate(CHUNKS):
-        console.append_traffic("rx", chunk, 1.0 + i * 0.01)
-        if i % 2:
-            console.flush()  # across flushes too
-    console.flush()
-    rows = _lines(console)
-    # 18 bytes: 2 rows; 35 bytes: 3 rows; each line's rows carry the time of its first byte
-    assert [row[:13] for row in rows] == ["000001.000 RX"] * 2 + ["000001.010 RX"] * 3
-    assert _bytes_of_rows(rows) == REPLY
-    assert rows[1].endswith("..")  # \r\n: the first line ends its block
-    assert rows[2].endswith("DONE GET_POSITIO")
-    path = tmp_path / "hex.txt"
-    assert console.export(path) == 5
-    assert path.read_text(encoding="utf-8").splitlines() == rows
-
-
-def test_hex_block_ends_at_the_other_direction_or_a_note(console: RawConsole) -> None:
-    console.set_display_mode("hex")
-    console.append_traffic("rx", b"\x02\x10", 1.0)
-    console.append_traffic("rx", b"\x03", 1.01)  # binary frame: no LF, same direction: one block
-    console.append_traffic("tx", b"\x06", 1.02)  # the other direction ends it
-    console.append_note("ack sent", 1.03)  # a note ends the TX block
-    console.flush()
-    rows = _lines(console)
-    assert [row[:13] for row in rows] == ["000001.000 RX", "000001.020 TX", "000001.030 --"]
-    assert rows[0].startswith("000001.000 RX  02 10 03 ")
-    colours = [
-        console.view.document().findBlockByNumber(i).begin().fragment().charFormat()
-        for i in range(3)
-    ]
-    assert [c.foreground().color() for c in colours] == [
-        QColor(COLOURS["rx"]),
-        QColor(COLOURS["tx"]),
-        QColor(COLOURS["note"]),
-    ]
-
-
-def test_an_unterminated_hex_tail_is_shown_when_no_more_bytes_come(console: RawConsole) -> None:
-    now = [100.0]
-    console.clock = lambda: now[0]
-    console.set_display_mode("hex")
-    console.append_traffic("rx", bytes(range(0x20, 0x34)), 1.0)
-    console.flush()
-    assert len(_lines(console)) == 1  # the full row; 4 bytes wait for more
-    now[0] += 0.1
-    console.append_traffic("rx", b"\x14", 1.1)  # more of the same block
-    console.flush()
-    now[0] += 0.15
-    console.flush()
-    assert len(_lines(console)) == 1  # 0.15 s since the last bytes: still waiting
-    now[0] += 0.1
-    console.flush()
-    rows = _lines(console)
-    assert len(rows) == 2
-    assert rows[1].startswith("000001.000 RX  30 31 32 33 14 ")
-    console.append_traffic("rx", b"\x15", 1.5)
-    console.flush()
-    now[0] += 0.3
-    console.flush()
-    assert _lines(console)[-1].startswith("000001.500 RX  15 ")  # a new block
-
-
-def test_switching_to_hex_shows_the_held_tail_in_time(console: RawConsole, qtbot) -> None:
-    console.append_traffic("rx", REPLY + b"\x02\x03", 1.0)
-    console.flush()
-    console.set_display_mode("hex")
-    assert len(_lines(console)) == 5
-    qtbot.waitUntil(lambda: len(_lines(console)) == 6, timeout=2000)
-    assert _lines(console)[-1].startswith("000001.000 RX  02 03 ")

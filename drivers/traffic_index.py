@@ -1,0 +1,384 @@
+"""Every frame of a session, decoded, classified and paired, kept on disk with a small index.
+
+A console over a million lines keeps no strings per line: each line's text goes to a spool file
+(`DIR\\tKIND\\tHEX\\tTEXT\\tMEANING\\n`), and numpy arrays hold its offset, time, direction and
+kind, its pair (request ↔ reply) with the latency, and the first copy of a retransmission:
+about 30 bytes a line in memory. Lines are read back from the spool on demand; filters by
+direction, kind and regular expression run over the arrays and the spool.
+
+Kinds: `motion`, `query`, `poll` (the position query and its reply), `setting`, `error`,
+`debug` (the device's own text) and `note`. A sent frame's kind is the protocol's
+`sent_kind`; a reply takes its request's kind. Replies are paired with requests by the
+protocol's own reply tracker (`raw_exchange`) where it has one, else the next reply answers
+the oldest request still waiting (for `REPLY_WINDOW` seconds) that `expects_reply`.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import mmap
+import os
+import re
+import tempfile
+from collections import deque
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from drivers.decoding import DecodedFrame, StreamDecoder
+from drivers.errors import BadInput
+from drivers.log_reader import LogRecord
+from drivers.protocols.base import Exchange, Protocol
+
+log = logging.getLogger(__name__)
+
+KINDS = ("motion", "query", "poll", "setting", "error", "debug", "note")
+DIRECTIONS = ("tx", "rx", "")  # "" for notes
+REPLY_WINDOW = 10.0  # s a request waits for its reply before it counts as unanswered
+_KIND_CODE = {kind: code for code, kind in enumerate(KINDS)}
+_DIR_CODE = {direction: code for code, direction in enumerate(DIRECTIONS)}
+_ESCAPES = {0x0D: "\\r", 0x0A: "\\n", 0x09: "\\t", 0x5C: "\\\\"}
+_ESCAPE_TABLE = {
+    b: _ESCAPES.get(b, chr(b) if 0x20 <= b < 0x7F else f"\\x{b:02x}") for b in range(256)
+}
+_CLEAN = str.maketrans({"\t": " ", "\n": " ", "\r": " "})
+_CACHE_SIZE = 4096
+
+
+class FilterError(BadInput):
+    """A filter that cannot be used (a regular expression that does not compile)."""
+
+
+def escape(data: bytes) -> str:
+    """Printable ASCII as is; CR, LF, tab and backslash as \\r \\n \\t \\\\; others as \\xNN."""
+    return data.decode("latin-1").translate(_ESCAPE_TABLE)
+
+
+def compile_filter(pattern: str) -> re.Pattern[bytes] | None:
+    """A case-insensitive pattern over the spool's lines ("" → None); FilterError if invalid."""
+    if not pattern:
+        return None
+    try:
+        return re.compile(pattern.encode("utf-8"), re.IGNORECASE)
+    except re.error as exc:
+        raise FilterError(f"{pattern!r} is not a regular expression: {exc}") from None
+
+
+@dataclass(frozen=True)
+class TrafficLine:
+    """One line of the session: a frame or a note, with its pairing."""
+
+    number: int
+    time: float  # seconds, on the clock of the records (monotonic or log time)
+    direction: str  # "tx", "rx", or "" for a note
+    kind: str
+    data: bytes  # as they crossed, terminator included, where known
+    meaning: str
+    pair: int = -1  # the reply of a request, the request of a reply (-1: none)
+    latency_ms: float = math.nan  # on a reply: time since its request
+    first_copy: int = -1  # on a retransmission: the line of the frame's first copy
+
+
+class _Columns:
+    """Growable numpy columns, one row a line."""
+
+    def __init__(self, capacity: int = 4096) -> None:
+        self.size = 0
+        self.offset = np.zeros(capacity + 1, dtype=np.int64)  # offset[i + 1]: end of line i
+        self.time = np.zeros(capacity, dtype=np.float64)
+        self.code = np.zeros(capacity, dtype=np.uint8)  # direction << 4 | kind
+        self.pair = np.full(capacity, -1, dtype=np.int32)
+        self.latency = np.full(capacity, np.nan, dtype=np.float32)
+        self.first_copy = np.full(capacity, -1, dtype=np.int32)
+
+    def grow(self) -> None:
+        capacity = len(self.time) * 2
+        self.offset = np.resize(self.offset, capacity + 1)
+        self.time = np.resize(self.time, capacity)
+        self.code = np.resize(self.code, capacity)
+        for name, fill in (("pair", -1), ("latency", np.nan), ("first_copy", -1)):
+            old = getattr(self, name)
+            new = np.full(capacity, fill, dtype=old.dtype)
+            new[: len(old)] = old
+            setattr(self, name, new)
+
+
+@dataclass
+class _Waiting:
+    line: int
+    time: float
+    data: bytes
+    exchange: Exchange | None
+
+
+class TrafficIndex:
+    """The session's lines, decoded by `protocol` (None: each record one line, undecoded)."""
+
+    def __init__(self, protocol: Protocol | None = None, spool_dir: str | Path | None = None):
+        handle, name = tempfile.mkstemp(
+            prefix="motionpanel-traffic-", suffix=".spool", dir=spool_dir
+        )
+        self._fd = handle
+        self.spool_path = Path(name)
+        os.unlink(name)  # the descriptor keeps it; nothing is left behind after a crash
+        self._columns = _Columns()
+        self._unwritten = bytearray()
+        self._written = 0
+        self._cache: dict[int, TrafficLine] = {}
+        self.counts = dict.fromkeys(KINDS, 0)
+        self.new_latencies: list[int] = []  # replies paired since the caller last took them
+        self.wall_offset: float | None = None  # wall-clock time minus record time
+        self.set_protocol(protocol)
+
+    def set_protocol(self, protocol: Protocol | None) -> None:
+        """Decode what comes next with `protocol` (a new connection)."""
+        self.protocol = protocol
+        self._decoder = StreamDecoder(protocol) if protocol is not None else None
+        self._waiting: deque[_Waiting] = deque()
+        self._last_sent: dict[bytes, int] = {}  # frame → line of its first copy, unanswered
+        self._last_kind = "query"
+
+    def close(self) -> None:
+        """Release the spool."""
+        if self._fd >= 0:
+            os.close(self._fd)
+            self._fd = -1
+
+    def __len__(self) -> int:
+        return self._columns.size
+
+    # -- adding ------------------------------------------------------------------------------
+
+    def add(self, direction: str, data: bytes, time: float, wall: float | None = None) -> int:
+        """Take bytes that crossed; returns how many lines they completed."""
+        if wall is not None and self.wall_offset is None:
+            self.wall_offset = wall - time
+        record = LogRecord(time, direction, bytes(data))
+        if self._decoder is None:
+            frames = [DecodedFrame(time, direction, record.data, "", "frame")]
+        else:
+            frames = self._decoder.feed(record)
+        for frame in frames:
+            self._add_frame(frame)
+        self._write()
+        return len(frames)
+
+    def add_note(self, text: str, time: float, wall: float | None = None) -> None:
+        """Take an information line (connected, a command not sent, …)."""
+        if wall is not None and self.wall_offset is None:
+            self.wall_offset = wall - time
+        self._append(time, "", "note", b"", text)
+        self._write()
+
+    def add_records(self, records: list[LogRecord]) -> None:
+        """Take a log's records, in order."""
+        for record in records:
+            if record.note:
+                self._append(record.time, "", "note", b"", record.note)
+            elif self._decoder is None:
+                self._append(record.time, record.direction, "query", record.data, "")
+            else:
+                for frame in self._decoder.feed(record):
+                    self._add_frame(frame)
+            if len(self._unwritten) > 1 << 20:
+                self._write()
+        self._write()
+
+    def _add_frame(self, frame: DecodedFrame) -> None:
+        if frame.direction == "tx":
+            self._add_sent(frame)
+        else:
+            self._add_received(frame)
+
+    def _add_sent(self, frame: DecodedFrame) -> None:
+        protocol = self.protocol
+        kind = protocol.sent_kind(frame.data) if protocol else "query"
+        line = self._append(frame.time, "tx", kind, frame.raw, frame.meaning)
+        self._last_kind = kind
+        self._expire(frame.time)
+        first = self._last_sent.get(frame.data)
+        if first is not None:
+            self._columns.first_copy[line] = first
+        else:
+            self._last_sent[frame.data] = line
+        if protocol is None or not protocol.expects_reply(frame.data):
+            return
+        exchange = None
+        try:
+            exchange = protocol.raw_exchange(frame.raw)
+        except Exception:  # a tracker for a frame that makes no sense: pair by order instead
+            log.debug("no reply tracker for %r", frame.data, exc_info=True)
+        self._waiting.append(_Waiting(line, frame.time, frame.data, exchange))
+
+    def _add_received(self, frame: DecodedFrame) -> None:
+        kind = {"error": "error", "text": "debug"}.get(frame.kind, "")
+        request = self._match(frame) if frame.kind != "text" else None
+        if request is None and frame.kind == "text":
+            request = self._match(frame, text_only=True)
+        if not kind:
+            kind = self._kind_of(request.line) if request else self._last_kind
+        line = self._append(frame.time, "rx", kind, frame.raw, frame.meaning)
+        if request is not None:
+            columns = self._columns
+            if columns.pair[request.line] < 0:  # the first reply line answers the request
+                columns.pair[request.line] = line
+                self._cache.pop(request.line, None)
+                columns.latency[line] = (frame.time - request.time) * 1000.0
+                self.new_latencies.append(line)
+            columns.pair[line] = request.line
+            if kind != "error":
+                self._last_sent.pop(request.data, None)  # answered: a copy now is not a retry
+
+    def _match(self, frame: DecodedFrame, text_only: bool = False) -> _Waiting | None:
+        """The request this received frame belongs to (it stays waiting until finished).
+
+        Trackers are offered the frame newest first: on a one-in-flight device the newest
+        request is the one being answered, and a tracker takes what is not its own as garbled.
+        """
+        for waiting in reversed(self._waiting):
+            exchange = waiting.exchange
+            if exchange is None:
+                continue
+            try:
+                taken = any(exchange.on_event(event) for event in frame.events)
+            except Exception:  # a tracker confused by foreign traffic: not this request's
+                log.debug("reply tracker failed on %r", frame.data, exc_info=True)
+                taken = False
+            if taken:
+                if exchange.finished and not exchange.wants_more:
+                    self._waiting.remove(waiting)
+                return waiting
+        if not text_only:
+            for waiting in self._waiting:
+                if waiting.exchange is None:
+                    self._waiting.remove(waiting)
+                    return waiting
+        return None
+
+    def _expire(self, now: float) -> None:
+        while self._waiting and now - self._waiting[0].time > REPLY_WINDOW:
+            self._waiting.popleft()
+
+    def _kind_of(self, line: int) -> str:
+        return KINDS[self._columns.code[line] & 0x0F]
+
+    def _append(self, time: float, direction: str, kind: str, data: bytes, meaning: str) -> int:
+        columns = self._columns
+        line = columns.size
+        if line == len(columns.time):
+            columns.grow()
+        text = "\t".join(
+            (
+                direction.upper() or "--",
+                kind,
+                data.hex(" ").upper(),
+                escape(data),
+                meaning.translate(_CLEAN),
+            )
+        )
+        encoded = (text + "\n").encode("utf-8")
+        self._unwritten += encoded
+        columns.offset[line + 1] = columns.offset[line] + len(encoded)
+        columns.time[line] = time
+        columns.code[line] = _DIR_CODE[direction] << 4 | _KIND_CODE[kind]
+        columns.size = line + 1
+        self.counts[kind] += 1
+        return line
+
+    def _write(self) -> None:
+        if self._unwritten:
+            view = memoryview(self._unwritten)
+            while view:
+                written = os.write(self._fd, view)
+                view = view[written:]
+            self._written += len(self._unwritten)
+            self._unwritten = bytearray()
+
+    # -- reading -----------------------------------------------------------------------------
+
+    def time(self, line: int) -> float:
+        """A line's time (s)."""
+        return float(self._columns.time[line])
+
+    def times(self) -> np.ndarray:
+        """Every line's time (a view; do not keep it across adds)."""
+        return self._columns.time[: self._columns.size]
+
+    def line(self, number: int) -> TrafficLine:
+        """One line, read back from the spool."""
+        cached = self._cache.get(number)
+        if cached is not None:
+            return cached
+        columns = self._columns
+        if not 0 <= number < columns.size:
+            raise IndexError(f"line {number} of {columns.size}")
+        start, end = int(columns.offset[number]), int(columns.offset[number + 1])
+        raw = os.pread(self._fd, end - start, start).decode("utf-8")
+        _, kind, hexes, _, meaning = raw.rstrip("\n").split("\t", 4)
+        code = int(columns.code[number])
+        result = TrafficLine(
+            number,
+            float(columns.time[number]),
+            DIRECTIONS[code >> 4],
+            kind,
+            bytes.fromhex(hexes),
+            meaning,
+            int(columns.pair[number]),
+            float(columns.latency[number]),
+            int(columns.first_copy[number]),
+        )
+        if len(self._cache) >= _CACHE_SIZE:
+            self._cache.clear()
+        self._cache[number] = result
+        return result
+
+    def select(
+        self,
+        directions: set[str] | None = None,
+        kinds: set[str] | None = None,
+        pattern: re.Pattern[bytes] | None = None,
+        start: int = 0,
+    ) -> np.ndarray:
+        """Line numbers from `start` on that pass the filters (None: any), in order."""
+        columns = self._columns
+        codes = columns.code[start : columns.size]
+        mask = np.ones(len(codes), dtype=bool)
+        if directions is not None:
+            wanted = [_DIR_CODE[d] for d in directions]
+            mask &= np.isin(codes >> 4, wanted)
+        if kinds is not None:
+            mask &= np.isin(codes & 0x0F, [_KIND_CODE[k] for k in kinds])
+        lines = np.flatnonzero(mask).astype(np.int64) + start
+        if pattern is not None and len(lines):
+            lines = self._matching(lines, pattern)
+        return lines
+
+    def _matching(self, lines: np.ndarray, pattern: re.Pattern[bytes]) -> np.ndarray:
+        """Those of `lines` whose spool text the pattern finds."""
+        self._write()
+        offsets = self._columns.offset
+        if self._written == 0:
+            return lines[:0]
+        with mmap.mmap(self._fd, self._written, access=mmap.ACCESS_READ) as spool:
+            if len(lines) * 8 < self._columns.size:  # few candidates: look at each
+                keep = [
+                    line
+                    for line in lines.tolist()
+                    if pattern.search(spool, int(offsets[line]), int(offsets[line + 1]) - 1)
+                ]
+                return np.asarray(keep, dtype=np.int64)
+            found: list[int] = []
+            first, last = int(lines[0]), int(lines[-1])
+            position, end = int(offsets[first]), int(offsets[last + 1])
+            starts = offsets[: self._columns.size + 1]
+            while position < end:
+                hit = pattern.search(spool, position, end)
+                if hit is None:
+                    break
+                line = int(np.searchsorted(starts, hit.start(), side="right")) - 1
+                found.append(line)
+                position = int(starts[line + 1])
+        hits = np.asarray(found, dtype=np.int64)
+        return hits[np.isin(hits, lines, assume_unique=True)]

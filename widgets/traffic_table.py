@@ -1,0 +1,184 @@
+"""The console's table: the lines of a TrafficIndex that pass the filters, read on demand."""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt
+from PySide6.QtGui import QBrush, QColor, QFont
+
+from drivers.traffic_index import TrafficIndex, TrafficLine, escape
+
+TEXT, HEX, MIXED = "text", "hex", "mixed"
+DISPLAY_MODES = (TEXT, HEX, MIXED)
+RELATIVE, ABSOLUTE, DELTA = "relative", "absolute", "delta"
+TIME_MODES = (RELATIVE, ABSOLUTE, DELTA)
+COLUMNS = ("Line", "Time", "Dir", "Bytes", "Meaning", "Reply")
+LINE, TIME, DIRECTION, BYTES, MEANING, REPLY = range(len(COLUMNS))
+SHOWN_BYTES = 96  # bytes shown in a cell; the tooltip and the export have them all
+COLOURS = {"tx": "#1565c0", "rx": "#2e7d32", "": "#757575"}
+ERROR_BACKGROUND = QColor("#ffd7d7")
+MATCH_BACKGROUND = QColor("#fff59d")
+_MIXED_TABLE = {b: chr(b) if 0x20 <= b < 0x7F else f"<{b:02X}>" for b in range(256)}
+Index = QModelIndex | QPersistentModelIndex
+
+
+def shown_bytes(data: bytes, mode: str) -> str:
+    """Bytes as text (escapes), hex (`47 45 54`) or mixed (printable as is, others `<0A>`)."""
+    if mode == HEX:
+        return data.hex(" ").upper()
+    if mode == MIXED:
+        return data.decode("latin-1").translate(_MIXED_TABLE)
+    return escape(data)
+
+
+def stamp(seconds: float, mode: str, wall_offset: float | None, previous: float | None) -> str:
+    """A time as seconds since the origin, a wall-clock time, or the gap since `previous`."""
+    if mode == ABSOLUTE and wall_offset is not None:
+        wall = seconds + wall_offset
+        return time.strftime("%H:%M:%S", time.localtime(wall)) + f".{int(wall * 1000) % 1000:03d}"
+    if mode == DELTA:
+        return "+0.000" if previous is None else f"+{seconds - previous:.3f}"
+    return f"{seconds:010.3f}"
+
+
+def reply_text(line: TrafficLine) -> str:
+    """The pairing in words: `→ #12`, `↩ #11  3.2 ms`, `↻ copy of #9`."""
+    parts = []
+    if line.first_copy >= 0:
+        parts.append(f"↻ copy of #{line.first_copy}")
+    if line.pair >= 0:
+        if line.direction == "tx":
+            parts.append(f"→ #{line.pair}")
+        elif not math.isnan(line.latency_ms):
+            parts.append(f"↩ #{line.pair}  {line.latency_ms:.1f} ms")
+        else:
+            parts.append(f"↩ #{line.pair}")
+    return "  ".join(parts)
+
+
+class TrafficModel(QAbstractTableModel):
+    """Rows are line numbers of the index (numpy array); cells are read from the spool."""
+
+    def __init__(self, index: TrafficIndex) -> None:
+        super().__init__()
+        self.index_ = index
+        self.rows = np.zeros(0, dtype=np.int64)
+        self.mode = TEXT
+        self.time_mode = RELATIVE
+        self.origin = 0.0
+        self.matches = np.zeros(0, dtype=np.int64)  # search hits (line numbers), sorted
+        self._italic = QFont()
+        self._italic.setItalic(True)
+        self._brushes = {d: QBrush(QColor(c)) for d, c in COLOURS.items()}
+
+    # -- rows ------------------------------------------------------------------------------
+
+    def set_index(self, index: TrafficIndex) -> None:
+        """Show another session's lines (none selected yet)."""
+        self.beginResetModel()
+        self.index_ = index
+        self.rows = np.zeros(0, dtype=np.int64)
+        self.matches = np.zeros(0, dtype=np.int64)
+        self.endResetModel()
+
+    def set_rows(self, rows: np.ndarray) -> None:
+        """Show these lines (a new filter)."""
+        self.beginResetModel()
+        self.rows = rows
+        self.endResetModel()
+
+    def append_rows(self, rows: np.ndarray) -> None:
+        """Show more lines at the end (new traffic that passes the filter)."""
+        if not len(rows):
+            return
+        first = len(self.rows)
+        self.beginInsertRows(QModelIndex(), first, first + len(rows) - 1)
+        self.rows = np.concatenate((self.rows, rows))
+        self.endInsertRows()
+
+    def set_matches(self, matches: np.ndarray) -> None:
+        """Highlight these lines (the search's hits)."""
+        self.matches = matches
+        if len(self.rows):
+            self.dataChanged.emit(self.index(0, 0), self.index(len(self.rows) - 1, REPLY - 1))
+
+    def refresh(self) -> None:
+        """Repaint every cell (a display or time mode changed)."""
+        if len(self.rows):
+            self.dataChanged.emit(self.index(0, 0), self.index(len(self.rows) - 1, REPLY))
+
+    def line_at(self, row: int) -> TrafficLine:
+        """The line shown at `row`."""
+        return self.index_.line(int(self.rows[row]))
+
+    def row_of(self, line: int) -> int:
+        """The row showing `line`, or the nearest row after it (len(rows) if none)."""
+        return int(np.searchsorted(self.rows, line))
+
+    # -- Qt --------------------------------------------------------------------------------
+
+    def rowCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
+        """Lines shown."""
+        return 0 if parent.isValid() else len(self.rows)
+
+    def columnCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
+        """Line, time, direction, bytes, meaning, reply."""
+        return 0 if parent.isValid() else len(COLUMNS)
+
+    def headerData(self, section: int, orientation: Qt.Orientation, role: int = 0) -> object:
+        """Column titles."""
+        if orientation == Qt.Orientation.Horizontal and role == Qt.ItemDataRole.DisplayRole:
+            return COLUMNS[section]
+        return None
+
+    def cell(self, row: int, column: int) -> str:
+        """A cell's text."""
+        line = self.line_at(row)
+        if column == LINE:
+            return str(line.number)
+        if column == TIME:
+            previous = self.index_.time(int(self.rows[row - 1])) if row > 0 else None
+            offset = self.index_.wall_offset
+            return stamp(line.time - self.origin, self.time_mode, offset, previous)
+        if column == DIRECTION:
+            return line.direction.upper() or "--"
+        if column == BYTES:
+            shown = shown_bytes(line.data[:SHOWN_BYTES], self.mode)
+            return shown + ("…" if len(line.data) > SHOWN_BYTES else "")
+        if column == MEANING:
+            return line.meaning
+        return reply_text(line)
+
+    def data(self, index: Index, role: int = Qt.ItemDataRole.DisplayRole) -> object:
+        """Text, colours and tooltips of a cell."""
+        if not index.isValid():
+            return None
+        row, column = index.row(), index.column()
+        if role == Qt.ItemDataRole.DisplayRole:
+            return self.cell(row, column)
+        if role == Qt.ItemDataRole.ForegroundRole:
+            return self._brushes[self.line_at(row).direction]
+        if role == Qt.ItemDataRole.BackgroundRole:
+            line = int(self.rows[row])
+            hit = np.searchsorted(self.matches, line)
+            if hit < len(self.matches) and self.matches[hit] == line:
+                return MATCH_BACKGROUND
+            if self.line_at(row).kind == "error":
+                return ERROR_BACKGROUND
+            return None
+        if role == Qt.ItemDataRole.FontRole:
+            return self._italic if self.line_at(row).kind in ("note", "debug") else None
+        if role == Qt.ItemDataRole.ToolTipRole:
+            line = self.line_at(row)
+            lines = [f"line {line.number}: {line.kind}"]
+            if line.data:
+                lines += [f"hex: {line.data.hex(' ').upper()}", f"text: {escape(line.data)}"]
+            if line.meaning:
+                lines.append(line.meaning)
+            if reply_text(line):
+                lines.append(reply_text(line) + " (double-click to go there)")
+            return "\n".join(lines)
+        return None
