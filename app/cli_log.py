@@ -7,7 +7,7 @@ from typing import Any
 
 from drivers.decoding import decode_records
 from drivers.errors import BadInput
-from drivers.log_reader import read_log
+from drivers.log_reader import read_any_log
 from drivers.protocols.base import Protocol
 
 USAGE = "log decode FILE [--filter REGEX]"
@@ -36,11 +36,13 @@ def check_log_offline(args: list[str]) -> None:
 def decode_log(protocol: Protocol, args: list[str]) -> dict[str, Any]:
     """The log's frames decoded (those the filter matches, in their line form)."""
     path, pattern = _parse(args)
-    frames = decode_records(protocol, read_log(path))
+    log_format, records = read_any_log(path)
+    frames = decode_records(protocol, records)
     lines = [(frame, frame.line()) for frame in frames]
     if pattern is not None:
         lines = [(frame, text) for frame, text in lines if pattern.search(text)]
     return {
+        "format": log_format,
         "frames": [
             {
                 "time": frame.time,

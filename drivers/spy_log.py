@@ -1,0 +1,117 @@
+"""Reading pyserial `spy://PORT?file=F` captures (its hexdump format) as traffic log records.
+
+A data line is `SSSSSS.mmm TX   0010  48 45 4C 4C 4F ...  HELLO`: the byte offset in the write (or
+read) it belongs to, up to 16 bytes in hex and their ASCII column; one call's lines continue
+each other by offset, and may carry the call's colour escape (`&color`) in front of the first.
+Spy's TX is what the program wrote (our `tx`), its RX what it read. Control-line and buffer
+events (`RTS  active`, `Q-RX reset_input_buffer`, `RX   <empty>` with `&all`) become notes.
+Spy's `&raw` format runs the bytes of both directions together (and pyserial 3.5 cannot even
+write it to a file), so it is refused.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from drivers.log_reader import LogError, LogRecord
+
+HEXDUMP_HINT = "capture with spy's default hexdump format: spy://PORT?file=FILE, without raw"
+_ESCAPE = re.compile(r"\x1b\[[0-9;]*m")
+_DATA = re.compile(r"^(-?\d+\.\d{3}) (TX|RX)   ([0-9A-F]{4,})  (.*)$")
+_EVENT = re.compile(r"^(-?\d+\.\d{3}) (Q-RX|Q-TX|BRK|RTS|DTR|CTS|DSR|RI|CD|RX) +(\S.*)$")
+_STAMPED = re.compile(r"^-?\d+\.\d{3} ")
+_HEX_WIDTH = 16 * 3 + 1  # 16 cells of `XX ` and the space after the eighth
+_SHOWN = {n: "." for n in (*range(0x20), *range(0x7F, 0x100))}  # the ASCII column's dots
+
+
+@dataclass
+class _Call:
+    """The bytes of one write or read, gathered line by line (16 bytes per full line)."""
+
+    time: float
+    direction: str
+    data: bytearray
+
+
+def _row(data: bytes) -> str:
+    """How spy shows up to 16 bytes after the offset: hex cells, then their ASCII column."""
+    first, second = data[:8].hex(" ").upper(), data[8:16].hex(" ").upper()
+    text = data.decode("latin-1").translate(_SHOWN)
+    return f"{first:<24} {second:<24} {text:<16}"
+
+
+def _row_bytes(row: str) -> bytes | None:
+    """The bytes of a data line's row, or None when it is not exactly as spy writes them."""
+    try:
+        data = bytes.fromhex(row[:_HEX_WIDTH])
+    except ValueError:
+        return None
+    if not 1 <= len(data) <= 16 or _row(data).rstrip() != row.rstrip():
+        return None
+    return data
+
+
+def _clean(line: str) -> str:
+    """The line without colour escapes (`&color`) or trailing blanks."""
+    return _ESCAPE.sub("", line).rstrip()
+
+
+def is_spy_line(line: str) -> bool:
+    """Whether a line can only come from a pyserial spy:// capture (a data or an event line)."""
+    if _ESCAPE.match(line):
+        return True
+    clean = _clean(line)
+    return bool(_DATA.match(clean) or _EVENT.match(clean))
+
+
+def _refusal(source: str, number: int, line: str) -> LogError:
+    """The error for a line that is not one spy writes in its hexdump format."""
+    clean = _clean(line)
+    if _ESCAPE.match(line) and not _STAMPED.match(clean):
+        why = "both directions run together, nothing tells TX from RX"
+        return LogError(
+            f"{source} line {number}: spy's raw format is refused ({why}); {HEXDUMP_HINT}"
+        )
+    return LogError(f"{source} line {number}: not a pyserial spy:// hexdump line: {line[:60]!r}")
+
+
+def parse_spy(text: str, source: str) -> list[LogRecord]:
+    """The records of a spy:// hexdump capture; LogError naming the line for anything else."""
+    entries: list[_Call | LogRecord] = []
+    calls: dict[str, _Call] = {}  # each direction's latest call, which its next lines continue
+    for number, line in enumerate(text.splitlines(), start=1):
+        clean = _clean(line)
+        if not clean:
+            continue
+        hit = _DATA.match(clean)
+        if hit is not None:
+            stamp, direction = float(hit.group(1)), hit.group(2).lower()
+            offset, data = int(hit.group(3), 16), _row_bytes(hit.group(4))
+            if data is None:
+                raise _refusal(source, number, line)
+            if offset == 0:
+                calls[direction] = _Call(stamp, direction, bytearray(data))
+                entries.append(calls[direction])
+                continue
+            call = calls.get(direction)
+            if call is None or offset % 16 or len(call.data) != offset:
+                raise LogError(
+                    f"{source} line {number}: bytes at offset {offset:#06x} of a "
+                    f"{direction.upper()} call whose earlier lines are missing"
+                )
+            call.data += data
+            continue
+        event = _EVENT.match(clean)
+        if event is None or (event.group(2) == "RX" and event.group(3) != "<empty>"):
+            raise _refusal(source, number, line)
+        stamp_text, label, value = event.groups()
+        entries.append(LogRecord(float(stamp_text), "", b"", f"{label} {value}"))
+    if entries and not calls:
+        raise LogError(f"{source}: no traffic in it, only control-line events")
+    if not calls:  # e.g. the colour code alone that `raw&color` leaves
+        raise LogError(f"{source}: no traffic in it (nor spy's raw format); {HEXDUMP_HINT}")
+    return [
+        LogRecord(e.time, e.direction, bytes(e.data)) if isinstance(e, _Call) else e
+        for e in entries
+    ]
