@@ -19,19 +19,18 @@ class LineFramer(Framer):
 
     def decode(self, buffer: bytes) -> tuple[int, bytes | None]:
         """Take one line from the front of `buffer`."""
-        skipped = 0
-        while skipped < len(buffer) and buffer[skipped] in b"\r\n":
-            skipped += 1
+        skipped = len(buffer) - len(buffer.lstrip(b"\r\n"))
         if skipped:
             if skipped == len(buffer) and buffer.endswith(b"\r"):
                 # Keep a trailing CR: it may be the first half of CRLF, then is skipped next time.
                 return (skipped - 1, None) if skipped > 1 else (0, None)
             return skipped, None
-        for index, byte in enumerate(buffer):
-            if byte in b"\r\n":
-                return index, buffer[:index]
-            if index + 1 >= self.max_length:
-                return index + 1, buffer[: index + 1]
+        cr, lf = buffer.find(b"\r", 0, self.max_length), buffer.find(b"\n", 0, self.max_length)
+        end = cr if lf < 0 else lf if cr < 0 else min(cr, lf)
+        if end >= 0:
+            return end, buffer[:end]
+        if len(buffer) >= self.max_length:
+            return self.max_length, buffer[: self.max_length]
         return 0, None
 
     def encode(self, payload: bytes) -> bytes:
