@@ -331,6 +331,10 @@ def _join_travel(arguments: list[str]) -> list[str]:
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of motionctl; returns the exit status."""
     arguments = _join_travel(list(sys.argv[1:] if argv is None else argv))
+    if arguments[:1] == ["bridge"]:  # `motionctl bridge --port DEVICE --protocol P ...`
+        from app.cli_bridge import main as bridge_main
+
+        return bridge_main(arguments[1:])
     parser = build_parser()
     try:
         options = parser.parse_args(arguments)
