@@ -43,15 +43,6 @@ def decode_log(protocol: Protocol, args: list[str]) -> dict[str, Any]:
         lines = [(frame, text) for frame, text in lines if pattern.search(text)]
     return {
         "format": log_format,
-        "frames": [
-            {
-                "time": frame.time,
-                "direction": frame.direction,
-                "hex": frame.data.hex(" ").upper(),
-                "meaning": frame.meaning,
-                "kind": frame.kind,
-            }
-            for frame, _ in lines
-        ],
+        "frames": [frame.as_dict() for frame, _ in lines],
         "text": [text for _, text in lines],
     }

@@ -14,8 +14,10 @@ from drivers.framers.base import Framer
 from drivers.log_reader import LogRecord
 from drivers.protocols.base import Protocol
 
+CACHE_SIZE = 4096  # distinct frames remembered per direction, with their meaning
 
-@dataclass(frozen=True)
+
+@dataclass(slots=True)
 class DecodedFrame:
     """One frame (or note) of the traffic and what it means; `kind`: frame, error, text, note."""
 
@@ -26,6 +28,16 @@ class DecodedFrame:
     kind: str
     wire: bytes = b""  # the exact bytes that crossed, terminator and all, where known
     events: tuple[Event, ...] = field(default=(), compare=False, repr=False)  # received only
+
+    def as_dict(self) -> dict[str, object]:
+        """The frame as JSON-ready fields: time, direction, hex, meaning, kind."""
+        return {
+            "time": round(self.time, 6),
+            "direction": self.direction,
+            "hex": self.data.hex(" ").upper(),
+            "meaning": self.meaning,
+            "kind": self.kind,
+        }
 
     @property
     def raw(self) -> bytes:
@@ -84,29 +96,42 @@ class StreamDecoder:
             "tx": protocol.new_tx_framer(),
         }
         self._pending = {"rx": b"", "tx": b""}
+        self._cache: dict[str, dict[bytes, tuple[str, str, tuple[Event, ...]]]] = {
+            "rx": {},
+            "tx": {},
+        }
 
     def feed(self, record: LogRecord) -> list[DecodedFrame]:
         """The frames a record completes (a note is one DecodedFrame of kind `note`)."""
         if record.note:
             return [DecodedFrame(record.time, "", b"", record.note, "note")]
-        direction = record.direction
+        return self.feed_bytes(record.direction, record.data, record.time)
+
+    def feed_bytes(self, direction: str, data: bytes, time: float) -> list[DecodedFrame]:
+        """The frames that bytes crossing in `direction` at `time` complete."""
         framer = self._framers[direction]
         if framer is None:  # the record is the frame (packets ended by silence)
-            frames, self._pending[direction] = [record.data], b""
-            spans = [record.data]
+            frames, self._pending[direction] = [data], b""
+            spans = [data]
         else:
-            buffer = self._pending[direction] + record.data
+            buffer = self._pending[direction] + data
             frames, rest = framer.split(buffer)
             self._pending[direction] = rest
             spans = _wire_spans(buffer[: len(buffer) - len(rest)], frames)
         out = []
+        cache = self._cache[direction]
         for frame, wire in zip(frames, spans, strict=True):
-            events: tuple[Event, ...] = ()
-            if direction == "rx":
-                meaning, kind, events = _received(self.protocol, frame)
-            else:
-                meaning, kind = self.protocol.describe_sent(frame), "frame"
-            out.append(DecodedFrame(record.time, direction, frame, meaning, kind, wire, events))
+            known = cache.get(frame)
+            if known is None:  # traffic repeats itself (polls, acks): each frame decoded once
+                if direction == "rx":
+                    known = _received(self.protocol, frame)
+                else:
+                    known = (self.protocol.describe_sent(frame), "frame", ())
+                if len(cache) >= CACHE_SIZE:
+                    cache.clear()
+                cache[frame] = known
+            meaning, kind, events = known
+            out.append(DecodedFrame(time, direction, frame, meaning, kind, wire, events))
         return out
 
     def pending(self, direction: str) -> bytes:

@@ -21,6 +21,7 @@ import mmap
 import os
 import re
 import tempfile
+from array import array
 from collections import deque
 from dataclasses import dataclass
 from pathlib import Path
@@ -53,7 +54,11 @@ class FilterError(BadInput):
 
 def escape(data: bytes) -> str:
     """Printable ASCII as is; CR, LF, tab and backslash as \\r \\n \\t \\\\; others as \\xNN."""
-    return data.decode("latin-1").translate(_ESCAPE_TABLE)
+    text = data.decode("latin-1")
+    core = text.rstrip("\r\n")
+    if core.isascii() and core.isprintable() and "\\" not in core:  # the common case, fast
+        return core + text[len(core) :].replace("\r", "\\r").replace("\n", "\\n")
+    return text.translate(_ESCAPE_TABLE)
 
 
 def compile_filter(pattern: str) -> re.Pattern[bytes] | None:
@@ -82,27 +87,24 @@ class TrafficLine:
 
 
 class _Columns:
-    """Growable numpy columns, one row a line."""
+    """One row a line, in typed arrays (appending is cheap); numpy reads them in place."""
 
-    def __init__(self, capacity: int = 4096) -> None:
-        self.size = 0
-        self.offset = np.zeros(capacity + 1, dtype=np.int64)  # offset[i + 1]: end of line i
-        self.time = np.zeros(capacity, dtype=np.float64)
-        self.code = np.zeros(capacity, dtype=np.uint8)  # direction << 4 | kind
-        self.pair = np.full(capacity, -1, dtype=np.int32)
-        self.latency = np.full(capacity, np.nan, dtype=np.float32)
-        self.first_copy = np.full(capacity, -1, dtype=np.int32)
+    def __init__(self) -> None:
+        self.offset = array("q", [0])  # offset[i + 1]: where line i ends in the spool
+        self.time = array("d")
+        self.code = array("B")  # direction << 4 | kind
+        self.size_ = array("I")  # bytes of the frame
+        self.pair = array("i")
+        self.latency = array("f")
+        self.first_copy = array("i")
 
-    def grow(self) -> None:
-        capacity = len(self.time) * 2
-        self.offset = np.resize(self.offset, capacity + 1)
-        self.time = np.resize(self.time, capacity)
-        self.code = np.resize(self.code, capacity)
-        for name, fill in (("pair", -1), ("latency", np.nan), ("first_copy", -1)):
-            old = getattr(self, name)
-            new = np.full(capacity, fill, dtype=old.dtype)
-            new[: len(old)] = old
-            setattr(self, name, new)
+    @property
+    def size(self) -> int:
+        return len(self.time)
+
+    def view(self, name: str, dtype: type) -> np.ndarray:
+        """A numpy view of a column: do not keep it (the column cannot grow while it lives)."""
+        return np.frombuffer(getattr(self, name), dtype=dtype)
 
 
 @dataclass
@@ -139,6 +141,7 @@ class TrafficIndex:
         self._waiting: deque[_Waiting] = deque()
         self._last_sent: dict[bytes, int] = {}  # frame → line of its first copy, unanswered
         self._last_kind = "query"
+        self._sent_kinds: dict[bytes, str] = {}
 
     def close(self) -> None:
         """Release the spool."""
@@ -155,14 +158,12 @@ class TrafficIndex:
         """Take bytes that crossed; returns how many lines they completed."""
         if wall is not None and self.wall_offset is None:
             self.wall_offset = wall - time
-        record = LogRecord(time, direction, bytes(data))
         if self._decoder is None:
-            frames = [DecodedFrame(time, direction, record.data, "", "frame")]
+            frames = [DecodedFrame(time, direction, bytes(data), "", "frame")]
         else:
-            frames = self._decoder.feed(record)
+            frames = self._decoder.feed_bytes(direction, bytes(data), time)
         for frame in frames:
             self._add_frame(frame)
-        self._write()
         return len(frames)
 
     def add_note(self, text: str, time: float, wall: float | None = None) -> None:
@@ -170,7 +171,6 @@ class TrafficIndex:
         if wall is not None and self.wall_offset is None:
             self.wall_offset = wall - time
         self._append(time, "", "note", b"", text)
-        self._write()
 
     def add_records(self, records: list[LogRecord]) -> None:
         """Take a log's records, in order."""
@@ -194,7 +194,12 @@ class TrafficIndex:
 
     def _add_sent(self, frame: DecodedFrame) -> None:
         protocol = self.protocol
-        kind = protocol.sent_kind(frame.data) if protocol else "query"
+        kind = self._sent_kinds.get(frame.data)
+        if kind is None:
+            kind = protocol.sent_kind(frame.data) if protocol else "query"
+            if len(self._sent_kinds) >= 4096:
+                self._sent_kinds.clear()
+            self._sent_kinds[frame.data] = kind
         line = self._append(frame.time, "tx", kind, frame.raw, frame.meaning)
         self._last_kind = kind
         self._expire(frame.time)
@@ -267,27 +272,35 @@ class TrafficIndex:
     def _append(self, time: float, direction: str, kind: str, data: bytes, meaning: str) -> int:
         columns = self._columns
         line = columns.size
-        if line == len(columns.time):
-            columns.grow()
         text = "\t".join(
             (
                 direction.upper() or "--",
                 kind,
                 data.hex(" ").upper(),
                 escape(data),
-                meaning.translate(_CLEAN),
+                meaning.translate(_CLEAN) if not meaning.isprintable() else meaning,
             )
         )
         encoded = (text + "\n").encode("utf-8")
         self._unwritten += encoded
-        columns.offset[line + 1] = columns.offset[line] + len(encoded)
-        columns.time[line] = time
-        columns.code[line] = _DIR_CODE[direction] << 4 | _KIND_CODE[kind]
-        columns.size = line + 1
+        columns.offset.append(columns.offset[line] + len(encoded))
+        columns.time.append(time)
+        columns.code.append(_DIR_CODE[direction] << 4 | _KIND_CODE[kind])
+        columns.size_.append(len(data))
+        columns.pair.append(-1)
+        columns.latency.append(math.nan)
+        columns.first_copy.append(-1)
         self.counts[kind] += 1
         return line
 
+    def commit(self) -> None:
+        """Hand the lines added so far to the spool (reads do it themselves when needed)."""
+        self._write()
+
     def _write(self) -> None:
+        if self._fd < 0:  # closed: a late line has nowhere to go
+            self._unwritten = bytearray()
+            return
         if self._unwritten:
             view = memoryview(self._unwritten)
             while view:
@@ -302,9 +315,23 @@ class TrafficIndex:
         """A line's time (s)."""
         return float(self._columns.time[line])
 
-    def times(self) -> np.ndarray:
-        """Every line's time (a view; do not keep it across adds)."""
-        return self._columns.time[: self._columns.size]
+    def times(self, start: int = 0, end: int | None = None) -> np.ndarray:
+        """Times of lines start..end-1 (a copy)."""
+        return np.array(self._columns.time[start:end], dtype=np.float64)
+
+    def sizes(self, start: int, end: int) -> np.ndarray:
+        """Bytes of lines start..end-1 (0 for notes)."""
+        return np.array(self._columns.size_[start:end], dtype=np.uint32)
+
+    def directions(self, start: int, end: int) -> list[str]:
+        """Directions of lines start..end-1 ("" for notes)."""
+        return [DIRECTIONS[code >> 4] for code in self._columns.code[start:end]]
+
+    def take_latencies(self) -> list[tuple[int, float, float]]:
+        """(reply line, its time, latency in ms) paired since the last call."""
+        columns, taken = self._columns, self.new_latencies
+        self.new_latencies = []
+        return [(n, float(columns.time[n]), float(columns.latency[n])) for n in taken]
 
     def line(self, number: int) -> TrafficLine:
         """One line, read back from the spool."""
@@ -315,6 +342,8 @@ class TrafficIndex:
         if not 0 <= number < columns.size:
             raise IndexError(f"line {number} of {columns.size}")
         start, end = int(columns.offset[number]), int(columns.offset[number + 1])
+        if end > self._written:
+            self._write()
         raw = os.pread(self._fd, end - start, start).decode("utf-8")
         _, kind, hexes, _, meaning = raw.rstrip("\n").split("\t", 4)
         code = int(columns.code[number])
@@ -342,8 +371,7 @@ class TrafficIndex:
         start: int = 0,
     ) -> np.ndarray:
         """Line numbers from `start` on that pass the filters (None: any), in order."""
-        columns = self._columns
-        codes = columns.code[start : columns.size]
+        codes = self._columns.view("code", np.uint8)[start:]
         mask = np.ones(len(codes), dtype=bool)
         if directions is not None:
             wanted = [_DIR_CODE[d] for d in directions]
@@ -358,7 +386,7 @@ class TrafficIndex:
     def _matching(self, lines: np.ndarray, pattern: re.Pattern[bytes]) -> np.ndarray:
         """Those of `lines` whose spool text the pattern finds."""
         self._write()
-        offsets = self._columns.offset
+        offsets = self._columns.view("offset", np.int64)
         if self._written == 0:
             return lines[:0]
         with mmap.mmap(self._fd, self._written, access=mmap.ACCESS_READ) as spool:

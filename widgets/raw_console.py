@@ -58,6 +58,7 @@ log = logging.getLogger(__name__)
 
 TX, RX, NOTE = "tx", "rx", "note"
 FLUSH_INTERVAL_MS = 50  # ~20 Hz
+FLUSH_BUDGET = 0.008  # s of decoding per turn of the event loop; the rest waits its turn
 RECENT_RECORDS = 20_000  # raw records kept for `records()`; the index keeps every line
 HIDDEN_BY_DEFAULT = ("poll",)
 
@@ -80,6 +81,7 @@ class RawConsole(QWidget):
     send_requested = Signal(object)  # bytes
     lines_added = Signal(int, int)  # first new line, how many
     line_activated = Signal(int)  # a line the user chose (double-click)
+    reset = Signal()  # cleared, or another session's lines loaded
 
     def __init__(self, parent: QWidget | None = None, sending: bool = True) -> None:
         super().__init__(parent)
@@ -102,7 +104,7 @@ class RawConsole(QWidget):
         self._flush_timer = QTimer(self)
         self._flush_timer.setSingleShot(True)
         self._flush_timer.setInterval(FLUSH_INTERVAL_MS)
-        self._flush_timer.timeout.connect(self.flush)
+        self._flush_timer.timeout.connect(self._timed_flush)
 
     # -- building --------------------------------------------------------------------------
 
@@ -313,19 +315,25 @@ class RawConsole(QWidget):
         self._pending.append((when, "", text.encode("utf-8"), time.time() - (self.clock() - when)))
         self._schedule()
 
-    def _take_pending(self) -> None:
-        """Into the index, in time order: a note is stamped when added, traffic comes batched."""
+    def _take_pending(self, deadline: float | None = None) -> None:
+        """Into the index, in time order (a note is stamped when added, traffic comes batched);
+        with a `deadline` (perf_counter), what is left when it passes waits for the next turn."""
         if not self._pending:
             return
         pending = sorted(self._pending, key=lambda item: item[0])  # stable: ties keep order
         self._pending.clear()
         if not self._origin_set and not len(self.index):
             self._model.origin = pending[0][0]
-        for when, direction, data, wall in pending:
+        index = self.index
+        for position, (when, direction, data, wall) in enumerate(pending):
             if direction:
-                self.index.add(direction, data, when, wall if wall is not None else time.time())
+                index.add(direction, data, when, wall if wall is not None else time.time())
             else:
-                self.index.add_note(data.decode("utf-8"), when, wall)
+                index.add_note(data.decode("utf-8"), when, wall)
+            if deadline is not None and position % 32 == 31 and time.perf_counter() > deadline:
+                self._pending = pending[position + 1 :]
+                break
+        index.commit()
 
     def _schedule(self) -> None:
         if not self._flush_timer.isActive():
@@ -345,10 +353,20 @@ class RawConsole(QWidget):
         """The latest raw records (bounded), as they came: (direction or "note", data, time)."""
         return list(self._recent)
 
+    def _timed_flush(self) -> None:
+        """The timer's flush: at most FLUSH_BUDGET of work, so a flood never stalls the window."""
+        self._flush(time.perf_counter() + FLUSH_BUDGET)
+        if self._pending:
+            self._flush_timer.start(0)  # the rest after the events waiting now
+
     def flush(self) -> None:
-        """Show the lines added since the last flush (the timer calls this at ~20 Hz)."""
+        """Show every line added since the last flush."""
+        self._flush(None)
+
+    def _flush(self, deadline: float | None) -> None:
         self._flush_timer.stop()
-        self._take_pending()
+        self._flush_timer.setInterval(FLUSH_INTERVAL_MS)
+        self._take_pending(deadline)
         total = len(self.index)
         if total == self._shown_until:
             return
@@ -635,6 +653,7 @@ class RawConsole(QWidget):
         self._model.set_index(self.index)
         self._set_follow(True)
         self._update_status()
+        self.reset.emit()
 
     def load(self, index: TrafficIndex) -> None:
         """Show another index (an opened log) in place of the session's."""
@@ -646,7 +665,10 @@ class RawConsole(QWidget):
         self._model.set_index(index)
         self._model.origin = index.time(0) if len(index) else 0.0
         self._origin_set = True
-        self.flush()
+        self._model.set_rows(self.index.select(self._directions, self._kinds, self._pattern))
+        self._shown_until = len(index)
+        self._update_status()
+        self.reset.emit()
 
     def export(self, path: str | Path) -> int:
         """Write the shown lines as text (or CSV for a `.csv` path); returns the lines written."""

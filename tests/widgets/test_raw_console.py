@@ -133,7 +133,9 @@ def test_search_highlights_and_goes_next_and_previous(console: RawConsole, qtbot
     assert console.find_next() == 9
     assert console.find_next() == 5  # wraps around
     assert console.find_previous() == 9
+    console.activateWindow()
     console.view.setFocus()
+    qtbot.waitUntil(console.view.hasFocus, timeout=3000)  # a shortcut acts where the focus is
     qtbot.keyClick(console.view, Qt.Key.Key_F3)
     assert console.current_line() == 5
     qtbot.keyClick(console.view, Qt.Key.Key_F3, Qt.KeyboardModifier.ShiftModifier)
