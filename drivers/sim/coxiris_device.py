@@ -59,8 +59,14 @@ class CoxirisDevice(SimulatedDevice):
         max_speed: float = 100.0,
         faults: tuple[str, ...] = (),
         mute: bool = False,
+        chatter: float = 0.0,
     ) -> None:
         super().__init__(clock, baud)
+        if not 0.0 <= chatter <= 100_000.0:
+            raise ValueError(f"chatter={chatter}: 0 to 100000 debug lines a second")
+        self.chatter = chatter  # lines/s of debug output, as a sketch with its prints left on
+        self._chatter_next: float | None = None
+        self._chatter_count = 0
         self.blocking = blocking
         self.stage = Stage(3, speed=to_float32(speed), instant=instant)
         self.min_speed = min_speed
@@ -68,6 +74,27 @@ class CoxirisDevice(SimulatedDevice):
         self.faults = list(faults)
         self.mute = mute
         self._line = bytearray()
+
+    def boot(self) -> None:
+        """Start the debug chatter, if any."""
+        super().boot()
+        if self.chatter:
+            self._chatter_next = self.clock() + 1.0 / self.chatter
+
+    def wake_at(self) -> float | None:
+        """When the next debug line is due."""
+        return self._chatter_next
+
+    def tick(self, now: float) -> None:
+        """Print the debug lines due by `now` (one write, like a burst of Serial.print)."""
+        if self._chatter_next is None:
+            return
+        period, lines = 1.0 / self.chatter, []
+        while self._chatter_next <= now:
+            self._chatter_count += 1
+            lines.append(f"dbg {self._chatter_count} loop ok\r\n")
+            self._chatter_next += period
+        self.emit("".join(lines).encode("ascii"), now)
 
     # -- the parser ----------------------------------------------------------------------
     def handle_byte(self, byte: int, t: float) -> None:

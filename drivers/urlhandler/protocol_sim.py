@@ -44,11 +44,7 @@ def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
                 line_timing = flag
             else:
                 options[key] = flag
-        elif key == "speed":
-            options["speed"] = float(value)
-        elif key == "reset_delay":
-            options["reset_delay"] = float(value)
-        elif key in _RATES:
+        elif key in _RATES or key in ("speed", "reset_delay", "chatter"):
             options[key] = float(value)
         elif key in _INTEGERS:
             options[key] = int(value)

@@ -1,0 +1,183 @@
+"""The traffic console under load: ingest rate, memory for a million lines, GUI stalls in a flood.
+
+Modes (each prints one JSON object; run each in its own process so memory figures are its own):
+- `ingest --lines N`: lines/s a console (COXIRIS decoding, every line kept and viewable)
+  takes in, fed as the worker feeds it (batches, a flush per 20 ms batch).
+- `memory --lines N`: resident memory the process gained for N lines, and the spool's size.
+- `flood --seconds S`: the main window on `sim://coxiris?chatter=5000` (5,000 debug lines/s,
+  a USB device with no baud limit), jogging so the 3D/2D views update; a 5 ms timer records
+  the longest event-loop gap from one second after connecting on.
+
+Run: .venv/bin/python bench/console_flood.py MODE [...] [--display]  (offscreen unless --display)
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+BATCH = 100  # records a worker batch carries at 5,000 lines/s (one batch per 20 ms)
+EXCHANGE = [
+    ("tx", b"GET_POSITION\n"),
+    ("rx", b"ACK GET_POSITION\r\nDONE GET_POSITION: 12.50 -3.25 0.00\r\n"),
+    ("tx", b"DELTA_MOVE 1 0 0\n"),
+    ("rx", b"ACK DELTA_MOVE\r\n"),
+    ("rx", b"dbg 1234 loop ok\r\n"),
+    ("rx", b"DONE DELTA_MOVE\r\n"),
+]  # 8 lines
+
+
+def _rss_mb() -> float:
+    with open("/proc/self/statm", encoding="ascii") as statm:
+        return int(statm.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 1e6
+
+
+def _feed(lines: int) -> tuple[object, float]:
+    """A console fed `lines` lines in worker-sized batches; (console, seconds)."""
+    from PySide6.QtWidgets import QApplication
+
+    from drivers.registry import create_protocol
+    from widgets.raw_console import RawConsole
+
+    QApplication.instance() or QApplication([])
+    console = RawConsole()
+    console.resize(1000, 400)
+    console.show()
+    console.set_protocol(create_protocol("coxiris"))
+    rounds = lines // 8
+    start = time.perf_counter()
+    t = 0.0
+    for i in range(rounds):
+        for direction, data in EXCHANGE:
+            t += 0.0002
+            console.append_traffic(direction, data, t, 1.7e9 + t)
+        if i % (BATCH // 8) == 0:
+            console.flush()
+    console.flush()
+    return console, time.perf_counter() - start
+
+
+def ingest(lines: int) -> dict[str, float]:
+    """Lines per second into the console."""
+    console, seconds = _feed(lines)
+    count = len(console.index)  # type: ignore[attr-defined]
+    return {"lines": count, "seconds": seconds, "console_lines_per_s": count / seconds}
+
+
+def memory(lines: int) -> dict[str, float]:
+    """Resident memory gained for `lines` lines, and what went to disk."""
+    from PySide6.QtWidgets import QApplication
+
+    QApplication.instance() or QApplication([])
+    before = _rss_mb()
+    console, seconds = _feed(lines)
+    after = _rss_mb()
+    index = console.index  # type: ignore[attr-defined]
+    spool = os.fstat(index._fd).st_size
+    return {
+        "lines": len(index),
+        "seconds": seconds,
+        "rss_gain_mb": after - before,
+        "bytes_per_line_in_memory": (after - before) * 1e6 / len(index),
+        "spool_mb": spool / 1e6,
+    }
+
+
+def flood(seconds: float) -> dict[str, float]:
+    """The window's longest event-loop gap while the device floods 5,000 lines/s."""
+    from PySide6.QtCore import QElapsedTimer, Qt, QTimer
+    from PySide6.QtTest import QTest
+    from PySide6.QtWidgets import QApplication
+
+    from app.main_window import MainWindow
+
+    app = QApplication.instance() or QApplication([])
+    window = MainWindow()
+    window.resize(1600, 1000)
+    window.show()
+    window.jog_panel.set_step(1)
+    window.connect_device("sim://coxiris?chatter=5000&line_timing=0&speed=50", "coxiris", 115200)
+    clock = QElapsedTimer()
+    clock.start()
+    gaps: list[float] = []
+    last = [clock.nsecsElapsed()]
+    started = [float("inf")]
+    window.settled.connect(lambda: started.__setitem__(0, min(started[0], time.monotonic() + 1)))
+    keys = [Qt.Key.Key_Right, Qt.Key.Key_Up, Qt.Key.Key_Left, Qt.Key.Key_Down]
+    jogs = [0]
+
+    def tick() -> None:
+        now = clock.nsecsElapsed()
+        if time.monotonic() >= started[0]:
+            gaps.append((now - last[0]) / 1e6)
+            if time.monotonic() >= started[0] + seconds:
+                app.quit()
+        last[0] = now
+
+    def jog() -> None:
+        if time.monotonic() >= started[0] and window.jog_panel.isEnabled():
+            window.view2d.setFocus()
+            QTest.keyClick(window.view2d, keys[jogs[0] % len(keys)])
+            jogs[0] += 1
+
+    timer = QTimer()
+    timer.setTimerType(Qt.TimerType.PreciseTimer)
+    timer.setInterval(5)
+    timer.timeout.connect(tick)
+    timer.start()
+    jogger = QTimer()
+    jogger.setInterval(500)
+    jogger.timeout.connect(jog)
+    jogger.start()
+    QTimer.singleShot(int((seconds + 60) * 1000), app.quit)  # never hang
+    app.exec()
+    timer.stop()
+    jogger.stop()
+    window.console.flush()
+    lines = len(window.console.index)
+    debug = window.console.index.counts["debug"]
+    window.close()
+    gaps.sort()
+    return {
+        "seconds": seconds,
+        "lines": lines,
+        "debug_lines_per_s": debug / (seconds + 1.0),
+        "jogs": jogs[0],
+        "gui_max_stall_ms": gaps[-1] if gaps else float("nan"),
+        "p99_gap_ms": gaps[int(0.99 * (len(gaps) - 1))] if gaps else float("nan"),
+        "median_gap_ms": gaps[len(gaps) // 2] if gaps else float("nan"),
+    }
+
+
+def main() -> int:
+    """Run one mode and print one JSON object."""
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("mode", choices=["ingest", "memory", "flood"])
+    parser.add_argument("--lines", type=int, default=200_000)
+    parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--display", action="store_true", help="use $DISPLAY instead of offscreen")
+    options = parser.parse_args()
+    if not options.display:
+        os.environ["QT_QPA_PLATFORM"] = "offscreen"
+    os.environ.setdefault("MOTIONPANEL_SETTINGS", os.path.join(tempfile.mkdtemp(), "bench.ini"))
+    os.environ.setdefault("MOTIONPANEL_LOG_DIR", tempfile.mkdtemp())
+    if options.mode == "ingest":
+        result = ingest(options.lines)
+    elif options.mode == "memory":
+        result = memory(options.lines)
+    else:
+        result = flood(options.seconds)
+    print(json.dumps(result))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
