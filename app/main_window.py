@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 import logging
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 from PySide6.QtCore import Qt, QTimer, QUrl, Signal
@@ -20,6 +21,7 @@ from PySide6.QtWidgets import (
 from app import jobs
 from app.device_docks import DeviceDocks
 from app.keyboard_jog import KeyboardJog
+from app.log_viewer import LogViewer, ask_open_path
 from app.move_estimate import MoveEstimate
 from app.parameter_dock import ParameterDock
 from app.ports import PortWatcher
@@ -58,6 +60,8 @@ from widgets.position_view_3d import make_position_view_3d
 from widgets.raw_console import RawConsole
 from widgets.speed_control import SpeedControl
 from widgets.status_line import StatusLine
+from widgets.traffic_feed import TimelineFeed
+from widgets.traffic_timeline import TrafficTimeline
 from widgets.travel_limits_dialog import TravelLimitsDialog
 
 log = logging.getLogger(__name__)
@@ -92,6 +96,8 @@ class MainWindow(QMainWindow):
         self.info: DeviceInfo | None = None
         self.travel: TravelLimits | None = None
         self._last_connection: tuple[str, str, int] | None = None
+        self._viewers: list[LogViewer] = []
+        self.ask_log_path: Callable[[], str] = lambda: ask_open_path(self)
         self._last_position: tuple[float, float, float] | None = None
         self._busy_job: jobs.Job | None = None
         self._moving = False
@@ -119,6 +125,20 @@ class MainWindow(QMainWindow):
         self.worker_thread.set_session_log(stream)
         self.console.append_note(f"session log: {path}")
         return path
+
+    def open_log(self, path: str | None = None) -> LogViewer | None:
+        """Open a traffic log in a viewer window (asks for the file when `path` is None)."""
+        viewer = LogViewer(None, self.connection_bar.protocol())
+        viewer.ask_path = self.ask_log_path
+        chosen = path if path is not None else self.ask_log_path()
+        if not chosen:
+            viewer.deleteLater()
+            return None
+        self._viewers = [v for v in self._viewers if v.isVisible()]  # closed ones go
+        self._viewers.append(viewer)
+        viewer.show()
+        viewer.open(chosen)
+        return viewer
 
     def open_log_folder(self) -> None:
         """Show the session logs' folder in the desktop's file manager."""
@@ -171,6 +191,12 @@ class MainWindow(QMainWindow):
         for dock in self.devices.docks[:3]:
             self.tabifyDockWidget(docks[-2], dock)
         docks.extend(self.devices.docks)
+        self.timeline = TrafficTimeline(self)
+        self.timeline_dock = self._dock("Traffic timeline", self.timeline, bottom, scroll=False)
+        self.tabifyDockWidget(docks[4], self.timeline_dock)
+        docks.append(self.timeline_dock)
+        docks[4].raise_()  # the console is the tab shown first
+        self.timeline_feed = TimelineFeed(self.console, self.timeline)
         self._build_menus(docks)
         # The left panels run the full height; the console sits under the views only.
         self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
@@ -185,6 +211,9 @@ class MainWindow(QMainWindow):
         export = file_menu.addAction("&Export traffic log…", self.console.export_interactively)
         export.setShortcut(QKeySequence("Ctrl+E"))
         export.setToolTip("Save every byte sent and received, with timestamps, to a text file")
+        opener = file_menu.addAction("&Open log…", self.open_log)
+        opener.setShortcut(QKeySequence.StandardKey.Open)
+        opener.setToolTip("Browse a traffic log (ours or a pyserial spy:// capture) decoded")
         folder = file_menu.addAction("Open the session &log folder", self.open_log_folder)
         folder.setToolTip("Every byte of every session is kept there, one file a session")
         file_menu.addSeparator()
@@ -683,4 +712,7 @@ class MainWindow(QMainWindow):
         self.port_watcher.stop()
         if not self.worker_thread.stop():
             log.error("the serial worker did not stop in time")
+        for viewer in self._viewers:
+            viewer.close()
+        self.console.index.close()
         super().closeEvent(event)

@@ -201,7 +201,8 @@ class SerialWorker(QObject):
         link.listeners.append(self._on_traffic)
         if self._session_log is not None:
             link.listeners.append(self._session_log)
-            self._log_note(f"connected to {url} ({protocol_name}, {baud} baud)")
+            shown = f"{protocol_name} {options.variant}" if options.variant else protocol_name
+            self._log_note(f"connected to {url} ({shown}, {baud} baud)")
         client = Client(link, protocol)
         client.abort = self._abort
         client.wait_hooks.append(self._flush_traffic_if_due)

@@ -1,0 +1,172 @@
+"""File → Open log: a traffic log (ours or a pyserial spy:// capture) browsed decoded, offline.
+
+The file is read and decoded in a background thread (no Qt there); the window gets the finished
+index through a queued signal and shows it in a console with every filter, and a timeline.
+"""
+
+from __future__ import annotations
+
+import logging
+import re
+import threading
+from pathlib import Path
+
+from PySide6.QtCore import Qt, Signal, Slot
+from PySide6.QtGui import QCloseEvent
+from PySide6.QtWidgets import (
+    QComboBox,
+    QFileDialog,
+    QHBoxLayout,
+    QLabel,
+    QMainWindow,
+    QPushButton,
+    QSplitter,
+    QVBoxLayout,
+    QWidget,
+)
+
+from drivers.errors import MotionError
+from drivers.log_reader import LogRecord, read_any_log
+from drivers.registry import create_protocol, protocol_names
+from drivers.traffic_index import TrafficIndex
+from widgets.raw_console import RawConsole
+from widgets.traffic_feed import TimelineFeed
+from widgets.traffic_timeline import TrafficTimeline
+
+log = logging.getLogger(__name__)
+
+RAW = "(undecoded)"
+_CONNECTION = re.compile(r"(?:connected to|bridge) .*\(([\w-]+)(?: ([\w-]+))?[,)]")
+
+
+def detect_protocol(records: list[LogRecord]) -> tuple[str, str] | None:
+    """(protocol, variant) named by a log's connection note, e.g. `connected to … (coxiris, …)`."""
+    names = set(protocol_names())
+    for record in records:
+        if record.note:
+            hit = _CONNECTION.search(record.note)
+            if hit and hit.group(1) in names:
+                return hit.group(1), hit.group(2) or ""
+    return None
+
+
+def ask_open_path(parent: QWidget) -> str:
+    """Ask for a log file; "" when cancelled."""
+    path, _ = QFileDialog.getOpenFileName(
+        parent, "Open traffic log", "", "Logs (*.log *.txt);;All files (*)"
+    )
+    return path
+
+
+class LogViewer(QMainWindow):
+    """A log's frames, decoded by the protocol chosen (or named in the log), with every filter."""
+
+    _loaded = Signal(object)  # (path, format, protocol, variant, index) or an error message
+
+    def __init__(self, parent: QWidget | None = None, protocol: str = "") -> None:
+        super().__init__(parent)
+        self.setObjectName("logViewer")
+        self.setWindowTitle("Traffic log")
+        self.path: Path | None = None
+        self._default_protocol = protocol
+        self._busy = False
+        self.protocol_combo = QComboBox()
+        self.protocol_combo.setObjectName("logViewerProtocol")
+        self.protocol_combo.addItems([RAW, *protocol_names()])
+        self.protocol_combo.setToolTip(
+            "Decode with this protocol (chosen from the log's connection note when it has one)"
+        )
+        self.protocol_combo.activated.connect(self._protocol_chosen)
+        open_button = QPushButton("Open…")
+        open_button.setObjectName("logViewerOpen")
+        open_button.setToolTip("Open a Motion Panel log or a pyserial spy:// capture")
+        open_button.clicked.connect(self.open_interactively)
+        self.status = QLabel("no log open")
+        self.status.setObjectName("logViewerStatus")
+        self.status.setWordWrap(True)
+        top = QHBoxLayout()
+        top.addWidget(QLabel("Protocol:"))
+        top.addWidget(self.protocol_combo)
+        top.addWidget(open_button)
+        top.addWidget(self.status, 1)
+        self.console = RawConsole(self, sending=False)
+        self.timeline = TrafficTimeline(self)
+        self.feed = TimelineFeed(self.console, self.timeline)
+        splitter = QSplitter(Qt.Orientation.Vertical)
+        splitter.addWidget(self.console)
+        splitter.addWidget(self.timeline)
+        splitter.setSizes([600, 250])
+        body = QWidget()
+        layout = QVBoxLayout(body)
+        layout.addLayout(top)
+        layout.addWidget(splitter, 1)
+        self.setCentralWidget(body)
+        self.ask_path = lambda: ask_open_path(self)
+        self._loaded.connect(self._on_loaded)
+        self.resize(1200, 800)
+
+    def open_interactively(self) -> None:
+        """Ask for a file and open it."""
+        path = self.ask_path()
+        if path:
+            self.open(path)
+
+    def open(self, path: str | Path, protocol: str | None = None) -> None:
+        """Read and decode `path` in the background (protocol None: the log's own, else chosen)."""
+        self.path = Path(path)
+        self._busy = True
+        self._show(f"reading {self.path.name}…", error=False)
+        chosen = protocol if protocol is not None else None
+        threading.Thread(
+            target=self._read, args=(self.path, chosen), name="log-reader", daemon=True
+        ).start()
+
+    def busy(self) -> bool:
+        """Whether a log is being read."""
+        return self._busy
+
+    def _read(self, path: Path, chosen: str | None) -> None:
+        """In the reader thread: the records, the protocol, the decoded index (no Qt here)."""
+        try:
+            kind, records = read_any_log(path)
+            found = detect_protocol(records)
+            name, variant = (
+                (chosen, "") if chosen is not None else (found or (self._default_protocol, ""))
+            )
+            protocol = create_protocol(name, variant or None) if name and name != RAW else None
+            index = TrafficIndex(protocol)
+            index.add_records(records)
+        except (MotionError, LookupError, OSError) as exc:
+            self._loaded.emit(str(exc))
+            return
+        self._loaded.emit((path, kind, name or RAW, variant, index))
+
+    @Slot(object)
+    def _on_loaded(self, result: object) -> None:
+        self._busy = False
+        if isinstance(result, str):
+            self._show(result, error=True)
+            return
+        path, kind, name, variant, index = result
+        self.protocol_combo.setCurrentText(name if name else RAW)
+        self.console.load(index)
+        self.setWindowTitle(f"{path.name} — traffic log")
+        shown = f"{name} {variant}".strip()
+        self._show(f"{path} ({kind}): {len(index):,} lines, decoded as {shown}", error=False)
+
+    def _protocol_chosen(self) -> None:
+        if self.path is not None:
+            self.open(self.path, self.protocol_combo.currentText())
+
+    def _show(self, text: str, error: bool) -> None:
+        self.status.setText(text)
+        self.status.setStyleSheet("color: #c62828;" if error else "")
+
+    def closeEvent(self, event: QCloseEvent) -> None:
+        """Release the log's spool."""
+        self.console.index.close()
+        super().closeEvent(event)
+
+    def status_text(self) -> str:
+        """What the window says about the log (or the error)."""
+        return self.status.text()

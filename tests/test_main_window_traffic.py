@@ -1,0 +1,48 @@
+"""The window's traffic tools: decoded console, timeline, File → Open log of the session log."""
+
+from __future__ import annotations
+
+import pytest
+
+from app.main_window import MainWindow
+
+pytestmark = pytest.mark.timeout(60)
+
+
+def _connect(qtbot, win: MainWindow) -> None:
+    with qtbot.waitSignal(win.settled, timeout=5000):
+        win.connect_device("sim://coxiris?speed=100", "coxiris", 115200)
+
+
+def test_the_console_decodes_and_the_timeline_follows(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    console = window.console
+    qtbot.waitUntil(lambda: console.index.counts["poll"] >= 2, timeout=10_000)
+    console.flush()
+    assert "poll hidden" in console.status_text()
+    assert not any("GET_POSITION" in line for line in console.text().splitlines())
+    get_id = next(n for n in range(len(console.index)) if console.index.line(n).meaning == "GET_ID")
+    assert console.index.line(get_id).pair > get_id  # its reply is paired
+    timeline = window.timeline
+    qtbot.waitUntil(lambda: len(timeline.latency_points()[0]) >= 2, timeout=5000)
+    assert timeline.bytes_per_second("tx").sum() > 0
+    timeline.line_clicked.emit(get_id)  # a click on a point goes to its line
+    console.show_poll(True)
+    timeline.line_clicked.emit(get_id)
+    assert console.current_line() == get_id
+
+
+def test_open_log_shows_the_session_log_decoded(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    qtbot.waitUntil(lambda: window.console.index.counts["poll"] >= 2, timeout=10_000)
+    path = window.session_log_path
+    assert path is not None
+    window.ask_log_path = lambda: str(path)
+    file_menu = window.menuBar().actions()[0].menu()
+    next(a for a in file_menu.actions() if a.text() == "&Open log…").trigger()
+    viewer = window._viewers[-1]
+    qtbot.waitUntil(lambda: not viewer.busy(), timeout=20_000)
+    assert viewer.protocol_combo.currentText() == "coxiris"  # from the log's connection note
+    viewer.console.set_filter(pattern="GET_ID")
+    assert "TX  GET_ID\\n" in viewer.console.text()
+    viewer.close()
