@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
 )
 
 from app import jobs
+from app.bridge_session import BridgeSession
 from app.device_docks import DeviceDocks
 from app.keyboard_jog import KeyboardJog
 from app.log_viewer import LogViewer, ask_open_path
@@ -40,7 +41,7 @@ from app.settings import (
 from app.worker import ConnectOptions, DeviceInfo, SerialWorker
 from app.worker_thread import WorkerThread
 from drivers.capabilities import Capabilities, Completion
-from drivers.errors import BadInput
+from drivers.errors import BadInput, MotionError
 from drivers.events import PositionReport
 from drivers.motion import MoveStart
 from drivers.registry import create_protocol, get_protocol_class, protocol_names
@@ -97,6 +98,8 @@ class MainWindow(QMainWindow):
         self.travel: TravelLimits | None = None
         self._last_connection: tuple[str, str, int] | None = None
         self._viewers: list[LogViewer] = []
+        self.bridge: BridgeSession | None = None
+        self._log_start: float | None = None
         self.ask_log_path: Callable[[], str] = lambda: ask_open_path(self)
         self._last_position: tuple[float, float, float] | None = None
         self._busy_job: jobs.Job | None = None
@@ -122,6 +125,7 @@ class MainWindow(QMainWindow):
         except OSError as exc:
             self._say(f"no session log: {exc}", status.WARNING)
             return None
+        self._log_start = time.monotonic()  # the worker's log counts from about now
         self.worker_thread.set_session_log(stream)
         self.console.append_note(f"session log: {path}")
         return path
@@ -139,6 +143,11 @@ class MainWindow(QMainWindow):
         viewer.show()
         viewer.open(chosen)
         return viewer
+
+    def _show_console(self) -> None:
+        """A point on the timeline was clicked: show its line in the console's tab."""
+        self.console_dock.show()
+        self.console_dock.raise_()
 
     def open_log_folder(self) -> None:
         """Show the session logs' folder in the desktop's file manager."""
@@ -197,6 +206,8 @@ class MainWindow(QMainWindow):
         docks.append(self.timeline_dock)
         docks[4].raise_()  # the console is the tab shown first
         self.timeline_feed = TimelineFeed(self.console, self.timeline)
+        self.console_dock = docks[4]
+        self.timeline.line_clicked.connect(self._show_console)
         self._build_menus(docks)
         # The left panels run the full height; the console sits under the views only.
         self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
@@ -275,8 +286,8 @@ class MainWindow(QMainWindow):
         self.estimate.estimated.connect(self._on_estimate)
 
         bar = self.connection_bar
-        bar.connect_requested.connect(self.connect_device)
-        bar.disconnect_requested.connect(self.disconnect_device)
+        bar.connect_requested.connect(self._connect_from_bar)
+        bar.disconnect_requested.connect(self._disconnect_from_bar)
         bar.protocol_changed.connect(self._on_protocol_changed)
         bar.variant_changed.connect(self._on_variant_changed)
         self.port_watcher = PortWatcher(self)
@@ -334,6 +345,68 @@ class MainWindow(QMainWindow):
             default = ""  # the worker reports the unknown protocol
         sim_variant = variant if variant != default else ""
         self.worker_thread.open(with_sim_variant(port, sim_variant), protocol, baud, options)
+
+    def _connect_from_bar(self, port: str, protocol: str, baud: int) -> None:
+        if self.connection_bar.bridge_mode():
+            self.start_bridge(port, protocol, baud)
+        else:
+            self.connect_device(port, protocol, baud)
+
+    def _disconnect_from_bar(self) -> None:
+        if self.bridge is not None:
+            self.stop_bridge()
+        else:
+            self.disconnect_device()
+
+    def start_bridge(self, port: str, protocol: str, baud: int) -> str | None:
+        """Bridge mode: forward `port` to a new pty for another program, showing every frame
+        decoded; motion controls are off meanwhile. Returns the pty's path (None: refused)."""
+        if self.bridge is not None:
+            return self.bridge.bridge.path
+        self.disconnect_device()
+        variant = (
+            self.connection_bar.variant() if self.connection_bar.protocol() == protocol else ""
+        )
+        try:
+            self.console.set_protocol(create_protocol(protocol, variant or None))
+        except (LookupError, BadInput):
+            self.console.set_protocol(None)
+        session = BridgeSession(
+            with_sim_variant(port, variant), baud, self.session_log_path, self._log_start, self
+        )
+        try:
+            path = session.start()
+        except MotionError as exc:
+            session.deleteLater()
+            self.connection_bar.set_state("error", str(exc))
+            self._say(f"bridge refused: {exc}", status.FAILURE)
+            return None
+        self.bridge = session
+        session.traffic.connect(self._on_traffic)
+        session.ended.connect(self._on_bridge_ended)
+        self.connection_bar.set_state("connected", f"bridge: {path}")
+        self._set_controls_enabled(False)
+        self.console.set_send_enabled(False)
+        self.status_line.set_state(status.BUSY, f"bridging {port} to {path}")
+        self._say(f"bridge: another program can open {path}; every byte goes to {port}")
+        return path
+
+    def stop_bridge(self) -> None:
+        """Leave bridge mode (the end is reported when the bridge's thread has closed)."""
+        if self.bridge is not None:
+            self.bridge.stop()
+
+    def _on_bridge_ended(self, error: str) -> None:
+        session, self.bridge = self.bridge, None
+        if session is not None:
+            session.deleteLater()
+        if error:
+            self.connection_bar.set_state("error", error)
+            self._say(f"bridge ended: {error}", status.FAILURE)
+        else:
+            self.connection_bar.set_state("disconnected")
+            self._say("bridge closed")
+        self._show_machine_state()
 
     def disconnect_device(self) -> None:
         """Ask the worker to close the port (and do not reconnect by itself)."""
@@ -712,6 +785,8 @@ class MainWindow(QMainWindow):
         self.port_watcher.stop()
         if not self.worker_thread.stop():
             log.error("the serial worker did not stop in time")
+        if self.bridge is not None:
+            self.bridge.bridge.close()  # its thread returns within a moment
         for viewer in self._viewers:
             viewer.close()
         self.console.index.close()

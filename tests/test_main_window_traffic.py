@@ -26,10 +26,12 @@ def test_the_console_decodes_and_the_timeline_follows(qtbot, window: MainWindow)
     timeline = window.timeline
     qtbot.waitUntil(lambda: len(timeline.latency_points()[0]) >= 2, timeout=5000)
     assert timeline.bytes_per_second("tx").sum() > 0
-    timeline.line_clicked.emit(get_id)  # a click on a point goes to its line
-    console.show_poll(True)
-    timeline.line_clicked.emit(get_id)
-    assert console.current_line() == get_id
+    window.timeline_dock.raise_()
+    poll = next(n for n in range(len(console.index)) if console.index.line(n).kind == "poll")
+    timeline.line_clicked.emit(poll)  # a click on a point goes to its line, shown if hidden
+    assert console.current_line() == poll
+    assert console.poll_check.isChecked()
+    assert not window.console_dock.visibleRegion().isEmpty()  # the console's tab is raised
 
 
 def test_open_log_shows_the_session_log_decoded(qtbot, window: MainWindow) -> None:

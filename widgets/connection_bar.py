@@ -6,7 +6,15 @@ import logging
 
 from PySide6.QtCore import QEvent, QObject, Qt, Signal
 from PySide6.QtGui import QIntValidator, QKeyEvent
-from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QLineEdit, QPushButton, QWidget
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QComboBox,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QWidget,
+)
 
 log = logging.getLogger(__name__)
 
@@ -96,6 +104,14 @@ class ConnectionBar(QWidget):
         self.baud_combo.setToolTip("Baud rate in bit/s (type any rate the device uses)")
         self.baud_combo.setCurrentText("115200")
 
+        self.bridge_check = QCheckBox("Bridge")
+        self.bridge_check.setObjectName("bridgeCheck")
+        self.bridge_check.setToolTip(
+            "Bridge (snoop) mode: open the device's port and offer another program a "
+            "pseudo-terminal; every byte is forwarded both ways unchanged and shown decoded here "
+            "(motion controls are off while bridging)"
+        )
+
         self.connect_button = QPushButton("Connect")
         self.connect_button.setObjectName("connectButton")
         self.connect_button.setAutoDefault(False)  # Enter in the port field is handled here
@@ -116,6 +132,7 @@ class ConnectionBar(QWidget):
             ("Protocol:", self.protocol_combo),
             (self.variant_label, self.variant_combo),
             ("Baud:", self.baud_combo),
+            (None, self.bridge_check),
             (None, self.connect_button),
         ):
             if isinstance(text, QLabel):
@@ -274,6 +291,14 @@ class ConnectionBar(QWidget):
 
     # -- state ---------------------------------------------------------------------------
 
+    def bridge_mode(self) -> bool:
+        """Whether Connect starts a bridge for another program instead of a connection."""
+        return self.bridge_check.isChecked()
+
+    def set_bridge_mode(self, on: bool) -> None:
+        """Choose bridge mode (or the normal connection)."""
+        self.bridge_check.setChecked(on)
+
     def state(self) -> str:
         """The state: "disconnected", "connecting", "connected" or "error"."""
         return self._state
@@ -297,6 +322,7 @@ class ConnectionBar(QWidget):
             self.variant_combo,
             self.baud_combo,
             self.refresh_button,
+            self.bridge_check,
         ):
             widget.setEnabled(idle)
         button_text = {CONNECTING: "Cancel", CONNECTED: "Disconnect"}.get(state, "Connect")

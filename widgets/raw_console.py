@@ -28,6 +28,7 @@ from PySide6.QtWidgets import (
     QLineEdit,
     QMenu,
     QPushButton,
+    QSizePolicy,
     QTableView,
     QToolButton,
     QVBoxLayout,
@@ -155,7 +156,7 @@ class RawConsole(QWidget):
         self.rx_check = self._check("RX", "consoleShowRx", "Show what the device sent")
         self.kind_button = QToolButton()
         self.kind_button.setObjectName("consoleKinds")
-        self.kind_button.setText("Kinds ▾")
+        self.kind_button.setText("Kinds")
         self.kind_button.setToolTip("Which kinds of lines to show")
         self.kind_button.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
         menu = QMenu(self.kind_button)
@@ -178,13 +179,17 @@ class RawConsole(QWidget):
         self.filter_edit.setObjectName("consoleFilter")
         self.filter_edit.setPlaceholderText("filter (regex)")
         self.filter_edit.setClearButtonEnabled(True)
+        self.filter_edit.setMinimumWidth(80)
         self.filter_edit.setToolTip(
             "Show only lines matching this regular expression (case-insensitive) in their "
             "direction, kind, hex, text or meaning, e.g. error|FA00"
         )
         self.filter_edit.textChanged.connect(self._filters_changed)
-        self.paused_label = QLabel("⏸ paused: scroll to the bottom to follow")
+        self.paused_label = QLabel("paused")
         self.paused_label.setObjectName("consolePaused")
+        self.paused_label.setToolTip(
+            "New lines do not scroll the view: scroll to the bottom to follow"
+        )
         self.paused_label.setStyleSheet("color: #8a4b00;")
         self.paused_label.setVisible(False)
         top = QHBoxLayout()
@@ -198,12 +203,12 @@ class RawConsole(QWidget):
             self.poll_check,
         ):
             top.addWidget(widget)
-        top.addWidget(self.filter_edit, 1)
 
         self.search_edit = QLineEdit()
         self.search_edit.setObjectName("consoleSearch")
         self.search_edit.setPlaceholderText("search (regex)")
         self.search_edit.setClearButtonEnabled(True)
+        self.search_edit.setMinimumWidth(80)
         self.search_edit.setToolTip(
             "Highlight matching lines; Enter or F3: next, Shift+F3: previous"
         )
@@ -229,6 +234,8 @@ class RawConsole(QWidget):
         )
         self.status_label = QLabel()
         self.status_label.setObjectName("consoleStatus")
+        self.status_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
+        self.status_label.setMinimumWidth(0)
         self.status_label.setToolTip("Lines in the session, shown, hidden polls, errors, matches")
         export_button = self._button(
             "Export…",
@@ -239,13 +246,13 @@ class RawConsole(QWidget):
         clear_button = self._button(
             "Clear", "consoleClear", "Forget the lines (the session log keeps them)", self.clear
         )
+        top.addWidget(self.status_label, 1)  # shrinks first: its tooltip has it all
+        top.addWidget(self.paused_label)
         second = QHBoxLayout()
+        second.addWidget(self.filter_edit, 1)
         second.addWidget(self.search_edit, 1)
         second.addWidget(previous)
         second.addWidget(following)
-        second.addWidget(self.status_label)
-        second.addWidget(self.paused_label)
-        second.addStretch(0)
         second.addWidget(export_button)
         second.addWidget(clear_button)
 
@@ -543,9 +550,14 @@ class RawConsole(QWidget):
         """The line of the selected row."""
         return self._current_line()
 
-    def jump_to_line(self, line: int) -> None:
-        """Select `line` (or the next shown line after it) and scroll to it; stops following."""
+    def jump_to_line(self, line: int, reveal: bool = False) -> None:
+        """Select `line` (or the next shown line after it) and scroll to it; stops following.
+        With `reveal`, a line of a hidden kind (the poll) has its kind shown first."""
         self.flush()
+        if reveal and 0 <= line < len(self.index):
+            kind = self.index.line(line).kind
+            if kind not in self._kinds:
+                self.kind_actions[kind].setChecked(True)
         row = self._model.row_of(line)
         if row >= len(self._model.rows):
             row = len(self._model.rows) - 1
@@ -608,6 +620,7 @@ class RawConsole(QWidget):
         if self._search is not None:
             parts.append(f"{len(self._model.matches):,} matches")
         self.status_label.setText(" · ".join(parts))
+        self.status_label.setToolTip("\n".join(parts))
 
     def status_text(self) -> str:
         """The counts under the filters (lines, shown, hidden polls, errors, matches)."""

@@ -41,4 +41,4 @@ class TimelineFeed(QObject):
     @Slot(int)
     def on_click(self, line: int) -> None:
         """Show the clicked point's line in the console."""
-        self.console.jump_to_line(line)
+        self.console.jump_to_line(line, reveal=True)

@@ -1,0 +1,107 @@
+"""The window's bridge mode: a Bridge in a thread of its own, its traffic handed to the GUI.
+
+The tap runs in the bridge's thread: it writes the session log (before the bytes go on) and
+queues the record; a timer in the GUI thread takes the queue to the console. The end of the
+bridge (stopped, or the device gone) reaches the GUI as a queued signal.
+"""
+
+from __future__ import annotations
+
+import logging
+import threading
+from collections import deque
+from pathlib import Path
+
+from PySide6.QtCore import QObject, QTimer, Signal, Slot
+
+from drivers.bridge import Bridge
+from drivers.errors import MotionError
+from drivers.traffic import Traffic, TrafficLogWriter
+
+log = logging.getLogger(__name__)
+
+DRAIN_INTERVAL_MS = 20
+
+
+class BridgeSession(QObject):
+    """One bridge between a device's port and a pty, for the life of the bridge mode."""
+
+    traffic = Signal(object)  # list[Traffic], in the GUI thread
+    ended = Signal(str)  # "" when stopped, else what went wrong
+
+    def __init__(
+        self,
+        device: str,
+        baud: int,
+        log_path: Path | None = None,
+        log_start: float | None = None,
+        parent: QObject | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self._queue: deque[Traffic] = deque()
+        self._log = None
+        if log_path is not None:
+            self._log = TrafficLogWriter(log_path.open("a", encoding="utf-8"), log_start)
+        self.bridge = Bridge(device, baud, self._tap)
+        self._thread: threading.Thread | None = None
+        self._timer = QTimer(self)
+        self._timer.setInterval(DRAIN_INTERVAL_MS)
+        self._timer.timeout.connect(self.drain)
+        self._stopped = False
+        self._done.connect(self._on_done)
+
+    _done = Signal(str)  # from the bridge's thread; queued to the GUI thread
+
+    def start(self) -> str:
+        """Open the device and the pty, start forwarding; the pty's path (PortError if not)."""
+        self.bridge.open()
+        if self._log is not None:
+            self._log.note(f"bridge {self.bridge.device} <-> {self.bridge.path}")
+        self._thread = threading.Thread(target=self._serve, name="bridge", daemon=True)
+        self._thread.start()
+        self._timer.start()
+        return self.bridge.path
+
+    def _tap(self, record: Traffic) -> None:
+        """In the bridge's thread: log, then queue for the GUI."""
+        if self._log is not None:
+            self._log(record)
+        self._queue.append(record)
+
+    def _serve(self) -> None:
+        """In the bridge's thread: forward until stopped, close the ports, say how it ended."""
+        error = ""
+        try:
+            self.bridge.serve_forever()
+        except MotionError as exc:
+            error = str(exc)
+        except Exception as exc:  # the thread's last word must reach the window
+            log.exception("the bridge failed")
+            error = f"the bridge failed: {exc}"
+        finally:
+            self.bridge.close()
+        self._done.emit(error)
+
+    @Slot()
+    def drain(self) -> None:
+        """Hand the records queued since the last look to `traffic` (GUI thread)."""
+        records = []
+        while self._queue:
+            records.append(self._queue.popleft())
+        if records:
+            self.traffic.emit(records)
+
+    def stop(self) -> None:
+        """Stop forwarding; the bridge's thread closes the ports, then `ended("")` comes."""
+        self._stopped = True
+        self.bridge.stop()
+
+    @Slot(str)
+    def _on_done(self, error: str) -> None:
+        self._timer.stop()
+        self.drain()
+        if self._log is not None:
+            self._log.note(f"bridge ended: {error}" if error else "bridge ended")
+            self._log.stream.close()
+            self._log = None
+        self.ended.emit("" if self._stopped else error or "the bridge stopped")

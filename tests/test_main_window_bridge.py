@@ -1,0 +1,85 @@
+"""Bridge mode in the window: motionsim as the device, motionctl as the other program, every
+frame shown decoded, motion controls off, the session log keeping every byte."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import pytest
+from PySide6.QtCore import Qt
+
+from app.main_window import MainWindow
+from drivers.log_reader import read_log
+from tests.simproc import ROOT, SimProcess
+
+pytestmark = pytest.mark.timeout(60)
+
+
+@pytest.fixture
+def sim():
+    process = SimProcess("coxiris", "--instant")
+    yield process
+    process.kill()
+
+
+def _motionctl(qtbot, port: str, *args: str) -> subprocess.CompletedProcess[str]:
+    """Run the other program while the window's event loop keeps going."""
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "app.cli", "--port", port, "--protocol", "coxiris", *args],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        cwd=ROOT,
+    )
+    qtbot.waitUntil(lambda: proc.poll() is not None, timeout=30_000)
+    out, err = proc.communicate()
+    return subprocess.CompletedProcess(proc.args, proc.returncode, out, err)
+
+
+def test_a_program_drives_the_device_through_the_bridge(qtbot, window: MainWindow, sim) -> None:
+    bar = window.connection_bar
+    bar.set_port(sim.path)
+    bar.set_protocol("coxiris")
+    bar.set_bridge_mode(True)
+    qtbot.mouseClick(bar.connect_button, Qt.MouseButton.LeftButton)
+    assert window.bridge is not None, window.status_line.message()
+    path = window.bridge.bridge.path
+    assert bar.state() == "connected" and bar.connect_button.text() == "Disconnect"
+    assert not window.jog_panel.isEnabled() and not window.coordinates.isEnabled()
+    assert not bar.bridge_check.isEnabled()
+
+    moved = _motionctl(qtbot, path, "move", "1", "2", "3")
+    assert moved.returncode == 0, moved.stderr
+
+    def shown() -> None:
+        window.console.flush()
+        text = window.console.text()
+        assert "TX  ABSOLUTE_MOVE 1 2 3\\n" in text
+        assert "RX  ACK ABSOLUTE_MOVE\\r\\n" in text
+
+    qtbot.waitUntil(shown, timeout=5000)
+    index = window.console.index
+    move = next(n for n in range(len(index)) if index.line(n).meaning == "ABSOLUTE_MOVE 1 2 3")
+    assert index.line(index.line(move).pair).meaning == "ACK ABSOLUTE_MOVE"
+
+    qtbot.mouseClick(bar.connect_button, Qt.MouseButton.LeftButton)  # Disconnect
+    qtbot.waitUntil(lambda: window.bridge is None, timeout=5000)
+    assert bar.state() == "disconnected"
+    sent = b"".join(r.data for r in read_log(window.session_log_path) if r.direction == "tx")
+    assert b"ABSOLUTE_MOVE 1 2 3\n" in sent  # the session log has every byte
+
+
+def test_the_device_vanishing_ends_the_bridge_with_an_error(qtbot, window: MainWindow, sim):
+    window.connection_bar.set_bridge_mode(True)
+    assert window.start_bridge(sim.path, "coxiris", 115200)
+    sim.kill()
+    qtbot.waitUntil(lambda: window.bridge is None, timeout=10_000)
+    assert window.connection_bar.state() == "error"
+    assert "went away" in window.status_line.message()
+
+
+def test_a_missing_device_is_refused_clearly(window: MainWindow) -> None:
+    assert window.start_bridge("/dev/does-not-exist", "coxiris", 115200) is None
+    assert window.connection_bar.state() == "error"
+    assert "does-not-exist" in window.status_line.message()
