@@ -6,7 +6,7 @@ from dataclasses import dataclass
 
 from drivers.commands import Arc
 from drivers.program import ProgramPoint
-from widgets.traffic_format import escape
+from drivers.traffic_index import escape
 
 
 @dataclass(frozen=True)

@@ -25,12 +25,12 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.traffic_console import RawConsole
+from app.traffic_feed import TimelineFeed
 from drivers.errors import MotionError
 from drivers.log_reader import LogRecord, read_any_log
 from drivers.registry import create_protocol, protocol_names
 from drivers.traffic_index import TrafficIndex
-from widgets.raw_console import RawConsole
-from widgets.traffic_feed import TimelineFeed
 from widgets.traffic_timeline import TrafficTimeline
 
 log = logging.getLogger(__name__)

@@ -38,6 +38,8 @@ from app.settings import (
     read_travel,
     write_travel,
 )
+from app.traffic_console import RawConsole
+from app.traffic_feed import TimelineFeed
 from app.worker import ConnectOptions, DeviceInfo, SerialWorker
 from app.worker_thread import WorkerThread
 from drivers.capabilities import Capabilities, Completion
@@ -58,10 +60,8 @@ from widgets.position_buffer import PositionBuffer
 from widgets.position_readout import PositionReadout
 from widgets.position_view_2d import PositionView2D
 from widgets.position_view_3d import make_position_view_3d
-from widgets.raw_console import RawConsole
 from widgets.speed_control import SpeedControl
 from widgets.status_line import StatusLine
-from widgets.traffic_feed import TimelineFeed
 from widgets.traffic_timeline import TrafficTimeline
 from widgets.travel_limits_dialog import TravelLimitsDialog
 

@@ -44,8 +44,8 @@ def _feed(lines: int) -> tuple[object, float]:
     """A console fed `lines` lines in worker-sized batches; (console, seconds)."""
     from PySide6.QtWidgets import QApplication
 
+    from app.traffic_console import RawConsole
     from drivers.registry import create_protocol
-    from widgets.raw_console import RawConsole
 
     QApplication.instance() or QApplication([])
     console = RawConsole()
@@ -82,7 +82,18 @@ def memory(lines: int) -> dict[str, float]:
     after = _rss_mb()
     index = console.index  # type: ignore[attr-defined]
     spool = os.fstat(index._fd).st_size
+    timings = {}
+    for name, action in (
+        ("show_poll_ms", lambda: console.show_poll(True)),  # type: ignore[attr-defined]
+        ("filter_regex_ms", lambda: console.set_filter(pattern="DELTA_MOVE")),  # type: ignore[attr-defined]
+        ("search_ms", lambda: console.search("dbg 1234")),  # type: ignore[attr-defined]
+        ("jump_middle_ms", lambda: console.jump_to_line(len(index) // 2)),  # type: ignore[attr-defined]
+    ):
+        start = time.perf_counter()
+        action()
+        timings[name] = (time.perf_counter() - start) * 1000
     return {
+        **timings,
         "lines": len(index),
         "seconds": seconds,
         "rss_gain_mb": after - before,
@@ -141,6 +152,7 @@ def flood(seconds: float) -> dict[str, float]:
     app.exec()
     timer.stop()
     jogger.stop()
+    backlog = window.console.backlog()  # traffic received but not yet decoded and shown
     window.console.flush()
     lines = len(window.console.index)
     debug = window.console.index.counts["debug"]
@@ -151,6 +163,7 @@ def flood(seconds: float) -> dict[str, float]:
         "lines": lines,
         "debug_lines_per_s": debug / (seconds + 1.0),
         "jogs": jogs[0],
+        "backlog_lines": backlog,
         "gui_max_stall_ms": gaps[-1] if gaps else float("nan"),
         "p99_gap_ms": gaps[int(0.99 * (len(gaps) - 1))] if gaps else float("nan"),
         "median_gap_ms": gaps[len(gaps) // 2] if gaps else float("nan"),

@@ -21,6 +21,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from bench import bridge_latency  # noqa: E402
 from bench.laser_stream import bench_laser_stream  # noqa: E402
 from bench.motionsim import motionsim  # noqa: E402
 from bench.visiomex_write import bench_visiomex_write  # noqa: E402
@@ -134,14 +135,47 @@ def bench_traffic_memory(records: int) -> dict[str, float]:
 
 def bench_gui_latency(jogs: int) -> dict[str, float]:
     """Event-loop gaps of the window while jogging (bench/gui_latency.py, offscreen raster)."""
+    return _script(str(ROOT / "bench" / "gui_latency.py"), "--jogs", str(jogs), timeout=300)
+
+
+def _script(*args: str, timeout: float = 600) -> dict[str, float]:
+    """Run a bench script in a process of its own; the JSON object it prints last."""
     out = subprocess.run(
-        [sys.executable, str(ROOT / "bench" / "gui_latency.py"), "--jogs", str(jogs)],
-        capture_output=True,
-        text=True,
-        timeout=300,
-        check=True,
+        [sys.executable, *args], capture_output=True, text=True, timeout=timeout, check=True
     )
     return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def bench_console(lines: int, memory_lines: int, flood_s: float) -> dict[str, float]:
+    """The traffic console: ingest rate, memory for many lines, window stalls in a flood."""
+    script = str(ROOT / "bench" / "console_flood.py")
+    ingest = _script(script, "ingest", "--lines", str(lines))
+    memory = _script(script, "memory", "--lines", str(memory_lines))
+    flood = _script(script, "flood", "--seconds", str(flood_s))
+    return {
+        "console_lines_per_s": ingest["console_lines_per_s"],
+        "memory_lines": memory["lines"],
+        "memory_mb_per_million_lines": memory["rss_gain_mb"] * 1e6 / memory["lines"],
+        "spool_mb_per_million_lines": memory["spool_mb"] * 1e6 / memory["lines"],
+        "show_poll_ms_at_memory_lines": memory["show_poll_ms"],
+        "filter_regex_ms_at_memory_lines": memory["filter_regex_ms"],
+        "search_ms_at_memory_lines": memory["search_ms"],
+        "jump_ms_at_memory_lines": memory["jump_middle_ms"],
+        "flood_lines_per_s": flood["debug_lines_per_s"],
+        "flood_max_stall_ms": flood["gui_max_stall_ms"],
+        "flood_p99_gap_ms": flood["p99_gap_ms"],
+        "flood_backlog_lines": flood["backlog_lines"],
+    }
+
+
+def bench_bridge(count: int) -> dict[str, float]:
+    """Latency the bridge adds to a round trip (bare, and motionctl bridge with log and print)."""
+    figures = {}
+    for via in ("bridge", "motionctl"):
+        result = bridge_latency.measure(count, 8, 4, via)
+        figures[f"{via}_added_median_ms"] = float(result["added_median_ms"])  # type: ignore[arg-type]
+        figures[f"{via}_added_p99_ms"] = float(result["added_p99_ms"])  # type: ignore[arg-type]
+    return figures
 
 
 def main() -> int:
@@ -162,7 +196,15 @@ def main() -> int:
         "laser_stream": bench_laser_stream(
             200 if options.quick else 2000, 1000 if options.quick else 10_000
         ),
+        "console": bench_console(
+            200_000 // scale,
+            100_000 if options.quick else 1_000_000,
+            3.0 if options.quick else 10.0,
+        ),
+        "bridge": bench_bridge(400 if options.quick else 2000),
     }
+    results["console_lines_per_s"] = results["console"]["console_lines_per_s"]
+    results["gui_max_stall_ms"] = results["console"]["flood_max_stall_ms"]
     if options.json:
         print(json.dumps(results, indent=None))
     else:

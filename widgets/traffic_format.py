@@ -1,12 +1,8 @@
-"""What the send line reads: text with escapes, or hex (escape: the console's text form)."""
+"""What the send line reads: text with escapes (the console's text form), or hex."""
 
 from __future__ import annotations
 
 import re
-
-from drivers.traffic_index import escape
-
-__all__ = ["escape", "parse_hex", "unescape"]
 
 _UNESCAPES = {"r": b"\r", "n": b"\n", "t": b"\t", "\\": b"\\", "0": b"\0"}
 _HEX_SEPARATORS = re.compile(r"[\s,:;-]+")

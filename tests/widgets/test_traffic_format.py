@@ -6,7 +6,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from widgets.traffic_format import escape, parse_hex, unescape
+from drivers.traffic_index import escape
+from widgets.traffic_format import parse_hex, unescape
 
 
 def test_escape() -> None:

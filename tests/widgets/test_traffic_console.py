@@ -9,10 +9,10 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QColor
 
+from app.traffic_console import RawConsole
+from app.traffic_table import BYTES, ERROR_BACKGROUND, MATCH_BACKGROUND, REPLY
 from drivers.registry import create_protocol
 from drivers.traffic_index import KINDS
-from widgets.raw_console import RawConsole
-from widgets.traffic_table import BYTES, ERROR_BACKGROUND, MATCH_BACKGROUND, REPLY
 
 pytestmark = pytest.mark.timeout(60)
 LEFT = Qt.MouseButton.LeftButton

@@ -35,10 +35,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from drivers.protocols.base import Protocol
-from drivers.traffic_index import KINDS, FilterError, TrafficIndex, compile_filter
-from widgets.send_line import SendLine
-from widgets.traffic_table import (
+from app.traffic_table import (
     BYTES,
     COLUMNS,
     DISPLAY_MODES,
@@ -54,6 +51,9 @@ from widgets.traffic_table import (
     shown_bytes,
     stamp,
 )
+from drivers.protocols.base import Protocol
+from drivers.traffic_index import KINDS, FilterError, TrafficIndex, compile_filter
+from widgets.send_line import SendLine
 
 log = logging.getLogger(__name__)
 
@@ -355,6 +355,10 @@ class RawConsole(QWidget):
     def time_origin(self) -> float:
         """What relative times count from."""
         return self._model.origin
+
+    def backlog(self) -> int:
+        """Records received but not yet decoded and shown (a flood beyond the budget)."""
+        return len(self._pending)
 
     def records(self) -> list[Record]:
         """The latest raw records (bounded), as they came: (direction or "note", data, time)."""

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QObject, Slot
 
-from widgets.raw_console import RawConsole
+from app.traffic_console import RawConsole
 from widgets.traffic_timeline import TrafficTimeline
 
 
