@@ -38,6 +38,7 @@ from PySide6.QtWidgets import (
 from app.traffic_table import (
     BYTES,
     COLUMNS,
+    CSV_COLUMNS,
     DISPLAY_MODES,
     HEX,
     LINE,
@@ -47,8 +48,6 @@ from app.traffic_table import (
     TIME,
     TIME_MODES,
     TrafficModel,
-    reply_text,
-    shown_bytes,
     stamp,
 )
 from drivers.protocols.base import Protocol
@@ -58,7 +57,8 @@ from widgets.send_line import SendLine
 log = logging.getLogger(__name__)
 
 TX, RX, NOTE = "tx", "rx", "note"
-FLUSH_INTERVAL_MS = 50  # ~20 Hz
+FLUSH_INTERVAL_MS = 100  # 10 Hz: a flood costs a repaint of the table per flush
+TYPING_PAUSE_MS = 250  # a filter or search is applied this long after the last key
 FLUSH_BUDGET = 0.008  # s of decoding per turn of the event loop; the rest waits its turn
 RECENT_RECORDS = 20_000  # raw records kept for `records()`; the index keeps every line
 HIDDEN_BY_DEFAULT = ("poll",)
@@ -91,6 +91,7 @@ class RawConsole(QWidget):
         self.clock: Callable[[], float] = time.monotonic  # the traffic's clock, for notes
         self._recent: deque[Record] = deque(maxlen=RECENT_RECORDS)
         self._pending: list[tuple[float, str, bytes, float | None]] = []
+        self._shown_at = 0.0  # perf_counter of the last update of the table
         self.index = TrafficIndex()
         self._model = TrafficModel(self.index)
         self._origin_set = False
@@ -99,10 +100,12 @@ class RawConsole(QWidget):
         self._scrolling = False
         self._pattern = None
         self._search = None
+        self._pattern_text = self._search_text = ""
         self._kinds = {k for k in KINDS if k not in HIDDEN_BY_DEFAULT}
         self._directions = {"tx", "rx", ""}
         self._build(sending)
         self._flush_timer = QTimer(self)
+        self._flush_timer.setObjectName("consoleFlushTimer")
         self._flush_timer.setSingleShot(True)
         self._flush_timer.setInterval(FLUSH_INTERVAL_MS)
         self._flush_timer.timeout.connect(self._timed_flush)
@@ -133,6 +136,11 @@ class RawConsole(QWidget):
         return button
 
     def _build(self, sending: bool) -> None:
+        self._typing = QTimer(self)  # a million lines are not filtered again at every key
+        self._typing.setObjectName("consoleTypingTimer")
+        self._typing.setSingleShot(True)
+        self._typing.setInterval(TYPING_PAUSE_MS)
+        self._typing.timeout.connect(self._typed)
         self.mode_combo = self._combo(
             "consoleDisplayMode",
             DISPLAY_MODES,
@@ -184,7 +192,7 @@ class RawConsole(QWidget):
             "Show only lines matching this regular expression (case-insensitive) in their "
             "direction, kind, hex, text or meaning, e.g. error|FA00"
         )
-        self.filter_edit.textChanged.connect(self._filters_changed)
+        self.filter_edit.textChanged.connect(self._typing.start)  # applied when typing pauses
         self.paused_label = QLabel("paused")
         self.paused_label.setObjectName("consolePaused")
         self.paused_label.setToolTip(
@@ -212,7 +220,7 @@ class RawConsole(QWidget):
         self.search_edit.setToolTip(
             "Highlight matching lines; Enter or F3: next, Shift+F3: previous"
         )
-        self.search_edit.textChanged.connect(self._search_changed)
+        self.search_edit.textChanged.connect(self._typing.start)
         self.search_edit.returnPressed.connect(self.find_next)
         previous = self._button(
             "◀", "consoleSearchPrevious", "Previous match (Shift+F3)", self.find_previous
@@ -262,6 +270,7 @@ class RawConsole(QWidget):
         self.view.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
         self.view.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
         self.view.setWordWrap(False)
+        self.view.setTextElideMode(Qt.TextElideMode.ElideNone)  # no text measuring per cell
         self.view.setShowGrid(False)
         self.view.verticalHeader().setVisible(False)
         rows = self.view.verticalHeader()
@@ -337,7 +346,7 @@ class RawConsole(QWidget):
                 index.add(direction, data, when, wall if wall is not None else time.time())
             else:
                 index.add_note(data.decode("utf-8"), when, wall)
-            if deadline is not None and position % 32 == 31 and time.perf_counter() > deadline:
+            if deadline is not None and time.perf_counter() > deadline:
                 self._pending = pending[position + 1 :]
                 break
         index.commit()
@@ -365,19 +374,35 @@ class RawConsole(QWidget):
         return list(self._recent)
 
     def _timed_flush(self) -> None:
-        """The timer's flush: at most FLUSH_BUDGET of work, so a flood never stalls the window."""
-        self._flush(time.perf_counter() + FLUSH_BUDGET)
+        """The timer's turn: at most FLUSH_BUDGET of decoding, so a flood never stalls the
+        window; the table is updated at most every FLUSH_INTERVAL_MS (its repaint is dear)."""
+        now = time.perf_counter()
+        self._take_pending(now + FLUSH_BUDGET)
+        if not self._pending or now - self._shown_at >= FLUSH_INTERVAL_MS / 1000:
+            self._show_new()
         if self._pending:
             self._flush_timer.start(0)  # the rest after the events waiting now
 
-    def flush(self) -> None:
-        """Show every line added since the last flush."""
-        self._flush(None)
+    def _typed(self) -> None:
+        """The filter or search text stopped changing: apply what changed."""
+        self._typing.stop()
+        if self.filter_edit.text() != self._pattern_text:
+            self._filters_changed()
+        if self.search_edit.text() != self._search_text:
+            self._search_changed(self.search_edit.text())
 
-    def _flush(self, deadline: float | None) -> None:
+    def flush(self) -> None:
+        """Show every line added since the last flush (and a filter still being typed)."""
+        if self._typing.isActive():
+            self._typed()
         self._flush_timer.stop()
+        self._take_pending(None)
+        self._show_new()
+
+    def _show_new(self) -> None:
+        """Put the lines decoded since the last time in the table (through the filters)."""
         self._flush_timer.setInterval(FLUSH_INTERVAL_MS)
-        self._take_pending(deadline)
+        self._shown_at = time.perf_counter()
         total = len(self.index)
         if total == self._shown_until:
             return
@@ -404,8 +429,9 @@ class RawConsole(QWidget):
         self._refilter()
 
     def _filters_changed(self) -> None:
+        self._pattern_text = self.filter_edit.text()
         try:
-            self._pattern = compile_filter(self.filter_edit.text())
+            self._pattern = compile_filter(self._pattern_text)
         except FilterError as exc:
             self.filter_edit.setStyleSheet("color: #c62828;")
             self.filter_edit.setToolTip(str(exc))
@@ -427,6 +453,7 @@ class RawConsole(QWidget):
         if pattern is not None:
             compile_filter(pattern)
             self.filter_edit.setText(pattern)
+            self._typed()
         if directions is not None:
             self.tx_check.setChecked("tx" in directions)
             self.rx_check.setChecked("rx" in directions)
@@ -492,6 +519,7 @@ class RawConsole(QWidget):
     # -- search ----------------------------------------------------------------------------
 
     def _search_changed(self, text: str) -> None:
+        self._search_text = text
         try:
             self._search = compile_filter(text)
         except FilterError as exc:
@@ -511,6 +539,7 @@ class RawConsole(QWidget):
     def search(self, text: str) -> int:
         """Highlight lines matching `text` (a regex); returns how many match."""
         self.search_edit.setText(text)
+        self._typed()
         return len(self._model.matches)
 
     def _visible_matches(self) -> np.ndarray:
@@ -633,23 +662,8 @@ class RawConsole(QWidget):
     # -- text out --------------------------------------------------------------------------
 
     def row_text(self, row: int) -> str:
-        """One shown line as text: `time DIR  bytes  meaning  reply` (time if shown)."""
-        model = self._model
-        line = model.line_at(row)
-        if line.direction == "":
-            head = "--  " + line.meaning
-        else:
-            shown = shown_bytes(line.data, model.mode)
-            head = f"{line.direction.upper()}  {shown}"
-            plain = line.data.decode("latin-1").strip()
-            if line.meaning and line.meaning != plain and line.kind != "debug":
-                head += f"  {line.meaning}"
-        reply = reply_text(line)
-        if reply:
-            head += f"  [{reply}]"
-        if self.timestamps():
-            head = f"{model.cell(row, TIME)} {head}"
-        return head
+        """One shown line as text: `time DIR  bytes  meaning  [reply]` (time if shown)."""
+        return self._model.row_text(row, self.timestamps())
 
     def text(self) -> str:
         """The shown (filtered) lines as text, one a line (after a flush)."""
@@ -699,31 +713,14 @@ class RawConsole(QWidget):
         return len(self._model.rows)
 
     def export_csv(self, path: str | Path) -> int:
-        """Write the shown lines as CSV: line, time, direction, kind, hex, text, meaning, pairs."""
+        """Write the shown lines as CSV (CSV_COLUMNS: line, time, direction, kind, bytes, …)."""
         self.flush()
         model = self._model
         with Path(path).open("w", encoding="utf-8", newline="") as out:
             writer = csv.writer(out)
-            writer.writerow(
-                ["line", "time_s", "direction", "kind", "hex", "text", "meaning", "pair",
-                 "latency_ms", "first_copy"]
-            )  # fmt: skip
+            writer.writerow(CSV_COLUMNS)
             for row in range(len(model.rows)):
-                line = model.line_at(row)
-                writer.writerow(
-                    [
-                        line.number,
-                        f"{line.time - model.origin:.3f}",
-                        line.direction,
-                        line.kind,
-                        line.data.hex(" ").upper(),
-                        shown_bytes(line.data, TEXT),
-                        line.meaning,
-                        line.pair if line.pair >= 0 else "",
-                        "" if np.isnan(line.latency_ms) else f"{line.latency_ms:.1f}",
-                        line.first_copy if line.first_copy >= 0 else "",
-                    ]
-                )
+                writer.writerow(model.csv_row(row))
         return len(model.rows)
 
     def export_interactively(self) -> None:

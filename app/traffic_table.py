@@ -16,6 +16,10 @@ DISPLAY_MODES = (TEXT, HEX, MIXED)
 RELATIVE, ABSOLUTE, DELTA = "relative", "absolute", "delta"
 TIME_MODES = (RELATIVE, ABSOLUTE, DELTA)
 COLUMNS = ("Line", "Time", "Dir", "Bytes", "Meaning", "Reply")
+CSV_COLUMNS = (
+    "line", "time_s", "direction", "kind", "hex", "text", "meaning", "pair", "latency_ms",
+    "first_copy",
+)  # fmt: skip
 LINE, TIME, DIRECTION, BYTES, MEANING, REPLY = range(len(COLUMNS))
 SHOWN_BYTES = 96  # bytes shown in a cell; the tooltip and the export have them all
 COLOURS = {"tx": "#1565c0", "rx": "#2e7d32", "": "#757575"}
@@ -23,6 +27,13 @@ ERROR_BACKGROUND = QColor("#ffd7d7")
 MATCH_BACKGROUND = QColor("#fff59d")
 _MIXED_TABLE = {b: chr(b) if 0x20 <= b < 0x7F else f"<{b:02X}>" for b in range(256)}
 Index = QModelIndex | QPersistentModelIndex
+_DISPLAY = Qt.ItemDataRole.DisplayRole.value
+_TOOLTIP = Qt.ItemDataRole.ToolTipRole.value
+_STYLE_SLOTS = {
+    Qt.ItemDataRole.ForegroundRole.value: 0,
+    Qt.ItemDataRole.BackgroundRole.value: 1,
+    Qt.ItemDataRole.FontRole.value: 2,
+}  # roles as ints: comparing enum members costs more than the rest of a call
 
 
 def shown_bytes(data: bytes, mode: str) -> str:
@@ -70,6 +81,8 @@ class TrafficModel(QAbstractTableModel):
         self.time_mode = RELATIVE
         self.origin = 0.0
         self.matches = np.zeros(0, dtype=np.int64)  # search hits (line numbers), sorted
+        self._cells: dict[tuple[int, int], str] = {}  # (row, column) → text, while rows stay
+        self._styles: dict[int, tuple[QBrush, QColor | None, QFont | None]] = {}
         self._italic = QFont()
         self._italic.setItalic(True)
         self._brushes = {d: QBrush(QColor(c)) for d, c in COLOURS.items()}
@@ -78,6 +91,8 @@ class TrafficModel(QAbstractTableModel):
 
     def set_index(self, index: TrafficIndex) -> None:
         """Show another session's lines (none selected yet)."""
+        self._cells.clear()
+        self._styles.clear()
         self.beginResetModel()
         self.index_ = index
         self.rows = np.zeros(0, dtype=np.int64)
@@ -86,6 +101,8 @@ class TrafficModel(QAbstractTableModel):
 
     def set_rows(self, rows: np.ndarray) -> None:
         """Show these lines (a new filter)."""
+        self._cells.clear()
+        self._styles.clear()
         self.beginResetModel()
         self.rows = rows
         self.endResetModel()
@@ -102,11 +119,14 @@ class TrafficModel(QAbstractTableModel):
     def set_matches(self, matches: np.ndarray) -> None:
         """Highlight these lines (the search's hits)."""
         self.matches = matches
+        self._styles.clear()
         if len(self.rows):
             self.dataChanged.emit(self.index(0, 0), self.index(len(self.rows) - 1, REPLY - 1))
 
     def refresh(self) -> None:
         """Repaint every cell (a display or time mode changed)."""
+        self._cells.clear()
+        self._styles.clear()
         if len(self.rows):
             self.dataChanged.emit(self.index(0, 0), self.index(len(self.rows) - 1, REPLY))
 
@@ -135,7 +155,19 @@ class TrafficModel(QAbstractTableModel):
         return None
 
     def cell(self, row: int, column: int) -> str:
-        """A cell's text."""
+        """A cell's text (remembered until the rows or the modes change)."""
+        if column == REPLY:
+            return reply_text(self.line_at(row))  # a request's reply may come later
+        key = (row, column)
+        text = self._cells.get(key)
+        if text is None:
+            if len(self._cells) > 20_000:
+                self._cells.clear()
+                self._styles.clear()
+            text = self._cells[key] = self._cell(row, column)
+        return text
+
+    def _cell(self, row: int, column: int) -> str:
         line = self.line_at(row)
         if column == LINE:
             return str(line.number)
@@ -152,33 +184,74 @@ class TrafficModel(QAbstractTableModel):
             return line.meaning
         return reply_text(line)
 
-    def data(self, index: Index, role: int = Qt.ItemDataRole.DisplayRole) -> object:
-        """Text, colours and tooltips of a cell."""
-        if not index.isValid():
-            return None
-        row, column = index.row(), index.column()
-        if role == Qt.ItemDataRole.DisplayRole:
-            return self.cell(row, column)
-        if role == Qt.ItemDataRole.ForegroundRole:
-            return self._brushes[self.line_at(row).direction]
-        if role == Qt.ItemDataRole.BackgroundRole:
-            line = int(self.rows[row])
-            hit = np.searchsorted(self.matches, line)
-            if hit < len(self.matches) and self.matches[hit] == line:
-                return MATCH_BACKGROUND
-            if self.line_at(row).kind == "error":
-                return ERROR_BACKGROUND
-            return None
-        if role == Qt.ItemDataRole.FontRole:
-            return self._italic if self.line_at(row).kind in ("note", "debug") else None
-        if role == Qt.ItemDataRole.ToolTipRole:
+    def row_text(self, row: int, with_time: bool = True) -> str:
+        """A shown line as text: `time DIR  bytes  meaning  [reply]`; the meaning is left out
+        where it only repeats the bytes (a text protocol's line, the device's own text)."""
+        line = self.line_at(row)
+        if line.direction == "":
+            text = "--  " + line.meaning
+        else:
+            text = f"{line.direction.upper()}  {shown_bytes(line.data, self.mode)}"
+            plain = line.data.decode("latin-1").strip()
+            if line.meaning and line.meaning != plain and line.kind != "debug":
+                text += f"  {line.meaning}"
+        reply = reply_text(line)
+        if reply:
+            text += f"  [{reply}]"
+        return f"{self.cell(row, TIME)} {text}" if with_time else text
+
+    def csv_row(self, row: int) -> list[object]:
+        """A shown line's CSV fields, as CSV_COLUMNS names them."""
+        line = self.line_at(row)
+        return [
+            line.number,
+            f"{line.time - self.origin:.3f}",
+            line.direction,
+            line.kind,
+            line.data.hex(" ").upper(),
+            shown_bytes(line.data, TEXT),
+            line.meaning,
+            line.pair if line.pair >= 0 else "",
+            "" if math.isnan(line.latency_ms) else f"{line.latency_ms:.1f}",
+            line.first_copy if line.first_copy >= 0 else "",
+        ]
+
+    def _style(self, row: int) -> tuple[QBrush, QColor | None, QFont | None]:
+        """A row's foreground, background and font (remembered with its cells)."""
+        style = self._styles.get(row)
+        if style is None:
             line = self.line_at(row)
-            lines = [f"line {line.number}: {line.kind}"]
-            if line.data:
-                lines += [f"hex: {line.data.hex(' ').upper()}", f"text: {escape(line.data)}"]
-            if line.meaning:
-                lines.append(line.meaning)
-            if reply_text(line):
-                lines.append(reply_text(line) + " (double-click to go there)")
-            return "\n".join(lines)
+            hit = np.searchsorted(self.matches, line.number)
+            background = (
+                MATCH_BACKGROUND
+                if hit < len(self.matches) and self.matches[hit] == line.number
+                else ERROR_BACKGROUND
+                if line.kind == "error"
+                else None
+            )
+            font = self._italic if line.kind in ("note", "debug") else None
+            style = self._styles[row] = (self._brushes[line.direction], background, font)
+        return style
+
+    def tooltip(self, row: int) -> str:
+        """Everything about a line: kind, hex, text, meaning, pairing."""
+        line = self.line_at(row)
+        lines = [f"line {line.number}: {line.kind}"]
+        if line.data:
+            lines += [f"hex: {line.data.hex(' ').upper()}", f"text: {escape(line.data)}"]
+        if line.meaning:
+            lines.append(line.meaning)
+        if reply_text(line):
+            lines.append(reply_text(line) + " (double-click to go there)")
+        return "\n".join(lines)
+
+    def data(self, index: Index, role: int = _DISPLAY) -> object:
+        """Text, colours and tooltips of a cell (called hundreds of times a repaint: kept lean)."""
+        if role == _DISPLAY:
+            return self.cell(index.row(), index.column())
+        slot = _STYLE_SLOTS.get(role)
+        if slot is not None:
+            return self._style(index.row())[slot]
+        if role == _TOOLTIP:
+            return self.tooltip(index.row())
         return None

@@ -86,6 +86,27 @@ class TrafficLine:
     first_copy: int = -1  # on a retransmission: the line of the frame's first copy
 
 
+_CHUNK = 8 << 20  # bytes of the spool lowered at a time for a literal search
+_REGEX_SYNTAX = frozenset(b".^$*+?{}[]\\|()#")
+
+
+def _hit_starts(spool: mmap.mmap, begin: int, end: int, pattern: re.Pattern[bytes]) -> np.ndarray:
+    """Where the pattern matches in spool[begin:end]. A plain word (no regex syntax) is searched
+    case-sensitively in lowered chunks: IGNORECASE makes the engine step byte by byte, a
+    literal is found at memory-scan speed, about ten times faster."""
+    text = pattern.pattern
+    if any(byte in _REGEX_SYNTAX for byte in text):
+        hits = pattern.finditer(spool, begin, end)
+        return np.fromiter((hit.start() for hit in hits), dtype=np.int64)
+    literal = re.compile(re.escape(text.lower()))
+    found: list[np.ndarray] = []
+    for start in range(begin, end, _CHUNK):
+        chunk = spool[start : min(end, start + _CHUNK + len(text) - 1)].lower()
+        hits = literal.finditer(chunk)
+        found.append(np.fromiter((start + hit.start() for hit in hits), dtype=np.int64))
+    return np.unique(np.concatenate(found)) if found else np.zeros(0, dtype=np.int64)
+
+
 class _Columns:
     """One row a line, in typed arrays (appending is cheap); numpy reads them in place."""
 
@@ -384,29 +405,23 @@ class TrafficIndex:
         return lines
 
     def _matching(self, lines: np.ndarray, pattern: re.Pattern[bytes]) -> np.ndarray:
-        """Those of `lines` whose spool text the pattern finds."""
+        """Those of `lines` whose spool text the pattern finds (one native scan of the span)."""
         self._write()
-        offsets = self._columns.view("offset", np.int64)
         if self._written == 0:
             return lines[:0]
+        if pattern.search(b"") is not None:  # it matches the empty string: every line
+            return lines
+        offsets = self._columns.view("offset", np.int64)
+        first, last = int(lines[0]), int(lines[-1])
+        begin, end = int(offsets[first]), int(offsets[last + 1])
         with mmap.mmap(self._fd, self._written, access=mmap.ACCESS_READ) as spool:
-            if len(lines) * 8 < self._columns.size:  # few candidates: look at each
+            if len(lines) * 64 < last - first:  # few candidates far apart: look at each
                 keep = [
                     line
                     for line in lines.tolist()
                     if pattern.search(spool, int(offsets[line]), int(offsets[line + 1]) - 1)
                 ]
                 return np.asarray(keep, dtype=np.int64)
-            found: list[int] = []
-            first, last = int(lines[0]), int(lines[-1])
-            position, end = int(offsets[first]), int(offsets[last + 1])
-            starts = offsets[: self._columns.size + 1]
-            while position < end:
-                hit = pattern.search(spool, position, end)
-                if hit is None:
-                    break
-                line = int(np.searchsorted(starts, hit.start(), side="right")) - 1
-                found.append(line)
-                position = int(starts[line + 1])
-        hits = np.asarray(found, dtype=np.int64)
+            starts = _hit_starts(spool, begin, end, pattern)
+        hits = np.unique(np.searchsorted(offsets, starts, side="right") - 1)
         return hits[np.isin(hits, lines, assume_unique=True)]
