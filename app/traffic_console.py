@@ -1,8 +1,8 @@
 """The traffic console: every frame decoded, filtered and searched, and a send line.
 
 Lines live in a TrafficIndex (on disk, a few bytes each in memory), shown by a table that reads
-only the rows on screen, so a million lines stay light. New traffic is decoded as it comes and
-shown at ~20 Hz.
+only the rows on screen, so a million lines stay light. New traffic is decoded in turns of at
+most 8 ms and shown at most 10 times a second.
 """
 
 from __future__ import annotations
