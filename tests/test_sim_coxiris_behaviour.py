@@ -8,6 +8,8 @@ from drivers.sim.arduino import print_float
 from drivers.sim.clock import ManualClock
 from drivers.sim.coxiris_device import CoxirisDevice
 
+pytestmark = pytest.mark.timeout(60)
+
 
 def _device(**options: object) -> tuple[CoxirisDevice, ManualClock]:
     clock = ManualClock()
@@ -134,3 +136,83 @@ def test_line_timing_paces_output_at_the_baud_rate() -> None:
 def test_mute_device_never_answers() -> None:
     device, clock = _device(mute=True)
     assert _ask(device, clock, b"GET_ID\n", 5.0) == b""
+
+
+# -- issue 11: differences from the real firmware ------------------------------------------
+GET_ID_REPLY = b"ACK GET_ID\r\nDONE GET_ID: CX25F7TK9P\r\n"
+SETTLE = 0.1  # long enough for every reply below at 115200
+
+
+@pytest.mark.parametrize("baud", [None, 115200])
+def test_nul_ends_a_line(baud: int | None) -> None:
+    device, clock = _device(baud=baud)
+    assert _ask(device, clock, b"GET_ID\0\n", SETTLE) == GET_ID_REPLY
+    assert _ask(device, clock, b"get_id\0", SETTLE) == GET_ID_REPLY
+    out = _ask(device, clock, b"GET\0ID\n", SETTLE)
+    assert out.startswith(b"ERROR: Unknown command - \r\nGET\r\nAvailable commands:\r\n")
+    assert out.count(b"ERROR: Unknown command - \r\n") == 2
+    assert b"\r\nID\r\nAvailable commands:\r\n" in out
+
+
+def test_too_long_on_a_fast_line_keeps_the_next_command_of_the_same_write() -> None:
+    device, clock = _device()
+    out = _ask(device, clock, b"X" * 70 + b"\nGET_ID\n")
+    assert out == b"ERROR: Command too long\r\n" + GET_ID_REPLY
+
+
+def test_too_long_on_a_fast_line_stops_discarding_at_cr() -> None:
+    device, clock = _device()
+    out = _ask(device, clock, b"X" * 70 + b"\r\nGET_ID\rGET_ID\r\n")
+    assert out == b"ERROR: Command too long\r\n" + GET_ID_REPLY * 2
+
+
+def test_too_long_on_a_timed_line_keeps_the_next_command_of_the_same_write() -> None:
+    device, clock = _device(baud=115200)
+    out = _ask(device, clock, b"X" * 64 + b"\nGET_ID\n", SETTLE)
+    assert out == b"ERROR: Command too long\r\n" + GET_ID_REPLY
+
+
+def test_too_long_on_a_timed_line_parses_the_rest_then_the_next_command() -> None:
+    device, clock = _device(baud=115200)
+    out = _ask(device, clock, b"X" * 70 + b"\nGET_ID\n", SETTLE)
+    assert out.startswith(b"ERROR: Command too long\r\nERROR: Unknown command - \r\nXXXXXX\r\n")
+    assert out.endswith(
+        b"CHECK_ERRORS - Performs system diagnostics and reports any errors\r\n" + GET_ID_REPLY
+    )
+
+
+FLT_MAX_PLUS = b"340282350000000000000000000000000000000"  # rounds to FLT_MAX, not to inf
+
+
+@pytest.mark.parametrize("baud", [None, 115200])
+def test_just_above_float32_max_prints_ovf(baud: int | None) -> None:
+    device, clock = _device(baud=baud, instant=True)
+    _ask(device, clock, b"ABSOLUTE_MOVE " + FLT_MAX_PLUS + b" 0 0\n", SETTLE)
+    _ask(device, clock, b"DELTA_MOVE 0 -" + FLT_MAX_PLUS + b" 0\n", SETTLE)
+    assert _ask(device, clock, b"GET_POSITION\n", SETTLE).endswith(b": ovf ovf 0.00\r\n")
+
+
+def test_float32_sum_just_above_max_stays_finite() -> None:
+    device, clock = _device(instant=True)
+    _ask(device, clock, b"ABSOLUTE_MOVE " + FLT_MAX_PLUS + b" 0 0\n")
+    _ask(device, clock, b"DELTA_MOVE 1000 0 0\n")  # FLT_MAX + 1000 is FLT_MAX in float32
+    assert _ask(device, clock, b"GET_POSITION\n").endswith(b": ovf 0.00 0.00\r\n")
+
+
+def test_beyond_float32_range_prints_inf_and_nan() -> None:
+    device, clock = _device(instant=True)
+    big = b"340282370000000000000000000000000000000"  # rounds to infinity
+    _ask(device, clock, b"ABSOLUTE_MOVE " + big + b" 0 0\n")
+    _ask(device, clock, b"DELTA_MOVE -" + big + b" 0 0\n")  # inf + -inf
+    _ask(device, clock, b"DELTA_MOVE 0 -" + big + b" 0\n")  # -inf prints without a sign
+    assert _ask(device, clock, b"GET_POSITION\n").endswith(b": nan inf 0.00\r\n")
+
+
+def test_chatter_prints_debug_lines_between_replies() -> None:
+    device, clock = _device(chatter=10)
+    device.boot()
+    assert device.wake_at() == pytest.approx(0.1)
+    clock.advance(0.25)
+    assert device.read_output() == b"dbg 1 loop ok\r\ndbg 2 loop ok\r\n"
+    out = _ask(device, clock, b"GET_ID\0", 0.1)
+    assert out == GET_ID_REPLY + b"dbg 3 loop ok\r\n"

@@ -8,33 +8,64 @@ from pathlib import Path
 import pytest
 
 from drivers.sim.clock import ManualClock
-from drivers.sim.coxiris_device import CoxirisDevice
+from drivers.sim.coxiris_device import BUFFER_SIZE, CoxirisDevice
+
+pytestmark = pytest.mark.timeout(60)
 
 TRANSCRIPT = json.loads((Path(__file__).parent / "data" / "coxiris.json").read_text())
+EXCHANGES: list[dict] = TRANSCRIPT["exchanges"]
+SETTLE = 1.0  # seconds given to every exchange; the recording's replies came within 0.03 s
 
 
-def _replay(device: CoxirisDevice, clock: ManualClock, sent: str) -> bytes:
-    device.receive(sent.encode("latin-1"))
-    clock.advance(1.0)
-    return device.read_output()
+def _unknown_reply(name: bytes) -> bytes:
+    """The recorded unknown-command reply (to `FOO 1`), for the command `name`."""
+    recorded = next(e for e in EXCHANGES if e["sent"] == "FOO 1\n")["received"].encode("latin-1")
+    return recorded.replace(b"\r\nFOO\r\n", b"\r\n" + name + b"\r\n", 1)
 
 
-def test_transcript_in_order_byte_for_byte() -> None:
+def _expected(sent: bytes, received: bytes, timed: bool) -> bytes:
+    """The recorded reply; on a timed line, an over-long line's tail is a command of its own."""
+    line = sent.rstrip(b"\r\n")
+    if timed and len(line) >= BUFFER_SIZE:
+        # Recorded behind a pty, where the whole write is in the buffer at once and the parser
+        # drops the rest of the line. On a UART the sketch reads faster than bytes arrive, so the
+        # rest of the line is parsed as a new (unknown) command (PROTOCOLS.md §1).
+        return received + _unknown_reply(line[BUFFER_SIZE:].upper())
+    return received
+
+
+def _replay(device: CoxirisDevice, clock: ManualClock, sent: bytes) -> tuple[float | None, bytes]:
+    """Write `sent`; return when the first byte of the reply came (None: none) and the reply."""
+    start = clock.now
+    device.receive(sent)
+    first, out = None, b""
+    while (due := device.next_due()) is not None and due <= start + SETTLE:
+        clock.now = max(clock.now, due)
+        chunk = device.read_output()
+        if chunk and first is None:
+            first = clock.now - start
+        out += chunk
+    clock.now = start + SETTLE
+    return first, out + device.read_output()
+
+
+@pytest.mark.parametrize("blocking", [True, False], ids=["blocking", "background"])
+@pytest.mark.parametrize("baud", [None, 115200], ids=["untimed", "115200"])
+def test_transcript_in_order_byte_for_byte(baud: int | None, blocking: bool) -> None:
     clock = ManualClock()
-    device = CoxirisDevice(clock, instant=True)
+    # The recorded sketch: instant moves, speeds 1 to 100, initial speed 10 (the defaults).
+    device = CoxirisDevice(clock, baud, blocking=blocking, instant=True)
     device.boot()
     assert device.read_output() == TRANSCRIPT["boot_output"].encode()
-    for exchange in TRANSCRIPT["exchanges"]:
-        got = _replay(device, clock, exchange["sent"])
-        assert got == exchange["received"].encode("latin-1"), exchange["sent"]
-
-
-@pytest.mark.parametrize("baud", [None, 115200])
-def test_first_byte_time_matches_recording(baud: int | None) -> None:
-    clock = ManualClock()
-    device = CoxirisDevice(clock, baud=baud, instant=True)
-    device.receive(b"GET_ID\n")
-    due = device.next_due()
-    assert due is not None
-    # The recording saw the first byte after 0.02 s including the host's pty latency.
-    assert 0.0 <= due <= 0.02
+    for exchange in EXCHANGES:
+        sent = exchange["sent"].encode("latin-1")
+        first, got = _replay(device, clock, sent)
+        assert got == _expected(sent, exchange["received"].encode("latin-1"), baud is not None), (
+            sent
+        )
+        recorded_first = exchange["first_byte_after_s"]
+        if recorded_first is None:
+            assert first is None, sent
+        else:
+            # The recording's time includes the host's pty latency: the device is no slower.
+            assert first is not None and 0.0 <= first <= recorded_first, sent

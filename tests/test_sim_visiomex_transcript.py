@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -10,8 +11,18 @@ import pytest
 from drivers.sim.clock import ManualClock
 from drivers.sim.visiomex_device import VisiomexDevice
 
+pytestmark = pytest.mark.timeout(60)
+
 TRANSCRIPT = json.loads((Path(__file__).parent / "data" / "visiomex.json").read_text())
 CHUNK_GAP = 0.1  # output closer together than this is one chunk of the recording
+_FEEDBACK = re.compile(rb"^(?=(?:FS|FP|FA|EP|EF)\d{4}\r$)", re.MULTILINE)
+
+
+def _as_sent_by(variant: str, text: str) -> bytes:
+    """Recorded output as `variant` sends it: `prefixed` marks feedback packets with `>`."""
+    data = text.encode("latin-1")
+    # Later firmware prefixes every feedback packet, debug lines stay as they are (PROTOCOLS.md §2).
+    return _FEEDBACK.sub(b">", data) if variant == "prefixed" else data
 
 
 def _run(device: VisiomexDevice, clock: ManualClock, sent: str) -> list[tuple[float, bytes]]:
@@ -33,23 +44,26 @@ def _run(device: VisiomexDevice, clock: ManualClock, sent: str) -> list[tuple[fl
     return chunks
 
 
-@pytest.mark.parametrize("baud", [None, 9600])
-def test_transcript_in_order_byte_for_byte_and_in_time(baud: int | None) -> None:
+@pytest.mark.parametrize("variant", ["seed", "prefixed"])  # board12 packets are another format
+@pytest.mark.parametrize("baud", [None, 9600], ids=["untimed", "9600"])
+def test_transcript_in_order_byte_for_byte_and_in_time(baud: int | None, variant: str) -> None:
     clock = ManualClock()
-    device = VisiomexDevice(clock, baud)
+    device = VisiomexDevice(clock, baud, variant=variant)
     device.boot()
     clock.advance(0.1)
     assert device.read_output() == TRANSCRIPT["boot_output"].encode()
     for exchange in TRANSCRIPT["exchanges"]:
         sent = exchange["sent"]
         chunks = _run(device, clock, sent)
-        assert b"".join(data for _, data in chunks) == exchange["received"].encode("latin-1"), sent
+        assert b"".join(data for _, data in chunks) == _as_sent_by(variant, exchange["received"]), (
+            sent
+        )
         recorded = exchange["chunks_with_seconds_after_write"]
         assert len(chunks) == len(recorded), sent
         if recorded:
             assert chunks[0][0] == pytest.approx(recorded[0][0], abs=0.03), sent
         for (at, data), (recorded_at, text) in zip(chunks[1:], recorded[1:], strict=True):
-            assert data == text.encode("latin-1"), sent
+            assert data == _as_sent_by(variant, text), sent
             assert at == pytest.approx(recorded_at, abs=0.05), sent
         clock.advance(0.2)
 

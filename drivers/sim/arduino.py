@@ -11,12 +11,10 @@ OVF_LIMIT = 4294967040.0
 
 
 def to_float32(value: float) -> float:
-    """Round a Python float to the AVR's 32-bit float (overflow goes to infinity)."""
-    if math.isnan(value):
-        return value
-    if abs(value) > _F32_MAX:
-        return math.copysign(math.inf, value)
-    return float(np.float32(value))
+    """A C cast to the AVR's 32-bit float: round to nearest, so only a value past FLT_MAX's
+    half-ulp becomes infinity (3.4028235e38 is FLT_MAX, which Serial.print shows as `ovf`)."""
+    with np.errstate(over="ignore"):
+        return float(np.float32(value))
 
 
 def print_float(value: float, digits: int = 2) -> str:

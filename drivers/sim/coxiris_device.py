@@ -11,6 +11,8 @@ from drivers.sim.stage import Stage
 
 DEVICE_ID = "CX25F7TK9P"
 BUFFER_SIZE = 64  # the parser keeps 63 characters; the 64th before a terminator overflows
+# CR or LF ends a line (PROTOCOLS.md §1); on the real parser a NUL does too (issue 11).
+LINE_ENDS = frozenset(b"\r\n\0")
 _NUMBER = re.compile(rb"[+-]?(?:\d+\.?\d*|\.\d+)")
 
 HELP_LINES = (
@@ -98,19 +100,20 @@ class CoxirisDevice(SimulatedDevice):
 
     # -- the parser ----------------------------------------------------------------------
     def handle_byte(self, byte: int, t: float) -> None:
-        """CommandParser.read(): collect a line; CR or LF ends it."""
+        """CommandParser.read(): collect a line; CR, LF or NUL ends it."""
         if self.mute:
             return
-        if byte in (0x0D, 0x0A):
+        if byte in LINE_ENDS:
             line, self._line = bytes(self._line), bytearray()
             self._execute(line, t)
             return
         if len(self._line) >= BUFFER_SIZE - 1:
             self._line.clear()
             self._say("ERROR: Command too long", t)
-            # The parser then empties the serial buffer: what has arrived is lost, what comes
-            # later starts a new command (PROTOCOLS.md §1).
-            self.discard_available(t)
+            # The parser then drops what has arrived of this line, up to its line end; what
+            # arrives later starts a new command (PROTOCOLS.md §1), as does a next line already
+            # received (issue 11).
+            self.discard_available(t, until=LINE_ENDS)
             return
         self._line.append(byte)
 
@@ -135,7 +138,7 @@ class CoxirisDevice(SimulatedDevice):
 
     # -- the sketch's callbacks -------------------------------------------------------------
     def _position_text(self, t: float) -> str:
-        return " ".join(print_float(v, 2) for v in self.stage.position(t))
+        return " ".join(print_float(to_float32(v), 2) for v in self.stage.position(t))
 
     def _move(self, name: bytes, params: list[bytes], t: float) -> float:
         usage, names = _MOVE_USAGE[name]

@@ -5,6 +5,7 @@ from __future__ import annotations
 import logging
 from abc import ABC, abstractmethod
 from collections import deque
+from collections.abc import Container
 from typing import ClassVar
 
 from drivers.sim.clock import Clock, monotonic
@@ -99,12 +100,14 @@ class SimulatedDevice(ABC):
             self._tx.append((t, bytes((byte,))))
         self._tx_line_free = t
 
-    def discard_available(self, t: float) -> int:
-        """Throw away the input that has arrived by `t` (a firmware flushing its buffer)."""
+    def discard_available(self, t: float, until: Container[int] = ()) -> int:
+        """Throw away the input that has arrived by `t`, up to and including a byte in `until`."""
         count = 0
         while self._rx and self._rx[0][0] <= t:
-            self._rx.popleft()
+            _, byte = self._rx.popleft()
             count += 1
+            if byte in until:
+                break
         return count
 
     def wake_at(self) -> float | None:
