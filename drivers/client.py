@@ -53,6 +53,9 @@ class Client:
         self._opened = clock()
         self.wait_hooks: list[Callable[[], None]] = []
         """Called every read while waiting (about every 20 ms), e.g. to hand on traffic."""
+        self.writes = 0
+        """Writes so far: a value read after the last write is still the device's (the panel is
+        the only one commanding it)."""
         self.retransmissions = 0
         """Frames sent again (a damaged-frame reply, or no reply in time)."""
         self.backpressure_waits = 0
@@ -160,6 +163,7 @@ class Client:
         self.link.close()
 
     def _write(self, data: bytes) -> None:
+        self.writes += 1
         self.link.write(data)
         self._last_write = self.clock()
 

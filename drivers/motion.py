@@ -82,6 +82,7 @@ class Motion:
         self._speed: float | None = None
         self._limits: tuple[float, float] | None = None
         self.last_position: PositionReport | None = None
+        self._known_at = -1  # client.writes when last_position was read from the device
         if not self.capabilities.position_feedback:
             # Write-only devices: the position is what was commanded, from the power-on origin.
             self.last_position = PositionReport(0.0, 0.0, 0.0, measured=False)
@@ -124,7 +125,17 @@ class Motion:
         if not isinstance(value, PositionReport):
             raise DeviceError(f"the device did not report a position (it answered {value})")
         self._set_position(value)
+        self._known_at = self.client.writes  # nothing has been sent since it was read
         return value
+
+    def _current(self) -> PositionReport:
+        """The position, asked only where the last one read is no longer known to hold: a
+        measured position stays true until anything else is written (the stage moves only
+        when told to), so a jog right after a jog, or after the idle poll, asks nothing."""
+        known = self.last_position
+        if known is not None and known.measured and self._known_at == self.client.writes:
+            return known
+        return self.position()
 
     def speed(self) -> float:
         """The speed as the device reports it (or as last set, where it cannot be read back)."""
@@ -294,7 +305,7 @@ class Motion:
         """Move to `target_of(here)` with `command_of(here, target)` (None: `check` as it is)."""
         protocol = self.client.protocol
         protocol.encode(check)  # refuse bad input before any query is sent
-        here = self.position()
+        here = self._current()
         target = target_of(here)
         command = command_of(here, target) if command_of is not None else check
         protocol.encode(command)
