@@ -129,7 +129,11 @@ def test_settings_are_saved_and_restored(qtbot, tmp_path: Path, monkeypatch) -> 
 
 
 @pytest.mark.gl
-@pytest.mark.skipif("DISPLAY" not in __import__("os").environ, reason="needs Xvfb or a display")
+@pytest.mark.skipif(
+    "DISPLAY" not in __import__("os").environ
+    or __import__("os").environ.get("QT_QPA_PLATFORM") == "offscreen",
+    reason="needs Xvfb or a display, and a platform that draws OpenGL (not offscreen)",
+)
 def test_3d_view_is_real_opengl_and_draws_the_trail(qtbot, window: MainWindow) -> None:
     from widgets.position_view_3d import PositionView3D
 

@@ -1,4 +1,4 @@
-"""Helpers of the 3D position view: grid sizing, box edges, camera fitting, overlay buttons."""
+"""Helpers of the 3D position view: OpenGL probe, grid sizing, box edges, camera, buttons."""
 
 from __future__ import annotations
 
@@ -6,10 +6,21 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtGui import QGuiApplication, QOffscreenSurface, QOpenGLContext
 from PySide6.QtWidgets import QToolButton, QWidget
 
 from widgets._axes import Box
+
+# Qt platforms whose integration cannot draw a QOpenGLWidget (no RasterGLSurface capability).
+# Under a running X server "offscreen" still creates GLX contexts, but reports them as OpenGL 2.0
+# whatever the driver gives: pyqtgraph's initializeGL then raises, and that exception, thrown
+# through Qt's C++ frames (paintEvent -> sendEvent -> a Python eventFilter -> initializeGL),
+# left a corrupted reference that crashed the interpreter's last garbage collection (issue 11).
+NO_GL_WIDGET_PLATFORMS = frozenset({"offscreen", "minimal", "vnc", "linuxfb"})
+MIN_GL_VERSION = (2, 1)  # what pyqtgraph.opengl requires of a desktop (not ES) context
+GL_VERSION = 0x1F02
+NO_CONTEXT = "no OpenGL context can be created on this display"
 
 MIN_SPAN_MM = 10.0
 GRID_CELLS = 10
@@ -243,3 +254,55 @@ def preview_array(points: object) -> np.ndarray:
 def preview_tuples(array: np.ndarray) -> list[tuple[float, float, float]]:
     """The rows of a preview array as (x, y, z) tuples."""
     return [(float(x), float(y), float(z)) for x, y, z in array]
+
+
+def opengl_problem() -> str | None:
+    """Why OpenGL cannot draw the 3D scene here, or None when it can; needs a QGuiApplication.
+
+    Makes no call that can crash the process: it looks at the Qt platform, then creates a
+    context and an offscreen surface, makes the context current and reads the version it
+    reports, the one pyqtgraph checks in its initializeGL.
+    """
+    if QGuiApplication.instance() is None:
+        return "no QGuiApplication yet"
+    platform = QGuiApplication.platformName()
+    if platform in NO_GL_WIDGET_PLATFORMS:
+        return f"the Qt platform {platform!r} cannot draw OpenGL widgets"
+    shared = QOpenGLContext.globalShareContext()
+    if QCoreApplication.testAttribute(Qt.ApplicationAttribute.AA_ShareOpenGLContexts) and (
+        shared is None or not shared.isValid()
+    ):
+        return NO_CONTEXT
+    context = QOpenGLContext()
+    if shared is not None:
+        context.setShareContext(shared)
+    if not context.create() or not context.isValid():
+        return NO_CONTEXT
+    surface = QOffscreenSurface()
+    surface.setFormat(context.format())
+    surface.create()
+    try:
+        if not surface.isValid():
+            return "no OpenGL surface can be created on this display"
+        if not context.makeCurrent(surface):
+            return "an OpenGL context was created but cannot be made current"
+        try:
+            return _version_problem(context)
+        finally:
+            context.doneCurrent()
+    finally:
+        surface.destroy()
+
+
+def _version_problem(context: QOpenGLContext) -> str | None:
+    """Why the current `context` is too old for pyqtgraph.opengl, or None."""
+    if context.isOpenGLES():
+        return None  # pyqtgraph only warns
+    version = context.format().version()
+    if tuple(version) >= MIN_GL_VERSION:
+        return None
+    driver = context.functions().glGetString(GL_VERSION) or "unknown"
+    return (
+        f"the OpenGL context reports version {version[0]}.{version[1]} (driver: {driver}),"
+        f" {MIN_GL_VERSION[0]}.{MIN_GL_VERSION[1]} is needed"
+    )

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import logging
 from collections.abc import Callable
-from functools import partial
+from functools import cache, partial
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, QSize, Qt
@@ -14,9 +14,9 @@ from PySide6.QtGui import (
     QFontMetrics,
     QImage,
     QMouseEvent,
-    QOpenGLContext,
     QPainter,
     QPaintEvent,
+    QPen,
     QResizeEvent,
     QVector3D,
     QWheelEvent,
@@ -27,6 +27,7 @@ from widgets._axes import Box, target_point
 from widgets._gl_scene import (
     FIELD_OF_VIEW,
     MARGINS_PX,
+    NO_CONTEXT,
     VIEW_ANGLES,
     VIEW_PRESETS,
     axis_ends,
@@ -35,6 +36,7 @@ from widgets._gl_scene import (
     camera_rotation,
     fit_camera,
     grid_for,
+    opengl_problem,
     overlay_buttons,
     preview_array,
     preview_tuples,
@@ -62,6 +64,17 @@ WORKSPACE_COLOUR = (0.30, 0.80, 0.78, 0.9)
 PREVIEW_COLOUR = (1.0, 0.80, 0.50, 1.0)  # light orange (#ffcc80): a planned path, not yet run
 BACKGROUND = (24, 24, 28, 255)
 SCALE_COLOUR = (200, 200, 200)
+NOTICE_COLOUR = (97, 97, 97)
+NOTICE_STYLE = "color: #616161; border: 1px dashed #9e9e9e;"
+NOTICE_TOOLTIP = "Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README."
+
+
+def notice_text(reason: str) -> str:
+    """The words shown where the 3D view would be, for `reason`."""
+    return (
+        "3D view unavailable: OpenGL could not be initialised.\n"
+        f"({reason})\nThe 2D view shows the same positions."
+    )
 
 
 def share_opengl_contexts() -> None:
@@ -74,12 +87,55 @@ def share_opengl_contexts() -> None:
     QCoreApplication.setAttribute(Qt.ApplicationAttribute.AA_ShareOpenGLContexts)
 
 
-def opengl_available() -> bool:
-    """Whether pyqtgraph.opengl imports and an OpenGL context can be created here."""
+def opengl_unavailable_reason() -> str | None:
+    """Why the 3D view cannot be drawn here (no pyqtgraph.opengl, platform, context), or None."""
     if gl is None:
-        return False
-    context = QOpenGLContext()
-    return bool(context.create())
+        return f"pyqtgraph.opengl is unavailable ({_IMPORT_ERROR})"
+    return opengl_problem()
+
+
+def opengl_available() -> bool:
+    """Whether pyqtgraph.opengl imports and a usable OpenGL context can be made current here."""
+    return opengl_unavailable_reason() is None
+
+
+def _failure(exc: BaseException) -> str:
+    """An exception in words, for the notice and the log."""
+    return f"{type(exc).__name__}: {exc}"
+
+
+@cache
+def _scene_class() -> type:
+    """pyqtgraph's GLViewWidget, with GL callbacks that never let an exception reach Qt.
+
+    An exception thrown out of initializeGL or paintGL crosses Qt's C++ frames (in issue 11:
+    paintEvent -> sendEvent -> a Python event filter -> initializeGL) and left a corrupted
+    reference that crashed the interpreter's last garbage collection. The failure is kept in
+    `failure` for the view to show instead.
+    """
+
+    class GuardedScene(gl.GLViewWidget):
+        """A GLViewWidget that records, rather than raises, a failure to initialise or paint."""
+
+        failure: str | None = None
+
+        def initializeGL(self) -> None:
+            """pyqtgraph's initialisation; a failure is recorded."""
+            try:
+                super().initializeGL()
+            except Exception as exc:  # any failure: no 3D view
+                self.failure = _failure(exc)
+
+        def paintGL(self) -> None:
+            """pyqtgraph's painting, unless something failed; a failure is recorded."""
+            if self.failure is not None:
+                return
+            try:
+                super().paintGL()
+            except Exception as exc:  # any failure: no 3D view
+                self.failure = _failure(exc)
+
+    return GuardedScene
 
 
 class PositionView3D(BufferedViewMixin, QWidget):
@@ -90,6 +146,10 @@ class PositionView3D(BufferedViewMixin, QWidget):
     Qt compose the whole window through OpenGL on every repaint of any widget: with software
     OpenGL (Mesa llvmpipe) that took 75-90 ms a frame, while rendering the scene alone into an
     image takes about 1.5 ms.
+
+    If OpenGL fails while rendering (an exception in pyqtgraph's initialisation or painting, or
+    an invalid context), the view stops rendering and paints a notice in its place, saying why
+    (`failure`); its methods keep working and draw nothing.
 
     The grid covers the origin, the trail, the target and the workspace box, with a 1-2-5 mm
     spacing; it grows when the data leaves it. A view preset ("top", "front", "side", "iso",
@@ -115,7 +175,8 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._framebuffer_key: tuple[int, int, float] | None = None
         self._image = QImage()
         self._stale = True
-        self.scene = gl.GLViewWidget()  # no parent: it must stay out of this window
+        self.failure: str | None = None
+        self.scene = _scene_class()()  # no parent: it must stay out of this window
         self.scene.setBackgroundColor(BACKGROUND)
         self.scene.opts["fov"] = FIELD_OF_VIEW
         self.destroyed.connect(self.scene.deleteLater)
@@ -350,7 +411,9 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self.update()
 
     def render_scene(self) -> QImage:
-        """Render the scene at the widget's size now, and keep the image."""
+        """Render the scene at the widget's size now, and keep the image (null once failed)."""
+        if self.failure is not None:
+            return QImage()
         if self._preset is not None and self._fitted_size != self.size():
             self._fit_camera()  # the active preset, refitted to the new shape
         if self.scene.screen() is not self.screen():
@@ -366,10 +429,41 @@ class PositionView3D(BufferedViewMixin, QWidget):
             QCoreApplication.sendEvent(self.scene, QResizeEvent(size, old))
             self._framebuffer_key = key
         image = self.scene.grabFramebuffer()
+        problem = self.scene.failure
+        if problem is None and not self.scene.isValid():
+            problem = "the OpenGL context is invalid"
+        if problem is None and image.isNull():
+            problem = "OpenGL rendered no image"
+        if problem is not None:
+            self._fail(problem)
+            return QImage()
         image.setDevicePixelRatio(ratio)
         self._image = image
         self._stale = False
         return image
+
+    def _fail(self, reason: str) -> None:
+        """Stop rendering for good and show a notice saying why; logged once."""
+        self.failure = reason
+        self._image = QImage()
+        self._stale = False
+        log.warning("3D view disabled: %s", reason)
+        self.timer.stop()
+        for button in self.findChildren(QToolButton):
+            button.hide()
+        self.setToolTip(NOTICE_TOOLTIP)
+        self.update()
+
+    def _paint_notice(self) -> None:
+        """Paint the failure notice, as the placeholder shows it."""
+        painter = QPainter(self)
+        painter.setPen(QPen(QColor(*NOTICE_COLOUR), 1, Qt.PenStyle.DashLine))
+        painter.drawRect(self.rect().adjusted(0, 0, -1, -1))
+        painter.drawText(
+            self.rect().adjusted(8, 8, -8, -8),
+            Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap,
+            notice_text(self.failure or ""),
+        )
 
     def grabFramebuffer(self) -> QImage:
         """The scene as it is now, rendered with OpenGL."""
@@ -377,8 +471,13 @@ class PositionView3D(BufferedViewMixin, QWidget):
 
     def paintEvent(self, event: QPaintEvent) -> None:
         """Paint the rendered scene, rendering it first if it is out of date, and the scale."""
-        if self._stale or self._image.deviceIndependentSize().toSize() != self.size():
+        if self.failure is None and (
+            self._stale or self._image.deviceIndependentSize().toSize() != self.size()
+        ):
             self.render_scene()
+        if self.failure is not None:
+            self._paint_notice()
+            return
         painter = QPainter(self)
         painter.drawImage(0, 0, self._image)
         painter.setPen(QColor(*SCALE_COLOUR))
@@ -429,14 +528,11 @@ class PositionView3DPlaceholder(QLabel):
         super().__init__(parent)
         self.setObjectName("positionView3d")
         self.reason = reason
-        self.setText(
-            "3D view unavailable: OpenGL could not be initialised.\n"
-            f"({reason})\nThe 2D view shows the same positions."
-        )
-        self.setToolTip("Needs OpenGL 2.0 or newer (e.g. Mesa); see the README.")
+        self.setText(notice_text(reason))
+        self.setToolTip(NOTICE_TOOLTIP)
         self.setAlignment(Qt.AlignmentFlag.AlignCenter)
         self.setWordWrap(True)
-        self.setStyleSheet("color: #616161; border: 1px dashed #9e9e9e;")
+        self.setStyleSheet(NOTICE_STYLE)
 
     def refresh(self) -> None:
         """Nothing to draw."""
@@ -486,19 +582,40 @@ def make_position_view_3d(
     buffer: PositionBuffer,
     parent: QWidget | None = None,
     *,
-    probe: Callable[[], bool] = opengl_available,
+    probe: Callable[[], bool] | None = None,
 ) -> QWidget:
-    """The 3D view, or a placeholder label (objectName "positionView3d") if GL is unavailable."""
+    """The 3D view, or a placeholder label (objectName "positionView3d") if GL is unavailable.
+
+    Nothing that touches OpenGL runs before `opengl_unavailable_reason()` (or `probe`, which
+    says only yes or no) has found a context that can be made current; then the view is built
+    and rendered once, and any failure there gives the placeholder too. Logged once.
+    """
     if not QCoreApplication.testAttribute(Qt.ApplicationAttribute.AA_ShareOpenGLContexts):
         log.info("AA_ShareOpenGLContexts is not set: see share_opengl_contexts()")
+    view = None
     try:
-        if probe():
+        if probe is None:
+            reason = opengl_unavailable_reason()
+        else:
+            reason = None if probe() else _IMPORT_ERROR or NO_CONTEXT
+        if reason is None:
             view = PositionView3D(buffer)
-            if parent is not None:
-                view.setParent(parent)
-            return view
-        reason = _IMPORT_ERROR or "no OpenGL context can be created on this display"
+            view.render_scene()  # initialises OpenGL: a failure shows here, and is logged
+            if view.failure is None:
+                if parent is not None:
+                    view.setParent(parent)
+                return view
+            return _placeholder(view.failure, parent, view)
     except Exception as exc:  # any failure: the placeholder
-        reason = f"{type(exc).__name__}: {exc}"
+        reason = _failure(exc)
     log.warning("3D view disabled: %s", reason)
+    return _placeholder(reason, parent, view)
+
+
+def _placeholder(
+    reason: str, parent: QWidget | None, failed: QWidget | None
+) -> PositionView3DPlaceholder:
+    """The placeholder for `reason`; a view that failed is deleted."""
+    if failed is not None:
+        failed.deleteLater()
     return PositionView3DPlaceholder(reason, parent)
