@@ -279,7 +279,7 @@ class RawConsole(QWidget):
         header = self.view.horizontalHeader()
         header.setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
         width = self.view.fontMetrics().horizontalAdvance("0")
-        for column, chars in ((LINE, 8), (TIME, 13), (2, 4), (BYTES, 44), (MEANING, 40)):
+        for column, chars in ((LINE, 8), (TIME, 13), (2, 4), (BYTES, 34), (MEANING, 34)):
             header.resizeSection(column, width * chars + 12)
         header.setStretchLastSection(True)
         self.view.setToolTip(
