@@ -44,7 +44,13 @@ def parse_profile(
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ProfileError(f"{source}: not a parameter profile: {exc}") from None
+    except ValueError:  # an integer of over 4300 digits, which int() refuses
+        raise ProfileError(f"{source}: not a parameter profile: a number too long") from None
+    except RecursionError:
+        raise ProfileError(f"{source}: not a parameter profile: nested too deeply") from None
     named = data.get("protocol")
+    if named is not None and not isinstance(named, str):
+        raise ProfileError(f"{source}: protocol must be a name in quotes")
     if named is not None and named != protocol:
         raise ProfileError(f"{source}: a profile for {named!r}, not for {protocol!r}")
     unknown_keys = sorted(set(data) - {"protocol", "parameters"})
@@ -67,6 +73,10 @@ def parse_profile(
             parameter.to_wire(value)
         except BadInput as exc:
             raise ProfileError(f"{where}: {exc}") from None
+        except (OverflowError, ValueError):  # an integer too large for a float, or to print
+            raise ProfileError(
+                f"{where}: {name}: not a number the device takes ({parameter.range_text()})"
+            ) from None
         values[name] = float(value)
     return values
 

@@ -11,6 +11,7 @@ import csv
 import io
 import json
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -44,6 +45,8 @@ def _point(values: list[str | float], where: str) -> ProgramPoint:
             number = float(value)
         except (TypeError, ValueError):
             raise ProgramError(f"{where}: {name} {value!r} is not a number") from None
+        except OverflowError:  # a JSON integer too large for a float
+            raise ProgramError(f"{where}: {name} is not a finite float32 number") from None
         if not math.isfinite(number) or abs(number) > FLOAT32_MAX:
             raise ProgramError(f"{where}: {name} {value!r} is not a finite float32 number")
         numbers.append(number)
@@ -54,7 +57,14 @@ def _point(values: list[str | float], where: str) -> ProgramPoint:
 
 def parse_csv(text: str, source: str = "program") -> list[ProgramPoint]:
     """Points from CSV text with an `x,y,z,speed` header."""
-    rows = csv.reader(io.StringIO(text))
+    rows = csv.reader(io.StringIO(text, newline=""))  # csv itself takes CR, LF and CR LF
+    try:
+        return _csv_points(rows, source)
+    except csv.Error as exc:  # a field over csv's 128 KiB limit
+        raise ProgramError(f"{source} line {rows.line_num}: not CSV: {exc}") from None
+
+
+def _csv_points(rows: Iterator[list[str]], source: str) -> list[ProgramPoint]:
     header: list[str] | None = None
     points: list[ProgramPoint] = []
     for number, row in enumerate(rows, start=1):
@@ -87,6 +97,10 @@ def parse_json(text: str, source: str = "program") -> list[ProgramPoint]:
         data = json.loads(text)
     except json.JSONDecodeError as exc:
         raise ProgramError(f"{source} line {exc.lineno}: not JSON ({exc.msg})") from None
+    except ValueError:  # an integer of over 4300 digits, which int() refuses
+        raise ProgramError(f"{source}: not JSON the panel reads (a number too long)") from None
+    except RecursionError:
+        raise ProgramError(f"{source}: not JSON the panel reads (nested too deeply)") from None
     points = data.get("points") if isinstance(data, dict) else None
     if not isinstance(points, list) or not points:
         raise ProgramError(f'{source}: no "points" list')

@@ -62,13 +62,18 @@ def escape(data: bytes) -> str:
 
 
 def compile_filter(pattern: str) -> re.Pattern[bytes] | None:
-    """A case-insensitive pattern over the spool's lines ("" → None); FilterError if invalid."""
+    """A case-insensitive pattern over the spool's lines, `^` and `$` at each line's ends
+    ("" → None); FilterError if invalid."""
     if not pattern:
         return None
     try:
-        return re.compile(pattern.encode("utf-8"), re.IGNORECASE)
+        return re.compile(pattern.encode("utf-8"), re.IGNORECASE | re.MULTILINE)
     except re.error as exc:
         raise FilterError(f"{pattern!r} is not a regular expression: {exc}") from None
+    except UnicodeEncodeError:  # a lone surrogate: no line of the spool can hold it
+        raise FilterError(f"{pattern!r} is not valid text") from None
+    except (OverflowError, RecursionError) as exc:  # a{4294967296}, thousands of nested groups
+        raise FilterError(f"{pattern[:40]!r}… is too large a regular expression: {exc}") from None
 
 
 @dataclass(frozen=True)
@@ -90,21 +95,25 @@ _CHUNK = 8 << 20  # bytes of the spool lowered at a time for a literal search
 _REGEX_SYNTAX = frozenset(b".^$*+?{}[]\\|()#")
 
 
-def _hit_starts(spool: mmap.mmap, begin: int, end: int, pattern: re.Pattern[bytes]) -> np.ndarray:
-    """Where the pattern matches in spool[begin:end]. A plain word (no regex syntax) is searched
-    case-sensitively in lowered chunks: IGNORECASE makes the engine step byte by byte, a
-    literal is found at memory-scan speed, about ten times faster."""
+def _hit_spans(
+    spool: mmap.mmap, begin: int, end: int, pattern: re.Pattern[bytes]
+) -> tuple[np.ndarray, np.ndarray]:
+    """Where the pattern matches in spool[begin:end] (starts, ends). A plain word (no regex
+    syntax) is searched case-sensitively in lowered chunks: IGNORECASE makes the engine step
+    byte by byte, a literal is found at memory-scan speed, about ten times faster."""
     text = pattern.pattern
     if any(byte in _REGEX_SYNTAX for byte in text):
-        hits = pattern.finditer(spool, begin, end)
-        return np.fromiter((hit.start() for hit in hits), dtype=np.int64)
+        spans = [hit.span() for hit in pattern.finditer(spool, begin, end)]
+        found = np.asarray(spans, dtype=np.int64).reshape(-1, 2)
+        return found[:, 0], found[:, 1]
     literal = re.compile(re.escape(text.lower()))
-    found: list[np.ndarray] = []
+    starts: list[np.ndarray] = []
     for start in range(begin, end, _CHUNK):
         chunk = spool[start : min(end, start + _CHUNK + len(text) - 1)].lower()
         hits = literal.finditer(chunk)
-        found.append(np.fromiter((start + hit.start() for hit in hits), dtype=np.int64))
-    return np.unique(np.concatenate(found)) if found else np.zeros(0, dtype=np.int64)
+        starts.append(np.fromiter((start + hit.start() for hit in hits), dtype=np.int64))
+    unique = np.unique(np.concatenate(starts)) if starts else np.zeros(0, dtype=np.int64)
+    return unique, unique + len(text)
 
 
 class _Columns:
@@ -422,6 +431,15 @@ class TrafficIndex:
                     if pattern.search(spool, int(offsets[line]), int(offsets[line + 1]) - 1)
                 ]
                 return np.asarray(keep, dtype=np.int64)
-            starts = _hit_starts(spool, begin, end, pattern)
-        hits = np.unique(np.searchsorted(offsets, starts, side="right") - 1)
+            starts, ends = _hit_spans(spool, begin, end, pattern)
+            first_line = np.searchsorted(offsets, starts, side="right") - 1
+            last_line = np.searchsorted(offsets, np.maximum(ends - 1, starts), side="right") - 1
+            inside = first_line == last_line  # a match across a line end belongs to neither:
+            doubtful = np.unique(np.concatenate((first_line[~inside], last_line[~inside])))
+            checked = [  # those lines are looked at alone (a match inside may have been eaten)
+                line
+                for line in doubtful.tolist()
+                if pattern.search(spool, int(offsets[line]), int(offsets[line + 1]) - 1)
+            ]
+        hits = np.unique(np.concatenate((first_line[inside], np.asarray(checked, np.int64))))
         return hits[np.isin(hits, lines, assume_unique=True)]

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from drivers.capabilities import Capabilities, Completion
 from drivers.client import Client
 from drivers.commands import Command, GetId, MoveBy, Raw
-from drivers.errors import BadInput, DeviceError
+from drivers.errors import BadInput, DeviceError, FrameError
 from drivers.events import ErrorReport, Event, Feedback, TextLine
 from drivers.framers.sysex import SysexFramer
 from drivers.protocols.base import Exchange, Point, Protocol, Setting
@@ -232,6 +232,8 @@ class FirmataProtocol(Protocol):
 
     def decode(self, frame: bytes) -> list[Event]:
         """Every Firmata message named; STRING_DATA as the board's own words."""
+        if not frame:
+            raise FrameError("an empty Firmata message")
         status = frame[0]
         if status == REPORT_VERSION and len(frame) == 3:
             return [Feedback("version", frame, f"Firmata protocol {frame[1]}.{frame[2]}")]

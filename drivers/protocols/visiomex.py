@@ -320,7 +320,7 @@ class VisiomexProtocol(Protocol):
     def describe_sent(self, frame: bytes) -> str:
         """A set or a move in words, e.g. `set pulley_diameter_x = 38.2 mm`."""
         text = frame.decode("latin-1")
-        if text.startswith("S") and text[1:3].isdigit() and text[3:9].isdigit():
+        if text.startswith("S") and text[1:3].isdecimal() and text[3:9].isdecimal():
             number = int(text[1:3])
             if number in BY_ID:
                 parameter = BY_ID[number]
