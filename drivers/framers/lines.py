@@ -33,6 +33,32 @@ class LineFramer(Framer):
             return self.max_length, buffer[: self.max_length]
         return 0, None
 
+    def split(self, buffer: bytes) -> tuple[list[bytes], bytes]:
+        """Every complete line in `buffer` and the rest, in one pass (as `decode` repeated, but
+        without copying the rest after each line: a flood's big reads stay linear)."""
+        frames: list[bytes] = []
+        position, size, limit = 0, len(buffer), self.max_length
+        while position < size:
+            start = position
+            while position < size and buffer[position] in b"\r\n":
+                position += 1
+            if position == size:
+                if buffer.endswith(b"\r"):  # maybe the first half of CRLF: wait for what follows
+                    position = max(size - 1, start)
+                break
+            cr = buffer.find(b"\r", position, position + limit)
+            lf = buffer.find(b"\n", position, position + limit)
+            end = cr if lf < 0 else lf if cr < 0 else min(cr, lf)
+            if end >= 0:
+                frames.append(buffer[position:end])
+                position = end
+            elif size - position >= limit:
+                frames.append(buffer[position : position + limit])
+                position += limit
+            else:
+                break
+        return frames, buffer[position:]
+
     def encode(self, payload: bytes) -> bytes:
         """Append the terminator."""
         return payload + self.terminator
