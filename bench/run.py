@@ -106,11 +106,16 @@ def bench_move_overhead(moves: int) -> dict[str, float]:
         for i in range(moves):
             motion.move_to(i % 10, 0, 0)
         seconds = time.perf_counter() - start
+        before = len(written)
+        for i in range(moves):
+            motion.move_by(0.1 if i % 2 else -0.1, 0, 0)  # small jogs, one after another
+        jog_commands = len(written) - before
     finally:
         link.close()
     return {
         "moves": moves,
-        "commands_per_move": len(written) / moves,
+        "commands_per_move": before / moves,
+        "commands_per_jog": jog_commands / moves,
         "ms_per_move": seconds / moves * 1000,
     }
 
@@ -204,6 +209,9 @@ def main() -> int:
         "bridge": bench_bridge(400 if options.quick else 2000),
     }
     results["console_lines_per_s"] = results["console"]["console_lines_per_s"]
+    trips = results["round_trips"]
+    results["wire_efficiency_coxiris"] = trips["wire_time_ms"] / trips["pty_median_ms"]
+    results["commands_per_jog"] = results["move_overhead"]["commands_per_jog"]
     results["gui_max_stall_ms"] = results["console"]["flood_max_stall_ms"]
     if options.json:
         print(json.dumps(results, indent=None))
