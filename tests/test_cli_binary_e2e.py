@@ -10,94 +10,26 @@ from __future__ import annotations
 
 import json
 import math
-import re
 import struct
-import subprocess
-import sys
-import time
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
 
-from tests.simproc import ROOT, SimProcess
+from tests.e2e_support import (
+    Run,
+    device_received,
+    device_sent,
+    motionctl,
+    received,
+    sent,
+    traffic,
+)
+from tests.simproc import SimProcess
 
 pytestmark = pytest.mark.usefixtures("settings_file")  # motionctl writes the settings
 
-# One hexdump line of drivers/traffic.py: `000001.022 TX   7B 7D ...<padded to 47>   {}..`.
-_DUMP_LINE = re.compile(r"(\d+\.\d{3}) (TX|RX)   (.{47})   ")
-_WIDTH = 16
 STAMP = 0.001  # the log's resolution
-
-
-@dataclass(frozen=True)
-class Record:
-    """One write or read of a link, as a hexdump shows it."""
-
-    time: float
-    direction: str
-    data: bytes
-
-
-def traffic(log: Path) -> list[Record]:
-    """The log's records, rebuilt from the hex columns (a long record spans full lines with one
-    stamp; a new stamp, a new direction or a short line ends it)."""
-    if not log.exists():
-        return []
-    records: list[Record] = []
-    open_record = False
-    for line in log.read_text(encoding="utf-8").splitlines():
-        match = _DUMP_LINE.match(line)
-        assert match, f"not a hexdump line: {line!r}"
-        stamp, direction, hexes = float(match[1]), match[2], match[3]
-        data = bytes(int(h, 16) for h in hexes.split())
-        last = records[-1] if records else None
-        if open_record and last and last.time == stamp and last.direction == direction:
-            records[-1] = Record(stamp, direction, last.data + data)
-        else:
-            records.append(Record(stamp, direction, data))
-        open_record = len(data) == _WIDTH
-    return records
-
-
-def sent(log: Path) -> list[Record]:
-    """What motionctl wrote."""
-    return [r for r in traffic(log) if r.direction == "TX"]
-
-
-def received(log: Path) -> list[Record]:
-    """What motionctl read."""
-    return [r for r in traffic(log) if r.direction == "RX"]
-
-
-def device_received(record: Path) -> bytes:
-    """Everything the simulated device read (the RX records of its own hexdump)."""
-    return b"".join(r.data for r in traffic(record) if r.direction == "RX")
-
-
-def device_sent(record: Path) -> list[Record]:
-    """What the simulated device wrote."""
-    return [r for r in traffic(record) if r.direction == "TX"]
-
-
-@dataclass
-class Run:
-    """A finished motionctl run."""
-
-    returncode: int
-    stdout: str
-    stderr: str
-    seconds: float
-
-
-def motionctl(protocol: str, port: str, *args: str, log: Path | None = None) -> Run:
-    """Run `motionctl --port PORT --protocol PROTOCOL [--log LOG] ARGS`; how long it took too."""
-    command = [sys.executable, "-m", "app.cli", "--port", port, "--protocol", protocol]
-    command += [*(("--log", str(log)) if log is not None else ()), *args]
-    start = time.monotonic()
-    done = subprocess.run(command, capture_output=True, text=True, timeout=60, cwd=ROOT)
-    return Run(done.returncode, done.stdout, done.stderr, time.monotonic() - start)
 
 
 def pi(port: str, *args: str, log: Path | None = None) -> Run:

@@ -15,18 +15,16 @@ import json
 import math
 import re
 import struct
-import subprocess
-import sys
-import time
 from collections.abc import Callable, Iterator, Sequence
-from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
 
 from drivers.framers.stuffed import StuffedFramer
 from drivers.protocols.laser_codec import FLOAT, INT16, crc16, decode_instructions
-from tests.simproc import ROOT, SimProcess
+from tests import e2e_support
+from tests.e2e_support import Record, Run, stream, traffic
+from tests.simproc import SimProcess
 
 pytestmark = pytest.mark.usefixtures("settings_file")  # motionctl reads and writes the settings
 
@@ -34,8 +32,6 @@ MOVE_LINEAR, GO_HOME = 0x01, 0x03
 GET_POSITION, GET_STATUS, SET_HOME, STOP, GET_ID = 0x10, 0x11, 0x12, 0x13, 0x14
 SEQUENCE, ERROR = 0x20, 0x7F
 
-# One hexdump line of drivers/traffic.py: `000001.022 TX   EB 90 ...<padded to 47>   ....`.
-_DUMP_LINE = re.compile(r"(\d+\.\d{3}) (TX|RX)   (.{47})   ")
 STAMP = 0.001  # the log's resolution
 
 
@@ -61,31 +57,10 @@ GET_ID_FRAME = frame_of(bytes((GET_ID,)))
 assert frame_of(bytes((GET_POSITION,))) == GET_POSITION_FRAME
 
 
-@dataclass(frozen=True)
-class Line:
-    """One line of a hexdump: its stamp, direction and bytes."""
-
-    time: float
-    direction: str
-    data: bytes
-
-
-def dump_lines(log: Path) -> list[Line]:
-    """Every line of a hexdump (missing file: none)."""
-    if not log.exists():
-        return []
-    lines = []
-    for text in log.read_text(encoding="utf-8").splitlines():
-        match = _DUMP_LINE.match(text)
-        assert match, f"not a hexdump line: {text!r}"
-        data = bytes(int(h, 16) for h in match[3].split())
-        lines.append(Line(float(match[1]), match[2], data))
-    return lines
-
-
-def stream(log: Path, direction: str) -> bytes:
-    """All the bytes of one direction, in order."""
-    return b"".join(line.data for line in dump_lines(log) if line.direction == direction)
+def dump_lines(log: Path) -> list[Record]:
+    """The log's records (once read line by line: the same here, where every write is a frame
+    shorter than a 16-byte hexdump line)."""
+    return traffic(log)
 
 
 def frames(data: bytes) -> list[bytes]:
@@ -126,23 +101,9 @@ def moves_of(frame: bytes) -> list[tuple[float, ...]]:
     return [tuple(float(v) for v in i.values(FLOAT)) for i in instructions]
 
 
-@dataclass
-class Run:
-    """A finished motionctl run."""
-
-    returncode: int
-    stdout: str
-    stderr: str
-    seconds: float
-
-
 def motionctl(port: str, *args: str, log: Path | None = None, timeout: float = 60) -> Run:
     """Run `motionctl --port PORT --protocol laser-frame [--log LOG] ARGS`; how long it took."""
-    command = [sys.executable, "-m", "app.cli", "--port", port, "--protocol", "laser-frame"]
-    command += [*(("--log", str(log)) if log is not None else ()), *args]
-    start = time.monotonic()
-    done = subprocess.run(command, capture_output=True, text=True, timeout=timeout, cwd=ROOT)
-    return Run(done.returncode, done.stdout, done.stderr, time.monotonic() - start)
+    return e2e_support.motionctl("laser-frame", port, *args, log=log, timeout=timeout)
 
 
 def ok(run: Run) -> Run:

@@ -11,11 +11,7 @@ from __future__ import annotations
 import itertools
 import json
 import re
-import subprocess
-import sys
-import time
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
@@ -24,81 +20,22 @@ from drivers.param_profile import format_profile
 from drivers.protocols.visiomex import VisiomexProtocol
 from drivers.protocols.visiomex_params import PARAMETERS
 from drivers.traffic import Traffic, hexdump_lines
-from tests.simproc import ROOT, SimProcess
+from tests import e2e_support
+from tests.e2e_support import Run, device_received, sent, stream, traffic
+from tests.simproc import SimProcess
 
 pytestmark = pytest.mark.usefixtures("settings_file")  # motionctl writes the settings
 SET_SECONDS = 1.0  # the firmware's silence window: no reply, and no second packet, sooner
 
-# One hexdump line of drivers/traffic.py: `000001.022 TX   53 30 ...<padded to 47>   S0...`.
-_DUMP_LINE = re.compile(r"(\d+\.\d{3}) (TX|RX)   (.{47})   ")
-_WIDTH = 16
-
-
-@dataclass(frozen=True)
-class Record:
-    """One write or read of motionctl's link, as its log shows it."""
-
-    time: float
-    direction: str
-    data: bytes
-
-
-def traffic(log: Path) -> list[Record]:
-    """The log's records, rebuilt from the hex columns.
-
-    A record longer than 16 bytes spans several lines with the same stamp, every one but the last
-    full; a new record starts with a new stamp, a new direction, or after a short line.
-    """
-    if not log.exists():
-        return []
-    records: list[Record] = []
-    open_record = False
-    for line in log.read_text(encoding="utf-8").splitlines():
-        match = _DUMP_LINE.match(line)
-        assert match, f"not a hexdump line: {line!r}"
-        stamp, direction, hexes = float(match[1]), match[2], match[3]
-        data = bytes(int(h, 16) for h in hexes.split())
-        last = records[-1] if records else None
-        if open_record and last and last.time == stamp and last.direction == direction:
-            records[-1] = Record(stamp, direction, last.data + data)
-        else:
-            records.append(Record(stamp, direction, data))
-        open_record = len(data) == _WIDTH
-    return records
-
-
-def sent(log: Path) -> list[Record]:
-    """The packets motionctl wrote (each write is one packet: Visiomex has no terminator)."""
-    return [r for r in traffic(log) if r.direction == "TX"]
-
 
 def received(log: Path) -> bytes:
-    """Everything motionctl read."""
-    return b"".join(r.data for r in traffic(log) if r.direction == "RX")
-
-
-def device_received(record: Path) -> bytes:
-    """Everything the simulated device read (the RX records of its own hexdump)."""
-    return b"".join(r.data for r in traffic(record) if r.direction == "RX")
-
-
-@dataclass
-class Run:
-    """A finished motionctl run."""
-
-    returncode: int
-    stdout: str
-    stderr: str
-    seconds: float
+    """Everything motionctl read, as bytes (the binary tests' `received` gives records)."""
+    return stream(log, "RX")
 
 
 def motionctl(port: str, *args: str, log: Path | None = None, options: tuple[str, ...] = ()) -> Run:
     """Run `motionctl --port PORT --protocol visiomex [OPTIONS] ARGS`; how long it took too."""
-    command = [sys.executable, "-m", "app.cli", "--port", port, "--protocol", "visiomex"]
-    command += [*options, *(("--log", str(log)) if log is not None else ()), *args]
-    start = time.monotonic()
-    done = subprocess.run(command, capture_output=True, text=True, timeout=90, cwd=ROOT)
-    return Run(done.returncode, done.stdout, done.stderr, time.monotonic() - start)
+    return e2e_support.motionctl("visiomex", port, *args, log=log, options=options, timeout=90)
 
 
 def packet(parameter_id: int, wire: int) -> bytes:
