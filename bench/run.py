@@ -21,7 +21,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from bench import bridge_latency  # noqa: E402
+from bench import bridge_latency, startup  # noqa: E402
 from bench.laser_stream import bench_laser_stream  # noqa: E402
 from bench.motionsim import motionsim  # noqa: E402
 from bench.visiomex_write import bench_visiomex_write  # noqa: E402
@@ -207,11 +207,13 @@ def main() -> int:
             3.0 if options.quick else 10.0,
         ),
         "bridge": bench_bridge(400 if options.quick else 2000),
+        "startup": startup.measure(3 if options.quick else 5),
     }
     results["console_lines_per_s"] = results["console"]["console_lines_per_s"]
     trips = results["round_trips"]
     results["wire_efficiency_coxiris"] = trips["wire_time_ms"] / trips["pty_median_ms"]
     results["commands_per_jog"] = results["move_overhead"]["commands_per_jog"]
+    results["startup_ratio"] = results["startup"]["startup_ratio"]
     results["gui_max_stall_ms"] = results["console"]["flood_max_stall_ms"]
     if options.json:
         print(json.dumps(results, indent=None))
