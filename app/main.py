@@ -11,7 +11,6 @@ from collections.abc import Sequence
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication
 
-from app.gc_main_thread import MainThreadCollector
 from app.main_window import MainWindow
 from app.settings import DEFAULT_PORT, DEFAULT_PROTOCOL
 from drivers.registry import get_protocol_class, protocol_names
@@ -72,7 +71,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     share_opengl_contexts()  # before the QApplication exists
     app = QApplication.instance() or QApplication(sys.argv[:1])
-    MainThreadCollector(app)  # no collection in the worker's thread (kept by its parent)
     app.setApplicationName("Motion Panel")
     window = MainWindow()
     signal.signal(signal.SIGINT, lambda *_: window.close())

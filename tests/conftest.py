@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import gc
 import os
 from collections.abc import Iterator
 
@@ -54,15 +53,6 @@ def sim_link(request: pytest.FixtureRequest) -> Iterator[tuple[Link, Recorder]]:
     link.listeners.append(recorder)
     yield link, recorder
     link.close()
-
-
-@pytest.fixture(autouse=True)
-def _garbage_in_the_gui_thread() -> Iterator[None]:
-    """As the application does (app/gc_main_thread.py): no automatic collection, which could run
-    in a worker's thread and destroy a test's Qt objects there; collected here after each test."""
-    gc.disable()
-    yield
-    gc.collect()
 
 
 @pytest.fixture(autouse=True)
