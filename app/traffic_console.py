@@ -93,7 +93,7 @@ class RawConsole(QWidget):
         self._pending: list[tuple[float, str, bytes, float | None]] = []
         self._shown_at = 0.0  # perf_counter of the last update of the table
         self.index = TrafficIndex()
-        self._model = TrafficModel(self.index)
+        self._model = TrafficModel(self.index, self)  # goes with the console, never before it
         self._origin_set = False
         self._shown_until = 0  # lines up to here have been through the filter
         self._follow = True

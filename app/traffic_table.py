@@ -6,7 +6,7 @@ import math
 import time
 
 import numpy as np
-from PySide6.QtCore import QAbstractTableModel, QModelIndex, QPersistentModelIndex, Qt
+from PySide6.QtCore import QAbstractTableModel, QModelIndex, QObject, QPersistentModelIndex, Qt
 from PySide6.QtGui import QBrush, QColor, QFont
 
 from drivers.traffic_index import TrafficIndex, TrafficLine, escape
@@ -73,8 +73,8 @@ def reply_text(line: TrafficLine) -> str:
 class TrafficModel(QAbstractTableModel):
     """Rows are line numbers of the index (numpy array); cells are read from the spool."""
 
-    def __init__(self, index: TrafficIndex) -> None:
-        super().__init__()
+    def __init__(self, index: TrafficIndex, parent: QObject | None = None) -> None:
+        super().__init__(parent)
         self.index_ = index
         self.rows = np.zeros(0, dtype=np.int64)
         self.mode = TEXT
