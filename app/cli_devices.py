@@ -40,6 +40,9 @@ class DeviceUsageError(BadInput):
     """A device command's arguments are wrong (exit 2, nothing sent)."""
 
 
+_checked_programs: dict[str, list[ProgramPoint]] = {}  # `run FILE`: read before the port opened
+
+
 def _whole(text: str, what: str) -> int:
     value = parse_number(text, what)
     if value != int(value):
@@ -140,7 +143,8 @@ def check_device_offline(protocol: Protocol, command: str, args: list[str]) -> N
         if len(args) != 1:
             raise DeviceUsageError(f"usage: {usage}")
         low, high = protocol.capabilities.speed_range or (0.0, float("inf"))
-        for index, point in enumerate(read_program(args[0]), start=1):
+        points = _checked_programs[args[0]] = read_program(args[0])
+        for index, point in enumerate(points, start=1):
             if not low <= point.speed <= high:
                 raise DeviceUsageError(
                     f"{args[0]} point {index}: speed {point.speed:g} mm/s refused: "
@@ -184,6 +188,9 @@ def run_device(motion: Motion, command: str, args: list[str]) -> dict[str, Any]:
         client.execute(cmd.Stop())
         return {"ok": True}
     if command == "run":
-        return _run_program(motion, read_program(args[0]))
+        # The program read and checked before the port opened: never read again once start-up
+        # commands have gone out (a file changed meanwhile would fail with traffic sent).
+        points = _checked_programs.pop(args[0], None) or read_program(args[0])
+        return _run_program(motion, points)
     report = motion.arc(_arc(args))
     return {"position": [report.x, report.y, report.z], "measured": False}

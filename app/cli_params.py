@@ -16,6 +16,10 @@ from drivers.protocols.base import Protocol
 
 SECONDS_PER_PACKET = 1.05  # a Visiomex reply comes 1 s after the packet; used for "time left"
 Remember = Callable[[dict[str, float]], None]
+# The profiles `param write` read and checked before the port was opened, by (file, protocol):
+# what is written, so the file is read once and before anything is sent (not read again after the
+# link is open and the start-up commands have gone, where a file changed meanwhile could fail).
+_checked: dict[tuple[str, str], dict[str, float]] = {}
 
 
 def param_rows(protocol: Protocol, last: dict[str, float]) -> list[dict[str, Any]]:
@@ -59,7 +63,7 @@ def check_param_offline(protocol: Protocol, args: list[str]) -> None:
         parameter = protocol.parameter(args[1])
         parameter.to_wire(_value(parameter, args[2]))
     elif args[0] == "write":
-        read_profile(args[1], protocol.parameters, protocol.name)
+        _checked[args[1], protocol.name] = read_profile(args[1], protocol.parameters, protocol.name)
 
 
 def _value(parameter: Parameter, text: str) -> float:
@@ -100,7 +104,9 @@ def run_param(motion: Motion, args: list[str], remember: Remember) -> dict[str, 
         parameter = protocol.parameter(args[1])
         values = {parameter.name: _value(parameter, args[2])}
     else:
-        values = read_profile(args[1], protocol.parameters, protocol.name)
+        values = _checked.pop((args[1], protocol.name), None) or read_profile(
+            args[1], protocol.parameters, protocol.name
+        )
     written = []
     started = time.monotonic()
     for index, (name, value) in enumerate(values.items(), start=1):

@@ -1,7 +1,9 @@
 """File → Open log: a traffic log (ours or a pyserial spy:// capture) browsed decoded, offline.
 
 The file is read and decoded in a background thread (no Qt there); the window gets the finished
-index through a queued signal and shows it in a console with every filter, and a timeline.
+index through a queued signal and shows it in a console with every filter, and a timeline. A log
+may be hundreds of MiB: it is read a chunk at a time and its records go straight to the index
+(a few dozen bytes a line in memory); the reader's checks and limits are drivers/files.py's.
 """
 
 from __future__ import annotations
@@ -9,6 +11,7 @@ from __future__ import annotations
 import logging
 import re
 import threading
+from itertools import islice
 from pathlib import Path
 
 from PySide6.QtCore import Qt, Signal, Slot
@@ -28,7 +31,7 @@ from PySide6.QtWidgets import (
 from app.traffic_console import RawConsole
 from app.traffic_feed import TimelineFeed
 from drivers.errors import MotionError
-from drivers.log_reader import LogRecord, read_any_log
+from drivers.log_reader import LogRecord, open_any_log
 from drivers.registry import create_protocol, protocol_names
 from drivers.traffic_index import TrafficIndex
 from widgets.traffic_timeline import TrafficTimeline
@@ -36,6 +39,8 @@ from widgets.traffic_timeline import TrafficTimeline
 log = logging.getLogger(__name__)
 
 RAW = "(undecoded)"
+LOOKAHEAD = 10_000  # records searched for the connection note (a session log's second line)
+BATCH = 65_536  # records handed to the index at a time
 _CONNECTION = re.compile(r"(?:connected to|bridge) .*\(([\w-]+)(?: ([\w-]+))?[,)]")
 
 
@@ -127,16 +132,22 @@ class LogViewer(QMainWindow):
 
     def _read(self, path: Path, chosen: str | None) -> None:
         """In the reader thread: the records, the protocol, the decoded index (no Qt here)."""
+        index: TrafficIndex | None = None
         try:
-            kind, records = read_any_log(path)
-            found = detect_protocol(records)
+            kind, records = open_any_log(path)
+            batch = list(islice(records, LOOKAHEAD))
+            found = detect_protocol(batch)
             name, variant = (
                 (chosen, "") if chosen is not None else (found or (self._default_protocol, ""))
             )
             protocol = create_protocol(name, variant or None) if name and name != RAW else None
             index = TrafficIndex(protocol)
-            index.add_records(records)
+            while batch:
+                index.add_records(batch)
+                batch = list(islice(records, BATCH))
         except (MotionError, LookupError, OSError) as exc:
+            if index is not None:
+                index.close()
             self._loaded.emit(str(exc))
             return
         self._loaded.emit((path, kind, name or RAW, variant, index))

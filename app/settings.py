@@ -2,27 +2,115 @@
 
 from __future__ import annotations
 
+import atexit
+import contextlib
+import logging
 import os
+import shutil
+import sys
+import tempfile
+from pathlib import Path
 from urllib.parse import quote, urlsplit
 
-from PySide6.QtCore import QSettings
+from PySide6.QtCore import QSettings, QStandardPaths
 
-from drivers.errors import BadInput
+from drivers.errors import BadFile, BadInput
+from drivers.files import SETTINGS_MAX_BYTES, check_user_file
 from drivers.registry import get_protocol_class
 from drivers.travel import TravelLimits, parse_travel
+
+log = logging.getLogger(__name__)
 
 ORGANISATION = "MotionPanel"
 APPLICATION = "motionpanel"
 DEFAULT_PORT = "sim://coxiris"
 DEFAULT_PROTOCOL = "coxiris"
+PROBLEM = "motionpanelSettingsProblem"  # the property of a stand-in: why the file was not used
+_STATUS = {
+    QSettings.Status.AccessError: "it cannot be read",
+    QSettings.Status.FormatError: "it is not an INI file Qt can read",
+}
+_stand_ins: list[QSettings] = []  # synced at exit, before their folder is removed
+_scratch: list[str] = []  # the stand-ins' folder, once made
+_warned: set[str] = set()
+# Files Qt found malformed, by name: (size, modification time), why. Qt keeps a file it has read
+# and does not say again that it is malformed, so until it changes it is not handed to Qt again.
+_malformed: dict[str, tuple[tuple[int, int], str]] = {}
 
 
 def open_settings() -> QSettings:
-    """The application's settings; MOTIONPANEL_SETTINGS=FILE keeps them in an INI file instead."""
+    """The application's settings; MOTIONPANEL_SETTINGS=FILE keeps them in an INI file instead.
+
+    A settings file that is not a regular file (a FIFO, a device, a directory), is larger than
+    SETTINGS_MAX_BYTES, cannot be read or is not INI is left as it is: the settings start from
+    the defaults, in a scratch file, with a warning logged once; `settings_problem` says why."""
     path = os.environ.get("MOTIONPANEL_SETTINGS")
+    for file in [Path(path)] if path else _native_files():
+        if not os.path.lexists(file):
+            continue
+        try:
+            info = check_user_file(file, SETTINGS_MAX_BYTES, "settings file", BadFile)
+        except BadFile as exc:
+            return _stand_in(str(exc))
+        seen = _malformed.get(os.path.abspath(file))
+        if seen is not None and seen[0] == (info.st_size, info.st_mtime_ns):
+            return _stand_in(seen[1])
     if path:
-        return QSettings(path, QSettings.Format.IniFormat)
-    return QSettings(ORGANISATION, APPLICATION)
+        settings = QSettings(path, QSettings.Format.IniFormat)
+    else:
+        settings = QSettings(ORGANISATION, APPLICATION)
+    why = _STATUS.get(settings.status())
+    if why is not None:
+        problem = f"cannot read the settings file {settings.fileName()}: {why}"
+        name = os.path.abspath(settings.fileName())
+        with contextlib.suppress(OSError):
+            info = os.stat(name)
+            _malformed[name] = ((info.st_size, info.st_mtime_ns), problem)
+        return _stand_in(problem)
+    return settings
+
+
+def settings_problem(settings: QSettings) -> str:
+    """Why these settings are a stand-in with the defaults ("" when they are the user's own)."""
+    problem = settings.property(PROBLEM)
+    return problem if isinstance(problem, str) else ""
+
+
+def _native_files() -> list[Path]:
+    """The INI files QSettings(ORGANISATION, APPLICATION) reads on Linux and the other Unixes
+    (the user's, then the system's); none elsewhere, where the settings are not such a file."""
+    if sys.platform in ("win32", "darwin"):
+        return []
+    folders = QStandardPaths.standardLocations(
+        QStandardPaths.StandardLocation.GenericConfigLocation
+    )
+    return [
+        Path(folder) / name
+        for folder in folders
+        for name in (f"{ORGANISATION}/{APPLICATION}.conf", f"{ORGANISATION}.conf")
+    ]
+
+
+def _stand_in(problem: str) -> QSettings:
+    """Settings with the defaults, in a scratch file of this process's, for a file not used."""
+    if problem not in _warned:
+        _warned.add(problem)
+        log.warning("%s; starting from the default settings, and leaving it as it is", problem)
+    if not _scratch:
+        _scratch.append(tempfile.mkdtemp(prefix="motionpanel-settings-"))
+        atexit.register(_remove_stand_ins)
+    file = Path(_scratch[0]) / f"defaults-{len(_stand_ins)}.ini"  # each starts from nothing
+    settings = QSettings(str(file), QSettings.Format.IniFormat)
+    settings.setProperty(PROBLEM, problem)
+    _stand_ins.append(settings)
+    return settings
+
+
+def _remove_stand_ins() -> None:
+    """At exit: the stand-ins written out (so they do not write again later), then removed."""
+    for settings in _stand_ins:
+        settings.sync()
+    shutil.rmtree(_scratch[0], ignore_errors=True)
 
 
 def read_str(settings: QSettings, key: str, default: str) -> str:

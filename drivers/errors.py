@@ -11,6 +11,12 @@ class BadInput(MotionError, ValueError):
     """A command or value the device would reject; refused before anything is sent."""
 
 
+class BadFile(BadInput):
+    """A file from others (a profile, a program, a log, the settings) refused whole: missing, not
+    a regular file, too large, not text, or malformed; says which file, the line where it can,
+    and why. Each reader has its own subclass (drivers/files.py reads them all)."""
+
+
 class DeviceError(MotionError):
     """The device answered, and its answer reports an error."""
 
@@ -25,6 +31,10 @@ class DeviceTimeout(CommunicationError, TimeoutError):
 
 class PortError(CommunicationError):
     """The port cannot be opened, or failed while in use."""
+
+
+class DeviceRestarted(CommunicationError):
+    """The device restarted (its boot banner came again): what it held in RAM is lost."""
 
 
 class GarbledReply(CommunicationError):

@@ -3,24 +3,28 @@
 Our format: `SSSSSS.mmm TX   48 45 4C 4C 4F   HELLO`, one line per 16 bytes, a record's lines
 sharing their stamp and direction; `#` lines are notes. A file that is not such a log is refused
 with the line that gave it away. `read_any_log` also reads pyserial spy:// captures (spy_log).
+A log may be hundreds of MiB: it is read a chunk at a time (drivers/files.py: at most
+`LOG_MAX_BYTES`, lines of at most `LOG_MAX_LINE` characters), and `open_any_log` hands its
+records over as they are read, for a caller that keeps them more compactly than a list.
 """
 
 from __future__ import annotations
 
+import itertools
 import re
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from drivers.errors import BadInput
-from drivers.files import read_text
+from drivers.errors import BadFile
+from drivers.files import LOG_MAX_BYTES, LOG_MAX_LINE, read_lines
 
-MAX_BYTES = 512 * 1024 * 1024
 _LINE = re.compile(r"^(\d{6,}\.\d{3}) (TX|RX)   ((?:[0-9A-F]{2} ){0,15}[0-9A-F]{2})(.*)$")
 _HEX_FIELD = 47  # 16 bytes as hex; shorter rows are padded to it before the text column
 _NOTE = re.compile(r"^(?:(\d{6,}\.\d{3}) )?# ?(.*)$")
 
 
-class LogError(BadInput):
+class LogError(BadFile):
     """A file that cannot be read as a traffic log (which file, which line, why)."""
 
 
@@ -48,16 +52,18 @@ def _text_column_fits(hexes: str, rest: str) -> bool:
 
 def parse_log(text: str, source: str = "log") -> list[LogRecord]:
     """The records of a log's text; LogError for text that is not a traffic log."""
-    records: list[LogRecord] = []
+    return list(log_records(text.splitlines(), source))
+
+
+def log_records(lines: Iterable[str], source: str) -> Iterator[LogRecord]:
+    """The records of a log's lines, each as soon as it is complete; LogError naming the line
+    for one that is not a traffic log's, or at the end for a log without traffic."""
     parts: list[bytes] = []  # the open record's lines, joined when it ends
     key: tuple[float, str] | None = None
     full = False  # the open record's last line had 16 bytes: the next may continue it
-
-    def close() -> None:
-        if key is not None:
-            records.append(LogRecord(key[0], key[1], b"".join(parts)))
-
-    for number, line in enumerate(text.splitlines(), start=1):
+    last = 0.0  # the time of the latest record, which a note without its own takes
+    traffic = False
+    for number, line in enumerate(lines, start=1):
         if not line.strip():
             continue
         hit = _LINE.match(line)
@@ -65,49 +71,60 @@ def parse_log(text: str, source: str = "log") -> list[LogRecord]:
             note = _NOTE.match(line)
             if note is None:
                 raise LogError(f"{source} line {number}: not a traffic log line: {line[:60]!r}")
-            close()
+            if key is not None:
+                yield LogRecord(key[0], key[1], b"".join(parts))
             key, parts, full = None, [], False
-            stamp = (
-                float(note.group(1)) if note.group(1) else (records[-1].time if records else 0.0)
-            )
-            records.append(LogRecord(stamp, "", b"", note.group(2)))
+            last = float(note.group(1)) if note.group(1) else last
+            yield LogRecord(last, "", b"", note.group(2))
             continue
         stamp, direction = float(hit.group(1)), hit.group(2).lower()
         data = bytes.fromhex(hit.group(3))
         if not (full and key == (stamp, direction)):  # else: the record's next line
-            close()
-            key, parts = (stamp, direction), []
+            if key is not None:
+                yield LogRecord(key[0], key[1], b"".join(parts))
+            key, parts, last, traffic = (stamp, direction), [], stamp, True
         parts.append(data)
         full = len(data) == 16
-    close()
-    if not any(record.direction for record in records):
+    if key is not None:
+        yield LogRecord(key[0], key[1], b"".join(parts))
+    if not traffic:
         raise LogError(f"{source}: no traffic in it (not a Motion Panel log)")
-    return records
+
+
+def _lines(file: Path) -> Iterator[str]:
+    return read_lines(file, LOG_MAX_BYTES, LOG_MAX_LINE, "traffic log", LogError)
 
 
 def read_log(path: str | Path) -> list[LogRecord]:
-    """A log file's records; LogError for a missing, binary, huge or foreign file."""
+    """A log file's records; LogError for a missing, special, binary, huge or foreign file."""
     file = Path(path)
-    text = read_text(file, MAX_BYTES, "traffic log", LogError)
-    return parse_log(text, str(file))
+    return list(log_records(_lines(file), str(file)))
 
 
 def read_any_log(path: str | Path) -> tuple[str, list[LogRecord]]:
     """A log's format (`motionpanel` or `pyserial-spy`, told by its content) and its records."""
+    log_format, records = open_any_log(path)
+    return log_format, list(records)
+
+
+def open_any_log(path: str | Path) -> tuple[str, Iterator[LogRecord]]:
+    """A log's format, told by its first line that is not blank, and its records as the file is
+    read on (LogError where the reading reaches a line that is wrong)."""
     from drivers import spy_log  # spy_log builds on this module's records and errors
 
     file = Path(path)
-    text = read_text(file, MAX_BYTES, "traffic log", LogError)
-    for number, line in enumerate(text.splitlines(), start=1):
+    lines = _lines(file)
+    for blanks, line in enumerate(lines):
         if not line.strip():
             continue
+        again = itertools.chain(itertools.repeat("", blanks), (line,), lines)
         if spy_log.is_spy_line(line):  # first: our line pattern would take spy's offsets as bytes
-            return "pyserial-spy", spy_log.parse_spy(text, str(file))
+            return "pyserial-spy", spy_log.spy_records(again, str(file))
         if _LINE.match(line) or _NOTE.match(line):
-            return "motionpanel", parse_log(text, str(file))
+            return "motionpanel", log_records(again, str(file))
         raise LogError(
-            f"{file}: not a Motion Panel log nor a pyserial spy:// capture: line {number} is not "
-            f"a traffic log line: {line[:60]!r}; for spy://, {spy_log.HEXDUMP_HINT}"
+            f"{file}: not a Motion Panel log nor a pyserial spy:// capture: line {blanks + 1} is "
+            f"not a traffic log line: {line[:60]!r}; for spy://, {spy_log.HEXDUMP_HINT}"
         )
     raise LogError(
         f"{file}: empty, not a Motion Panel log nor a pyserial spy:// capture "

@@ -9,7 +9,8 @@
 
 Only `protocol` and the `[parameters]` table are read; values are numbers; names are the
 protocol's. A file is data: nothing in it is executed, and it is refused whole (nothing sent) if
-any line is wrong, larger than `MAX_BYTES`, or not UTF-8 text.
+any line is wrong, if it is not a regular file of at most `PROFILE_MAX_BYTES` (drivers/files.py),
+or not UTF-8 text.
 """
 
 from __future__ import annotations
@@ -18,15 +19,14 @@ import re
 import tomllib
 from pathlib import Path
 
-from drivers.errors import BadInput
-from drivers.files import read_text
+from drivers.errors import BadFile, BadInput
+from drivers.files import PROFILE_MAX_BYTES, read_text
 from drivers.parameters import Parameter
 
-MAX_BYTES = 64 * 1024
 HEADER = "# Motion Panel parameter profile"
 
 
-class ProfileError(BadInput):
+class ProfileError(BadFile):
     """A profile file that cannot be used; says which file, and which line where it can."""
 
 
@@ -84,9 +84,10 @@ def parse_profile(
 def read_profile(
     path: str | Path, parameters: tuple[Parameter, ...], protocol: str
 ) -> dict[str, float]:
-    """A profile file's values; ProfileError for a missing, large, binary or malformed file."""
+    """A profile file's values; ProfileError for a missing, special, large, binary or malformed
+    file (nothing is sent: this only reads)."""
     file = Path(path)
-    text = read_text(file, MAX_BYTES, "profile", ProfileError)
+    text = read_text(file, PROFILE_MAX_BYTES, "profile", ProfileError)
     return parse_profile(text, parameters, protocol, str(file))
 
 

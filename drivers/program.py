@@ -2,7 +2,8 @@
 
 CSV: a header line `x,y,z,speed` (any order, case and spaces ignored), then one point per line;
 blank lines and lines starting with `#` are skipped. JSON: `{"points": [[x, y, z, speed], ...]}`.
-A file is data: it is refused whole, naming the line, if anything in it is wrong; nothing is sent.
+A file is data: it is refused whole, naming the line, if anything in it is wrong, or if it is not a
+regular file of at most `PROGRAM_MAX_BYTES` of UTF-8 text (drivers/files.py); nothing is sent.
 """
 
 from __future__ import annotations
@@ -15,16 +16,15 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from drivers.errors import BadInput
-from drivers.files import read_text
+from drivers.errors import BadFile
+from drivers.files import PROGRAM_MAX_BYTES, read_text
 
-MAX_BYTES = 64 * 1024 * 1024
 MAX_POINTS = 1_000_000
 FLOAT32_MAX = 3.4028234663852886e38
 COLUMNS = ("x", "y", "z", "speed")
 
 
-class ProgramError(BadInput):
+class ProgramError(BadFile):
     """A program file that cannot be used (which file, which line, why)."""
 
 
@@ -118,7 +118,7 @@ def read_program(path: str | Path) -> list[ProgramPoint]:
     """A program file's points (`.json`: the panel's JSON, anything else: CSV)."""
     file = Path(path)
     # a spreadsheet's "CSV UTF-8" starts with a BOM
-    text = read_text(file, MAX_BYTES, "program", ProgramError, "utf-8-sig")
+    text = read_text(file, PROGRAM_MAX_BYTES, "program", ProgramError, "utf-8-sig")
     if file.suffix.lower() == ".json":
         return parse_json(text, str(file))
     return parse_csv(text, str(file))

@@ -6,12 +6,15 @@ each other by offset, and may carry the call's colour escape (`&color`) in front
 Spy's TX is what the program wrote (our `tx`), its RX what it read. Control-line and buffer
 events (`RTS  active`, `Q-RX reset_input_buffer`, `RX   <empty>` with `&all`) become notes.
 Spy's `&raw` format runs the bytes of both directions together (and pyserial 3.5 cannot even
-write it to a file), so it is refused.
+write it to a file), so it is refused. Records are handed over as the capture is read (a call
+as soon as no later line can continue it), so a long capture needs no list of them.
 """
 
 from __future__ import annotations
 
 import re
+from collections import deque
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from drivers.log_reader import LogError, LogRecord
@@ -23,6 +26,7 @@ _EVENT = re.compile(r"^(-?\d+\.\d{3}) (Q-RX|Q-TX|BRK|RTS|DTR|CTS|DSR|RI|CD|RX) +
 _STAMPED = re.compile(r"^-?\d+\.\d{3} ")
 _HEX_WIDTH = 16 * 3 + 1  # 16 cells of `XX ` and the space after the eighth
 _SHOWN = {n: "." for n in (*range(0x20), *range(0x7F, 0x100))}  # the ASCII column's dots
+_WAITING_MAX = 4096  # entries kept behind a call still open before that call is taken as ended
 
 
 @dataclass
@@ -78,9 +82,26 @@ def _refusal(source: str, number: int, line: str) -> LogError:
 
 def parse_spy(text: str, source: str) -> list[LogRecord]:
     """The records of a spy:// hexdump capture; LogError naming the line for anything else."""
-    entries: list[_Call | LogRecord] = []
-    calls: dict[str, _Call] = {}  # each direction's latest call, which its next lines continue
-    for number, line in enumerate(text.splitlines(), start=1):
+    return list(spy_records(text.splitlines(), source))
+
+
+def _record(entry: _Call | LogRecord) -> LogRecord:
+    if isinstance(entry, _Call):
+        return LogRecord(entry.time, entry.direction, bytes(entry.data))
+    return entry
+
+
+def _is_open(entry: _Call | LogRecord, calls: dict[str, _Call]) -> bool:
+    return isinstance(entry, _Call) and calls.get(entry.direction) is entry
+
+
+def spy_records(lines: Iterable[str], source: str) -> Iterator[LogRecord]:
+    """The records of a capture's lines, in the order their first lines come, each as soon as it
+    is complete; LogError naming the line for one spy does not write."""
+    waiting: deque[_Call | LogRecord] = deque()  # in order; the first a call still open
+    calls: dict[str, _Call] = {}  # each direction's open call: its next lines may continue it
+    entries = traffic = False
+    for number, line in enumerate(lines, start=1):
         clean = _clean(line)
         if not clean:
             continue
@@ -91,27 +112,32 @@ def parse_spy(text: str, source: str) -> list[LogRecord]:
             if data is None:
                 raise _refusal(source, number, line)
             if offset == 0:
-                calls[direction] = _Call(stamp, direction, bytearray(data))
-                entries.append(calls[direction])
-                continue
-            call = calls.get(direction)
-            if call is None or offset % 16 or len(call.data) != offset:
-                raise LogError(
-                    f"{source} line {number}: bytes at offset {offset:#06x} of a "
-                    f"{direction.upper()} call whose earlier lines are missing"
-                )
-            call.data += data
-            continue
-        event = _EVENT.match(clean)
-        if event is None or (event.group(2) == "RX" and event.group(3) != "<empty>"):
-            raise _refusal(source, number, line)
-        stamp_text, label, value = event.groups()
-        entries.append(LogRecord(float(stamp_text), "", b"", f"{label} {value}"))
-    if entries and not calls:
+                call = calls[direction] = _Call(stamp, direction, bytearray(data))
+                waiting.append(call)
+            else:
+                call = calls.get(direction)
+                if call is None or offset % 16 or len(call.data) != offset:
+                    raise LogError(
+                        f"{source} line {number}: bytes at offset {offset:#06x} of a "
+                        f"{direction.upper()} call whose earlier lines are missing"
+                    )
+                call.data += data
+            if len(call.data) % 16:  # a short line ends its call
+                del calls[direction]
+            traffic = True
+        else:
+            event = _EVENT.match(clean)
+            if event is None or (event.group(2) == "RX" and event.group(3) != "<empty>"):
+                raise _refusal(source, number, line)
+            stamp_text, label, value = event.groups()
+            waiting.append(LogRecord(float(stamp_text), "", b"", f"{label} {value}"))
+        entries = True
+        if len(waiting) > _WAITING_MAX and _is_open(waiting[0], calls):
+            del calls[waiting[0].direction]
+        while waiting and not _is_open(waiting[0], calls):
+            yield _record(waiting.popleft())
+    if entries and not traffic:
         raise LogError(f"{source}: no traffic in it, only control-line events")
-    if not calls:  # e.g. the colour code alone that `raw&color` leaves
+    if not traffic:  # e.g. the colour code alone that `raw&color` leaves
         raise LogError(f"{source}: no traffic in it (nor spy's raw format); {HEXDUMP_HINT}")
-    return [
-        LogRecord(e.time, e.direction, bytes(e.data)) if isinstance(e, _Call) else e
-        for e in entries
-    ]
+    yield from map(_record, waiting)
