@@ -6,10 +6,13 @@ import argparse
 import logging
 import signal
 import sys
+import threading
 from collections.abc import Sequence
 from types import FrameType
 
 from drivers.errors import UnknownProtocol
+from drivers.registry import create_protocol
+from drivers.sim.faults import FAULT_COMMANDS, FaultError, FaultyDevice
 from drivers.sim.pty_server import PtyServer
 from drivers.sim.registry import create_device, simulator_names
 from drivers.traffic import TrafficLogWriter
@@ -79,6 +82,13 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument(
         "--record", metavar="FILE", help="append a hexdump of the traffic, as the device sees it"
     )
+    parser.add_argument(
+        "--control",
+        action="store_true",
+        help="read fault commands on stdin, one a line, each answered on stdout: "
+        + "; ".join(f"{name}: {what}" for name, what in FAULT_COMMANDS.items())
+        + "; vanish: close the port and exit",
+    )
     parser.add_argument("-v", "--verbose", action="store_true", help="log on stderr")
     return parser
 
@@ -114,8 +124,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     baud = None if options.no_line_timing else (options.baud or probe.default_baud)
     device = create_device(options.protocol, baud=baud, **device_options)
+    faulty = None
+    if options.control:
+        variant = options.variant if options.protocol == "visiomex" else None
+        faulty = FaultyDevice(
+            lambda: create_device(options.protocol, baud=baud, **device_options),
+            create_protocol(options.protocol, variant).new_framer(),
+            seed=options.seed or 0,
+        )
     record = open(options.record, "a", encoding="utf-8") if options.record else None  # noqa: SIM115
-    server = PtyServer(device, TrafficLogWriter(record) if record else None)
+    server = PtyServer(faulty or device, TrafficLogWriter(record) if record else None)  # type: ignore[arg-type]
 
     def stop(signum: int, frame: FrameType | None) -> None:
         server.stop()
@@ -124,12 +142,29 @@ def main(argv: Sequence[str] | None = None) -> int:
     signal.signal(signal.SIGINT, stop)
     print(server.path, flush=True)
     log.info("serving %s on %s", options.protocol, server.path)
+    if faulty is not None:
+        threading.Thread(target=_control, args=(faulty, server), daemon=True).start()
     try:
         server.serve_forever()
     finally:
         if record is not None:
             record.close()
     return 0
+
+
+def _control(faulty: FaultyDevice, server: PtyServer) -> None:
+    """Apply the fault commands read on stdin; answer each with `ok ...` or `error ...`."""
+    for line in sys.stdin:
+        if not line.strip():
+            continue
+        if line.strip().lower() == "vanish":
+            print("ok vanish", flush=True)
+            server.stop()
+            return
+        try:
+            print(f"ok {faulty.control(line)}", flush=True)
+        except FaultError as exc:
+            print(f"error {exc}", flush=True)
 
 
 if __name__ == "__main__":

@@ -20,6 +20,7 @@ from drivers.errors import (
     Aborted,
     CommunicationError,
     DeviceError,
+    DeviceRestarted,
     DeviceTimeout,
     MotionError,
     PortError,
@@ -40,6 +41,8 @@ log = logging.getLogger(__name__)
 STREAM_POSITION_S = 0.2  # s between position reads while a program streams
 TICK_MS = 20  # the worker's loop period: queue, unsolicited input, polling
 TRAFFIC_BATCH_S = 0.05  # traffic is handed to the GUI at most this often (20 Hz)
+RECOVER_S = 1.0  # s between attempts to talk again to a device that stopped answering
+POSITION_TOLERANCE = 1e-6  # mm: readings closer than this are the same position
 
 
 @dataclass(frozen=True)
@@ -110,6 +113,11 @@ class SerialWorker(QObject):
         self._streamer: Streamer | None = None
         self._session_log: TrafficLogWriter | None = None
         self._last_stream_position = 0.0
+        self._recovering = ""  # why the device is being talked to again ("": it answers)
+        self._next_recover = 0.0
+        self._connection: tuple[str, str, ConnectOptions] | None = None
+        self._idle_position: tuple[float, float, float] | None = None
+        self._idle_stable: tuple[float, float, float] | None = None  # the reading before
 
     # -- thread-safe API ---------------------------------------------------------------------
     def submit(self, job: jobs.Job) -> None:
@@ -215,16 +223,25 @@ class SerialWorker(QObject):
         self._motion.notice_listeners.append(self.notice.emit)
         self._motion.parameter_listeners.append(self.parameter_written.emit)
         self._motion.travel = self._travel
+        self._connection = (url, protocol_name, options)
+        self._recovering = ""
         try:
-            identity = self._motion.identify()
-            try:
-                self._motion.start()
-            except DeviceError as exc:  # a saved setup the device refuses: say so, stay connected
-                self.notice.emit(f"the saved setup was refused: {exc}")
-            self._refresh()
+            self._handshake()
         except MotionError as exc:
             self._fail_connection(exc)
-            return
+
+    def _handshake(self) -> None:
+        """Identify the device, send the saved setup, read its state; then report it ready."""
+        motion, connection = self._motion, self._connection
+        assert motion is not None and connection is not None
+        url, protocol_name, _ = connection
+        protocol = motion.client.protocol
+        identity = motion.identify()
+        try:
+            motion.start()
+        except DeviceError as exc:  # a saved setup the device refuses: say so, stay connected
+            self.notice.emit(f"the saved setup was refused: {exc}")
+        self._refresh()
         self._flush_traffic()
         self.state_changed.emit("connected", f"{identity} on {url}")
         variant = protocol.variant.name if protocol.variant else ""
@@ -240,6 +257,7 @@ class SerialWorker(QObject):
                 dict(protocol.values),
             )
         )
+        self._idle_position = self._idle_stable = None
         self._next_poll = time.monotonic() + self.poll_idle_s
 
     @Slot()
@@ -273,25 +291,89 @@ class SerialWorker(QObject):
         if self._motion is None:
             return
         try:
-            try:
-                job = self._jobs.get_nowait()
-            except queue.Empty:
-                job = None
-            if job is not None:
-                self._run(job)
+            if self._recovering:
+                self._recover()
             else:
-                self._motion.client.poll()
-                if time.monotonic() >= self._next_poll:
-                    self._motion.position()
-                    self._next_poll = time.monotonic() + self.poll_idle_s
+                try:
+                    job = self._jobs.get_nowait()
+                except queue.Empty:
+                    job = None
+                if job is not None:
+                    self._idle_position = self._idle_stable = None
+                    self._run(job)
+                    self._rest_after(job)
+                else:
+                    self._motion.client.poll()
+                    if time.monotonic() >= self._next_poll:
+                        self._poll_idle(self._motion)
         except Aborted:
             self.cancel_pending()
             self.close_port()  # the user disconnected (or the window closed) mid-command
         except PortError as exc:
             self._fail_connection(exc)
+        except CommunicationError as exc:  # no answer, a garbled or wrong one, a restart
+            self._lose_device(exc)
         except MotionError as exc:
             self.state_changed.emit("connected", f"device: {exc}")
         self._flush_traffic()
+
+    def _poll_idle(self, motion: Motion) -> None:
+        """Read the position. A device with no boot banner shows a restart only so: it stood
+        still (where the last job left it, or for two readings), nothing was sent meanwhile,
+        and now it is at the power-on origin."""
+        self._next_poll = time.monotonic() + self.poll_idle_s
+        if not motion.capabilities.position_feedback:
+            return
+        report = motion.position()
+        here = (report.x, report.y, report.z)
+        before, self._idle_position = self._idle_position, here
+        if before is None or self._idle_stable is None:
+            self._idle_stable = before
+            return
+        stood_still = _same(before, self._idle_stable)
+        self._idle_stable = before
+        if stood_still and not _same(here, before) and _same(here, (0.0, 0.0, 0.0)):
+            shown = ", ".join(f"{v:g}" for v in before)
+            raise DeviceRestarted(
+                f"the position went from ({shown}) to (0, 0, 0) mm while nothing was sent: "
+                "the device restarted"
+            )
+
+    def _rest_after(self, job: jobs.Job) -> None:
+        """Where the device rests after `job`, as its last position; unknown after console
+        bytes (a move they started may still run)."""
+        known = self._motion.last_position if self._motion is not None else None
+        if known is not None and not isinstance(job, jobs.RawJob):
+            self._idle_position = self._idle_stable = (known.x, known.y, known.z)
+
+    def _lose_device(self, exc: CommunicationError) -> None:
+        """The device stopped making sense: drop the queue, say so, then talk to it again."""
+        dropped = self.cancel_pending()
+        self._idle_position = self._idle_stable = None
+        self.target_changed.emit(None)
+        self._recovering = str(exc)
+        self._next_recover = time.monotonic() + (
+            0.0 if isinstance(exc, DeviceRestarted) else RECOVER_S
+        )
+        self.state_changed.emit("error", f"{exc}; {_not_sent(dropped)}talking to it again")
+
+    def _recover(self) -> None:
+        """Refuse what was queued meanwhile; when due, identify and re-read the device."""
+        for job in self.cancel_pending():
+            self.job_failed.emit(job, "not sent: the device is being reconnected")
+        if time.monotonic() < self._next_recover:
+            return
+        motion = self._motion
+        assert motion is not None
+        self._next_recover = time.monotonic() + RECOVER_S
+        try:
+            self._handshake()
+        except PortError:
+            raise
+        except MotionError as exc:
+            log.info("the device does not answer yet: %s", exc)
+            return
+        self._recovering = ""
 
     def _run(self, job: jobs.Job) -> None:
         motion = self._motion
@@ -304,17 +386,19 @@ class SerialWorker(QObject):
             self._flush_traffic()
             self.job_failed.emit(job, "the connection was lost")
             raise
+        except CommunicationError as exc:  # the tick talks to the device again
+            self._flush_traffic()
+            if isinstance(exc, DeviceTimeout):
+                self.job_timed_out.emit(job)
+            self.job_failed.emit(job, str(exc))
+            raise
         except Aborted:
             self._flush_traffic()
             self.job_failed.emit(job, "abandoned: disconnected while it was under way")
             raise
         except MotionError as exc:
             self._flush_traffic()  # the console shows the traffic before the failure
-            if isinstance(exc, DeviceTimeout):
-                self.job_timed_out.emit(job)
             self.job_failed.emit(job, str(exc))
-            if isinstance(exc, CommunicationError):
-                self.target_changed.emit(None)
         else:
             self._flush_traffic()
             self.job_finished.emit(job, result)
@@ -396,7 +480,8 @@ class SerialWorker(QObject):
         dropped = self.cancel_pending()
         detail = str(exc)
         if dropped:
-            detail += f" ({len(dropped)} queued command(s) not sent)"
+            detail += f"; {_not_sent(dropped)}".rstrip("; ")
+        self._recovering = ""
         self._flush_traffic()
         if self._link is not None:
             self._link.close()
@@ -436,3 +521,14 @@ class SerialWorker(QObject):
             self.device_note.emit(str(event))
         elif isinstance(event, TextLine) and not self._motion.capabilities.raw_text:
             self.device_note.emit(f"the device says: {event.text}")
+
+
+def _not_sent(dropped: list[jobs.Job]) -> str:
+    """`not sent: jog by (1, 0, 0) mm, go home; ` for the queued jobs dropped ('' for none)."""
+    if not dropped:
+        return ""
+    return "not sent: " + ", ".join(job.describe() for job in dropped) + "; "
+
+
+def _same(a: tuple[float, float, float], b: tuple[float, float, float]) -> bool:
+    return all(abs(p - q) <= POSITION_TOLERANCE for p, q in zip(a, b, strict=True))

@@ -11,6 +11,7 @@ from drivers.commands import Command
 from drivers.errors import (
     Aborted,
     DeviceError,
+    DeviceRestarted,
     DeviceTimeout,
     FrameError,
     QueueFull,
@@ -56,6 +57,8 @@ class Client:
         self.writes = 0
         """Writes so far: a value read after the last write is still the device's (the panel is
         the only one commanding it)."""
+        self.answers = 0
+        """Frames that answered a command so far: a boot banner after one is a restart."""
         self.retransmissions = 0
         """Frames sent again (a damaged-frame reply, or no reply in time)."""
         self.backpressure_waits = 0
@@ -142,6 +145,7 @@ class Client:
         events: list[Event] = []
         for event in self._read_events(wait=False):
             self._notify(event, False)
+            self._check_restart(event)
             events.append(event)
         return events
 
@@ -154,6 +158,7 @@ class Client:
             self._check_abort()
             for event in self._read_events(wait=True):
                 self._notify(event, False)
+                self._check_restart(event)
                 events.append(event)
             if self.clock() >= end:
                 return events
@@ -185,6 +190,7 @@ class Client:
             self._check_abort()
             for event in self._read_events(wait=True):
                 self._notify(event, False)
+                self._check_restart(event)
 
     def _await(self, exchange: Exchange, silence: float, extra: float) -> None:
         start = self.clock()
@@ -197,14 +203,31 @@ class Client:
             if now >= deadline:
                 raise DeviceTimeout(self._timeout_message(exchange, silence, extra, stray))
             for event in self._read_events():
+                self._check_restart(event, exchange.command)
                 taken = exchange.on_event(event)
-                if not taken:
+                if taken:
+                    self.answers += 1
+                else:
                     stray.append(event)
                 self._notify(event, taken)
         linger_end = self.clock() + exchange.linger
         while exchange.wants_more and self.clock() < linger_end:
             for event in self._read_events():
                 self._notify(event, exchange.on_event(event))
+
+    def _check_restart(self, event: Event, waiting: Command | None = None) -> None:
+        """Raise DeviceRestarted for a boot banner that comes once the device has answered
+        (the banner of a board that boots as its port opens is not a restart)."""
+        if (
+            not self.answers
+            or self.clock() - self._opened < self.protocol.capabilities.startup_wait
+        ):
+            return
+        if self.protocol.is_restart(event, waiting):
+            during = f" during {self.protocol.command_name(waiting)}" if waiting else ""
+            raise DeviceRestarted(
+                f"the device restarted{during} ({event}): its position and settings are lost"
+            )
 
     def _check_abort(self) -> None:
         if self.abort.is_set():

@@ -75,7 +75,7 @@ def test_device_vanishing_mid_move_is_an_error_not_a_hang(
     worker._link.port.close()  # the device goes away under the worker
     qtbot.waitUntil(lambda: any(s == "error" for s, _ in states), timeout=5000)
     detail = next(d for s, d in states if s == "error")
-    assert "1 queued command(s) not sent" in detail
+    assert "not sent: go home" in detail
 
 
 def test_stop_while_a_move_waits_ends_the_thread_quickly(

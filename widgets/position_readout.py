@@ -14,8 +14,18 @@ UNKNOWN = "—"
 NOT_MEASURED_TEXT = "commanded, not measured"
 CONFIRMED_TEXT = "commanded, move confirmed"
 COMMANDED_TIP = "This device does not report its position: the numbers are where it was told to go."
-LIVE, ESTIMATED, STALE = "live", "estimated", "stale"
+CONFIRMED_TIP = (
+    "Where the device was told to go, and its reply said the move ended there; not read back "
+    "(a device that can report its position is asked again when idle)."
+)
+LIVE, ESTIMATED, STALE, LOST = "live", "estimated", "stale", "lost"
 _STATUS = {
+    LOST: (
+        "position unknown: the link failed or the device restarted, and it cannot report "
+        "where it is; home it or set home",
+        "color: #b71c1c; background: #ffebee; border: 1px solid #ef9a9a;",
+        "color: #9e9e9e;",
+    ),
     ESTIMATED: (
         "estimated from the speed: the device cannot be asked while it moves",
         "color: #0d47a1; background: #e3f2fd; border: 1px solid #90caf9;",
@@ -93,14 +103,14 @@ class PositionReadout(QWidget):
 
     def set_status(self, status: str) -> None:
         """`"live"` (measured or commanded), `"estimated"` (moving) or `"stale"` (last known)."""
-        if status not in (LIVE, ESTIMATED, STALE):
-            raise ValueError(f"status must be live, estimated or stale, not {status!r}")
+        if status not in _STATUS and status != LIVE:
+            raise ValueError(f"status must be live, estimated, stale or lost, not {status!r}")
         if status != self._status:
             self._status = status
             self._render_status()
 
     def status(self) -> str:
-        """The status shown: live, estimated or stale."""
+        """The status shown: live, estimated, stale or lost."""
         return self._status
 
     def set_position(self, x: float, y: float, z: float) -> None:
@@ -122,7 +132,7 @@ class PositionReadout(QWidget):
         confirmed reaching it (`confirmed`: None where the device never says)."""
         self.measured_label.setVisible(not measured)
         if confirmed:
-            text, tip = CONFIRMED_TEXT, COMMANDED_TIP + " The device said the last move ended."
+            text, tip = CONFIRMED_TEXT, CONFIRMED_TIP
         else:
             text, tip = NOT_MEASURED_TEXT, COMMANDED_TIP
         if self.measured_label.text() != text:

@@ -247,6 +247,13 @@ class Protocol(ABC):
         except FrameError as exc:
             return f"unreadable: {exc}"
 
+    def is_restart(self, event: Event, waiting: Command | None = None) -> bool:
+        """Whether `event` is what the device prints when it boots (its banner), while the
+        client waits for the reply to `waiting` (None: it waits for nothing). False where the
+        device prints nothing at boot: a restart then shows only as a position that changed
+        by itself."""
+        return False
+
     def sent_kind(self, frame: bytes) -> str:
         """What a sent frame is, for consoles' filters: `motion`, `poll`, `setting` or `query`."""
         return "query"

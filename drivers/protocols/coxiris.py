@@ -144,6 +144,9 @@ class CoxirisExchange(Exchange):
             if isinstance(event, Ack) and event.command == self.name:
                 self.acked = True
                 return True
+            if isinstance(event, Done) and event.command == self.name:
+                self.acked = True  # its ACK was lost on the line (noise glued to it): DONE says it
+                return self.handle(event)
             if isinstance(event, ErrorReport):
                 # Unknown and too-long commands get an ERROR line with no ACK and no DONE.
                 if event.message.startswith(UNKNOWN_COMMAND.rstrip()):

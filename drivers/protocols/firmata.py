@@ -261,6 +261,15 @@ class FirmataProtocol(Protocol):
         }
         return [Feedback("sysex", frame, names.get(command, f"SysEx {command:#04x}"))]
 
+    def is_restart(self, event: Event, waiting: Command | None = None) -> bool:
+        """`Firmata.begin()` reports the protocol version unasked at every boot (identifying
+        asks for it too)."""
+        return (
+            isinstance(event, Feedback)
+            and event.code == "version"
+            and not isinstance(waiting, GetId)
+        )
+
     def new_tx_framer(self) -> HostFramer:
         """The host's messages, `F9` alone included."""
         return HostFramer()

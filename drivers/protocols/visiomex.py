@@ -48,6 +48,7 @@ ERRORS = {
     "EF0002": "invalid driving mechanism",
 }
 _CODE = re.compile(r"(?:FS|FP|FA|EP|EF)\d{4}")
+BOOT_BANNER = "Checkpoint 2"  # setup() prints it at every boot
 BOOT_ONLY = (1, 2, 3, 4)  # the cycle length is computed at boot only
 
 
@@ -274,6 +275,10 @@ class VisiomexProtocol(Protocol):
             meaning = ERRORS.get(code, "an error code the documentation does not list")
             return [ErrorReport(meaning, code)]
         return [Feedback(code, meaning=_code_meaning(code))]
+
+    def is_restart(self, event: Event, waiting: Command | None = None) -> bool:
+        """The sketch's `setup()` prints `Checkpoint 2` at every boot."""
+        return isinstance(event, TextLine) and event.text.strip() == BOOT_BANNER
 
     # -- replies -----------------------------------------------------------------------------
     def exchange(self, command: Command) -> VisiomexExchange:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import logging
 from dataclasses import dataclass
 
+from drivers.protocols.visiomex import BOOT_BANNER
 from drivers.sim.arduino import print_float, to_float32
 from drivers.sim.clock import Clock, monotonic
 from drivers.sim.device import SimulatedDevice
@@ -118,7 +119,7 @@ class VisiomexDevice(SimulatedDevice):
     # -- serial framing ----------------------------------------------------------------------
     def boot(self) -> None:
         """Power-on: the sketch prints `Checkpoint 2`."""
-        self._line("Checkpoint 2", self.clock())
+        self._line(BOOT_BANNER, self.clock())
 
     def emit(self, data: bytes, at: float) -> None:
         """Send `data` at `at`, unless the device is mute."""
