@@ -14,7 +14,7 @@ from drivers import commands as cmd
 from drivers.capabilities import Capabilities, Completion
 from drivers.client import Client
 from drivers.errors import Aborted, BadInput, DeviceError, DeviceTimeout
-from drivers.events import ErrorReport, PositionReport
+from drivers.events import ErrorReport, Event, PositionReport
 from drivers.parameters import ParameterWritten
 from drivers.protocols.base import Reply
 from drivers.travel import Point, TravelLimits, check_resolution
@@ -24,6 +24,12 @@ log = logging.getLogger(__name__)
 POSITION_TOLERANCE = 0.011  # positions are printed with two decimals from 32-bit floats
 POLL_INTERVAL = 0.1  # seconds between position polls while waiting for a move to end
 ESTIMATE_MARGIN = 1.5  # a move may take this much longer than distance / speed
+EVIDENCE_MIN_S = 0.05
+"""A move shows whether its device replies once it has ended only if it takes this long (by
+distance and speed): a reply at the start then comes clearly before the end."""
+LATE_REPLIES = 2
+"""Moves whose reply ended a move's time after it began, before that is taken to mean arrival:
+a host that stalls between reading the two halves of an early reply looks like it once."""
 
 
 @dataclass(frozen=True)
@@ -47,6 +53,14 @@ class MoveStart:
             return self.path(f)
         x, y, z = (a + (b - a) * f for a, b in zip(self.start, self.target, strict=True))
         return (x, y, z)
+
+
+def _at(report: PositionReport, point: PositionReport | Point) -> bool:
+    """Whether a position is `point`, to the precision positions are reported with."""
+    if isinstance(point, PositionReport):
+        point = (point.x, point.y, point.z)
+    here = (report.x, report.y, report.z)
+    return all(abs(a - b) <= POSITION_TOLERANCE for a, b in zip(here, point, strict=True))
 
 
 def arc_point(arc: cmd.Arc, z0: float, fraction: float) -> Point:
@@ -82,7 +96,16 @@ class Motion:
         self._speed: float | None = None
         self._limits: tuple[float, float] | None = None
         self.last_position: PositionReport | None = None
-        self._known_at = -1  # client.writes when last_position was read from the device
+        self._known_at = -1  # client.writes when last_position became known (read or arrived)
+        self._heard = 0  # unsolicited events so far: a device that spoke unasked may have changed
+        self._known_heard = 0  # ... when last_position became known
+        self._reply_times: list[float] | None = None  # when a move's reply events came
+        self._late_replies = 0  # moves whose reply ended as the move did (see LATE_REPLIES)
+        self.arrives_on_reply = False
+        """Whether this device's reply to a move has been seen to mean the move has ended
+        (Completion.REPLY: COXIRIS's blocking sketch does, its non-blocking one and the laser's
+        queue do not), so that the target is where the stage is once the reply has come."""
+        client.listeners.append(self._on_event)
         if not self.capabilities.position_feedback:
             # Write-only devices: the position is what was commanded, from the power-on origin.
             self.last_position = PositionReport(0.0, 0.0, 0.0, measured=False)
@@ -121,21 +144,48 @@ class Motion:
             assert self.last_position is not None
             self._set_position(self.last_position)  # listeners see it like a measured one
             return self.last_position
+        inferred = self.last_position if self._fresh() else None
         value = self.client.execute(cmd.GetPosition()).value
         if not isinstance(value, PositionReport):
             raise DeviceError(f"the device did not report a position (it answered {value})")
+        if inferred is not None and not inferred.measured and not _at(value, inferred):
+            self.arrives_on_reply, self._late_replies = False, 0  # it was not where it said
+            for listener in list(self.notice_listeners):
+                listener(
+                    f"the device is at ({value.x:g}, {value.y:g}, {value.z:g}) mm, not where its "
+                    "last move ended: its replies are no longer taken as arrival"
+                )
         self._set_position(value)
-        self._known_at = self.client.writes  # nothing has been sent since it was read
+        self._known()  # nothing has been sent since it was read
         return value
 
     def _current(self) -> PositionReport:
-        """The position, asked only where the last one read is no longer known to hold: a
-        measured position stays true until anything else is written (the stage moves only
-        when told to), so a jog right after a jog, or after the idle poll, asks nothing."""
+        """The position, asked only where the last one known may no longer hold.
+
+        A position is known when it was read, or when a move ended that the device said it
+        had finished (a reply that means arrival: see `arrives_on_reply`); it stays true until
+        anything else is written or the device says something unasked (the stage moves only
+        when told to), so a jog right after a jog, or after the idle poll, asks nothing.
+        """
         known = self.last_position
-        if known is not None and known.measured and self._known_at == self.client.writes:
+        if known is not None and self._fresh():
             return known
         return self.position()
+
+    def _known(self) -> None:
+        """The position just given to the listeners holds until something else happens."""
+        self._known_at, self._known_heard = self.client.writes, self._heard
+
+    def _fresh(self) -> bool:
+        """Whether the position last known still holds: nothing written, nothing unasked."""
+        return self._known_at == self.client.writes and self._known_heard == self._heard
+
+    def _on_event(self, event: Event, solicited: bool) -> None:
+        if solicited:
+            if self._reply_times is not None:
+                self._reply_times.append(time.monotonic())
+        else:
+            self._heard += 1  # a restart's banner, a late reply, a line of its own
 
     def speed(self) -> float:
         """The speed as the device reports it (or as last set, where it cannot be read back)."""
@@ -261,6 +311,17 @@ class Motion:
             raise BadInput(f"{self.client.protocol.name} has no way to go home")
         return self._move("go home", lambda here: (0.0, 0.0, 0.0), None, check=cmd.Home())
 
+    def _as_reported(self, point: Point) -> Point:
+        """`point` on the device's resolution, as it reports it (5.1 - 0.2: 4.9, not 4.8999...)."""
+        step = self.capabilities.resolution
+        if not step:
+            return point
+        per_unit = round(1 / step)
+        if abs(per_unit * step - 1) > 1e-9:
+            return point
+        x, y, z = (round(v * per_unit) / per_unit for v in point)
+        return (x, y, z)
+
     def _deltas(self, here: PositionReport, target: Point) -> Point:
         """The distances from `here` to `target`, on the device's resolution."""
         step = self.capabilities.resolution or 1e-9
@@ -349,24 +410,49 @@ class Motion:
         started = MoveStart(start, target, speed, time.monotonic() + delay, duration, path)
         for move_listener in list(self.move_listeners):
             move_listener(started)
-        if completion is Completion.ESTIMATE:
-            # The device never says when it is done (PROTOCOLS.md §4, §5): each part is sent
-            # once the previous one should have ended (Firmata splits long moves).
-            parts = protocol.expand(command)
-            for part in parts:
-                self.client.send_only(part)
-                part_timing = protocol.move_timing(part, start, target) if len(parts) > 1 else None
-                if self.wait(sum(part_timing) if part_timing else delay + duration):
-                    raise Aborted("abandoned: the connection is closing")
-        else:
-            self.client.execute(command, extra=(delay + duration) * ESTIMATE_MARGIN)
+        heard, sent, self._reply_times = self._heard, time.monotonic(), []
+        try:
+            if completion is Completion.ESTIMATE:
+                # The device never says when it is done (PROTOCOLS.md §4, §5): each part is
+                # sent once the previous one should have ended (Firmata splits long moves).
+                parts = protocol.expand(command)
+                for part in parts:
+                    self.client.send_only(part)
+                    part_timing = (
+                        protocol.move_timing(part, start, target) if len(parts) > 1 else None
+                    )
+                    if self.wait(sum(part_timing) if part_timing else delay + duration):
+                        raise Aborted("abandoned: the connection is closing")
+            else:
+                self.client.execute(command, extra=(delay + duration) * ESTIMATE_MARGIN)
+        finally:
+            replies, self._reply_times = self._reply_times, None
         if not self.capabilities.position_feedback:
             confirmed = completion is Completion.FEEDBACK  # the device said the move ended
             self._set_position(PositionReport(*target, measured=False, confirmed=confirmed))
             return self.last_position  # type: ignore[return-value]
-        if completion is Completion.REPLY:
-            return self._wait_until_at(target, duration)
-        return self.position()
+        if completion is not Completion.REPLY:
+            return self.position()
+        undisturbed = heard == self._heard and not self.stop_requested.is_set()
+        if self.arrives_on_reply and undisturbed:
+            # The reply said the move ended: the stage is at the target (not read back).
+            at = self._as_reported(target)
+            self._set_position(PositionReport(*at, measured=False, confirmed=True))
+            self._known()
+            return self.last_position  # type: ignore[return-value]
+        report, first_at = self._wait_until_at(target, duration)
+        if undisturbed and first_at is not None and duration >= EVIDENCE_MIN_S:
+            # The first poll found the stage at the target. The reply meant arrival if the
+            # stage got there in under half the time the move takes (it had no time to move
+            # after an early reply), or if the reply ended a move's time after it began (a
+            # firmware busy while it moves), seen LATE_REPLIES times.
+            answering = replies[-1] - replies[0] if replies else 0.0
+            if answering >= 0.9 * duration:
+                self._late_replies += 1
+            if first_at - sent < 0.5 * duration or self._late_replies >= LATE_REPLIES:
+                self.arrives_on_reply = True
+                log.info("the device replies to a move once it has ended")
+        return report
 
     def arc(self, arc: cmd.Arc) -> PositionReport:
         """An arc: a straight move to its start point first where the stage is elsewhere."""
@@ -397,8 +483,13 @@ class Motion:
         if self.wait(ms / 1000):
             raise Aborted("abandoned: the connection is closing")
 
-    def _wait_until_at(self, target: tuple[float, float, float], estimate: float) -> PositionReport:
-        """After DONE: poll until the position reaches the target (non-blocking firmware style)."""
+    def _wait_until_at(
+        self, target: tuple[float, float, float], estimate: float
+    ) -> tuple[PositionReport, float | None]:
+        """After DONE: poll until the position reaches the target (non-blocking firmware style).
+
+        Returns the position, and when the first poll answered if it found the target already.
+        """
         allowed = estimate * ESTIMATE_MARGIN + self.client.timeout
         deadline = time.monotonic() + allowed
         previous: PositionReport | None = None
@@ -409,14 +500,13 @@ class Motion:
                 stopped = self.position()
                 for listener in list(self.notice_listeners):
                     listener(f"stopped at ({stopped.x:g}, {stopped.y:g}, {stopped.z:g}) mm")
-                return stopped
+                return stopped, None
             now = self.position()
-            here = (now.x, now.y, now.z)
-            if all(abs(a - b) <= POSITION_TOLERANCE for a, b in zip(here, target, strict=True)):
-                return now
+            if _at(now, target):
+                return now, (time.monotonic() if previous is None else None)
             if previous == now:
                 log.warning("the stage stopped at %s short of the target %s", now, target)
-                return now
+                return now, None
             if time.monotonic() > deadline:
                 raise DeviceTimeout(f"the move to {target} did not end within {allowed:.1f} s")
             previous = now

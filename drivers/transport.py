@@ -3,10 +3,15 @@
 from __future__ import annotations
 
 import logging
+import os
+import select
 import time
 from collections.abc import Callable
 
 import serial
+
+if os.name == "posix":
+    import termios
 
 from drivers.errors import PortError
 from drivers.traffic import RX, TX, Traffic
@@ -17,6 +22,7 @@ if "drivers.urlhandler" not in serial.protocol_handler_packages:
     serial.protocol_handler_packages.append("drivers.urlhandler")
 
 POLL_INTERVAL = 0.02  # seconds a read waits for the first byte; bounds the reader's latency
+READ_SIZE = 4096  # bytes taken from a descriptor at once (a whole tty input buffer)
 
 TrafficListener = Callable[[Traffic], None]
 
@@ -35,12 +41,23 @@ class Link:
         self.closed = False
 
     def _report(self, direction: str, data: bytes) -> None:
+        if not self.listeners:
+            return
         record = Traffic(direction, data, time.monotonic())
         for listener in list(self.listeners):
             listener(record)
 
+    def _descriptor(self) -> int | None:
+        """The descriptor of a plain POSIX serial port (a device path, a pty), read and written
+        directly; None for any other port (URL handlers, spy:// which must see every byte)."""
+        if os.name != "posix" or type(self.port) is not serial.Serial:
+            return None
+        if not self.port.is_open:
+            raise PortError(f"{self.url} is not open")
+        return self.port.fd  # type: ignore[no-any-return]
+
     def write(self, data: bytes) -> None:
-        """Write all of `data`.
+        """Write all of `data`, and wait until the port has sent it.
 
         The bytes are reported before they are written, so that a log on disk holds every byte
         that may have reached the device even if this process is killed during the write; a
@@ -48,6 +65,10 @@ class Link:
         """
         self._report(TX, data)
         try:
+            fd = self._descriptor()
+            if fd is not None:
+                _write_all(fd, data)
+                return
             written = self.port.write(data)
             self.port.flush()
         except (serial.SerialException, OSError, ValueError) as exc:
@@ -56,17 +77,28 @@ class Link:
             raise PortError(f"writing to {self.url}: only {written} of {len(data)} bytes sent")
 
     def read(self, wait: bool = True) -> bytes:
-        """Whatever has arrived; with `wait`, waiting at most POLL_INTERVAL for the first byte."""
+        """Everything that has arrived; with `wait`, waiting at most POLL_INTERVAL for it.
+
+        The wait ends as soon as a byte arrives (select on the descriptor, or a one-byte read
+        with the port's timeout), and all the bytes there are then are taken at once.
+        """
         try:
-            waiting = self.port.in_waiting
-            if not waiting and not wait:
-                return b""
-            data = self.port.read(waiting or 1)
+            fd = self._descriptor()
+            if fd is not None:
+                data = _read_available(fd, POLL_INTERVAL if wait else 0.0)
+            else:
+                waiting = self.port.in_waiting
+                if not waiting and not wait:
+                    return b""
+                data = bytes(self.port.read(waiting or 1))
+                more = self.port.in_waiting if data and not waiting else 0
+                if more:  # the first byte ended the wait: take the rest that came with it
+                    data += bytes(self.port.read(more))
         except (serial.SerialException, OSError, ValueError, TypeError) as exc:
             raise PortError(f"reading from {self.url} failed: {exc}") from exc
         if data:
-            self._report(RX, bytes(data))
-        return bytes(data)
+            self._report(RX, data)
+        return data
 
     def close(self) -> None:
         """Close the port (idempotent)."""
@@ -77,6 +109,34 @@ class Link:
             self.port.close()
         except (serial.SerialException, OSError) as exc:
             log.warning("closing %s: %s", self.url, exc)
+
+
+def _read_available(fd: int, timeout: float) -> bytes:
+    """The bytes waiting on a non-blocking descriptor, waiting up to `timeout` for the first."""
+    if not select.select([fd], [], [], timeout)[0]:
+        return b""
+    try:
+        data = os.read(fd, READ_SIZE)
+    except BlockingIOError:
+        return b""
+    if not data:  # readable but empty: the device went away (pyserial says so too)
+        raise OSError("the device reports data but none comes (disconnected?)")
+    return data
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    """Write every byte to a non-blocking tty descriptor, waiting while its buffer is full,
+    then until the port has sent them (as pyserial's write and flush do)."""
+    view = memoryview(data)
+    while view:
+        try:
+            view = view[os.write(fd, view) :]
+        except BlockingIOError:
+            select.select([], [fd], [], None)
+    try:
+        termios.tcdrain(fd)
+    except termios.error as exc:
+        raise OSError(*exc.args) from exc
 
 
 def open_link(url: str, baud: int, *, dtr: bool | None = None) -> Link:

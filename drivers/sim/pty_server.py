@@ -5,6 +5,7 @@ from __future__ import annotations
 import contextlib
 import errno
 import logging
+import math
 import os
 import select
 import threading
@@ -17,7 +18,14 @@ from drivers.transport import TrafficListener
 
 log = logging.getLogger(__name__)
 
-USB_FRAME = 0.002  # deliver paced output in chunks, like a USB-serial adapter
+USB_FRAME = 0.001
+"""A USB full-speed frame. What the device has sent by a frame's start reaches the host then,
+on a free-running 1 ms grid, as from an adapter that passes on what its UART received at the
+next frame (an FTDI chip with its latency timer at the 1 ms minimum, "the same as the USB frame
+length"; its default is 16 ms). An Arduino Uno R3's 16U2 (Arduino-usbserial) is slower: it
+flushes when its Timer0 overflows, every 4.096 ms (16 MHz / 256 / 256), or when its buffer
+nearly fills: `PtyServer(usb_frame=0.004096)`."""
+SPIN = 0.0002  # the last seconds before a frame are waited out exactly (select oversleeps)
 IDLE_WAKE = 0.5
 CLIENT_POLL = 0.01  # seconds between looks for a client opening a resetting device's port
 
@@ -25,9 +33,15 @@ CLIENT_POLL = 0.01  # seconds between looks for a client opening a resetting dev
 class PtyServer:
     """A device behind the master side of a pty; the slave's path is what clients open."""
 
-    def __init__(self, device: SimulatedDevice, recorder: TrafficListener | None = None) -> None:
+    def __init__(
+        self,
+        device: SimulatedDevice,
+        recorder: TrafficListener | None = None,
+        usb_frame: float = USB_FRAME,
+    ) -> None:
         self.device = device
         self.recorder = recorder
+        self.usb_frame = usb_frame
         self.master, self.slave = os.openpty()
         tty.setraw(self.slave)
         os.set_blocking(self.master, False)
@@ -49,22 +63,42 @@ class PtyServer:
             os.write(self._wake_w, b"x")
 
     def serve_forever(self) -> None:
-        """Move bytes between the pty and the device until stopped."""
+        """Move bytes between the pty and the device until stopped.
+
+        What the host writes reaches the device at once; what the device sends is handed to the
+        host at the first frame start (a multiple of `usb_frame` on the monotonic clock) at or
+        after the time it is due, never sooner.
+        """
         self.device.boot()
+        frame: float | None = None
         while not self._stop.is_set():
             if not self.client_open:
                 self._wait_for_client()
                 continue
-            self._unsent += self.device.read_output()
-            self._flush()
-            due = self.device.next_due()
             now = time.monotonic()
-            wait = IDLE_WAKE if due is None else min(IDLE_WAKE, max(USB_FRAME, due - now))
+            if frame is not None and frame <= now:
+                self._unsent += self.device.read_output()
+            self._flush()
+            frame = self._next_frame(now)
+            wait = IDLE_WAKE if frame is None else min(IDLE_WAKE, max(0.0, frame - now - SPIN))
             writers = [self.master] if self._unsent else []
             readable, _, _ = select.select([self.master, self._wake_r], writers, [], wait)
             if self.master in readable:
                 self._read()
+            elif frame is not None and frame - time.monotonic() <= SPIN:
+                while time.monotonic() < frame:  # wait out the last instants: select oversleeps
+                    pass
         self.close()
+
+    def _next_frame(self, after: float) -> float | None:
+        """The first frame start after `after` at or after the device's next event (None: none
+        is pending); an event already due is looked at in the next frame."""
+        due = self.device.next_due()
+        if due is None:
+            return None
+        return max(math.ceil(due / self.usb_frame), math.floor(after / self.usb_frame) + 1) * (
+            self.usb_frame
+        )
 
     def _wait_for_client(self) -> None:
         """No client has the port open: look again soon; on an open, the board resets."""
