@@ -2,7 +2,7 @@
 
 Lines live in a TrafficIndex (on disk, a few bytes each in memory), shown by a table that reads
 only the rows on screen, so a million lines stay light. New traffic is decoded in turns of at
-most 8 ms and shown at most 10 times a second.
+most 5 ms and shown at most 10 times a second.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 from PySide6.QtCore import QModelIndex, Qt, QTimer, Signal
-from PySide6.QtGui import QFontDatabase, QKeySequence, QShortcut
+from PySide6.QtGui import QKeySequence, QShortcut
 from PySide6.QtWidgets import (
     QAbstractItemView,
     QCheckBox,
@@ -29,7 +29,6 @@ from PySide6.QtWidgets import (
     QMenu,
     QPushButton,
     QSizePolicy,
-    QTableView,
     QToolButton,
     QVBoxLayout,
     QWidget,
@@ -48,6 +47,7 @@ from app.traffic_table import (
     TIME,
     TIME_MODES,
     TrafficModel,
+    TrafficView,
     stamp,
 )
 from drivers.protocols.base import Protocol
@@ -59,11 +59,17 @@ log = logging.getLogger(__name__)
 TX, RX, NOTE = "tx", "rx", "note"
 FLUSH_INTERVAL_MS = 100  # 10 Hz: a flood costs a repaint of the table per flush
 TYPING_PAUSE_MS = 250  # a filter or search is applied this long after the last key
-FLUSH_BUDGET = 0.008  # s of decoding per turn of the event loop; the rest waits its turn
+FLUSH_BUDGET = 0.005  # s of decoding per turn of the event loop; the rest waits its turn
 RECENT_RECORDS = 20_000  # raw records kept for `records()`; the index keeps every line
 HIDDEN_BY_DEFAULT = ("poll",)
+STATUS_INTERVAL_S = 0.25  # the status line's counts follow a flood at most 4 times a second
 
 Record = tuple[str, bytes, float]  # (direction or "note", data, timestamp in seconds)
+Incoming = tuple[float, str, bytes, float | None]  # (timestamp, direction or "", data, wall)
+
+
+def _when(item: Incoming) -> float:
+    return item[0]
 
 
 def ask_save_path(parent: QWidget) -> str:
@@ -89,9 +95,13 @@ class RawConsole(QWidget):
         self.setObjectName("rawConsole")
         self.ask_export_path: Callable[[], str] = lambda: ask_save_path(self)
         self.clock: Callable[[], float] = time.monotonic  # the traffic's clock, for notes
-        self._recent: deque[Record] = deque(maxlen=RECENT_RECORDS)
-        self._pending: list[tuple[float, str, bytes, float | None]] = []
+        # (time, direction or "" for a note, data, wall clock or None): arrived and not yet
+        # looked at; taken and waiting for their turn (in time order); the latest taken
+        self._incoming: list[Incoming] = []
+        self._pending: list[Incoming] = []
+        self._recent: deque[Incoming] = deque(maxlen=RECENT_RECORDS)
         self._shown_at = 0.0  # perf_counter of the last update of the table
+        self._status_at = 0.0  # and of the status line
         self.index = TrafficIndex()
         self._model = TrafficModel(self.index, self)  # goes with the console, never before it
         self._origin_set = False
@@ -103,12 +113,17 @@ class RawConsole(QWidget):
         self._pattern_text = self._search_text = ""
         self._kinds = {k for k in KINDS if k not in HIDDEN_BY_DEFAULT}
         self._directions = {"tx", "rx", ""}
-        self._build(sending)
         self._flush_timer = QTimer(self)
         self._flush_timer.setObjectName("consoleFlushTimer")
         self._flush_timer.setSingleShot(True)
         self._flush_timer.setInterval(FLUSH_INTERVAL_MS)
         self._flush_timer.timeout.connect(self._timed_flush)
+        self._status_timer = QTimer(self)
+        self._status_timer.setObjectName("consoleStatusTimer")
+        self._status_timer.setSingleShot(True)
+        self._status_timer.setInterval(int(STATUS_INTERVAL_S * 1000))
+        self._status_timer.timeout.connect(self._update_status)
+        self._build(sending)
 
     # -- building --------------------------------------------------------------------------
 
@@ -264,18 +279,9 @@ class RawConsole(QWidget):
         second.addWidget(export_button)
         second.addWidget(clear_button)
 
-        self.view = QTableView()
+        self.view = TrafficView(self._model)
         self.view.setObjectName("consoleView")
-        self.view.setModel(self._model)
-        self.view.setFont(QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont))
         self.view.setSelectionBehavior(QAbstractItemView.SelectionBehavior.SelectRows)
-        self.view.setWordWrap(False)
-        self.view.setTextElideMode(Qt.TextElideMode.ElideNone)  # no text measuring per cell
-        self.view.setShowGrid(False)
-        self.view.verticalHeader().setVisible(False)
-        rows = self.view.verticalHeader()
-        rows.setSectionResizeMode(QHeaderView.ResizeMode.Fixed)
-        rows.setDefaultSectionSize(self.view.fontMetrics().height() + 4)
         header = self.view.horizontalHeader()
         header.setSectionResizeMode(QHeaderView.ResizeMode.Interactive)
         width = self.view.fontMetrics().horizontalAdvance("0")
@@ -319,36 +325,35 @@ class RawConsole(QWidget):
         """Take bytes sent ("tx") or received ("rx") at `timestamp` (s); shown at the next flush."""
         if direction not in (TX, RX):
             raise ValueError(f"direction must be 'tx' or 'rx', not {direction!r}")
-        data = bytes(data)
-        self._recent.append((direction, data, timestamp))
-        self._pending.append((timestamp, direction, data, wall))
-        self._schedule()
+        if not self._incoming:  # the timer runs while anything is waiting (see _take_pending)
+            self._schedule()
+        self._incoming.append((timestamp, direction, bytes(data), wall))
 
     def append_note(self, text: str, timestamp: float | None = None) -> None:
         """Log an information line such as "connected" (timestamp: the clock's now by default)."""
         when = self.clock() if timestamp is None else timestamp
-        self._recent.append((NOTE, text.encode("utf-8"), when))
-        self._pending.append((when, "", text.encode("utf-8"), time.time() - (self.clock() - when)))
-        self._schedule()
+        if not self._incoming:
+            self._schedule()
+        self._incoming.append((when, "", text.encode("utf-8"), time.time() - (self.clock() - when)))
 
     def _take_pending(self, deadline: float | None = None) -> None:
         """Into the index, in time order (a note is stamped when added, traffic comes batched);
         with a `deadline` (perf_counter), what is left when it passes waits for the next turn."""
+        if self._incoming:
+            incoming, self._incoming = self._incoming, []
+            self._recent.extend(incoming)
+            self._pending.extend(incoming)
+            self._pending.sort(key=_when)  # stable: ties keep their order
         if not self._pending:
             return
-        pending = sorted(self._pending, key=lambda item: item[0])  # stable: ties keep order
-        self._pending.clear()
-        if not self._origin_set and not len(self.index):
+        pending, index = self._pending, self.index
+        if not self._origin_set and not len(index):
             self._model.origin = pending[0][0]
-        index = self.index
-        for position, (when, direction, data, wall) in enumerate(pending):
-            if direction:
-                index.add(direction, data, when, wall if wall is not None else time.time())
-            else:
-                index.add_note(data.decode("utf-8"), when, wall)
-            if deadline is not None and time.perf_counter() > deadline:
-                self._pending = pending[position + 1 :]
-                break
+        if index.wall_offset is None:  # (traffic fed without a wall-clock time: now's)
+            when, _, _, wall = pending[0]
+            index.wall_offset = (time.time() if wall is None else wall) - when
+        taken = index.add_many(pending, deadline)
+        self._pending = pending[taken:] if taken < len(pending) else []
         index.commit()
 
     def _schedule(self) -> None:
@@ -367,11 +372,12 @@ class RawConsole(QWidget):
 
     def backlog(self) -> int:
         """Records received but not yet decoded and shown (a flood beyond the budget)."""
-        return len(self._pending)
+        return len(self._pending) + len(self._incoming)
 
     def records(self) -> list[Record]:
         """The latest raw records (bounded), as they came: (direction or "note", data, time)."""
-        return list(self._recent)
+        recent = [*self._recent, *self._incoming][-RECENT_RECORDS:]
+        return [(direction or NOTE, data, when) for when, direction, data, _ in recent]
 
     def _timed_flush(self) -> None:
         """The timer's turn: at most FLUSH_BUDGET of decoding, so a flood never stalls the
@@ -409,12 +415,13 @@ class RawConsole(QWidget):
         first = self._shown_until
         rows = self.index.select(self._directions, self._kinds, self._pattern, start=first)
         if self._search is not None:
-            hits = self.index.select(None, None, self._search, start=first)
-            if len(hits):
-                self._model.matches = np.concatenate((self._model.matches, hits))
+            self._model.add_matches(self.index.select(None, None, self._search, start=first))
         self._shown_until = total
         self._model.append_rows(rows)
-        self._update_status()
+        if self._shown_at - self._status_at >= STATUS_INTERVAL_S:
+            self._update_status()
+        elif not self._status_timer.isActive():
+            self._status_timer.start()
         self.lines_added.emit(first, total - first)
         if self._follow:
             self._scroll_to_end()
@@ -627,7 +634,7 @@ class RawConsole(QWidget):
             self._scrolling = False
 
     def _range_changed(self) -> None:
-        if self._follow:
+        if self._follow and not self._scrolling:  # (scrolling to the end does it anyway)
             self._scroll_to_end()
 
     def _scrolled(self, value: int) -> None:
@@ -644,6 +651,8 @@ class RawConsole(QWidget):
         return self._follow
 
     def _update_status(self) -> None:
+        self._status_timer.stop()
+        self._status_at = time.perf_counter()
         counts = self.index.counts
         parts = [f"{len(self.index):,} lines", f"{len(self._model.rows):,} shown"]
         if "poll" not in self._kinds and counts["poll"]:
@@ -657,6 +666,8 @@ class RawConsole(QWidget):
 
     def status_text(self) -> str:
         """The counts under the filters (lines, shown, hidden polls, errors, matches)."""
+        if self._status_timer.isActive():  # a flood's counts are shown a few times a second
+            self._update_status()
         return self.status_label.text()
 
     # -- text out --------------------------------------------------------------------------
@@ -680,6 +691,7 @@ class RawConsole(QWidget):
         self.index = TrafficIndex(protocol)
         self._recent.clear()
         self._pending.clear()
+        self._incoming.clear()
         self._shown_until = 0
         self._model.set_index(self.index)
         self._set_follow(True)
@@ -692,6 +704,7 @@ class RawConsole(QWidget):
         self.index = index
         self._recent.clear()
         self._pending.clear()
+        self._incoming.clear()
         self._shown_until = 0
         self._model.set_index(index)
         self._model.origin = index.time(0) if len(index) else 0.0

@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import numpy as np
 from PySide6.QtCore import QObject, Slot
 
 from app.traffic_console import RawConsole
+from drivers.traffic_index import DIRECTIONS
 from widgets.traffic_timeline import TrafficTimeline
 
 
@@ -21,14 +23,26 @@ class TimelineFeed(QObject):
 
     @Slot(int, int)
     def on_lines(self, first: int, count: int) -> None:
-        """Put lines first..first+count-1 on the timeline."""
+        """Put lines first..first+count-1 on the timeline: their bytes a second and direction at
+        a time (the timeline adds up seconds: one call each, not one a line), and latencies."""
         index, origin = self.console.index, self.console.time_origin()
         end = first + count
-        times = (index.times()[first:end] - origin).tolist()
-        sizes = index.sizes(first, end).tolist()
-        for offset, direction in enumerate(index.directions(first, end)):
-            if direction and sizes[offset]:
-                self.timeline.add_bytes(times[offset], direction, sizes[offset], first + offset)
+        times = index.times(first, end) - origin
+        sizes = index.sizes(first, end)
+        directions = index.direction_codes(first, end)
+        for code, direction in enumerate(DIRECTIONS):
+            if not direction:
+                continue
+            chosen = ((directions == code) & (sizes > 0)).nonzero()[0]
+            if not len(chosen):
+                continue
+            seconds = np.floor(times[chosen])
+            starts = np.flatnonzero(np.r_[True, seconds[1:] != seconds[:-1]])  # runs of a second
+            totals = np.add.reduceat(sizes[chosen].astype(np.int64), starts).tolist()
+            latest = np.maximum.reduceat(times[chosen], starts).tolist()
+            lines = (chosen[starts] + first).tolist()  # each run's first line
+            for when, total, line in zip(latest, totals, lines, strict=True):
+                self.timeline.add_bytes(when, direction, total, line)
         for line, when, latency in index.take_latencies():
             self.timeline.add_latency(when - origin, latency, line)
 

@@ -6,8 +6,16 @@ import math
 import time
 
 import numpy as np
-from PySide6.QtCore import QAbstractTableModel, QModelIndex, QObject, QPersistentModelIndex, Qt
-from PySide6.QtGui import QBrush, QColor, QFont
+from PySide6.QtCore import (
+    QAbstractTableModel,
+    QModelIndex,
+    QObject,
+    QPersistentModelIndex,
+    QRect,
+    Qt,
+)
+from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QPainter, QPaintEvent, QPalette
+from PySide6.QtWidgets import QHeaderView, QStyle, QTableView
 
 from drivers.traffic_index import TrafficIndex, TrafficLine, escape
 
@@ -29,11 +37,9 @@ _MIXED_TABLE = {b: chr(b) if 0x20 <= b < 0x7F else f"<{b:02X}>" for b in range(2
 Index = QModelIndex | QPersistentModelIndex
 _DISPLAY = Qt.ItemDataRole.DisplayRole.value
 _TOOLTIP = Qt.ItemDataRole.ToolTipRole.value
-_STYLE_SLOTS = {
-    Qt.ItemDataRole.ForegroundRole.value: 0,
-    Qt.ItemDataRole.BackgroundRole.value: 1,
-    Qt.ItemDataRole.FontRole.value: 2,
-}  # roles as ints: comparing enum members costs more than the rest of a call
+_FOREGROUND = Qt.ItemDataRole.ForegroundRole.value  # roles as ints: comparing enum members
+_BACKGROUND = Qt.ItemDataRole.BackgroundRole.value  # costs more than the rest of a call
+_FONT = Qt.ItemDataRole.FontRole.value
 
 
 def shown_bytes(data: bytes, mode: str) -> str:
@@ -57,17 +63,30 @@ def stamp(seconds: float, mode: str, wall_offset: float | None, previous: float 
 
 def reply_text(line: TrafficLine) -> str:
     """The pairing in words: `→ #12`, `↩ #11  3.2 ms`, `↻ copy of #9`."""
+    return pairing_text(line.direction, line.pair, line.latency_ms, line.first_copy)
+
+
+def pairing_text(direction: str, pair: int, latency_ms: float, first_copy: int) -> str:
+    """As reply_text, from the fields (TrafficIndex.pairing)."""
     parts = []
-    if line.first_copy >= 0:
-        parts.append(f"↻ copy of #{line.first_copy}")
-    if line.pair >= 0:
-        if line.direction == "tx":
-            parts.append(f"→ #{line.pair}")
-        elif not math.isnan(line.latency_ms):
-            parts.append(f"↩ #{line.pair}  {line.latency_ms:.1f} ms")
+    if first_copy >= 0:
+        parts.append(f"↻ copy of #{first_copy}")
+    if pair >= 0:
+        if direction == "tx":
+            parts.append(f"→ #{pair}")
+        elif not math.isnan(latency_ms):
+            parts.append(f"↩ #{pair}  {latency_ms:.1f} ms")
         else:
-            parts.append(f"↩ #{line.pair}")
+            parts.append(f"↩ #{pair}")
     return "  ".join(parts)
+
+
+# What a row shows but its reply, built once: (cells' text, direction, background, italic).
+# A plain tuple of strings and numbers: the garbage collector stops tracking those, so a
+# screenful kept for each repaint adds nothing to its full collections.
+RowView = tuple[tuple[str, ...], str, int, bool]
+CELLS, ROW_DIRECTION, ROW_BACKGROUND, ROW_ITALIC = range(4)
+BACKGROUNDS = (None, MATCH_BACKGROUND, ERROR_BACKGROUND)  # ROW_BACKGROUND's codes
 
 
 class TrafficModel(QAbstractTableModel):
@@ -76,63 +95,77 @@ class TrafficModel(QAbstractTableModel):
     def __init__(self, index: TrafficIndex, parent: QObject | None = None) -> None:
         super().__init__(parent)
         self.index_ = index
-        self.rows = np.zeros(0, dtype=np.int64)
+        self._rows = np.zeros(1024, dtype=np.int64)  # grown by half again when full
+        self._count = 0
         self.mode = TEXT
         self.time_mode = RELATIVE
         self.origin = 0.0
         self.matches = np.zeros(0, dtype=np.int64)  # search hits (line numbers), sorted
-        self._cells: dict[tuple[int, int], str] = {}  # (row, column) → text, while rows stay
-        self._styles: dict[int, tuple[QBrush, QColor | None, QFont | None]] = {}
+        self._views: dict[int, RowView] = {}  # row → what it shows, while rows and modes stay
         self._italic = QFont()
         self._italic.setItalic(True)
-        self._brushes = {d: QBrush(QColor(c)) for d, c in COLOURS.items()}
+        self.colours = {d: QColor(c) for d, c in COLOURS.items()}  # by direction
+        self._brushes = {d: QBrush(c) for d, c in self.colours.items()}
 
     # -- rows ------------------------------------------------------------------------------
 
+    @property
+    def rows(self) -> np.ndarray:
+        """The line numbers shown, in order (a view: do not keep it past a change)."""
+        return self._rows[: self._count]
+
     def set_index(self, index: TrafficIndex) -> None:
         """Show another session's lines (none selected yet)."""
-        self._cells.clear()
-        self._styles.clear()
+        self._views.clear()
         self.beginResetModel()
         self.index_ = index
-        self.rows = np.zeros(0, dtype=np.int64)
+        self._count = 0
         self.matches = np.zeros(0, dtype=np.int64)
         self.endResetModel()
 
     def set_rows(self, rows: np.ndarray) -> None:
         """Show these lines (a new filter)."""
-        self._cells.clear()
-        self._styles.clear()
+        self._views.clear()
         self.beginResetModel()
-        self.rows = rows
+        self._rows = np.array(rows, dtype=np.int64)
+        self._count = len(rows)
         self.endResetModel()
 
     def append_rows(self, rows: np.ndarray) -> None:
         """Show more lines at the end (new traffic that passes the filter)."""
         if not len(rows):
             return
-        first = len(self.rows)
-        self.beginInsertRows(QModelIndex(), first, first + len(rows) - 1)
-        self.rows = np.concatenate((self.rows, rows))
+        first, end = self._count, self._count + len(rows)
+        if end > len(self._rows):
+            grown = np.empty(max(end, len(self._rows) * 3 // 2), dtype=np.int64)
+            grown[:first] = self._rows[:first]
+            self._rows = grown
+        self.beginInsertRows(QModelIndex(), first, end - 1)
+        self._rows[first:end] = rows
+        self._count = end
         self.endInsertRows()
 
     def set_matches(self, matches: np.ndarray) -> None:
         """Highlight these lines (the search's hits)."""
         self.matches = matches
-        self._styles.clear()
-        if len(self.rows):
-            self.dataChanged.emit(self.index(0, 0), self.index(len(self.rows) - 1, REPLY - 1))
+        self._views.clear()
+        if self._count:
+            self.dataChanged.emit(self.index(0, 0), self.index(self._count - 1, REPLY - 1))
+
+    def add_matches(self, matches: np.ndarray) -> None:
+        """Highlight these lines too (hits among new lines, after every line shown so far)."""
+        if len(matches):
+            self.matches = np.concatenate((self.matches, matches))
 
     def refresh(self) -> None:
         """Repaint every cell (a display or time mode changed)."""
-        self._cells.clear()
-        self._styles.clear()
-        if len(self.rows):
-            self.dataChanged.emit(self.index(0, 0), self.index(len(self.rows) - 1, REPLY))
+        self._views.clear()
+        if self._count:
+            self.dataChanged.emit(self.index(0, 0), self.index(self._count - 1, REPLY))
 
     def line_at(self, row: int) -> TrafficLine:
         """The line shown at `row`."""
-        return self.index_.line(int(self.rows[row]))
+        return self.index_.line(int(self._rows[row]))
 
     def row_of(self, line: int) -> int:
         """The row showing `line`, or the nearest row after it (len(rows) if none)."""
@@ -142,7 +175,7 @@ class TrafficModel(QAbstractTableModel):
 
     def rowCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
         """Lines shown."""
-        return 0 if parent.isValid() else len(self.rows)
+        return 0 if parent.isValid() else self._count
 
     def columnCount(self, parent: Index = QModelIndex()) -> int:  # noqa: B008
         """Line, time, direction, bytes, meaning, reply."""
@@ -154,35 +187,41 @@ class TrafficModel(QAbstractTableModel):
             return COLUMNS[section]
         return None
 
-    def cell(self, row: int, column: int) -> str:
-        """A cell's text (remembered until the rows or the modes change)."""
-        if column == REPLY:
-            return reply_text(self.line_at(row))  # a request's reply may come later
-        key = (row, column)
-        text = self._cells.get(key)
-        if text is None:
-            if len(self._cells) > 20_000:
-                self._cells.clear()
-                self._styles.clear()
-            text = self._cells[key] = self._cell(row, column)
-        return text
+    def row_view(self, row: int) -> RowView:
+        """What `row` shows but its reply (remembered until the rows or the modes change)."""
+        view = self._views.get(row)
+        if view is not None:
+            return view
+        if len(self._views) > 4096:
+            self._views.clear()
+        number, when, direction, kind, data, meaning, *_ = self.index_.read(int(self._rows[row]))
+        if self.time_mode == DELTA:
+            previous = self.index_.time(int(self._rows[row - 1])) if row > 0 else None
+        else:
+            previous = None
+        shown = shown_bytes(data[:SHOWN_BYTES], self.mode)
+        cells = (
+            str(number),
+            stamp(when - self.origin, self.time_mode, self.index_.wall_offset, previous),
+            direction.upper() or "--",
+            shown + ("…" if len(data) > SHOWN_BYTES else ""),
+            meaning,
+        )
+        hit = np.searchsorted(self.matches, number)
+        matched = hit < len(self.matches) and self.matches[hit] == number
+        background = 1 if matched else 2 if kind == "error" else 0
+        view = self._views[row] = (cells, direction, background, kind in ("note", "debug"))
+        return view
 
-    def _cell(self, row: int, column: int) -> str:
-        line = self.line_at(row)
-        if column == LINE:
-            return str(line.number)
-        if column == TIME:
-            previous = self.index_.time(int(self.rows[row - 1])) if row > 0 else None
-            offset = self.index_.wall_offset
-            return stamp(line.time - self.origin, self.time_mode, offset, previous)
-        if column == DIRECTION:
-            return line.direction.upper() or "--"
-        if column == BYTES:
-            shown = shown_bytes(line.data[:SHOWN_BYTES], self.mode)
-            return shown + ("…" if len(line.data) > SHOWN_BYTES else "")
-        if column == MEANING:
-            return line.meaning
-        return reply_text(line)
+    def reply(self, row: int) -> str:
+        """The reply cell's text (read each time: a request's reply may come later)."""
+        return pairing_text(*self.index_.pairing(int(self._rows[row])))
+
+    def cell(self, row: int, column: int) -> str:
+        """A cell's text."""
+        if column == REPLY:
+            return self.reply(row)
+        return self.row_view(row)[CELLS][column]
 
     def row_text(self, row: int, with_time: bool = True) -> str:
         """A shown line as text: `time DIR  bytes  meaning  [reply]`; the meaning is left out
@@ -216,23 +255,6 @@ class TrafficModel(QAbstractTableModel):
             line.first_copy if line.first_copy >= 0 else "",
         ]
 
-    def _style(self, row: int) -> tuple[QBrush, QColor | None, QFont | None]:
-        """A row's foreground, background and font (remembered with its cells)."""
-        style = self._styles.get(row)
-        if style is None:
-            line = self.line_at(row)
-            hit = np.searchsorted(self.matches, line.number)
-            background = (
-                MATCH_BACKGROUND
-                if hit < len(self.matches) and self.matches[hit] == line.number
-                else ERROR_BACKGROUND
-                if line.kind == "error"
-                else None
-            )
-            font = self._italic if line.kind in ("note", "debug") else None
-            style = self._styles[row] = (self._brushes[line.direction], background, font)
-        return style
-
     def tooltip(self, row: int) -> str:
         """Everything about a line: kind, hex, text, meaning, pairing."""
         line = self.line_at(row)
@@ -246,12 +268,106 @@ class TrafficModel(QAbstractTableModel):
         return "\n".join(lines)
 
     def data(self, index: Index, role: int = _DISPLAY) -> object:
-        """Text, colours and tooltips of a cell (called hundreds of times a repaint: kept lean)."""
+        """Text, colours and tooltips of a cell (the console's view paints from `row_view`;
+        this serves tests, tooltips and accessibility)."""
         if role == _DISPLAY:
             return self.cell(index.row(), index.column())
-        slot = _STYLE_SLOTS.get(role)
-        if slot is not None:
-            return self._style(index.row())[slot]
+        if role == _FOREGROUND:
+            return self._brushes[self.row_view(index.row())[ROW_DIRECTION]]
+        if role == _BACKGROUND:
+            return BACKGROUNDS[self.row_view(index.row())[ROW_BACKGROUND]]
+        if role == _FONT:
+            return self._italic if self.row_view(index.row())[ROW_ITALIC] else None
         if role == _TOOLTIP:
             return self.tooltip(index.row())
         return None
+
+
+class TrafficView(QTableView):
+    """The console's table. It paints the rows on screen itself, from the model's RowView of
+    each (colours, italics, the reply): a few Python calls a row instead of a delegate and
+    some five data() calls a cell, and Qt's plain text drawing instead of the item view's
+    layout of each cell. Rows are one fixed height (the vertical header's default size)."""
+
+    def __init__(self, model: TrafficModel) -> None:
+        super().__init__()
+        self.setModel(model)
+        self._model = model
+        font = QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)
+        font.setStyleStrategy(QFont.StyleStrategy.PreferNoShaping)  # Latin text: no shaping
+        self.setFont(font)
+        self.setWordWrap(False)
+        self.setShowGrid(False)
+        rows = self.verticalHeader()
+        rows.setVisible(False)
+        rows.setSectionResizeMode(QHeaderView.ResizeMode.Fixed)
+        rows.setDefaultSectionSize(self.fontMetrics().height() + 4)
+
+    def _selected(self, first: int, last: int) -> set[int]:
+        """Rows first..last that are selected."""
+        chosen: set[int] = set()
+        for span in self.selectionModel().selection():
+            chosen.update(range(max(span.top(), first), min(span.bottom(), last) + 1))
+        return chosen
+
+    def paintEvent(self, event: QPaintEvent) -> None:
+        """Paint the rows in the exposed rectangle: backgrounds, then each column's text."""
+        model = self._model
+        count = model.rowCount()
+        area = event.rect()
+        height = self.verticalHeader().defaultSectionSize()
+        offset = self.verticalOffset()
+        first = max(0, (area.top() + offset) // height)
+        last = min(count - 1, (area.bottom() + offset) // height)
+        if first > last:
+            return
+        views = [model.row_view(row) for row in range(first, last + 1)]
+        top = first * height - offset
+        selected = self._selected(first, last)
+        palette = self.palette()
+        group = QPalette.ColorGroup.Active if self.hasFocus() else QPalette.ColorGroup.Inactive
+        highlight = palette.brush(group, QPalette.ColorRole.Highlight)
+        highlighted = palette.color(group, QPalette.ColorRole.HighlightedText)
+        width = self.viewport().width()
+        painter = QPainter(self.viewport())
+        y = top
+        for row, (_, _, background, _) in enumerate(views, first):
+            if row in selected:
+                painter.fillRect(0, y, width, height, highlight)
+            elif background:
+                painter.fillRect(0, y, width, height, BACKGROUNDS[background])
+            y += height
+        plain = self.font()
+        italic = QFont(plain)
+        italic.setItalic(True)
+        metrics = self.fontMetrics()
+        baseline = top + (height - metrics.height()) // 2 + metrics.ascent()
+        margin = self.style().pixelMetric(QStyle.PixelMetric.PM_FocusFrameHMargin, None, self) + 1
+        colours = model.colours
+        for column in range(len(COLUMNS)):
+            if self.isColumnHidden(column):
+                continue
+            x = self.columnViewportPosition(column)
+            clip = QRect(
+                x + margin, area.top(), self.columnWidth(column) - 2 * margin, area.height()
+            )
+            clip &= area
+            if clip.isEmpty():
+                continue
+            painter.setClipRect(clip)
+            shown_italic = None
+            colour = None
+            y = baseline
+            for row, (cells, direction, _, slanted) in enumerate(views, first):
+                text = cells[column] if column != REPLY else model.reply(row)
+                if text:
+                    if slanted is not shown_italic:
+                        shown_italic = slanted
+                        painter.setFont(italic if slanted else plain)
+                    wanted = highlighted if row in selected else colours[direction]
+                    if wanted is not colour:
+                        colour = wanted
+                        painter.setPen(colour)
+                    painter.drawText(x + margin, y, text)
+                y += height
+        painter.end()

@@ -2,11 +2,14 @@
 
 Modes (each prints one JSON object; run each in its own process so memory figures are its own):
 - `ingest --lines N`: lines/s a console (COXIRIS decoding, every line kept and viewable)
-  takes in, fed as the worker feeds it (batches, a flush per 20 ms batch).
+  takes in, fed as the worker feeds it (batches, a flush per 20 ms batch); also per second of
+  the process's CPU time (`lines_per_cpu_s`), which a busy machine disturbs less.
 - `memory --lines N`: resident memory the process gained for N lines, and the spool's size.
 - `flood --seconds S`: the main window on `sim://coxiris?chatter=5000` (5,000 debug lines/s,
   a USB device with no baud limit), jogging so the 3D/2D views update; a 5 ms timer records
-  the longest event-loop gap from one second after connecting on.
+  the longest event-loop gap from one second after connecting on, and the GUI thread's CPU
+  time in each gap (`max_busy_ms`, `p99_busy_ms`: the gaps without what other programs on a
+  busy machine, or the worker thread holding the interpreter lock, add to them).
 
 Run: .venv/bin/python bench/console_flood.py MODE [...] [--display]  (offscreen unless --display)
 """
@@ -32,7 +35,7 @@ EXCHANGE = [
     ("rx", b"ACK DELTA_MOVE\r\n"),
     ("rx", b"dbg 1234 loop ok\r\n"),
     ("rx", b"DONE DELTA_MOVE\r\n"),
-]  # 8 lines
+]  # 7 lines (a round: `lines // 8` rounds make 875,000 lines of 1,000,000)
 
 
 def _rss_mb() -> float:
@@ -40,8 +43,8 @@ def _rss_mb() -> float:
         return int(statm.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 1e6
 
 
-def _feed(lines: int) -> tuple[object, float]:
-    """A console fed `lines` lines in worker-sized batches; (console, seconds)."""
+def _console() -> object:
+    """A shown console decoding COXIRIS, as the window has it."""
     from PySide6.QtWidgets import QApplication
 
     from app.traffic_console import RawConsole
@@ -52,33 +55,46 @@ def _feed(lines: int) -> tuple[object, float]:
     console.resize(1000, 400)
     console.show()
     console.set_protocol(create_protocol("coxiris"))
+    return console
+
+
+def _feed(lines: int, console: object | None = None) -> tuple[object, float, float]:
+    """A console fed `lines` lines in worker-sized batches; (console, seconds, CPU seconds)."""
+    console = console or _console()
     rounds = lines // 8
+    cpu = time.process_time()
     start = time.perf_counter()
     t = 0.0
     for i in range(rounds):
         for direction, data in EXCHANGE:
             t += 0.0002
-            console.append_traffic(direction, data, t, 1.7e9 + t)
+            console.append_traffic(direction, data, t, 1.7e9 + t)  # type: ignore[attr-defined]
         if i % (BATCH // 8) == 0:
-            console.flush()
-    console.flush()
-    return console, time.perf_counter() - start
+            console.flush()  # type: ignore[attr-defined]
+    console.flush()  # type: ignore[attr-defined]
+    return console, time.perf_counter() - start, time.process_time() - cpu
 
 
 def ingest(lines: int) -> dict[str, float]:
-    """Lines per second into the console."""
-    console, seconds = _feed(lines)
+    """Lines per second into the console (and per second of this process's CPU time, which
+    other programs on a busy machine disturb less)."""
+    console, seconds, cpu = _feed(lines)
     count = len(console.index)  # type: ignore[attr-defined]
-    return {"lines": count, "seconds": seconds, "console_lines_per_s": count / seconds}
+    return {
+        "lines": count,
+        "seconds": seconds,
+        "console_lines_per_s": count / seconds,
+        "cpu_seconds": cpu,
+        "lines_per_cpu_s": count / cpu,
+    }
 
 
 def memory(lines: int) -> dict[str, float]:
-    """Resident memory gained for `lines` lines, and what went to disk."""
-    from PySide6.QtWidgets import QApplication
-
-    QApplication.instance() or QApplication([])
+    """Resident memory gained for `lines` lines, and what went to disk (the console is made
+    first: what its modules and widgets take is not counted as the lines')."""
+    console = _console()
     before = _rss_mb()
-    console, seconds = _feed(lines)
+    console, seconds, _ = _feed(lines, console)
     after = _rss_mb()
     index = console.index  # type: ignore[attr-defined]
     spool = os.fstat(index._fd).st_size
@@ -108,10 +124,12 @@ def flood(seconds: float) -> dict[str, float]:
     from PySide6.QtTest import QTest
     from PySide6.QtWidgets import QApplication
 
+    from app.gc_main_thread import collect_for
     from app.main_window import MainWindow
 
     app = QApplication.instance() or QApplication([])
     window = MainWindow()
+    collect_for(app, window.views.ready)  # garbage collected as the application does
     window.resize(1600, 1000)
     window.show()
     window.jog_panel.set_step(1)
@@ -119,19 +137,22 @@ def flood(seconds: float) -> dict[str, float]:
     clock = QElapsedTimer()
     clock.start()
     gaps: list[float] = []
-    last = [clock.nsecsElapsed()]
+    busy: list[float] = []  # the GUI thread's CPU time in each gap: what a busy machine adds
+    last = [clock.nsecsElapsed()]  # to the gaps (waiting for a core or the GIL) is not in it
+    last_cpu = [time.thread_time()]
     started = [float("inf")]
     window.settled.connect(lambda: started.__setitem__(0, min(started[0], time.monotonic() + 1)))
     keys = [Qt.Key.Key_Right, Qt.Key.Key_Up, Qt.Key.Key_Left, Qt.Key.Key_Down]
     jogs = [0]
 
     def tick() -> None:
-        now = clock.nsecsElapsed()
+        now, cpu = clock.nsecsElapsed(), time.thread_time()
         if time.monotonic() >= started[0]:
             gaps.append((now - last[0]) / 1e6)
+            busy.append((cpu - last_cpu[0]) * 1e3)
             if time.monotonic() >= started[0] + seconds:
                 app.quit()
-        last[0] = now
+        last[0], last_cpu[0] = now, cpu
 
     def jog() -> None:
         if time.monotonic() >= started[0] and window.jog_panel.isEnabled():
@@ -158,6 +179,7 @@ def flood(seconds: float) -> dict[str, float]:
     debug = window.console.index.counts["debug"]
     window.close()
     gaps.sort()
+    busy.sort()
     return {
         "seconds": seconds,
         "lines": lines,
@@ -167,6 +189,8 @@ def flood(seconds: float) -> dict[str, float]:
         "gui_max_stall_ms": gaps[-1] if gaps else float("nan"),
         "p99_gap_ms": gaps[int(0.99 * (len(gaps) - 1))] if gaps else float("nan"),
         "median_gap_ms": gaps[len(gaps) // 2] if gaps else float("nan"),
+        "max_busy_ms": busy[-1] if busy else float("nan"),
+        "p99_busy_ms": busy[int(0.99 * (len(busy) - 1))] if busy else float("nan"),
     }
 
 

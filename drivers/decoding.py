@@ -6,15 +6,18 @@ the protocol's framer and `decode`, what was sent through its TX framer and `des
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from drivers.errors import FrameError
 from drivers.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.framers.base import Framer
+from drivers.framers.lines import LineFramer
 from drivers.log_reader import LogRecord
 from drivers.protocols.base import Protocol
 
 CACHE_SIZE = 4096  # distinct frames remembered per direction, with their meaning
+RECORD_FRAMES = 4  # a record of at most this many frames, each known, is remembered whole
 
 
 @dataclass(slots=True)
@@ -57,12 +60,41 @@ def _received(protocol: Protocol, frame: bytes) -> tuple[str, str, tuple[Event, 
         events = protocol.decode(frame)
     except FrameError as exc:
         return f"unreadable: {exc}", "error", ()
+    if len(events) == 1:  # the common case (one line, one event), without generators
+        event = events[0]
+        if isinstance(event, (ErrorReport, Undecodable)):
+            return str(event), "error", (event,)
+        return str(event), "text" if isinstance(event, TextLine) else "frame", (event,)
     kind = "frame"
     if any(isinstance(e, (ErrorReport, Undecodable)) for e in events):
         kind = "error"
     elif events and all(isinstance(e, TextLine) for e in events):
         kind = "text"
     return "; ".join(str(e) for e in events), kind, tuple(events)
+
+
+class Frame:
+    """One decoded frame, shared by every time its bytes cross again (do not change it).
+
+    `raw` is what crossed (its `wire`, else its `data`); `memo` is free for a consumer to keep
+    what it derives from the frame (the traffic index keeps its spool line there).
+    """
+
+    __slots__ = ("data", "events", "kind", "meaning", "memo", "raw", "wire")
+
+    def __init__(
+        self, data: bytes, wire: bytes, meaning: str, kind: str, events: tuple[Event, ...]
+    ) -> None:
+        self.data = data
+        self.wire = wire
+        self.raw = wire or data
+        self.meaning = meaning
+        self.kind = kind
+        self.events = events
+        self.memo: object = None
+
+    def __repr__(self) -> str:
+        return f"Frame({self.raw!r}, {self.kind}, {self.meaning!r})"
 
 
 def _wire_spans(consumed: bytes, frames: list[bytes]) -> list[bytes]:
@@ -87,7 +119,12 @@ def _wire_spans(consumed: bytes, frames: list[bytes]) -> list[bytes]:
 
 
 class StreamDecoder:
-    """Decodes traffic as it comes, record by record, keeping each direction's partial frame."""
+    """Decodes traffic as it comes, record by record, keeping each direction's partial frame.
+
+    Traffic repeats itself (polls, acks): each distinct frame that crosses more than once is
+    decoded once (a cache per direction, CACHE_SIZE frames), and a short record that split into
+    the same frames before is not split again (a line framer's records: it keeps no state).
+    """
 
     def __init__(self, protocol: Protocol) -> None:
         self.protocol = protocol
@@ -96,7 +133,11 @@ class StreamDecoder:
             "tx": protocol.new_tx_framer(),
         }
         self._pending = {"rx": b"", "tx": b""}
-        self._cache: dict[str, dict[bytes, tuple[str, str, tuple[Event, ...]]]] = {
+        self._cache: dict[str, dict[bytes, Frame]] = {"rx": {}, "tx": {}}
+        # Frames seen once, as bytes: a frame is kept (with its events) when it crosses again,
+        # so a flood of lines that never repeat leaves no objects for the garbage collector.
+        self._seen: dict[str, dict[bytes, None]] = {"rx": {}, "tx": {}}
+        self._records: dict[str, dict[bytes, tuple[tuple[Frame, ...], bytes]]] = {
             "rx": {},
             "tx": {},
         }
@@ -109,29 +150,60 @@ class StreamDecoder:
 
     def feed_bytes(self, direction: str, data: bytes, time: float) -> list[DecodedFrame]:
         """The frames that bytes crossing in `direction` at `time` complete."""
+        return [
+            DecodedFrame(time, direction, f.data, f.meaning, f.kind, f.wire, f.events)
+            for f in self.frames(direction, data)
+        ]
+
+    def frames(self, direction: str, data: bytes) -> Sequence[Frame]:
+        """As `feed_bytes`, as shared Frame objects (no time): the traffic index's fast path."""
+        pending = self._pending[direction]
+        records = self._records[direction]
+        if not pending:
+            known = records.get(data)
+            if known is not None:
+                frames, self._pending[direction] = known
+                return frames
         framer = self._framers[direction]
         if framer is None:  # the record is the frame (packets ended by silence)
-            frames, self._pending[direction] = [data], b""
-            spans = [data]
+            split: tuple[list[bytes], list[bytes], bytes] | None = ([data], [data], b"")
         else:
-            buffer = self._pending[direction] + data
-            frames, rest = framer.split(buffer)
-            self._pending[direction] = rest
-            spans = _wire_spans(buffer[: len(buffer) - len(rest)], frames)
+            buffer = pending + data if pending else data
+            split = framer.split_wired(buffer) if isinstance(framer, LineFramer) else None
+            if split is None:
+                found, rest = framer.split(buffer)
+                split = found, _wire_spans(buffer[: len(buffer) - len(rest)], found), rest
+        found, wires, rest = split
+        self._pending[direction] = rest
+        cache, seen = self._cache[direction], self._seen[direction]
         out = []
-        cache = self._cache[direction]
-        for frame, wire in zip(frames, spans, strict=True):
+        repeated = True  # every frame of the record crossed before
+        for frame, wire in zip(found, wires, strict=True):
             known = cache.get(frame)
-            if known is None:  # traffic repeats itself (polls, acks): each frame decoded once
-                if direction == "rx":
-                    known = _received(self.protocol, frame)
+            if known is None or known.wire != wire:
+                if known is not None:
+                    meaning, kind, events = known.meaning, known.kind, known.events
+                elif direction == "rx":
+                    meaning, kind, events = _received(self.protocol, frame)
                 else:
-                    known = (self.protocol.describe_sent(frame), "frame", ())
-                if len(cache) >= CACHE_SIZE:
-                    cache.clear()
-                cache[frame] = known
-            meaning, kind, events = known
-            out.append(DecodedFrame(time, direction, frame, meaning, kind, wire, events))
+                    meaning, kind, events = self.protocol.describe_sent(frame), "frame", ()
+                kept = known is not None or frame in seen
+                known = Frame(frame, wire, meaning, kind, events)
+                if kept:  # it crosses again: kept, with its meaning
+                    if len(cache) >= CACHE_SIZE:
+                        cache.clear()
+                    cache[frame] = known
+                else:  # maybe never again (a counter in debug output): remembered as bytes only
+                    repeated = False
+                    if len(seen) >= CACHE_SIZE:
+                        seen.clear()
+                    seen[frame] = None
+            out.append(known)
+        stateless = framer is None or isinstance(framer, LineFramer)  # the same split again
+        if stateless and repeated and not pending and len(out) <= RECORD_FRAMES:
+            if len(records) >= CACHE_SIZE:
+                records.clear()
+            records[data] = (tuple(out), rest)
         return out
 
     def pending(self, direction: str) -> bytes:

@@ -1,10 +1,15 @@
 """Every frame of a session, decoded, classified and paired, kept on disk with a small index.
 
 A console over a million lines keeps no strings per line: each line's text goes to a spool file
-(`DIR\\tKIND\\tHEX\\tTEXT\\tMEANING\\n`), and numpy arrays hold its offset, time, direction and
-kind, its pair (request ↔ reply) with the latency, and the first copy of a retransmission:
-about 30 bytes a line in memory. Lines are read back from the spool on demand; filters by
-direction, kind and regular expression run over the arrays and the spool.
+(`DIR\\tKIND\\tHEX\\tTEXT\\tMEANING\\n`), and typed arrays (read by numpy in place) hold its
+offset, time, direction and kind, its pair (request ↔ reply) with the latency, and the first
+copy of a retransmission: 33 bytes a line in memory. Lines are read back from the spool on
+demand; filters by direction, kind and regular expression run over the arrays and the spool.
+
+Taking lines in is made cheap for a flood (`add_many`): traffic repeats itself, so a frame's
+decoding and its spool line are made once and kept on the decoder's shared Frame; lines join
+the arrays and the spool a batch at a time; and what a request's reply tracker does with each
+reply frame is learnt once and replayed for the next copy of the request (see _Waiting).
 
 Kinds: `motion`, `query`, `poll` (the position query and its reply), `setting`, `error`,
 `debug` (the device's own text) and `note`. A sent frame's kind is the protocol's
@@ -15,20 +20,24 @@ the oldest request still waiting (for `REPLY_WINDOW` seconds) that `expects_repl
 
 from __future__ import annotations
 
+import functools
 import logging
 import math
 import mmap
 import os
 import re
 import tempfile
+import time as time_module
 from array import array
 from collections import deque
+from collections.abc import Sequence
 from dataclasses import dataclass
+from itertools import accumulate
 from pathlib import Path
 
 import numpy as np
 
-from drivers.decoding import DecodedFrame, StreamDecoder
+from drivers.decoding import Frame, StreamDecoder
 from drivers.errors import BadInput
 from drivers.log_reader import LogRecord
 from drivers.protocols.base import Exchange, Protocol
@@ -44,8 +53,12 @@ _ESCAPES = {0x0D: "\\r", 0x0A: "\\n", 0x09: "\\t", 0x5C: "\\\\"}
 _ESCAPE_TABLE = {
     b: _ESCAPES.get(b, chr(b) if 0x20 <= b < 0x7F else f"\\x{b:02x}") for b in range(256)
 }
+_TAILS = {"\r\n": "\\r\\n", "\n": "\\n", "\r": "\\r"}
 _CLEAN = str.maketrans({"\t": " ", "\n": " ", "\r": " "})
 _CACHE_SIZE = 4096
+_TX, _RX = _DIR_CODE["tx"] << 4, _DIR_CODE["rx"] << 4
+_ERROR = _KIND_CODE["error"]
+_RECEIVED_KIND = {"error": _ERROR, "text": _KIND_CODE["debug"]}  # else the request's kind
 
 
 class FilterError(BadInput):
@@ -55,9 +68,13 @@ class FilterError(BadInput):
 def escape(data: bytes) -> str:
     """Printable ASCII as is; CR, LF, tab and backslash as \\r \\n \\t \\\\; others as \\xNN."""
     text = data.decode("latin-1")
-    core = text.rstrip("\r\n")
-    if core.isascii() and core.isprintable() and "\\" not in core:  # the common case, fast
-        return core + text[len(core) :].replace("\r", "\\r").replace("\n", "\\n")
+    if text.isascii():  # the common cases, fast: printable text, then a line end
+        if text.isprintable():
+            return text.replace("\\", "\\\\") if "\\" in text else text
+        core = text.rstrip("\r\n")
+        if core.isprintable() and "\\" not in core:
+            tail = text[len(core) :]
+            return core + (_TAILS.get(tail) or tail.replace("\r", "\\r").replace("\n", "\\n"))
     return text.translate(_ESCAPE_TABLE)
 
 
@@ -74,6 +91,34 @@ def compile_filter(pattern: str) -> re.Pattern[bytes] | None:
         raise FilterError(f"{pattern!r} is not valid text") from None
     except (OverflowError, RecursionError) as exc:  # a{4294967296}, thousands of nested groups
         raise FilterError(f"{pattern[:40]!r}… is too large a regular expression: {exc}") from None
+
+
+@functools.lru_cache(maxsize=64)
+def _wanted_codes(directions: frozenset[str], kinds: frozenset[str]) -> np.ndarray:
+    """Which line codes (direction << 4 | kind) pass a direction and kind filter."""
+    wanted = np.zeros(256, dtype=bool)
+    for direction in directions:
+        for kind in kinds:
+            wanted[_DIR_CODE[direction] << 4 | _KIND_CODE[kind]] = True
+    return wanted
+
+
+def _record_direction(record: LogRecord) -> str:
+    return "" if record.note else record.direction
+
+
+def _record_data(record: LogRecord) -> bytes:
+    return record.note.encode("utf-8") if record.note else record.data
+
+
+def _spool_line(direction: str, kind: str, data: bytes, meaning: str) -> bytes:
+    """A line of the spool: `DIR\tKIND\tHEX\tTEXT\tMEANING\n`, UTF-8."""
+    if not meaning.isprintable():
+        meaning = meaning.translate(_CLEAN)
+    text = (
+        f"{direction.upper() or '--'}\t{kind}\t{data.hex(' ').upper()}\t{escape(data)}\t{meaning}\n"
+    )
+    return text.encode("utf-8")
 
 
 @dataclass(frozen=True)
@@ -117,7 +162,12 @@ def _hit_spans(
 
 
 class _Columns:
-    """One row a line, in typed arrays (appending is cheap); numpy reads them in place."""
+    """One row a line, in typed arrays; numpy reads them in place.
+
+    New lines wait in `new` (a tuple each) and join the arrays a batch at a time. The pairing
+    columns, written while a batch is under way, are allocated ahead (their defaults filled in)
+    and are longer than `size`.
+    """
 
     def __init__(self) -> None:
         self.offset = array("q", [0])  # offset[i + 1]: where line i ends in the spool
@@ -127,22 +177,106 @@ class _Columns:
         self.pair = array("i")
         self.latency = array("f")
         self.first_copy = array("i")
+        self.new: list[tuple[float, tuple[int, int, bytes]]] = []  # time, (code, size, line)
 
     @property
     def size(self) -> int:
         return len(self.time)
 
+    def reserve(self, lines: int) -> int:
+        """Room in the pairing columns for lines 0..lines-1 at least; returns how many."""
+        have = len(self.pair)
+        if lines > have:
+            more = max(lines - have, 4096, have // 8)
+            self.pair.extend(_MINUS_ONE * more)
+            self.first_copy.extend(_MINUS_ONE * more)
+            self.latency.extend(_NAN * more)
+        return len(self.pair)
+
+    def take_new(self) -> list[bytes]:
+        """Put the waiting lines in the arrays; returns their spool lines."""
+        if not self.new:
+            return []
+        times, memos = zip(*self.new, strict=True)
+        self.new.clear()
+        codes, sizes, lines = zip(*memos, strict=True)
+        self.time.extend(times)
+        self.code.extend(codes)
+        self.size_.extend(sizes)
+        ends = accumulate(map(len, lines), initial=self.offset[-1])
+        next(ends)  # where the first starts
+        self.offset.extend(ends)
+        return list(lines)
+
     def view(self, name: str, dtype: type) -> np.ndarray:
         """A numpy view of a column: do not keep it (the column cannot grow while it lives)."""
-        return np.frombuffer(getattr(self, name), dtype=dtype)
+        column = getattr(self, name)
+        return np.frombuffer(column, dtype=dtype)[: self.size + (column is self.offset)]
 
 
-@dataclass
+_MINUS_ONE = array("i", [-1])
+_NAN = array("f", [math.nan])
+
+
+@dataclass(slots=True)
 class _Waiting:
+    """A request waiting for its reply, and where its reply tracker is.
+
+    The tracker is the protocol's (`raw_exchange`): `exchange` once built. Trackers are state
+    machines fed events, so what one did with each frame, in order, is the same for every copy
+    of a request: the index remembers it (a script: `_Scripts`) and replays it without building
+    the tracker, until a frame comes that the script has not seen; then the tracker is built and
+    fed the frames so far (`offered`), and goes on live, adding to the script.
+    """
+
     line: int
     time: float
     data: bytes
-    exchange: Exchange | None
+    raw: bytes
+    kind: int  # its kind's code, which its replies take
+    tracked: bool  # the protocol has a tracker for it (else it is answered by order)
+    exchange: Exchange | None = None
+    state: int = -1  # the script's state it is in (-1: off the script)
+    offered: list[Frame] | None = None  # frames replayed so far, while `exchange` is None
+
+
+class _Scripts:
+    """What reply trackers did with the frames offered them (see _Waiting), by request frame."""
+
+    MAX_STEPS = 20_000  # then forgotten, and learnt again
+    MAX_DEPTH = 64  # frames a script follows a request for; the tracker then goes on live
+
+    def __init__(self) -> None:
+        self.starts: dict[bytes, int | None] = {}  # request → first state (None: no tracker)
+        self.steps: dict[tuple[int, bytes], tuple[bool, bool, int]] = {}  # → taken, done, next
+        self.depth: dict[int, int] = {}  # state → frames since its start
+        self.states = 0
+
+    def start(self, data: bytes, tracked: bool) -> int | None:
+        """A request's first state (None: it has no tracker)."""
+        if len(self.steps) + len(self.starts) >= self.MAX_STEPS:
+            self.starts.clear()
+            self.steps.clear()
+            self.depth.clear()
+        state = self.starts[data] = self.states if tracked else None
+        if tracked:
+            self.depth[self.states] = 0
+            self.states += 1
+        return state
+
+    def learn(self, state: int, frame: bytes, taken: bool, done: bool) -> int:
+        """The tracker in `state` did this with `frame`; returns the next state (-1: no more)."""
+        known = self.steps.get((state, frame))
+        if known is not None:  # (another copy of the request learnt it first)
+            return known[2]
+        depth = self.depth.get(state, self.MAX_DEPTH)
+        if depth >= self.MAX_DEPTH or len(self.steps) + len(self.starts) >= self.MAX_STEPS:
+            return -1
+        following = self.states
+        self.states += 1
+        self.depth[following] = depth + 1
+        self.steps[state, frame] = (taken, done, following)
+        return following
 
 
 class TrafficIndex:
@@ -156,11 +290,15 @@ class TrafficIndex:
         self.spool_path = Path(name)
         os.unlink(name)  # the descriptor keeps it; nothing is left behind after a crash
         self._columns = _Columns()
-        self._unwritten = bytearray()
+        self._size = 0  # lines, those waiting in the columns' `new` included
+        self._reserved = 0  # lines the pairing columns have room for
+        self._new = self._columns.new.append
+        self._unwritten: list[bytes] = []  # spool lines not yet written (one write a batch)
         self._written = 0
         self._cache: dict[int, TrafficLine] = {}
-        self.counts = dict.fromkeys(KINDS, 0)
-        self.new_latencies: list[int] = []  # replies paired since the caller last took them
+        self._counts = dict.fromkeys(KINDS, 0)
+        self._counted = 0  # lines whose kinds `counts` has added up
+        self.new_latencies = array("i")  # replies paired since the caller last took them
         self.wall_offset: float | None = None  # wall-clock time minus record time
         self.set_protocol(protocol)
 
@@ -170,8 +308,9 @@ class TrafficIndex:
         self._decoder = StreamDecoder(protocol) if protocol is not None else None
         self._waiting: deque[_Waiting] = deque()
         self._last_sent: dict[bytes, int] = {}  # frame → line of its first copy, unanswered
-        self._last_kind = "query"
-        self._sent_kinds: dict[bytes, str] = {}
+        self._last_kind = _KIND_CODE["query"]  # of the last frame sent, for a reply unpaired
+        self._sent: dict[bytes, tuple[int, bool]] = {}  # frame → kind code, expects a reply
+        self._scripts = _Scripts()
 
     def close(self) -> None:
         """Release the spool."""
@@ -180,147 +319,237 @@ class TrafficIndex:
             self._fd = -1
 
     def __len__(self) -> int:
-        return self._columns.size
+        return self._size
+
+    @property
+    def counts(self) -> dict[str, int]:
+        """Lines of each kind (added up from the kind codes of the lines new since last time)."""
+        columns = self._columns
+        if self._counted < columns.size:
+            codes = columns.view("code", np.uint8)[self._counted :]
+            added = np.bincount(codes & 0x0F, minlength=len(KINDS)).tolist()
+            for kind, count in zip(KINDS, added, strict=False):
+                self._counts[kind] += count
+            self._counted = columns.size
+        return self._counts
 
     # -- adding ------------------------------------------------------------------------------
 
     def add(self, direction: str, data: bytes, time: float, wall: float | None = None) -> int:
         """Take bytes that crossed; returns how many lines they completed."""
-        if wall is not None and self.wall_offset is None:
-            self.wall_offset = wall - time
-        if self._decoder is None:
-            frames = [DecodedFrame(time, direction, bytes(data), "", "frame")]
-        else:
-            frames = self._decoder.feed_bytes(direction, bytes(data), time)
-        for frame in frames:
-            self._add_frame(frame)
-        return len(frames)
+        before = len(self)
+        self.add_many([(time, direction, bytes(data), wall)])
+        return len(self) - before
 
     def add_note(self, text: str, time: float, wall: float | None = None) -> None:
         """Take an information line (connected, a command not sent, …)."""
         if wall is not None and self.wall_offset is None:
             self.wall_offset = wall - time
         self._append(time, "", "note", b"", text)
+        self._unwritten += self._columns.take_new()
+
+    def add_many(
+        self,
+        items: Sequence[tuple[float, str, bytes, float | None]],
+        deadline: float | None = None,
+    ) -> int:
+        """Take records in order: (time, direction, data, wall clock or None), a direction of ""
+        a note (data its UTF-8 text). With a `deadline` (perf_counter), stops once it has passed
+        and returns how many were taken (all, else)."""
+        decoder = self._decoder
+        frames_of = decoder.frames if decoder is not None else None
+        sent, received = self._add_sent, self._add_received
+        clock = time_module.perf_counter
+        no_wall = self.wall_offset is None
+        taken = 0
+        for when, direction, data, wall in items:
+            taken += 1
+            if no_wall and wall is not None:
+                self.wall_offset = wall - when
+                no_wall = False
+            if not direction:
+                self._append(when, "", "note", b"", data.decode("utf-8"))
+                continue
+            if frames_of is None:
+                frames: Sequence[Frame] = (Frame(bytes(data), b"", "", "frame", ()),)
+            else:
+                frames = frames_of(direction, data)
+            add = sent if direction == "tx" else received
+            for frame in frames:
+                add(frame, when)
+            if deadline is not None and clock() > deadline:
+                break
+        self._unwritten += self._columns.take_new()
+        if len(self._unwritten) > 4096:
+            self._write()
+        return taken
 
     def add_records(self, records: list[LogRecord]) -> None:
-        """Take a log's records, in order."""
-        for record in records:
-            if record.note:
-                self._append(record.time, "", "note", b"", record.note)
-            elif self._decoder is None:
-                self._append(record.time, record.direction, "query", record.data, "")
+        """Take a log's records, in order (without a protocol, each record is a line)."""
+        for start in range(0, len(records), 4096):
+            chunk = records[start : start + 4096]
+            if self._decoder is None:
+                for r in chunk:
+                    kind = "note" if r.note else "query"
+                    self._append(r.time, "" if r.note else r.direction, kind, r.data, r.note)
+                self._unwritten += self._columns.take_new()
             else:
-                for frame in self._decoder.feed(record):
-                    self._add_frame(frame)
-            if len(self._unwritten) > 1 << 20:
-                self._write()
-        self._write()
+                self.add_many(
+                    [(r.time, _record_direction(r), _record_data(r), None) for r in chunk]
+                )
+            self._write()
 
-    def _add_frame(self, frame: DecodedFrame) -> None:
-        if frame.direction == "tx":
-            self._add_sent(frame)
-        else:
-            self._add_received(frame)
-
-    def _add_sent(self, frame: DecodedFrame) -> None:
+    def _add_sent(self, frame: Frame, time: float) -> None:
         protocol = self.protocol
-        kind = self._sent_kinds.get(frame.data)
-        if kind is None:
-            kind = protocol.sent_kind(frame.data) if protocol else "query"
-            if len(self._sent_kinds) >= 4096:
-                self._sent_kinds.clear()
-            self._sent_kinds[frame.data] = kind
-        line = self._append(frame.time, "tx", kind, frame.raw, frame.meaning)
-        self._last_kind = kind
-        self._expire(frame.time)
-        first = self._last_sent.get(frame.data)
+        data = frame.data
+        known = self._sent.get(data)
+        if known is None:
+            kind = protocol.sent_kind(data) if protocol else "query"
+            expects = protocol is not None and protocol.expects_reply(data)
+            if len(self._sent) >= 4096:
+                self._sent.clear()
+            known = self._sent[data] = (_KIND_CODE[kind], expects)
+        code, expects = known
+        line = self._append_frame(frame, time, _TX | code)
+        self._last_kind = code
+        waiting = self._waiting
+        while waiting and time - waiting[0].time > REPLY_WINDOW:
+            waiting.popleft()
+        first = self._last_sent.get(data)
         if first is not None:
             self._columns.first_copy[line] = first
         else:
-            self._last_sent[frame.data] = line
-        if protocol is None or not protocol.expects_reply(frame.data):
+            self._last_sent[data] = line
+        if not expects:
             return
-        exchange = None
-        try:
-            exchange = protocol.raw_exchange(frame.raw)
-        except Exception:  # a tracker for a frame that makes no sense: pair by order instead
-            log.debug("no reply tracker for %r", frame.data, exc_info=True)
-        self._waiting.append(_Waiting(line, frame.time, frame.data, exchange))
+        scripts = self._scripts
+        if data in scripts.starts:  # followed before: replayed (see _Waiting)
+            state = scripts.starts[data]
+            if state is None:
+                waiting.append(_Waiting(line, time, data, frame.raw, code, False))
+            else:
+                waiting.append(_Waiting(line, time, data, frame.raw, code, True, None, state, []))
+            return
+        exchange = self._tracker(frame.raw)
+        state = scripts.start(data, exchange is not None)
+        tracked = exchange is not None
+        waiting.append(
+            _Waiting(
+                line, time, data, frame.raw, code, tracked, exchange, -1 if state is None else state
+            )
+        )
 
-    def _add_received(self, frame: DecodedFrame) -> None:
-        kind = {"error": "error", "text": "debug"}.get(frame.kind, "")
-        request = self._match(frame) if frame.kind != "text" else None
-        if request is None and frame.kind == "text":
-            request = self._match(frame, text_only=True)
-        if not kind:
-            kind = self._kind_of(request.line) if request else self._last_kind
-        line = self._append(frame.time, "rx", kind, frame.raw, frame.meaning)
+    def _tracker(self, raw: bytes) -> Exchange | None:
+        """The protocol's reply tracker for a request (None: it pairs by order)."""
+        try:
+            return self.protocol.raw_exchange(raw)  # type: ignore[union-attr]
+        except Exception:  # a tracker for a frame that makes no sense: pair by order instead
+            log.debug("no reply tracker for %r", raw, exc_info=True)
+            return None
+
+    def _add_received(self, frame: Frame, time: float) -> None:
+        request = self._match(frame, frame.kind == "text") if self._waiting else None
+        kind = _RECEIVED_KIND.get(frame.kind)
+        if kind is None:
+            kind = request.kind if request is not None else self._last_kind
+        line = self._append_frame(frame, time, _RX | kind)
         if request is not None:
-            columns = self._columns
-            if columns.pair[request.line] < 0:  # the first reply line answers the request
-                columns.pair[request.line] = line
-                self._cache.pop(request.line, None)
-                columns.latency[line] = (frame.time - request.time) * 1000.0
+            columns, asked = self._columns, request.line
+            if columns.pair[asked] < 0:  # the first reply line answers the request
+                columns.pair[asked] = line
+                self._cache.pop(asked, None)
+                columns.latency[line] = (time - request.time) * 1000.0
                 self.new_latencies.append(line)
-            columns.pair[line] = request.line
-            if kind != "error":
+            columns.pair[line] = asked
+            if kind != _ERROR:
                 self._last_sent.pop(request.data, None)  # answered: a copy now is not a retry
 
-    def _match(self, frame: DecodedFrame, text_only: bool = False) -> _Waiting | None:
+    def _match(self, frame: Frame, text_only: bool = False) -> _Waiting | None:
         """The request this received frame belongs to (it stays waiting until finished).
 
         Trackers are offered the frame newest first: on a one-in-flight device the newest
         request is the one being answered, and a tracker takes what is not its own as garbled.
         """
+        steps = self._scripts.steps
         for waiting in reversed(self._waiting):
-            exchange = waiting.exchange
-            if exchange is None:
+            if not waiting.tracked:
                 continue
-            try:
-                taken = any(exchange.on_event(event) for event in frame.events)
-            except Exception:  # a tracker confused by foreign traffic: not this request's
-                log.debug("reply tracker failed on %r", frame.data, exc_info=True)
-                taken = False
+            if waiting.exchange is None:  # replaying its script
+                step = steps.get((waiting.state, frame.data))
+                if step is not None:
+                    taken, done, waiting.state = step
+                    waiting.offered.append(frame)  # type: ignore[union-attr]
+                    if taken:
+                        if done:
+                            self._waiting.remove(waiting)
+                        return waiting
+                    continue
+                self._go_live(waiting)
+                if waiting.exchange is None:
+                    continue
+            taken, done = self._offer(waiting, frame)
             if taken:
-                if exchange.finished and not exchange.wants_more:
+                if done:
                     self._waiting.remove(waiting)
                 return waiting
         if not text_only:
             for waiting in self._waiting:
-                if waiting.exchange is None:
+                if not waiting.tracked:
                     self._waiting.remove(waiting)
                     return waiting
         return None
 
-    def _expire(self, now: float) -> None:
-        while self._waiting and now - self._waiting[0].time > REPLY_WINDOW:
-            self._waiting.popleft()
+    def _go_live(self, waiting: _Waiting) -> None:
+        """Build a replayed request's tracker and feed it the frames replayed so far."""
+        offered, waiting.offered = waiting.offered or [], None
+        exchange = waiting.exchange = self._tracker(waiting.raw)
+        if exchange is None:  # (the protocol changed its mind: pair it by order)
+            waiting.tracked = False
+            return
+        state, waiting.state = waiting.state, -1
+        for frame in offered:
+            self._offer(waiting, frame)
+        waiting.state = state
 
-    def _kind_of(self, line: int) -> str:
-        return KINDS[self._columns.code[line] & 0x0F]
+    def _offer(self, waiting: _Waiting, frame: Frame) -> tuple[bool, bool]:
+        """Feed a frame's events to a request's live tracker: (taken, the reply is complete),
+        learnt by the script where it follows."""
+        exchange = waiting.exchange
+        events = frame.events
+        try:
+            if len(events) == 1:
+                taken = exchange.on_event(events[0])  # type: ignore[union-attr]
+            else:
+                taken = any(exchange.on_event(event) for event in events)  # type: ignore[union-attr]
+        except Exception:  # a tracker confused by foreign traffic: not this request's
+            log.debug("reply tracker failed on %r", frame.data, exc_info=True)
+            taken = False
+        done = taken and exchange.finished and not exchange.wants_more  # type: ignore[union-attr]
+        if waiting.state >= 0:
+            waiting.state = self._scripts.learn(waiting.state, frame.data, taken, done)
+        return taken, done
+
+    def _append_frame(self, frame: Frame, time: float, code: int) -> int:
+        """A frame's line (its spool line kept on the frame for the next time it crosses)."""
+        memo = frame.memo
+        if memo is None or memo[0] != code:
+            raw = frame.raw
+            direction, kind = DIRECTIONS[code >> 4], KINDS[code & 0x0F]
+            memo = frame.memo = (code, len(raw), _spool_line(direction, kind, raw, frame.meaning))
+        line = self._size
+        self._size = line + 1
+        self._new((time, memo))
+        if line >= self._reserved:
+            self._reserved = self._columns.reserve(line + 1)
+        return line
 
     def _append(self, time: float, direction: str, kind: str, data: bytes, meaning: str) -> int:
-        columns = self._columns
-        line = columns.size
-        text = "\t".join(
-            (
-                direction.upper() or "--",
-                kind,
-                data.hex(" ").upper(),
-                escape(data),
-                meaning.translate(_CLEAN) if not meaning.isprintable() else meaning,
-            )
-        )
-        encoded = (text + "\n").encode("utf-8")
-        self._unwritten += encoded
-        columns.offset.append(columns.offset[line] + len(encoded))
-        columns.time.append(time)
-        columns.code.append(_DIR_CODE[direction] << 4 | _KIND_CODE[kind])
-        columns.size_.append(len(data))
-        columns.pair.append(-1)
-        columns.latency.append(math.nan)
-        columns.first_copy.append(-1)
-        self.counts[kind] += 1
+        code = _DIR_CODE[direction] << 4 | _KIND_CODE[kind]
+        line = self._size
+        self._size = line + 1
+        self._new((time, (code, len(data), _spool_line(direction, kind, data, meaning))))
+        if line >= self._reserved:
+            self._reserved = self._columns.reserve(line + 1)
         return line
 
     def commit(self) -> None:
@@ -328,16 +557,17 @@ class TrafficIndex:
         self._write()
 
     def _write(self) -> None:
+        self._unwritten += self._columns.take_new()
         if self._fd < 0:  # closed: a late line has nowhere to go
-            self._unwritten = bytearray()
+            self._unwritten = []
             return
         if self._unwritten:
-            view = memoryview(self._unwritten)
+            view = memoryview(b"".join(self._unwritten))
+            self._unwritten = []
+            self._written += len(view)
             while view:
                 written = os.write(self._fd, view)
                 view = view[written:]
-            self._written += len(self._unwritten)
-            self._unwritten = bytearray()
 
     # -- reading -----------------------------------------------------------------------------
 
@@ -357,41 +587,61 @@ class TrafficIndex:
         """Directions of lines start..end-1 ("" for notes)."""
         return [DIRECTIONS[code >> 4] for code in self._columns.code[start:end]]
 
+    def direction_codes(self, start: int, end: int) -> np.ndarray:
+        """Directions of lines start..end-1 as indexes into DIRECTIONS (a copy)."""
+        return self._columns.view("code", np.uint8)[start:end] >> 4
+
     def take_latencies(self) -> list[tuple[int, float, float]]:
         """(reply line, its time, latency in ms) paired since the last call."""
         columns, taken = self._columns, self.new_latencies
-        self.new_latencies = []
+        self.new_latencies = array("i")
         return [(n, float(columns.time[n]), float(columns.latency[n])) for n in taken]
 
     def line(self, number: int) -> TrafficLine:
-        """One line, read back from the spool."""
+        """One line, read back from the spool (the latest few thousand are kept)."""
         cached = self._cache.get(number)
         if cached is not None:
             return cached
-        columns = self._columns
-        if not 0 <= number < columns.size:
-            raise IndexError(f"line {number} of {columns.size}")
-        start, end = int(columns.offset[number]), int(columns.offset[number + 1])
-        if end > self._written:
-            self._write()
-        raw = os.pread(self._fd, end - start, start).decode("utf-8")
-        _, kind, hexes, _, meaning = raw.rstrip("\n").split("\t", 4)
-        code = int(columns.code[number])
-        result = TrafficLine(
-            number,
-            float(columns.time[number]),
-            DIRECTIONS[code >> 4],
-            kind,
-            bytes.fromhex(hexes),
-            meaning,
-            int(columns.pair[number]),
-            float(columns.latency[number]),
-            int(columns.first_copy[number]),
-        )
+        result = TrafficLine(*self.read(number))
         if len(self._cache) >= _CACHE_SIZE:
             self._cache.clear()
         self._cache[number] = result
         return result
+
+    def read(self, number: int) -> tuple[int, float, str, str, bytes, str, int, float, int]:
+        """A line's fields as TrafficLine has them, in a tuple, read from the spool each time
+        (what the console's table keeps: plain tuples, which the garbage collector skips)."""
+        columns = self._columns
+        if not 0 <= number < self._size:
+            raise IndexError(f"line {number} of {self._size}")
+        start, end = columns.offset[number], columns.offset[number + 1]
+        if end > self._written:
+            self._write()
+        raw = os.pread(self._fd, end - start, start).decode("utf-8")
+        _, kind, hexes, _, meaning = raw.rstrip("\n").split("\t", 4)
+        direction, pair, latency, first_copy = self.pairing(number)
+        data = bytes.fromhex(hexes)
+        return (
+            number,
+            columns.time[number],
+            direction,
+            kind,
+            data,
+            meaning,
+            pair,
+            latency,
+            first_copy,
+        )
+
+    def pairing(self, number: int) -> tuple[str, int, float, int]:
+        """A line's direction, pair, latency (ms) and first copy (see TrafficLine)."""
+        columns = self._columns
+        return (
+            DIRECTIONS[columns.code[number] >> 4],
+            columns.pair[number],
+            columns.latency[number],
+            columns.first_copy[number],
+        )
 
     def select(
         self,
@@ -402,13 +652,15 @@ class TrafficIndex:
     ) -> np.ndarray:
         """Line numbers from `start` on that pass the filters (None: any), in order."""
         codes = self._columns.view("code", np.uint8)[start:]
-        mask = np.ones(len(codes), dtype=bool)
-        if directions is not None:
-            wanted = [_DIR_CODE[d] for d in directions]
-            mask &= np.isin(codes >> 4, wanted)
-        if kinds is not None:
-            mask &= np.isin(codes & 0x0F, [_KIND_CODE[k] for k in kinds])
-        lines = np.flatnonzero(mask).astype(np.int64) + start
+        if directions is None and kinds is None:
+            lines = np.arange(start, start + len(codes), dtype=np.int64)
+        else:
+            wanted = _wanted_codes(
+                frozenset(DIRECTIONS if directions is None else directions),
+                frozenset(KINDS if kinds is None else kinds),
+            )
+            lines = wanted[codes].nonzero()[0]
+            lines += start
         if pattern is not None and len(lines):
             lines = self._matching(lines, pattern)
         return lines

@@ -471,6 +471,34 @@ def test_stream_decoder_takes_any_traffic(name, variant, data) -> None:
     assert frames[-1].kind == "note"
 
 
+@pytest.mark.parametrize(("name", "variant"), VARIANTS, ids=IDS)
+@settings(FUZZ, max_examples=35)
+@given(data=st.data())
+def test_replayed_reply_trackers_pair_as_live_ones(name, variant, data) -> None:
+    """The index replays what a request's reply tracker did for an earlier copy of it (its
+    script) instead of building the tracker: the pairing, kinds and copies must be the same as
+    with every tracker built and fed live. Traffic is repeated so that scripts are replayed."""
+    protocol = create_protocol(name, variant)
+    whole = [("tx", frame) for frame in sent_samples(protocol)]  # whole frames: trackers engage
+    whole += [("rx", frame) for frame in REPLIES[protocol.name]]
+    vocabulary = st.lists(st.sampled_from(whole), min_size=2, max_size=6, unique=True)
+    exchanges = vocabulary.flatmap(lambda words: st.lists(st.sampled_from(words), max_size=60))
+    traffic = data.draw(st.one_of(exchanges, traffic_of(protocol)), "traffic") * 3
+    replayed, live = TrafficIndex(protocol), TrafficIndex(create_protocol(name, variant))
+    live._scripts.MAX_DEPTH = 0  # nothing learnt: each tracker is built at its first frame
+    try:
+        for step, (direction, chunk) in enumerate(traffic):
+            for index in (replayed, live):
+                index.add(direction, chunk, step * 0.5)
+        assert len(replayed) == len(live)
+        for number in range(len(live)):  # (compared as text: NaN is not equal to itself)
+            assert repr(replayed.line(number)) == repr(live.line(number))
+        assert repr(replayed.take_latencies()) == repr(live.take_latencies())
+    finally:
+        replayed.close()
+        live.close()
+
+
 def _spool_text(index: TrafficIndex, line: int) -> bytes:
     """A line's text in the spool, without its newline (what a filter is matched against)."""
     import os
@@ -920,3 +948,25 @@ def test_filter_is_matched_line_by_line(text: str) -> None:
         assert found == own
     finally:
         index.close()
+
+
+@settings(FUZZ, max_examples=300)
+@given(
+    buffer=st.lists(st.sampled_from([b"ab", b"x", b"\r", b"\n", b"\r\n", b"", b"long" * 5])).map(
+        b"".join
+    ),
+    limit=st.sampled_from([3, 8, 4096]),
+)
+def test_line_framer_split_wired_is_split_with_its_wire_spans(buffer: bytes, limit: int) -> None:
+    """The line framer's fast path (bytes.splitlines) gives what `split` and the decoder's wire
+    spans give, or None where a line is too long for it."""
+    from drivers.decoding import _wire_spans
+    from drivers.framers.lines import LineFramer
+
+    framer = LineFramer(b"\n", max_length=limit)
+    fast = framer.split_wired(buffer)
+    frames, rest = framer.split(buffer)
+    if fast is None:  # only where a line, with its end, is longer than the limit
+        assert max(map(len, buffer.splitlines(True))) >= limit
+        return
+    assert fast == (frames, _wire_spans(buffer[: len(buffer) - len(rest)], frames), rest)

@@ -124,3 +124,43 @@ def test_a_frame_split_across_reads_keeps_its_terminator(tmp_path: Path) -> None
     index.add("rx", b"\nDONE GET_ID: X\r\n", 1.2)
     # a line end that comes in a later read than its line is not shown with it (the log has it)
     assert [index.line(n).data for n in range(len(index))] == [b"ACK GET_ID", b"DONE GET_ID: X\r\n"]
+
+
+def test_repeated_frames_are_decoded_once_and_unique_ones_not_kept(monkeypatch) -> None:
+    """A frame is decoded once it crosses again (its meaning and spool line kept on it); a flood
+    of lines that never repeat (a counter in debug output) keeps nothing per line behind."""
+    protocol = create_protocol("coxiris")
+    decoded: list[bytes] = []
+    decode = protocol.decode
+    monkeypatch.setattr(protocol, "decode", lambda frame: decoded.append(frame) or decode(frame))
+    index = TrafficIndex(protocol)
+    for i in range(5000):
+        index.add("rx", f"dbg {i} loop ok\r\nACK GET_ID\r\n".encode(), i * 0.001)
+    assert len(index) == 10_000
+    assert decoded.count(b"ACK GET_ID") == 2  # seen, then kept
+    assert len(decoded) == 5002  # each unique line once
+    decoder = index._decoder
+    assert decoder is not None and len(decoder._cache["rx"]) == 1  # only the one that repeats
+    assert index.line(9998).meaning == "the line 'dbg 4999 loop ok'"
+    assert index.line(9999).meaning == "ACK GET_ID" and index.line(9999).data == b"ACK GET_ID\r\n"
+    index.close()
+
+
+def test_batches_keep_the_order_and_stop_at_the_deadline() -> None:
+    """add_many takes records (and notes) in order, a batch joining the columns and the spool
+    at once, and stops after the record during which its deadline passed."""
+    index = TrafficIndex(create_protocol("coxiris"))
+    records = [(0.1, "tx", b"GET_ID\n", 1000.1), (0.2, "", b"a note", None)]
+    records += [(0.3, "rx", b"ACK GET_ID\r\nDONE GET_ID: X\r\n", None)]
+    assert index.add_many(records) == 3
+    assert [index.line(n).meaning for n in range(len(index))] == [
+        "GET_ID",
+        "a note",
+        "ACK GET_ID",
+        "DONE GET_ID: X",
+    ]
+    assert index.line(0).pair == 2 and index.wall_offset == pytest.approx(1000.0)
+    assert index.counts["query"] == 3 and index.counts["note"] == 1
+    assert index.add_many([(1.0, "tx", b"GET_ID\n", None)] * 5, deadline=0.0) == 1  # passed
+    assert len(index) == 5
+    index.close()

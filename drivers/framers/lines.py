@@ -59,6 +59,38 @@ class LineFramer(Framer):
                 break
         return frames, buffer[position:]
 
+    def split_wired(self, buffer: bytes) -> tuple[list[bytes], list[bytes], bytes] | None:
+        """As `split`, with each line's bytes as they crossed: its line end and the empty lines
+        after it (empty lines before the first are dropped). None where a line is too long for
+        this fast path (`split` handles it); `bytes.splitlines` does the scanning."""
+        parts = buffer.splitlines(True)
+        rest = b""
+        if parts:
+            last = parts[-1]
+            if last[-1] == 0x0D:  # a CR at the very end may be the first half of CRLF: it waits
+                rest = b"\r"
+                if len(last) > 1:
+                    parts[-1] = last[:-1]
+                else:
+                    parts.pop()
+            elif last[-1] != 0x0A:
+                rest = parts.pop()
+        limit = self.max_length
+        if len(rest) >= limit or (parts and max(map(len, parts)) > limit):
+            return None
+        frames = [part.rstrip(b"\r\n") for part in parts]
+        if b"" not in frames:
+            return frames, parts, rest
+        lines: list[bytes] = []
+        wires: list[bytes] = []
+        for frame, part in zip(frames, parts, strict=True):
+            if frame:
+                lines.append(frame)
+                wires.append(part)
+            elif wires:  # an empty line: its end crossed with the line before
+                wires[-1] += part
+        return lines, wires, rest
+
     def encode(self, payload: bytes) -> bytes:
         """Append the terminator."""
         return payload + self.terminator

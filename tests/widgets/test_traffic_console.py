@@ -344,3 +344,72 @@ def test_send_disabled(console: RawConsole, qtbot, record) -> None:
     console.set_send_enabled(True)
     console.send()
     assert calls == [(b"X\n",)]
+
+
+def test_the_timeline_gets_the_bytes_of_each_second_and_its_first_line(console, qtbot) -> None:
+    """TimelineFeed adds a second's bytes of a direction in one call: the same bins and first
+    lines as a call a line, and the latencies."""
+    from app.traffic_feed import TimelineFeed
+    from widgets.traffic_timeline import TrafficTimeline
+
+    timeline = TrafficTimeline()
+    qtbot.addWidget(timeline)
+    TimelineFeed(console, timeline)
+    _session(console)  # seconds 1-4, a request and replies in each
+    for i in range(300):  # 2.5 s of debug lines, 3 lines a record
+        console.append_traffic("rx", b"dbg a\r\ndbg bb\r\ndbg ccc\r\n", 5.0 + i / 120)
+    console.append_note("a note has no bytes", 6.0)
+    console.flush()
+    index, expected = console.index, {"tx": {}, "rx": {}}
+    for number in range(len(index)):
+        line = index.line(number)
+        if line.direction and line.data:
+            bins = expected[line.direction]
+            second = int(line.time)
+            size, first = bins.get(second, (0, number))
+            bins[second] = (size + len(line.data), min(first, number))
+    for direction, bins in expected.items():
+        got = timeline.bytes_per_second(direction)
+        assert {s: got[s] for s in range(len(got)) if got[s]} == {
+            s: size for s, (size, _) in bins.items()
+        }
+        for second, (_, first) in bins.items():
+            assert timeline._bins.first_line[("tx", "rx").index(direction), second] == first
+    _, latencies, lines = timeline.latency_points()
+    assert len(lines) == 4 and 12.0 in latencies.round(3).tolist()  # every request answered
+
+
+def test_the_table_paints_rows_itself_with_their_colours(console: RawConsole, qtbot) -> None:
+    """The view paints from the model's row views: no data() call a cell, and each row's
+    background (an error's red, a search hit's yellow, the selection) across the row."""
+    console.resize(900, 700)  # every line on screen
+    _session(console)
+    console.show_poll(True)
+    console.search("ACK DELTA")
+    console.view.scrollToTop()
+    calls = []
+    model = console.view.model()
+    original = type(model).data
+    type(model).data = lambda self, *args: calls.append(args) or original(self, *args)
+    try:
+        console.view.viewport().repaint()
+    finally:
+        type(model).data = original
+    assert calls == []
+    image = console.view.viewport().grab().toImage()
+    height = console.view.verticalHeader().defaultSectionSize()
+    x = console.view.columnViewportPosition(REPLY) + console.view.columnWidth(REPLY) - 4
+
+    def background(line: int) -> QColor:
+        row = console.shown_lines().index(line)
+        y = console.view.rowViewportPosition(row) + height // 2
+        return image.pixelColor(x, y)
+
+    assert background(8) == ERROR_BACKGROUND  # the refused speed
+    assert background(4) == MATCH_BACKGROUND  # ACK DELTA_MOVE
+    console.jump_to_line(5)
+    image = console.view.viewport().grab().toImage()
+    palette = console.view.palette()
+    groups = (palette.ColorGroup.Active, palette.ColorGroup.Inactive)
+    highlights = [palette.color(group, palette.ColorRole.Highlight) for group in groups]
+    assert background(5) in highlights  # the selected row (active or not)
