@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-import pyqtgraph as pg
+import sys
+
 from PySide6.QtCore import QEvent, QObject
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import (
@@ -41,7 +42,8 @@ def arrow_key_user(widget: QWidget | None) -> str:
 
     Plots (pyqtgraph views) leave them to jog.
     """
-    if widget is None or isinstance(widget, pg.GraphicsView):
+    pg = sys.modules.get("pyqtgraph")  # not imported yet: no plot exists (start-up stays light)
+    if widget is None or (pg is not None and isinstance(widget, pg.GraphicsView)):
         return ""
     return next((text for cls, text in ARROW_KEY_WIDGETS if isinstance(widget, cls)), "")
 

@@ -256,6 +256,17 @@ def preview_tuples(array: np.ndarray) -> list[tuple[float, float, float]]:
     return [(float(x), float(y), float(z)) for x, y, z in array]
 
 
+def share_opengl_contexts() -> None:
+    """Call before the QApplication exists: lets the 3D view survive a new top-level window.
+
+    pyqtgraph caches its shader programs globally, so without shared contexts a second
+    GLViewWidget, or this one moved to another window (a floated dock), fails to draw
+    (pyqtgraph issues #1822, #3455). Here, not in position_view_3d, so that setting it imports
+    no OpenGL.
+    """
+    QCoreApplication.setAttribute(Qt.ApplicationAttribute.AA_ShareOpenGLContexts)
+
+
 def opengl_problem() -> str | None:
     """Why OpenGL cannot draw the 3D scene here, or None when it can; needs a QGuiApplication.
 

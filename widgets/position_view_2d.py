@@ -162,23 +162,46 @@ class PositionView2D(BufferedViewMixin, QWidget):
         return legend
 
     def refresh(self) -> None:
-        """Redraw from the buffer if it changed since the last refresh."""
-        rows = self.changed_rows()
-        if rows is None:
+        """Redraw from the buffer if it changed since the last refresh.
+
+        What is drawn is the buffer's decimated trail (`buffer.lod`): every recent point, and
+        the first, last and extreme points of each block of older ones, so a long trail keeps its
+        shape and extent at the cost of a few thousand points.
+        """
+        if self.changed_rows() is None:
             return
+        rows = self._drawn()
         if not len(rows):
             self.trail.setData([], [])
             self.current_marker.setData([], [])
             for curve in self.curves.values():
                 curve.setData([], [])
             return
-        t = rows[:, 0] - rows[-1, 0]
         self.trail.setData(rows[:, 1], rows[:, 2])
         self.current_marker.setData([rows[-1, 1]], [rows[-1, 2]])
+        rows = self._time_rows()
+        t = rows[:, 0] - rows[-1, 0]
         for index, axis in enumerate(AXES, start=1):
             self.curves[axis].setData(t, rows[:, index])
         if self._following:
             self._follow(rows, t)
+
+    def _drawn(self) -> np.ndarray:
+        """The trail as drawn: (n, 4) rows (t, x, y, z), every recent one and the first, last
+        and extreme ones of each block of older ones (so the whole trail's extent)."""
+        return self.buffer.lod.update()
+
+    def _time_rows(self) -> np.ndarray:
+        """The rows of the time plot: every row of the longest time window, decimated before.
+
+        Rows come in time order (session time), so the window starts at a binary search.
+        """
+        lod, rows = self.buffer.lod, self.buffer.view()
+        start = lod.recent_start
+        if start:
+            since = rows[-1, 0] - TIME_WINDOWS_S[-1]
+            start = int(np.searchsorted(rows[:start, 0], since, side="left"))
+        return lod.rows_since(start)
 
     def _follow(self, rows: np.ndarray, t: np.ndarray) -> None:
         """Widen the views only when the data leaves them, with room to spare.
@@ -277,7 +300,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
             if not np.isnan(value):
                 line.setValue(value)
         if self._following:
-            self._follow_xy(self.buffer.view())  # a target outside the view widens it at once
+            self._follow_xy(self._drawn())  # a target outside the view widens it at once
 
     def set_workspace(self, box: Box | None) -> None:
         """Outline the travel box's XY rectangle (dashed), in mm; None hides it.
@@ -299,7 +322,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.workspace_outline.setData([x0, x1, x1, x0, x0], [y0, y0, y1, y1, y0])
         self.workspace_outline.setVisible(True)
         if self._following:
-            self._follow_xy(self.buffer.view())
+            self._follow_xy(self._drawn())
 
     def workspace(self) -> Box | None:
         """The travel box shown, or None."""
@@ -321,7 +344,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.preview_curve.setData(xy[:, 0], xy[:, 1])
         self.preview_curve.setVisible(True)
         if self._following:
-            self._follow_xy(self.buffer.view())
+            self._follow_xy(self._drawn())
 
     def preview(self) -> list[tuple[float, float, float]]:
         """The planned path shown, as (x, y, z) points in mm; [] when none."""
@@ -351,7 +374,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self._time_window = 0.0
         for plot in (self.xy_plot, self.time_plot):
             plot.getPlotItem().disableAutoRange()
-        rows = self.buffer.view()
+        rows = self._drawn()
         fit = self._target is not None or self._workspace is not None or len(self._preview)
         if len(rows) or fit:
             self._follow_xy(rows, force=True)

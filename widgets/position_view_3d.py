@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import logging
+import sys
 from collections.abc import Callable
 from functools import cache, partial
+from types import ModuleType
 
 import numpy as np
 from PySide6.QtCore import QCoreApplication, QSize, Qt
@@ -41,18 +43,19 @@ from widgets._gl_scene import (
     preview_array,
     preview_tuples,
 )
+from widgets._gl_scene import (  # here for its callers of before; it imports no OpenGL
+    share_opengl_contexts as share_opengl_contexts,
+)
 from widgets._view_common import BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
 log = logging.getLogger(__name__)
 
-try:  # PyOpenGL may be missing or broken: the module must still import
-    import pyqtgraph.opengl as gl
-
-    _IMPORT_ERROR: str | None = None
-except Exception as exc:  # any failure means "no 3D view"
-    gl = None
-    _IMPORT_ERROR = f"{type(exc).__name__}: {exc}"
+# pyqtgraph.opengl, imported by `load_gl()` when a view is first made: importing it takes a
+# fifth of a second, and PyOpenGL may be missing or broken (this module must still import).
+gl: ModuleType | None = None
+_IMPORT_ERROR: str | None = None
+TRAIL_CHUNK = 16_384  # the trail's vertex buffer grows by at least this many vertices
 
 TRAIL_COLOUR = (0.36, 0.42, 0.75, 1.0)
 CURRENT_COLOUR = (1.0, 0.70, 0.0, 1.0)
@@ -77,19 +80,22 @@ def notice_text(reason: str) -> str:
     )
 
 
-def share_opengl_contexts() -> None:
-    """Call before the QApplication exists: lets the 3D view survive a new top-level window.
-
-    pyqtgraph caches its shader programs globally, so without shared contexts a second
-    GLViewWidget, or this one moved to another window (a floated dock), fails to draw
-    (pyqtgraph issues #1822, #3455).
-    """
-    QCoreApplication.setAttribute(Qt.ApplicationAttribute.AA_ShareOpenGLContexts)
+def load_gl() -> ModuleType | None:
+    """pyqtgraph.opengl, imported at the first call; None when it cannot be (see the log)."""
+    global gl, _IMPORT_ERROR
+    if gl is None and _IMPORT_ERROR is None:
+        try:
+            import pyqtgraph.opengl as module
+        except Exception as exc:  # any failure means "no 3D view"
+            _IMPORT_ERROR = f"{type(exc).__name__}: {exc}"
+        else:
+            gl = module
+    return gl
 
 
 def opengl_unavailable_reason() -> str | None:
     """Why the 3D view cannot be drawn here (no pyqtgraph.opengl, platform, context), or None."""
-    if gl is None:
+    if load_gl() is None:
         return f"pyqtgraph.opengl is unavailable ({_IMPORT_ERROR})"
     return opengl_problem()
 
@@ -138,6 +144,75 @@ def _scene_class() -> type:
     return GuardedScene
 
 
+@cache
+def _trail_class() -> type:
+    """A GLLinePlotItem whose vertex buffer grows in chunks and takes only what changed.
+
+    pyqtgraph sends every vertex to the GPU whenever the data is set; the trail only grows at
+    its end, so `set_vertices` says how many leading vertices are as before, and only the rest
+    is written (glBufferSubData). With a pyqtgraph that draws without vertex buffers, all the
+    vertices are set each time.
+    """
+    base = gl.GLLinePlotItem
+    dirty = getattr(sys.modules[base.__module__], "DirtyFlag", None)
+    partial_upload = dirty is not None and hasattr(base, "upload_vbo")
+
+    class TrailLine(base):
+        """The trail's line strip; see `set_vertices`."""
+
+        _vertices = np.zeros((0, 3), dtype=np.float32)  # a chunk-grown store; `pos` views it
+        _allocated = 0  # bytes of the vertex buffer on the GPU
+        _upload_from = 0  # vertices before this one are on the GPU already
+
+        def set_vertices(self, xyz: np.ndarray, unchanged: int = 0) -> None:
+            """Draw the (n, 3) vertices `xyz`, the first `unchanged` being the same as before."""
+            if not partial_upload:
+                base.setData(self, pos=xyz)
+                return
+            n = len(xyz)
+            unchanged = max(0, min(unchanged, n, 0 if self.pos is None else len(self.pos)))
+            if n > len(self._vertices):
+                grown = np.empty((max(n, 2 * len(self._vertices), TRAIL_CHUNK), 3), np.float32)
+                grown[:unchanged] = self._vertices[:unchanged]
+                self._vertices = grown
+            self._vertices[unchanged:n] = xyz[unchanged:]
+            self._upload_from = min(self._upload_from, unchanged)
+            self.pos = self._vertices[:n]
+            self.dirty_bits |= dirty.POSITION
+            self.update()
+
+        def setData(self, **kwds: object) -> None:
+            """As GLLinePlotItem's; new positions go through `set_vertices`."""
+            pos = kwds.pop("pos", None)
+            if pos is not None and partial_upload:
+                self.set_vertices(np.asarray(pos, dtype=np.float32).reshape(-1, 3))
+            elif pos is not None:
+                kwds["pos"] = pos
+            super().setData(**kwds)
+
+        def upload_vbo(self, vbo: object, arr: np.ndarray | None) -> None:
+            """Write the vertices not on the GPU yet; grow the buffer when the store grew."""
+            if vbo is not self.m_vbo_position or arr is None:
+                super().upload_vbo(vbo, arr)
+                return
+            if not vbo.isCreated():
+                vbo.create()
+                self._allocated = 0
+            vbo.bind()
+            start = self._upload_from
+            if self._allocated != self._vertices.nbytes:
+                vbo.allocate(self._vertices.nbytes)
+                self._allocated = self._vertices.nbytes
+                start = 0
+            part = self._vertices[start : len(arr)]
+            if len(part):
+                vbo.write(start * part.itemsize * 3, part, part.nbytes)
+            vbo.release()
+            self._upload_from = len(arr)
+
+    return TrailLine
+
+
 class PositionView3D(BufferedViewMixin, QWidget):
     """Grid, axes, trail, current and target markers in 3D, refreshed from a buffer.
 
@@ -157,7 +232,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
     """
 
     def __init__(self, buffer: PositionBuffer, parent: QWidget | None = None) -> None:
-        if gl is None:
+        if load_gl() is None:
             raise RuntimeError(f"pyqtgraph.opengl is unavailable ({_IMPORT_ERROR})")
         super().__init__(parent)
         self.setObjectName("positionView3d")
@@ -194,7 +269,19 @@ class PositionView3D(BufferedViewMixin, QWidget):
             )
             for name, colour in zip("XYZ", AXIS_COLOURS, strict=True)
         ]
-        self.trail = _lines(TRAIL_COLOUR, 1.5, mode="line_strip")
+        # The trail: the older part decimated (buffer.lod), drawn 1 px wide without antialiasing
+        # (with software OpenGL antialiasing cost 12 ms a frame for a million-point raster that
+        # covers the view, and 1.5 px 1.5 ms more); the recent part, every point, antialiased.
+        self.trail_history = _lines(
+            TRAIL_COLOUR,
+            1.0,
+            mode="line_strip",
+            kind=_trail_class(),
+            antialias=False,
+            glOptions=_blended_without_depth(),
+        )
+        self.trail = _lines(TRAIL_COLOUR, 1.5, mode="line_strip", kind=_trail_class())
+        self._trail_token: tuple[int, int, int] | None = None
         self.current_marker = gl.GLScatterPlotItem(
             pos=np.zeros((1, 3), dtype=np.float32), color=CURRENT_COLOUR, size=12.0
         )
@@ -205,7 +292,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
             item.setGLOptions("translucent")
         for item in (self.grid_item, self.axes_item, self.workspace_item, *self.labels):
             self.addItem(item)
-        for item in (self.trail, self.current_marker, self.target_marker):
+        for item in (self.trail_history, self.trail, self.current_marker, self.target_marker):
             item.setVisible(False)
             self.addItem(item)
         self.preview_item = _lines(PREVIEW_COLOUR, 1.5, mode="line_strip")
@@ -219,24 +306,30 @@ class PositionView3D(BufferedViewMixin, QWidget):
     # -- public API ----------------------------------------------------------------------------
     def refresh(self) -> None:
         """Redraw from the buffer if it changed since the last refresh."""
-        rows = self.changed_rows()
-        if rows is None:
+        if self.changed_rows() is None:
             return
-        points = np.ascontiguousarray(rows[:, 1:4], dtype=np.float32)
-        self.trail.setVisible(len(points) >= 2)
-        if len(points) >= 2:
-            self.trail.setData(pos=points)
-        self.current_marker.setVisible(bool(len(points)))
-        if len(points):
-            current = points[-1].copy()
-            self.current_marker.setData(pos=points[-1:])
+        lod = self.buffer.lod
+        rows = lod.update()  # the whole trail, decimated where old: its shape and extremes
+        unchanged = lod.unchanged_prefix(self._trail_token)
+        self._trail_token = lod.token()
+        old = lod.decimated_count
+        start = max(old - 1, 0)  # the recent line starts where the history ends
+        self.trail_history.set_vertices(rows[:old, 1:4], min(unchanged, old))
+        self.trail_history.setVisible(old >= 2)
+        self.trail.set_vertices(rows[start:, 1:4], max(0, unchanged - start))
+        self.trail.setVisible(len(rows) - start >= 2)
+        self.current_marker.setVisible(bool(len(rows)))
+        if len(rows):
+            current = rows[-1, 1:4].astype(np.float32)
+            self.current_marker.setData(pos=current[None, :])
             moved = self._current is None or not np.array_equal(current, self._current)
             self._current = current
             if self._follow and moved:
                 self.scene.opts["center"] = QVector3D(*map(float, current))
         else:
             self._current = None
-        if not self._grid.contains(points):
+        bounds = lod.bounds()
+        if bounds is not None and not self._grid.contains(np.array(bounds)):
             self._fit_grid()
         self._redraw()
 
@@ -364,10 +457,9 @@ class PositionView3D(BufferedViewMixin, QWidget):
     def _data_points(self) -> np.ndarray:
         """The corners of the trail's bounding box, the target and the workspace corners."""
         parts = [np.zeros((0, 3), dtype=np.float32)]
-        rows = self.buffer.view()
-        if len(rows):
-            xyz = rows[:, 1:4]
-            parts.append(box_corners(tuple(zip(xyz.min(axis=0), xyz.max(axis=0), strict=True))))
+        bounds = self.buffer.lod.bounds()  # of every point, from the decimated trail
+        if bounds is not None:
+            parts.append(box_corners(tuple(zip(*bounds, strict=True))))
         if self._target is not None:
             parts.append(np.array([self._target], dtype=np.float32))
         if self._workspace is not None:
@@ -509,14 +601,32 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._redraw()
 
 
-def _lines(colour: object, width: float, mode: str = "lines", **kwargs: object) -> object:
-    """A GLLinePlotItem with placeholder vertices."""
-    return gl.GLLinePlotItem(
+def _blended_without_depth() -> dict:
+    """pyqtgraph's "translucent" blending without its depth test, as antialiased lines are drawn.
+
+    The lines' default, "additive", adds overlapping lines up: a dense trail turned white.
+    """
+    from OpenGL import GL
+    from pyqtgraph.opengl.GLGraphicsItem import GLOptions
+
+    return {**GLOptions["translucent"], GL.GL_DEPTH_TEST: False}
+
+
+def _lines(
+    colour: object,
+    width: float,
+    mode: str = "lines",
+    kind: type | None = None,
+    antialias: bool = True,
+    **kwargs: object,
+) -> object:
+    """A GLLinePlotItem (or a `kind` of one) with placeholder vertices."""
+    return (kind or gl.GLLinePlotItem)(
         pos=np.zeros((2, 3), dtype=np.float32),
         color=colour,
         width=width,
         mode=mode,
-        antialias=True,
+        antialias=antialias,
         **kwargs,
     )
 

@@ -14,13 +14,15 @@ from __future__ import annotations
 
 import logging
 import math
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
-import pyqtgraph as pg
 from PySide6.QtCore import QPointF, Qt, QTimer, Signal
 from PySide6.QtGui import QHideEvent, QShowEvent
 from PySide6.QtWidgets import QCheckBox, QHBoxLayout, QVBoxLayout, QWidget
+
+if TYPE_CHECKING:  # imported where the plots are built: pyqtgraph takes a third of a second
+    import pyqtgraph as pg
 
 log = logging.getLogger(__name__)
 
@@ -60,6 +62,8 @@ def _nice_ceiling(value: float) -> float:
 
 def _grid() -> pg.GridItem:
     """A background grid that, unlike showGrid, does not repaint the axes on every frame."""
+    import pyqtgraph as pg
+
     grid = pg.GridItem()
     grid.setPen(pg.mkPen(GRID_COLOUR))
     grid.setTextPen(None)
@@ -216,16 +220,49 @@ class _Latencies:
 
 
 class TrafficTimeline(QWidget):
-    """Bytes/s each way and command latency against time; a click emits the console line."""
+    """Bytes/s each way and command latency against time; a click emits the console line.
+
+    With `deferred`, the plots (pyqtgraph) are built when `build_plots()` is called: data is
+    taken meanwhile, and drawn then. The window calls it just after its first paint, so that it
+    shows before pyqtgraph is imported.
+    """
 
     line_clicked = Signal(int)
 
-    def __init__(self, parent: QWidget | None = None) -> None:
+    def __init__(self, parent: QWidget | None = None, deferred: bool = False) -> None:
         super().__init__(parent)
         self.setObjectName("trafficTimeline")
         self._bins = _ByteBins()
         self._latencies = _Latencies()
         self._drawn: tuple[int, int, int, int] | None = None  # the stores' (id, version) drawn
+        self._following = True
+
+        self.follow_box = QCheckBox("Follow")
+        self.follow_box.setObjectName("timelineFollow")
+        self.follow_box.setToolTip(
+            f"Keep the latest {FOLLOW_WINDOW_S:.0f} s in view; zooming or panning stops it"
+        )
+        self.follow_box.setChecked(True)
+        self.follow_box.toggled.connect(self.set_following)
+        controls = QHBoxLayout()
+        controls.addStretch(1)
+        controls.addWidget(self.follow_box)
+        self._layout = QVBoxLayout(self)
+        self._layout.setContentsMargins(0, 0, 0, 0)
+        self._layout.addLayout(controls)
+
+        self.timer = QTimer(self)
+        self.timer.setInterval(REDRAW_INTERVAL_MS)
+        self.timer.timeout.connect(self._redraw_if_changed)
+        self.plots: pg.GraphicsLayoutWidget | None = None
+        if not deferred:
+            self.build_plots()
+
+    def build_plots(self) -> None:
+        """Build the plots (once) and draw what has come so far."""
+        if self.plots is not None:
+            return
+        import pyqtgraph as pg
 
         self.plots = pg.GraphicsLayoutWidget()
         self.plots.setObjectName("trafficTimelinePlots")
@@ -277,26 +314,7 @@ class TrafficTimeline(QWidget):
             plot.getViewBox().sigRangeChangedManually.connect(self._user_moved_view)
         lp.getViewBox().sigXRangeChanged.connect(self._update_symbols)
         self.plots.scene().sigMouseClicked.connect(self._on_scene_clicked)
-
-        self.follow_box = QCheckBox("Follow")
-        self.follow_box.setObjectName("timelineFollow")
-        self.follow_box.setToolTip(
-            f"Keep the latest {FOLLOW_WINDOW_S:.0f} s in view; zooming or panning stops it"
-        )
-        self.follow_box.setChecked(True)
-        self.follow_box.toggled.connect(self.set_following)
-        controls = QHBoxLayout()
-        controls.addStretch(1)
-        controls.addWidget(self.follow_box)
-        layout = QVBoxLayout(self)
-        layout.setContentsMargins(0, 0, 0, 0)
-        layout.addWidget(self.plots, 1)
-        layout.addLayout(controls)
-
-        self._following = True
-        self.timer = QTimer(self)
-        self.timer.setInterval(REDRAW_INTERVAL_MS)
-        self.timer.timeout.connect(self._redraw_if_changed)
+        self._layout.insertWidget(0, self.plots, 1)
         self.refresh()
 
     def _header_row(self, title: str) -> pg.LegendItem:
@@ -305,6 +323,8 @@ class TrafficTimeline(QWidget):
         The row is an item of the layout widget: moving the plot's own title label into a
         header (as PositionView2D does) crashed the interpreter on exit in a layout widget.
         """
+        import pyqtgraph as pg
+
         legend = pg.LegendItem(colCount=len(DIRECTIONS), horSpacing=4)
         legend.layout.setContentsMargins(4, 2, 4, 2)
         for direction in DIRECTIONS:
@@ -365,7 +385,10 @@ class TrafficTimeline(QWidget):
         return id(bins), bins.version, id(points), points.version
 
     def refresh(self) -> None:
-        """Redraw now (the timer calls this only when something changed)."""
+        """Redraw now (the timer calls this only when something changed); nothing to draw on
+        before the plots are built."""
+        if self.plots is None:
+            return
         bins, points = self._bins, self._latencies
         points.sort()
         self._drawn = self._versions()
@@ -426,7 +449,7 @@ class TrafficTimeline(QWidget):
         self._following = bool(following)
         if self.follow_box.isChecked() != self._following:
             self.follow_box.setChecked(self._following)  # calls back here with the same value
-        if self._following:
+        if self._following and self.plots is not None:
             self._follow()
 
     def is_following(self) -> bool:
@@ -449,6 +472,8 @@ class TrafficTimeline(QWidget):
 
     def line_at(self, scene_pos: QPointF) -> int | None:
         """The console line of the bin or point nearest to a scene position, or None."""
+        if self.plots is None:
+            return None
         for plot, find in (
             (self.bytes_plot, self._bin_line_near),
             (self.latency_plot, self._latency_line_near),
@@ -504,7 +529,7 @@ class TrafficTimeline(QWidget):
 
     # -- visibility --------------------------------------------------------------------------
     def showEvent(self, event: QShowEvent) -> None:
-        """Redraw, then keep redrawing changes while visible."""
+        """Redraw, then keep redrawing changes while visible (deferred plots: once built)."""
         super().showEvent(event)
         self.refresh()
         self.timer.start()

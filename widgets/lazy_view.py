@@ -1,0 +1,187 @@
+"""Views built just after the window first paints: it shows before the OpenGL scene and plots.
+
+Importing pyqtgraph and its OpenGL module, and building the plots and the OpenGL scene, took
+most of the panel's start-up (issue 11's speed table: 5-8 times a bare window). The window is
+built with `LazyView` stand-ins instead: plain widgets with the views' object names that take
+the calls the window makes (the target, the travel box, the planned path, ...) and keep the last
+of each. `DeferredViews` builds the real views once the window has painted (or when something
+needs them sooner), puts them in the stand-ins' places, replays the calls and emits `ready`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from functools import partial
+
+from PySide6.QtCore import QEvent, QObject, QTimer, Signal
+from PySide6.QtGui import QColor, QPainter, QPaintEvent
+from PySide6.QtWidgets import QSplitter, QWidget
+
+from widgets.position_buffer import PositionBuffer
+
+# What the window may call on a view before it exists. The last call of each of these is
+# replayed on the view when it is built, in the order they were last made.
+REPLAYED = frozenset(
+    {
+        "set_target",
+        "set_workspace",
+        "set_preview",
+        "set_estimated",
+        "set_follow",
+        "set_view_preset",
+        "reset_view",
+    }
+)
+IGNORED = frozenset({"refresh"})  # a new view draws the buffer as it is when shown
+# Calls that need the view: it is built at once. Any other attribute builds it too.
+FORWARDED = frozenset(
+    {
+        "clear_trail",
+        "target",
+        "workspace",
+        "preview",
+        "is_estimated",
+        "is_following",
+        "grid_spacing",
+    }
+)
+BACKGROUND_3D = QColor(24, 24, 28)  # as the 3D view's scene
+BACKGROUND_2D = QColor(0, 0, 0)  # as pyqtgraph's plots
+
+
+def position_view_3d(buffer: PositionBuffer) -> QWidget:
+    """The 3D view (or its no-OpenGL notice); imports OpenGL."""
+    from widgets import position_view_3d as module
+
+    return module.make_position_view_3d(buffer)
+
+
+def position_view_2d(buffer: PositionBuffer) -> QWidget:
+    """The 2D views; imports pyqtgraph."""
+    from widgets.position_view_2d import PositionView2D
+
+    return PositionView2D(buffer)
+
+
+class LazyView(QWidget):
+    """Stands in for a view until `build()`: the same object name, the calls kept for it.
+
+    After `build()` the real view has taken its place in the splitter and the stand-in is
+    deleted; a method of it kept from before (a menu's action) calls the real view's.
+    """
+
+    def __init__(
+        self,
+        name: str,
+        factory: Callable[[], QWidget],
+        background: QColor,
+        parent: QWidget | None = None,
+    ) -> None:
+        super().__init__(parent)
+        self.setObjectName(name)
+        self._factory = factory
+        self._background = background
+        self._calls: dict[str, tuple[tuple, dict]] = {}  # name: the last call's arguments
+        self._real: QWidget | None = None
+        self.built_view: Callable[[QWidget], None] | None = None  # told of the real view
+
+    def real(self) -> QWidget | None:
+        """The real view once built, else None."""
+        return self._real
+
+    def __getattr__(self, name: str) -> object:
+        """The views' methods: kept, ignored or forwarded; anything else builds the view."""
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if name in REPLAYED or name in IGNORED or name in FORWARDED:
+            return partial(self._call, name)
+        return getattr(self.build(), name)
+
+    def _call(self, name: str, *args: object, **kwargs: object) -> object:
+        """A view method called on the stand-in (or a method of it kept from before)."""
+        if self._real is None:
+            if name in REPLAYED:
+                self._calls.pop(name, None)  # the last call goes last
+                self._calls[name] = (args, kwargs)
+                return None
+            if name in IGNORED:
+                return None
+        return getattr(self.build(), name)(*args, **kwargs)
+
+    def build(self) -> QWidget:
+        """Build the real view (once), put it in this stand-in's place and replay the calls."""
+        if self._real is not None:
+            return self._real
+        view = self._factory()
+        self._real = view
+        view.setFocusPolicy(self.focusPolicy())
+        parent = self.parentWidget()
+        if isinstance(parent, QSplitter):
+            parent.replaceWidget(parent.indexOf(self), view)
+        elif parent is not None:
+            view.setParent(parent)
+        for name, (args, kwargs) in self._calls.items():
+            getattr(view, name)(*args, **kwargs)
+        self._calls.clear()
+        self.setObjectName("")  # the real view has the name now
+        self.hide()
+        self.setParent(None)
+        self.deleteLater()
+        if self.built_view is not None:
+            self.built_view(view)
+        return view
+
+    def paintEvent(self, event: QPaintEvent) -> None:
+        """The view's background until it is there."""
+        QPainter(self).fillRect(self.rect(), self._background)
+
+
+class DeferredViews(QObject):
+    """The window's 3D and 2D views, built once it has painted; then `window.view3d` and
+    `window.view2d` are the real ones and `ready` is emitted.
+
+    More building can be added (`add`), such as the traffic timeline's plots. `build_now()`
+    builds everything at once (for a screenshot, or a window that is never shown).
+    """
+
+    ready = Signal()
+
+    def __init__(self, window: QWidget, buffer: PositionBuffer) -> None:
+        super().__init__(window)  # the window is reached as parent(): no reference cycle to it
+        self.view3d = LazyView("positionView3d", partial(position_view_3d, buffer), BACKGROUND_3D)
+        self.view2d = LazyView("positionView2d", partial(position_view_2d, buffer), BACKGROUND_2D)
+        self.view3d.built_view = partial(self._built, "view3d")
+        self.view2d.built_view = partial(self._built, "view2d")
+        self._steps: list[Callable[[], object]] = [self.view3d.build, self.view2d.build]
+        self._ready = False
+        self._scheduled = False
+        window.installEventFilter(self)
+
+    def _built(self, name: str, view: QWidget) -> None:
+        """A view is built: it is the window's `name` from now on."""
+        setattr(self.parent(), name, view)
+
+    def add(self, step: Callable[[], object]) -> None:
+        """Run `step` too when building (it must be harmless to run twice)."""
+        self._steps.append(step)
+
+    def is_ready(self) -> bool:
+        """Whether everything has been built."""
+        return self._ready
+
+    def build_now(self) -> None:
+        """Build whatever is not built yet; emits `ready` the first time."""
+        if self._ready:
+            return
+        self.parent().removeEventFilter(self)
+        for step in self._steps:
+            step()
+        self._ready = True
+        self.ready.emit()
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        """At the window's first paint, build just after it (once the event loop is back)."""
+        if event.type() == QEvent.Type.Paint and not self._scheduled:
+            self._scheduled = True
+            QTimer.singleShot(0, self, self.build_now)
+        return False
