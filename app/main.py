@@ -11,10 +11,11 @@ from collections.abc import Sequence
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication
 
+from app.gc_main_thread import collect_for
 from app.main_window import MainWindow
 from app.settings import DEFAULT_PORT, DEFAULT_PROTOCOL
 from drivers.registry import get_protocol_class, protocol_names
-from widgets.position_view_3d import share_opengl_contexts
+from widgets._gl_scene import share_opengl_contexts  # imports no OpenGL
 
 log = logging.getLogger("motionpanel")
 
@@ -49,6 +50,7 @@ def take_screenshot(window: MainWindow, path: str, app: QApplication) -> None:
         if done:
             return
         done = True
+        window.views.build_now()  # the real views, should they not be built yet
         window.view2d.refresh()
         refresh3d = getattr(window.view3d, "refresh", None)
         if refresh3d is not None:
@@ -73,6 +75,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     app = QApplication.instance() or QApplication(sys.argv[:1])
     app.setApplicationName("Motion Panel")
     window = MainWindow()
+    collect_for(app, window.views.ready)  # collections from the event loop only
     signal.signal(signal.SIGINT, lambda *_: window.close())
     explicit = options.port or options.protocol or options.baud
     port = options.port or (DEFAULT_PORT if explicit or options.screenshot else None)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import os
 from collections.abc import Iterator
 
@@ -56,6 +57,15 @@ def sim_link(request: pytest.FixtureRequest) -> Iterator[tuple[Link, Recorder]]:
 
 
 @pytest.fixture(autouse=True)
+def _garbage_collected_outside_qt() -> Iterator[None]:
+    """As the application does (app/gc_main_thread.py): no automatic collection, which could
+    run inside a Qt call holding a lock and deadlock on it; collected here after each test."""
+    gc.disable()
+    yield
+    gc.collect()
+
+
+@pytest.fixture(autouse=True)
 def _session_logs_in_tmp(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     """Session logs of the panels a test opens go to the test's own folder."""
     folder = tmp_path / "session-logs"
@@ -80,6 +90,7 @@ def window(qtbot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[M
     win.show()
     win.activateWindow()
     qtbot.waitActive(win)
+    qtbot.waitUntil(win.views.is_ready, timeout=10_000)  # the views are built after the paint
     yield win
     win.close()
     assert not win.worker_thread.thread.isRunning()

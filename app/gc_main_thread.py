@@ -1,0 +1,56 @@
+"""Python's cyclic garbage collected in the GUI thread only.
+
+A collection runs wherever an allocation happens to cross the threshold: inside a Qt call that
+holds one of Qt's locks, it can free the last reference to a Qt object, whose destructor then
+waits for that same lock for ever. Seen twice in the tests (stacks under gdb): pyqtgraph
+disconnecting a signal (Qt holds its connection lock and asks Python for an override; that
+allocation ran a collection, which destroyed a QObject waiting on the lock held by the same
+thread), and a collection in the serial worker's thread destroying a QAction. So automatic
+collection is off, and a timer in the GUI thread collects from the event loop, where no Qt lock
+is held, a generation at a time, as Python itself would.
+"""
+
+from __future__ import annotations
+
+import gc
+
+from PySide6.QtCore import QObject, QTimer, SignalInstance, Slot
+
+INTERVAL_MS = 500
+
+
+class MainThreadCollector(QObject):
+    """Turns automatic collection off and collects on a GUI-thread timer instead."""
+
+    def __init__(self, parent: QObject | None = None, interval_ms: int = INTERVAL_MS) -> None:
+        super().__init__(parent)
+        gc.disable()
+        self._timer = QTimer(self)
+        self._timer.setInterval(interval_ms)
+        self._timer.timeout.connect(self.collect)
+        self._timer.start()
+
+    @Slot()
+    def settle(self) -> None:
+        """Once the window is built: what exists now lives as long as the program, so it is
+        set aside (`gc.freeze`) and a full collection no longer walks it (tens of ms each)."""
+        gc.collect()
+        gc.freeze()
+
+    @Slot()
+    def collect(self) -> int:
+        """Collect the oldest generation whose count is past its threshold; objects freed."""
+        counts, thresholds = gc.get_count(), gc.get_threshold()
+        generation = -1
+        for level in range(3):
+            if counts[level] > thresholds[level]:
+                generation = level
+        return gc.collect(generation) if generation >= 0 else 0
+
+
+def collect_for(app: QObject, ready: SignalInstance) -> MainThreadCollector:
+    """The application's collector (kept by `app`), settled when `ready` (the window's views
+    are built) is emitted."""
+    collector = MainThreadCollector(app)
+    ready.connect(collector.settle)
+    return collector
