@@ -36,13 +36,14 @@ from app.settings import (
     read_protocol_settings,
     read_str,
     read_travel,
+    settings_problem,
     write_travel,
 )
 from app.traffic_console import RawConsole
 from app.traffic_feed import TimelineFeed
 from app.worker import ConnectOptions, DeviceInfo, SerialWorker
 from app.worker_thread import WorkerThread
-from drivers.capabilities import Capabilities, Completion
+from drivers.capabilities import Capabilities
 from drivers.errors import BadInput, MotionError
 from drivers.events import PositionReport
 from drivers.motion import MoveStart
@@ -55,11 +56,10 @@ from widgets import status_line as status
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
 from widgets.jog_panel import JogPanel
+from widgets.lazy_view import DeferredViews
 from widgets.panel_scroll_area import PanelScrollArea
 from widgets.position_buffer import PositionBuffer
 from widgets.position_readout import PositionReadout
-from widgets.position_view_2d import PositionView2D
-from widgets.position_view_3d import make_position_view_3d
 from widgets.speed_control import SpeedControl
 from widgets.status_line import StatusLine
 from widgets.traffic_timeline import TrafficTimeline
@@ -91,7 +91,7 @@ class MainWindow(QMainWindow):
         self.settings = open_settings()
         self.worker_thread = worker_thread or WorkerThread(self._make_worker())
         self.worker = self.worker_thread.worker
-        self.buffer = PositionBuffer()
+        self.buffer = PositionBuffer(capacity=None)  # the whole trail, drawn decimated
         self.t0 = time.monotonic()
         self.connected = False
         self.info: DeviceInfo | None = None
@@ -105,6 +105,8 @@ class MainWindow(QMainWindow):
         self._busy_job: jobs.Job | None = None
         self._moving = False
         self._failed = False
+        self._link_failed = False  # the connection failed since the device was last ready
+        self._position_lost = False  # a device with no position feedback lost track of it
         self._jog_job: jobs.MoveByJob | None = None
         self._jog_next: tuple[str, float] | None = None  # a tap during a step: the next step
         self._home_from: tuple[float, float, float] | None = None
@@ -112,6 +114,9 @@ class MainWindow(QMainWindow):
         self._build()
         self._wire()
         self._restore()
+        problem = settings_problem(self.settings)
+        if problem:  # the panel runs on defaults; the file is left as it was
+            self._say(problem, status.WARNING)
         self._set_controls_enabled(False)
         self.keyboard_jog = KeyboardJog(self, self.jog_panel)
         self.session_log_path = self._start_session_log()
@@ -169,8 +174,9 @@ class MainWindow(QMainWindow):
         toolbar.addWidget(self.connection_bar)
         self.addToolBar(toolbar)
 
-        self.view3d = make_position_view_3d(self.buffer, self)
-        self.view2d = PositionView2D(self.buffer, self)
+        # Stand-ins until the window has painted: then the real views (pyqtgraph, OpenGL).
+        self.views = DeferredViews(self, self.buffer)
+        self.view3d, self.view2d = self.views.view3d, self.views.view2d
         for view in (self.view3d, self.view2d):
             view.setFocusPolicy(Qt.FocusPolicy.ClickFocus)  # a click gives the keys back to jog
         splitter = QSplitter(Qt.Orientation.Horizontal, self)
@@ -200,7 +206,8 @@ class MainWindow(QMainWindow):
         for dock in self.devices.docks[:3]:
             self.tabifyDockWidget(docks[-2], dock)
         docks.extend(self.devices.docks)
-        self.timeline = TrafficTimeline(self)
+        self.timeline = TrafficTimeline(self, deferred=True)
+        self.views.add(self.timeline.build_plots)
         self.timeline_dock = self._dock("Traffic timeline", self.timeline, bottom, scroll=False)
         self.tabifyDockWidget(docks[4], self.timeline_dock)
         docks.append(self.timeline_dock)
@@ -419,7 +426,7 @@ class MainWindow(QMainWindow):
         self.connection_bar.set_state(state)
         was_connected, self.connected = self.connected, state == "connected"
         if state == "error":
-            self._failed = True
+            self._failed = self._link_failed = True
             self._say(f"connection error: {detail}", status.FAILURE)
         elif state == "disconnected":
             self.console.append_note("disconnected")
@@ -456,7 +463,16 @@ class MainWindow(QMainWindow):
         self.info = info
         self.console.append_note(f"connected to {info.identity} on {info.port}")
         self._say(f"connected to {info.identity} on {info.port}", note=False)
-        self.readout.set_status("live")
+        if self._link_failed:  # after a lost link or a restart: what is the position now?
+            self._position_lost = not info.capabilities.position_feedback
+            self._say(
+                "the position is unknown: this device cannot report it; home it or set home"
+                if self._position_lost
+                else f"connected again to {info.identity}: the position was read again",
+                status.WARNING if self._position_lost else status.INFO,
+            )
+        self._link_failed = False
+        self.readout.set_status(self._settled_status())
         self._adapt(info.capabilities)
         self.parameters.device_ready(info)
         self.devices.device_ready(info)
@@ -670,9 +686,8 @@ class MainWindow(QMainWindow):
             self._end_move_estimate()
         if self.devices.arc_dock.isVisible() and self.devices.arc.start_z() != report.z:
             self.devices.arc.set_start_z(report.z)  # the arc preview starts at the stage's Z
-        if not report.measured and self.info is not None:
-            feedback = self.info.capabilities.completion is Completion.FEEDBACK
-            self.readout.set_measured(False, report.confirmed if feedback else None)
+        if self.info is not None:  # measured, or where the last move's reply said it ended
+            self.readout.set_measured(report.measured, report.confirmed or None)
         self._show_position(report.x, report.y, report.z)
 
     def _show_position(self, x: float, y: float, z: float) -> None:
@@ -694,8 +709,12 @@ class MainWindow(QMainWindow):
             self._mark_estimated(True)
         self._show_position(x, y, z)
 
+    def _settled_status(self) -> str:
+        """The readout's status when no move is being estimated."""
+        return "lost" if self._position_lost else "live"
+
     def _mark_estimated(self, estimated: bool) -> None:
-        self.readout.set_status("estimated" if estimated else "live")
+        self.readout.set_status("estimated" if estimated else self._settled_status())
         self.view2d.set_estimated(estimated)
         self.view3d.set_estimated(estimated)  # type: ignore[attr-defined]
 
@@ -750,6 +769,15 @@ class MainWindow(QMainWindow):
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
         self._failed = False
         self.status_line.clear_error()
+        caps = self.info.capabilities if self.info is not None else None
+        if (
+            isinstance(job, jobs.SetHomeJob)  # places that the device itself knows again
+            or (caps is not None and caps.homing and isinstance(job, jobs.HomeJob))
+            or (caps is not None and caps.absolute_moves and isinstance(job, jobs.MoveToJob))
+        ):
+            self._position_lost = False  # a known place again
+            if self.readout.status() == "lost":
+                self.readout.set_status("live")
         if isinstance(job, jobs.SetSpeedJob) and isinstance(result, float) and result != job.speed:
             self._say(
                 f"speed {job.speed:g} mm/s reads back as {result:g} mm/s (the device rounds)",

@@ -27,10 +27,12 @@ def measure(jogs: int) -> dict[str, float]:
     from PySide6.QtTest import QTest
     from PySide6.QtWidgets import QApplication
 
+    from app.gc_main_thread import collect_for
     from app.main_window import MainWindow
 
     app = QApplication.instance() or QApplication([])
     window = MainWindow()
+    collect_for(app, window.views.ready)  # garbage collected as the application does
     window.show()
     window.activateWindow()
     window.jog_panel.set_step(1)

@@ -78,45 +78,78 @@ def _round_trips(url: str, count: int) -> list[float]:
 
 
 def bench_round_trips(count: int) -> dict[str, float]:
-    """GET_POSITION round trips: in-process sim:// and through motionsim on a real pty."""
+    """GET_POSITION round trips: in-process sim:// and through motionsim on a real pty.
+
+    motionsim hands the device's output to the host once a USB frame (1 ms), at the first frame
+    start after it is due, so no round trip beats the wire time rounded up to whole frames
+    (`frame_bound_ms`); one does only where the host answers within what is left of the frame.
+    """
+    import math
+
+    from drivers.sim.pty_server import USB_FRAME
+
     in_process = _round_trips("sim://coxiris", count)
     with motionsim("coxiris") as path:
         over_pty = _round_trips(path, count)
     reply_bytes = len(b"ACK GET_POSITION\r\nDONE GET_POSITION: 0.00 0.00 0.00\r\n")
     wire = (len(b"GET_POSITION\n") + reply_bytes) * 10 / 115200
+    frame_bound = math.ceil(wire / USB_FRAME) * USB_FRAME
     result = {
         "count": count,
         "sim_median_ms": statistics.median(in_process) * 1000,
         "pty_median_ms": statistics.median(over_pty) * 1000,
         "pty_p95_ms": sorted(over_pty)[int(0.95 * len(over_pty))] * 1000,
         "wire_time_ms": wire * 1000,
+        "usb_frame_ms": USB_FRAME * 1000,
+        "frame_bound_ms": frame_bound * 1000,
+        "pty_share_at_bound": sum(t < frame_bound + USB_FRAME / 2 for t in over_pty) / count,
     }
     result["pty_over_wire_ratio"] = result["pty_median_ms"] / result["wire_time_ms"]
     return result
 
 
 def bench_move_overhead(moves: int) -> dict[str, float]:
-    """Commands a completed move costs (position before, move, speed, confirmation)."""
-    link = open_link("sim://coxiris?instant=1&line_timing=0", 115200)
-    written: list[bytes] = []
-    link.listeners.append(lambda r: written.append(r.data) if r.direction == "tx" else None)
-    motion = Motion(Client(link, CoxirisProtocol()))
-    try:
-        start = time.perf_counter()
-        for i in range(moves):
-            motion.move_to(i % 10, 0, 0)
-        seconds = time.perf_counter() - start
-        before = len(written)
-        for i in range(moves):
-            motion.move_by(0.1 if i % 2 else -0.1, 0, 0)  # small jogs, one after another
-        jog_commands = len(written) - before
-    finally:
-        link.close()
+    """Commands a completed move costs (position before, move, speed, confirmation).
+
+    A position is asked only where it is not known: once the device has shown that its reply to
+    a move comes when the move has ended (`Motion.arrives_on_reply`), the target is where the
+    stage is. Also measured on timed devices: blocking (DONE when the move ends) and not.
+    """
+
+    def jogs_on(url: str, first: list[float], jogs: int) -> tuple[float, float, float]:
+        """Commands per move over `first` (absolute X), then per small jog; milliseconds a move."""
+        link = open_link(url, 115200)
+        written: list[bytes] = []
+        link.listeners.append(lambda r: written.append(r.data) if r.direction == "tx" else None)
+        motion = Motion(Client(link, CoxirisProtocol()))
+        try:
+            start = time.perf_counter()
+            for x in first:
+                motion.move_to(x, 0, 0)
+            seconds = time.perf_counter() - start
+            before = len(written)
+            for i in range(jogs):
+                motion.move_by(0.1 if i % 2 else -0.1, 0, 0)  # small jogs, one after another
+        finally:
+            link.close()
+        return before / len(first), (len(written) - before) / jogs, seconds / len(first) * 1000
+
+    per_move, per_jog, ms = jogs_on(
+        "sim://coxiris?instant=1&line_timing=0", [i % 10 for i in range(moves)], moves
+    )
+    long_moves = [20.0, 0.0, 20.0]  # 0.2 s each at 100 mm/s: long enough to show the style
+    timed = min(moves, 20)  # a non-blocking device's jog waits for a poll 0.1 s after its DONE
+    _, blocking, _ = jogs_on("sim://coxiris?speed=100&line_timing=0", long_moves, timed)
+    _, non_blocking, _ = jogs_on(
+        "sim://coxiris?speed=100&blocking=0&line_timing=0", long_moves, timed
+    )
     return {
         "moves": moves,
-        "commands_per_move": before / moves,
-        "commands_per_jog": jog_commands / moves,
-        "ms_per_move": seconds / moves * 1000,
+        "commands_per_move": per_move,
+        "commands_per_jog": per_jog,
+        "ms_per_move": ms,
+        "commands_per_jog_timed_blocking": blocking,
+        "commands_per_jog_timed_non_blocking": non_blocking,
     }
 
 
@@ -173,6 +206,17 @@ def bench_console(lines: int, memory_lines: int, flood_s: float) -> dict[str, fl
     }
 
 
+def bench_trail(points: int) -> dict[str, float]:
+    """One 3D and 2D view frame with a trail of `points` points (bench/trail_frame.py, OpenGL):
+    under xvfb-run when there is no display, skipped when there is neither."""
+    import shutil
+
+    args = [str(ROOT / "bench" / "trail_frame.py"), "--points", str(points)]
+    if not os.environ.get("DISPLAY") and shutil.which("xvfb-run"):
+        args.append("--xvfb")  # the script runs itself again under xvfb-run
+    return _script(*args, timeout=600)
+
+
 def bench_bridge(count: int) -> dict[str, float]:
     """Latency the bridge adds to a round trip (bare, and motionctl bridge with log and print)."""
     figures = {}
@@ -208,12 +252,14 @@ def main() -> int:
         ),
         "bridge": bench_bridge(400 if options.quick else 2000),
         "startup": startup.measure(3 if options.quick else 5),
+        "trail": bench_trail(1_000_000),  # --quick too: about 10 s
     }
     results["console_lines_per_s"] = results["console"]["console_lines_per_s"]
     trips = results["round_trips"]
     results["wire_efficiency_coxiris"] = trips["wire_time_ms"] / trips["pty_median_ms"]
     results["commands_per_jog"] = results["move_overhead"]["commands_per_jog"]
     results["startup_ratio"] = results["startup"]["startup_ratio"]
+    results["trail_frame_ms_1e6"] = results["trail"].get("trail_frame_ms")  # None: no display
     results["gui_max_stall_ms"] = results["console"]["flood_max_stall_ms"]
     if options.json:
         print(json.dumps(results, indent=None))
