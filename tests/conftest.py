@@ -66,6 +66,14 @@ def _garbage_collected_outside_qt() -> Iterator[None]:
 
 
 @pytest.fixture(autouse=True)
+def _settings_in_tmp(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every test's panel and motionctl (a child process inherits it) keep their settings in
+    the test's own folder: nothing read from or left in the user's (a laser frame numbering
+    kept per port by one test once broke another that got the same pty number)."""
+    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(tmp_path / "settings.ini"))
+
+
+@pytest.fixture(autouse=True)
 def _session_logs_in_tmp(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     """Session logs of the panels a test opens go to the test's own folder."""
     folder = tmp_path / "session-logs"
