@@ -61,12 +61,23 @@ class DeviceDocks(QObject):
         self._wire()
 
     def _dock(self, title: str, widget: QWidget, area: Qt.DockWidgetArea) -> QDockWidget:
+        """The panel's dock: the window's empty one of that name if it made one before its
+        first paint (placed and restored already), else a new, hidden one."""
+        name = f"{widget.objectName()}Dock"
+        dock = self.window.findChild(QDockWidget, name, Qt.FindChildOption.FindDirectChildrenOnly)
+        if dock is not None and dock.widget() is None:
+            dock.setWidget(PanelScrollArea(widget, dock))
+            return dock
         dock = QDockWidget(title, self.window)
-        dock.setObjectName(f"{widget.objectName()}Dock")
+        dock.setObjectName(name)
         dock.setWidget(PanelScrollArea(widget, dock))
         self.window.addDockWidget(area, dock)
         dock.hide()
         return dock
+
+    def set_speed(self, speed: float) -> None:
+        """The device's speed (mm/s), for the panels that show it."""
+        self.firmata.set_speed_mm_s(speed)
 
     def _wire(self) -> None:
         self.firmata.configure_requested.connect(self._configure_stepper)

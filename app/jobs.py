@@ -6,7 +6,6 @@ from dataclasses import dataclass
 
 from drivers.commands import Arc
 from drivers.program import ProgramPoint
-from drivers.traffic_index import escape
 
 
 @dataclass(frozen=True)
@@ -167,6 +166,8 @@ class RawJob(Job):
 
     def describe(self) -> str:
         """E.g. `send "GET_ID\\n"`, with the console's escapes."""
+        from drivers.traffic_index import escape  # imports numpy: not before the first paint
+
         return f'send "{escape(self.data)}"'
 
 

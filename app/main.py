@@ -50,7 +50,7 @@ def take_screenshot(window: MainWindow, path: str, app: QApplication) -> None:
         if done:
             return
         done = True
-        window.views.build_now()  # the real views, should they not be built yet
+        window.views.build_now()  # the views, console and docks, should they not be built yet
         window.view2d.refresh()
         refresh3d = getattr(window.view3d, "refresh", None)
         if refresh3d is not None:

@@ -7,6 +7,7 @@ import logging
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import Qt, QTimer, QUrl, Signal
 from PySide6.QtGui import QCloseEvent, QDesktopServices, QKeySequence
@@ -19,12 +20,8 @@ from PySide6.QtWidgets import (
 )
 
 from app import jobs
-from app.bridge_session import BridgeSession
-from app.device_docks import DeviceDocks
 from app.keyboard_jog import KeyboardJog
-from app.log_viewer import LogViewer, ask_open_path
 from app.move_estimate import MoveEstimate
-from app.parameter_dock import ParameterDock
 from app.ports import PortWatcher
 from app.session_log import log_folder, open_session_log
 from app.settings import (
@@ -39,8 +36,6 @@ from app.settings import (
     settings_problem,
     write_travel,
 )
-from app.traffic_console import RawConsole
-from app.traffic_feed import TimelineFeed
 from app.worker import ConnectOptions, DeviceInfo, SerialWorker
 from app.worker_thread import WorkerThread
 from drivers.capabilities import Capabilities
@@ -56,16 +51,59 @@ from widgets import status_line as status
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
 from widgets.jog_panel import JogPanel
-from widgets.lazy_view import DeferredViews
+from widgets.lazy_view import DeferredViews, LazyPart, built
 from widgets.panel_scroll_area import PanelScrollArea
-from widgets.position_buffer import PositionBuffer
 from widgets.position_readout import PositionReadout
 from widgets.speed_control import SpeedControl
 from widgets.status_line import StatusLine
-from widgets.traffic_timeline import TrafficTimeline
-from widgets.travel_limits_dialog import TravelLimitsDialog
+
+if TYPE_CHECKING:
+    from app.bridge_session import BridgeSession
+    from app.device_docks import DeviceDocks
+    from app.log_viewer import LogViewer
+    from app.parameter_dock import ParameterDock
+    from app.traffic_console import RawConsole
+    from widgets.position_buffer import PositionBuffer
+    from widgets.traffic_timeline import TrafficTimeline
 
 log = logging.getLogger(__name__)
+
+# Built just after the window's first paint (they import numpy and build many widgets): the
+# calls the window makes on them before that are kept and replayed, in order.
+CONSOLE_CALLS = frozenset(
+    {
+        "append_note",
+        "append_traffic",
+        "set_protocol",
+        "set_line_ending",
+        "set_display_mode",
+        "set_send_mode",
+        "set_send_enabled",
+    }
+)
+BUFFER_CALLS = frozenset({"append", "shift"})
+PARAMETER_CALLS = frozenset({"device_ready", "disconnected", "forget"})
+DEVICE_CALLS = frozenset({"device_ready", "disconnected", "adapt", "set_speed"})
+# The device docks (title, object name, area), made empty before the first paint so that the
+# saved layout places them; in the order the device docks' own code adds them.
+_LEFT, _BOTTOM = Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
+DEVICE_DOCKS = (
+    ("Stepper setup", "firmataPanelDock", _BOTTOM),
+    ("Frame setup", "piFramePanelDock", _BOTTOM),
+    ("Arc", "arcEntryDock", _LEFT),
+    ("Dwell", "dwellEntryDock", _LEFT),
+    ("Program", "programPanelDock", _BOTTOM),
+)
+DEVICE_DOCK_ORDER = (0, 1, 4, 2, 3)  # as in DeviceDocks.docks: the bottom ones first
+
+
+def _stamp_note(name: str, args: tuple, kwargs: dict) -> tuple[tuple, dict]:
+    """A console note kept for later: stamped with the time it was made (the console's clock,
+    time.monotonic), not the time it is replayed."""
+    if name == "append_note" and len(args) < 2 and kwargs.get("timestamp") is None:
+        kwargs = {**kwargs, "timestamp": time.monotonic()}
+    return args, kwargs
+
 
 NO_STOP_TIP = (
     "{name} has no stop command: this drops the commands not yet sent; "
@@ -91,7 +129,8 @@ class MainWindow(QMainWindow):
         self.settings = open_settings()
         self.worker_thread = worker_thread or WorkerThread(self._make_worker())
         self.worker = self.worker_thread.worker
-        self.buffer = PositionBuffer(capacity=None)  # the whole trail, drawn decimated
+        # The whole trail, drawn decimated; built with the views (it imports numpy).
+        self.buffer: PositionBuffer = LazyPart(self._build_buffer, BUFFER_CALLS)  # type: ignore[assignment]
         self.t0 = time.monotonic()
         self.connected = False
         self.info: DeviceInfo | None = None
@@ -100,7 +139,7 @@ class MainWindow(QMainWindow):
         self._viewers: list[LogViewer] = []
         self.bridge: BridgeSession | None = None
         self._log_start: float | None = None
-        self.ask_log_path: Callable[[], str] = lambda: ask_open_path(self)
+        self.ask_log_path: Callable[[], str] = self._ask_log_path
         self._last_position: tuple[float, float, float] | None = None
         self._busy_job: jobs.Job | None = None
         self._moving = False
@@ -135,8 +174,15 @@ class MainWindow(QMainWindow):
         self.console.append_note(f"session log: {path}")
         return path
 
+    def _ask_log_path(self) -> str:
+        from app.log_viewer import ask_open_path
+
+        return ask_open_path(self)
+
     def open_log(self, path: str | None = None) -> LogViewer | None:
         """Open a traffic log in a viewer window (asks for the file when `path` is None)."""
+        from app.log_viewer import LogViewer
+
         viewer = LogViewer(None, self.connection_bar.protocol())
         viewer.ask_path = self.ask_log_path
         chosen = path if path is not None else self.ask_log_path()
@@ -189,32 +235,36 @@ class MainWindow(QMainWindow):
         self.jog_panel = JogPanel(self)
         self.coordinates = CoordinateEntry(self)
         self.speed = SpeedControl(self)
-        self.console = RawConsole(self)
-        left, bottom = Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
+        # The console, its timeline and the parameter and device docks are built just after
+        # the first paint (`_build_console`, ...): their docks are here already, empty.
+        self.console: RawConsole = LazyPart(self._build_console, CONSOLE_CALLS, _stamp_note)  # type: ignore[assignment]
+        self.parameters: ParameterDock = LazyPart(self._build_parameters, PARAMETER_CALLS)  # type: ignore[assignment]
+        self.devices: DeviceDocks = LazyPart(self._build_devices, DEVICE_CALLS)  # type: ignore[assignment]
+        self.timeline: TrafficTimeline | None = None
+        left, bottom = _LEFT, _BOTTOM
         docks = [
             self._dock("Position", self.readout, left),
             self._dock("Jog", self.jog_panel, left),
             self._dock("Go to", self.coordinates, left),
             self._dock("Speed", self.speed, left),
-            self._dock("Console", self.console, bottom, scroll=False),
+            self._empty_dock("Console", "rawConsoleDock", bottom),
         ]
         self.coordinates_dock = docks[2]
-        self.parameters = ParameterDock(self)
-        self.tabifyDockWidget(docks[-1], self.parameters.dock)
-        docks.append(self.parameters.dock)
-        self.devices = DeviceDocks(self)
-        for dock in self.devices.docks[:3]:
+        parameter_dock = self._empty_dock("Parameters", "parameterEditor", bottom, hidden=True)
+        self.tabifyDockWidget(docks[-1], parameter_dock)
+        docks.append(parameter_dock)
+        device_docks = [self._empty_dock(*made, hidden=True) for made in DEVICE_DOCKS]
+        device_docks = [device_docks[i] for i in DEVICE_DOCK_ORDER]
+        for dock in device_docks[:3]:
             self.tabifyDockWidget(docks[-2], dock)
-        docks.extend(self.devices.docks)
-        self.timeline = TrafficTimeline(self, deferred=True)
-        self.views.add(self.timeline.build_plots)
-        self.timeline_dock = self._dock("Traffic timeline", self.timeline, bottom, scroll=False)
+        docks.extend(device_docks)
+        self.timeline_dock = self._empty_dock("Traffic timeline", "trafficTimelineDock", bottom)
         self.tabifyDockWidget(docks[4], self.timeline_dock)
         docks.append(self.timeline_dock)
         docks[4].raise_()  # the console is the tab shown first
-        self.timeline_feed = TimelineFeed(self.console, self.timeline)
         self.console_dock = docks[4]
-        self.timeline.line_clicked.connect(self._show_console)
+        for part in (self.buffer, self.console, self.parameters, self.devices):
+            self.views.add(part.build)
         self._build_menus(docks)
         # The left panels run the full height; the console sits under the views only.
         self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
@@ -226,7 +276,9 @@ class MainWindow(QMainWindow):
 
     def _build_menus(self, docks: list[QDockWidget]) -> None:
         file_menu = self.menuBar().addMenu("&File")
-        export = file_menu.addAction("&Export traffic log…", self.console.export_interactively)
+        export = file_menu.addAction(
+            "&Export traffic log…", lambda: self.console.export_interactively()
+        )
         export.setShortcut(QKeySequence("Ctrl+E"))
         export.setToolTip("Save every byte sent and received, with timestamps, to a text file")
         opener = file_menu.addAction("&Open log…", self.open_log)
@@ -257,22 +309,65 @@ class MainWindow(QMainWindow):
         self.view2d.reset_view()
         self.view3d.reset_view()  # type: ignore[attr-defined]
 
-    def _dock(
-        self, title: str, widget: QWidget, area: Qt.DockWidgetArea, scroll: bool = True
+    def _dock(self, title: str, widget: QWidget, area: Qt.DockWidgetArea) -> QDockWidget:
+        dock = self._empty_dock(title, f"{widget.objectName()}Dock", area)
+        dock.setWidget(PanelScrollArea(widget, dock))  # a small screen scrolls the panel
+        return dock
+
+    def _empty_dock(
+        self, title: str, name: str, area: Qt.DockWidgetArea, hidden: bool = False
     ) -> QDockWidget:
+        """A dock named `name` in `area`; its widget comes later for the deferred parts."""
         dock = QDockWidget(title, self)
-        dock.setObjectName(f"{widget.objectName()}Dock")
-        if scroll:  # a small screen scrolls the panel instead of squeezing it
-            dock.setWidget(PanelScrollArea(widget, dock))
-        else:
-            dock.setWidget(widget)
+        dock.setObjectName(name)
         dock.setFeatures(
             QDockWidget.DockWidgetFeature.DockWidgetMovable
             | QDockWidget.DockWidgetFeature.DockWidgetFloatable
             | QDockWidget.DockWidgetFeature.DockWidgetClosable  # View menu brings it back
         )
         self.addDockWidget(area, dock)
+        if hidden:
+            dock.hide()
         return dock
+
+    # -- the parts built after the first paint ------------------------------------------------
+    def _build_console(self) -> RawConsole:
+        """The traffic console and its timeline, in their docks (the calls made on the console
+        until now are replayed on it next)."""
+        from app.traffic_console import RawConsole
+        from app.traffic_feed import TimelineFeed
+        from widgets.traffic_timeline import TrafficTimeline
+
+        self.console = console = RawConsole(self)
+        self.console_dock.setWidget(console)
+        console.send_requested.connect(lambda data: self._submit(jobs.RawJob(data)))
+        self.timeline = TrafficTimeline(self, deferred=True)
+        self.timeline_dock.setWidget(self.timeline)
+        self.timeline.build_plots()
+        self.timeline_feed = TimelineFeed(console, self.timeline)
+        self.timeline.line_clicked.connect(self._show_console)
+        return console
+
+    def _build_buffer(self) -> PositionBuffer:
+        """The trail's buffer (the positions shown until now are replayed into it)."""
+        from widgets.position_buffer import PositionBuffer
+
+        self.buffer = PositionBuffer(capacity=None)
+        return self.buffer
+
+    def _build_parameters(self) -> ParameterDock:
+        """The parameter editor, in its dock."""
+        from app.parameter_dock import ParameterDock
+
+        self.parameters = ParameterDock(self)
+        return self.parameters
+
+    def _build_devices(self) -> DeviceDocks:
+        """The device-specific panels, in their docks."""
+        from app.device_docks import DeviceDocks
+
+        self.devices = DeviceDocks(self)
+        return self.devices
 
     def _wire(self) -> None:
         w = self.worker
@@ -297,7 +392,8 @@ class MainWindow(QMainWindow):
         bar.disconnect_requested.connect(self._disconnect_from_bar)
         bar.protocol_changed.connect(self._on_protocol_changed)
         bar.variant_changed.connect(self._on_variant_changed)
-        self.port_watcher = PortWatcher(self)
+        self.port_watcher = PortWatcher(self, list_now=False)
+        self.views.add(self.port_watcher.refresh)  # listed once the window has painted
         self.port_watcher.ports_changed.connect(self._on_ports)
         self.port_watcher.port_added.connect(self._on_port_added)
         self.port_watcher.port_removed.connect(self._on_port_removed)
@@ -309,7 +405,6 @@ class MainWindow(QMainWindow):
         self.coordinates.set_home_requested.connect(self._set_home)
         self.coordinates.stop_requested.connect(self.stop)
         self.speed.speed_requested.connect(lambda v: self._submit(jobs.SetSpeedJob(v)))
-        self.console.send_requested.connect(lambda data: self._submit(jobs.RawJob(data)))
 
     # -- connection --------------------------------------------------------------------------
     def connect_device(
@@ -378,6 +473,8 @@ class MainWindow(QMainWindow):
             self.console.set_protocol(create_protocol(protocol, variant or None))
         except (LookupError, BadInput):
             self.console.set_protocol(None)
+        from app.bridge_session import BridgeSession
+
         session = BridgeSession(
             with_sim_variant(port, variant), baud, self.session_log_path, self._log_start, self
         )
@@ -582,6 +679,8 @@ class MainWindow(QMainWindow):
         if self._last_connection is None:
             return
         port, protocol, _ = self._last_connection
+        from widgets.travel_limits_dialog import TravelLimitsDialog
+
         current = self.travel
         dialog = TravelLimitsDialog(
             f"{protocol} on {port}",
@@ -684,8 +783,9 @@ class MainWindow(QMainWindow):
             )
         if self.estimate.active():
             self._end_move_estimate()
-        if self.devices.arc_dock.isVisible() and self.devices.arc.start_z() != report.z:
-            self.devices.arc.set_start_z(report.z)  # the arc preview starts at the stage's Z
+        devices = self.devices
+        if built(devices) and devices.arc_dock.isVisible() and devices.arc.start_z() != report.z:
+            devices.arc.set_start_z(report.z)  # the arc preview starts at the stage's Z
         if self.info is not None:  # measured, or where the last move's reply said it ended
             self.readout.set_measured(report.measured, report.confirmed or None)
         self._show_position(report.x, report.y, report.z)
@@ -735,7 +835,7 @@ class MainWindow(QMainWindow):
     def _on_speed(self, speed: float) -> None:
         self.speed.set_reported(speed)
         self.speed.set_value(speed)
-        self.devices.firmata.set_speed_mm_s(speed)
+        self.devices.set_speed(speed)
 
     def _on_notice(self, text: str) -> None:
         self._say(text, status.WARNING)
@@ -817,5 +917,6 @@ class MainWindow(QMainWindow):
             self.bridge.bridge.close()  # its thread returns within a moment
         for viewer in self._viewers:
             viewer.close()
-        self.console.index.close()
+        if built(self.console):
+            self.console.index.close()
         super().closeEvent(event)

@@ -6,7 +6,7 @@ import logging
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QObject, Qt
-from PySide6.QtWidgets import QDockWidget
+from PySide6.QtWidgets import QDockWidget, QMainWindow
 
 from app import jobs
 from app.settings import read_parameters, write_parameters
@@ -35,6 +35,23 @@ def editor_rows(parameters: tuple[Parameter, ...]) -> list[ParameterRow]:
     ]
 
 
+DOCK_NAME = "parameterEditor"
+
+
+def make_dock(window: QMainWindow) -> QDockWidget:
+    """The parameter editor's dock, empty and hidden, at the bottom of `window`."""
+    dock = QDockWidget("Parameters", window)
+    dock.setObjectName(DOCK_NAME)
+    dock.setFeatures(
+        QDockWidget.DockWidgetFeature.DockWidgetMovable
+        | QDockWidget.DockWidgetFeature.DockWidgetFloatable
+        | QDockWidget.DockWidgetFeature.DockWidgetClosable
+    )
+    window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, dock)
+    dock.hide()
+    return dock
+
+
 class ParameterDock(QObject):
     """Shows the editor when the device has parameters; turns its requests into jobs."""
 
@@ -42,16 +59,13 @@ class ParameterDock(QObject):
         super().__init__(window)
         self.window = window
         self.editor = ParameterEditor(window)
-        self.dock = QDockWidget("Parameters", window)
-        self.dock.setObjectName("parameterEditor")
+        # The window's empty dock of that name if it made one before its first paint (placed
+        # and restored already), else a new, hidden one.
+        dock = window.findChild(QDockWidget, DOCK_NAME, Qt.FindChildOption.FindDirectChildrenOnly)
+        if dock is None or dock.widget() is not None:
+            dock = make_dock(window)
+        self.dock = dock
         self.dock.setWidget(self.editor)
-        self.dock.setFeatures(
-            QDockWidget.DockWidgetFeature.DockWidgetMovable
-            | QDockWidget.DockWidgetFeature.DockWidgetFloatable
-            | QDockWidget.DockWidgetFeature.DockWidgetClosable
-        )
-        window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.dock)
-        self.dock.hide()
         self.protocol: Protocol | None = None
         self.info: DeviceInfo | None = None
         self._writing: list[jobs.SetParameterJob] = []

@@ -5,7 +5,6 @@ from __future__ import annotations
 import logging
 
 from PySide6.QtCore import QObject, QTimer, Signal
-from serial.tools import list_ports
 
 log = logging.getLogger(__name__)
 
@@ -14,6 +13,8 @@ REFRESH_MS = 2000
 
 def list_serial_ports() -> list[tuple[str, str]]:
     """(device, description) of every serial port the system reports; opens none of them."""
+    from serial.tools import list_ports  # when first listed, after the window has painted
+
     ports = []
     for info in sorted(list_ports.comports(), key=lambda p: p.device):
         description = info.description if info.description not in ("", "n/a") else "serial port"
@@ -28,14 +29,17 @@ class PortWatcher(QObject):
     port_added = Signal(str)
     port_removed = Signal(str)
 
-    def __init__(self, parent: QObject | None = None) -> None:
+    def __init__(self, parent: QObject | None = None, list_now: bool = True) -> None:
+        """`list_now`: list the ports as soon as the event loop runs (else at the first
+        `refresh()` or timer tick)."""
         super().__init__(parent)
         self._known: list[tuple[str, str]] | None = None
         self._timer = QTimer(self)
         self._timer.setInterval(REFRESH_MS)
         self._timer.timeout.connect(self._check)
         self._timer.start()
-        QTimer.singleShot(0, self, self.refresh)
+        if list_now:
+            QTimer.singleShot(0, self, self.refresh)
 
     def refresh(self) -> None:
         """List the ports now and always emit the list."""

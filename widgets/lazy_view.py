@@ -12,12 +12,14 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from functools import partial
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QEvent, QObject, QTimer, Signal
 from PySide6.QtGui import QColor, QPainter, QPaintEvent
 from PySide6.QtWidgets import QSplitter, QWidget
 
-from widgets.position_buffer import PositionBuffer
+if TYPE_CHECKING:  # it imports numpy: not before the window's first paint
+    from widgets.position_buffer import PositionBuffer
 
 # What the window may call on a view before it exists. The last call of each of these is
 # replayed on the view when it is built, in the order they were last made.
@@ -49,18 +51,23 @@ BACKGROUND_3D = QColor(24, 24, 28)  # as the 3D view's scene
 BACKGROUND_2D = QColor(0, 0, 0)  # as pyqtgraph's plots
 
 
-def position_view_3d(buffer: PositionBuffer) -> QWidget:
+def position_view_3d(buffer: PositionBuffer | LazyPart) -> QWidget:
     """The 3D view (or its no-OpenGL notice); imports OpenGL."""
     from widgets import position_view_3d as module
 
-    return module.make_position_view_3d(buffer)
+    return module.make_position_view_3d(_real_buffer(buffer))
 
 
-def position_view_2d(buffer: PositionBuffer) -> QWidget:
+def position_view_2d(buffer: PositionBuffer | LazyPart) -> QWidget:
     """The 2D views; imports pyqtgraph."""
     from widgets.position_view_2d import PositionView2D
 
-    return PositionView2D(buffer)
+    return PositionView2D(_real_buffer(buffer))
+
+
+def _real_buffer(buffer: PositionBuffer | LazyPart) -> PositionBuffer:
+    """The buffer itself (built now if the window has a `LazyPart` for it)."""
+    return buffer.build() if isinstance(buffer, LazyPart) else buffer  # type: ignore[return-value]
 
 
 class LazyView(QWidget):
@@ -136,17 +143,82 @@ class LazyView(QWidget):
         QPainter(self).fillRect(self.rect(), self._background)
 
 
+class LazyPart:
+    """Stands in for a part of the window built after its first paint (the traffic console,
+    the parameter and device docks): the calls to its `recorded` methods are kept, all of them
+    in order, and replayed on the real part when it is built; any other attribute builds it at
+    once. `factory` builds the part (and makes it the window's own attribute); a method of the
+    stand-in kept from before calls the real part's once it is built. `keep(name, args, kwargs)`,
+    if given, returns the (args, kwargs) to keep for a call, such as the time it was made.
+    """
+
+    def __init__(
+        self,
+        factory: Callable[[], object],
+        recorded: frozenset[str],
+        keep: Callable[[str, tuple, dict], tuple[tuple, dict]] | None = None,
+    ) -> None:
+        self._factory = factory
+        self._recorded = recorded
+        self._keep = keep
+        self._calls: list[tuple[str, tuple, dict]] = []
+        self._real: object | None = None
+        self._building = False
+
+    def real(self) -> object | None:
+        """The real part once built, else None."""
+        return self._real
+
+    def __getattr__(self, name: str) -> object:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        if name in self._recorded:
+            return partial(self._call, name)
+        return getattr(self.build(), name)
+
+    def _call(self, name: str, *args: object, **kwargs: object) -> object:
+        if self._real is None:
+            if self._keep is not None:
+                args, kwargs = self._keep(name, args, kwargs)
+            self._calls.append((name, args, kwargs))
+            return None
+        return getattr(self._real, name)(*args, **kwargs)
+
+    def build(self) -> object:
+        """Build the real part (once) and replay the calls made on the stand-in, in order."""
+        if self._real is None:
+            if self._building:
+                raise RuntimeError("a deferred part was used while it was being built")
+            self._building = True
+            try:
+                real = self._factory()
+            finally:
+                self._building = False
+            self._real = real
+            self._factory = None  # type: ignore[assignment]  # (it holds the window)
+            calls, self._calls = self._calls, []
+            for name, args, kwargs in calls:
+                getattr(real, name)(*args, **kwargs)
+        return self._real
+
+
+def built(part: object) -> bool:
+    """Whether `part` is a real part (not a `LazyPart` still waiting to be built)."""
+    return not isinstance(part, LazyPart)
+
+
 class DeferredViews(QObject):
     """The window's 3D and 2D views, built once it has painted; then `window.view3d` and
     `window.view2d` are the real ones and `ready` is emitted.
 
-    More building can be added (`add`), such as the traffic timeline's plots. `build_now()`
+    More building can be added (`add`), such as the window's `LazyPart`s (the traffic console
+    and its timeline, the parameter and device docks). `build_now()`
     builds everything at once (for a screenshot, or a window that is never shown).
     """
 
     ready = Signal()
 
-    def __init__(self, window: QWidget, buffer: PositionBuffer) -> None:
+    def __init__(self, window: QWidget, buffer: PositionBuffer | LazyPart) -> None:
         super().__init__(window)  # the window is reached as parent(): no reference cycle to it
         self.view3d = LazyView("positionView3d", partial(position_view_3d, buffer), BACKGROUND_3D)
         self.view2d = LazyView("positionView2d", partial(position_view_2d, buffer), BACKGROUND_2D)
@@ -176,6 +248,7 @@ class DeferredViews(QObject):
         self.parent().removeEventFilter(self)
         for step in self._steps:
             step()
+        self._steps.clear()  # they may hold the window: no reference cycle to it is kept
         self._ready = True
         self.ready.emit()
 

@@ -1,0 +1,117 @@
+"""The window paints before its heavy parts are built: numpy, pyqtgraph, the traffic console,
+the parameter and device docks come just after the first paint, and get the calls made before."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from PySide6.QtWidgets import QDockWidget
+
+from app.main_window import MainWindow
+from widgets.lazy_view import LazyPart, built
+
+ROOT = Path(__file__).resolve().parent.parent
+
+HEAVY = (
+    "numpy",
+    "pyqtgraph",
+    "OpenGL",
+    "app.traffic_console",
+    "app.device_docks",
+    "app.parameter_dock",
+    "app.log_viewer",
+    "drivers.traffic_index",
+    "serial.tools.list_ports",
+)
+
+
+def test_nothing_heavy_is_imported_before_the_first_paint(tmp_path: Path) -> None:
+    code = f"""
+import json, sys
+from PySide6.QtCore import QEvent, QObject, QTimer
+from PySide6.QtWidgets import QApplication
+app = QApplication([])
+from app.main_window import MainWindow
+window = MainWindow()
+window.connect_device("loop://", "coxiris", 115200)  # (a simulator imports numpy)
+seen = {{}}
+
+
+class Painted(QObject):
+    def eventFilter(self, watched, event):
+        if event.type() == QEvent.Type.Paint and "painted" not in seen:
+            seen["painted"] = sorted(m for m in {HEAVY!r} if m in sys.modules)
+        return False
+
+
+def ready():
+    seen["ready"] = sorted(m for m in ("numpy", "app.traffic_console") if m in sys.modules)
+    QTimer.singleShot(0, app.quit)
+
+
+watcher = Painted()
+window.installEventFilter(watcher)
+window.views.ready.connect(ready)
+window.show()
+QTimer.singleShot(20_000, app.quit)
+app.exec()
+window.close()
+print(json.dumps(seen))
+"""
+    env = {
+        **os.environ,
+        "QT_QPA_PLATFORM": "offscreen",
+        "MOTIONPANEL_SETTINGS": str(tmp_path / "settings.ini"),
+        "MOTIONPANEL_LOG_DIR": str(tmp_path / "logs"),
+    }
+    out = subprocess.run(
+        [sys.executable, "-c", code], cwd=ROOT, env=env, capture_output=True, text=True, timeout=60
+    )
+    assert out.returncode == 0, out.stderr
+    seen = json.loads(out.stdout.strip().splitlines()[-1])
+    assert seen == {"painted": [], "ready": ["app.traffic_console", "numpy"]}
+
+
+@pytest.fixture
+def unshown(qtbot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> MainWindow:
+    """A main window not shown yet (nothing deferred is built), settings in a temporary file."""
+    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(tmp_path / "settings.ini"))
+    win = MainWindow()
+    qtbot.addWidget(win)
+    return win
+
+
+def test_the_deferred_parts_get_the_calls_made_before_them(qtbot, unshown: MainWindow) -> None:
+    win = unshown
+    assert not built(win.console) and not built(win.devices) and not built(win.parameters)
+    assert not win.views.is_ready()
+    win.connect_device("loop://", "coxiris", 115200)
+    win.console.append_note("before the console")
+    win.show()
+    qtbot.waitUntil(win.views.is_ready, timeout=10_000)
+    for part in (win.console, win.devices, win.parameters, win.buffer):
+        assert built(part) and not isinstance(part, LazyPart)
+    assert win.findChild(QDockWidget, "rawConsoleDock").widget() is win.console
+    assert win.console.objectName() == "rawConsole"
+    assert win.findChild(QDockWidget, "parameterEditor").widget() is win.parameters.editor
+    for name in ("firmataPanelDock", "piFramePanelDock", "arcEntryDock", "dwellEntryDock"):
+        assert win.findChild(QDockWidget, name).widget() is not None
+    assert win.timeline_dock.widget() is win.timeline
+    win.console.flush()
+    text = win.console.text()
+    connecting = text.index("connecting to loop:// (coxiris")
+    assert connecting < text.index("before the console")
+    assert "session log:" in text.splitlines()[0]  # stamped when made, before the connection
+    win.close()
+
+
+def test_a_window_closed_before_its_first_paint_builds_nothing(unshown: MainWindow) -> None:
+    win = unshown
+    win.close()
+    assert not built(win.console)
+    assert not win.worker_thread.thread.isRunning()
