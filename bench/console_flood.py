@@ -132,6 +132,8 @@ def flood(seconds: float) -> dict[str, float]:
     collect_for(app, window.views.ready)  # garbage collected as the application does
     window.resize(1600, 1000)
     window.show()
+    window.activateWindow()
+    QTest.qWaitForWindowActive(window, 5000)  # the jog keys act only in the active window
     window.jog_panel.set_step(1)
     window.connect_device("sim://coxiris?chatter=5000&line_timing=0&speed=50", "coxiris", 115200)
     clock = QElapsedTimer()

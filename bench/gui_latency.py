@@ -35,6 +35,7 @@ def measure(jogs: int) -> dict[str, float]:
     collect_for(app, window.views.ready)  # garbage collected as the application does
     window.show()
     window.activateWindow()
+    QTest.qWaitForWindowActive(window, 5000)  # the jog keys act only in the active window
     window.jog_panel.set_step(1)
     window.connect_device("sim://coxiris?speed=50", "coxiris", 115200)
 

@@ -47,6 +47,21 @@ def _grid() -> pg.GridItem:
     return grid
 
 
+def _steady_axes(plot: pg.PlotItem) -> None:
+    """Axes whose size and label change only when they must.
+
+    No SI prefix ("(x0.001)"; on the hidden axes too, which else rebuilt their label's HTML on
+    every range change). The tick labels' space only grows: with the XY view's aspect locked, a
+    narrower Y label widened the view, which changed the ranges and the labels back, and the
+    layout swung between the two every frame (the axes, the grid and the layout rebuilt ~30
+    times a second with nothing moving).
+    """
+    for side in ("left", "bottom", "right", "top"):
+        axis = plot.getAxis(side)
+        axis.enableAutoSIPrefix(False)
+        axis.setStyle(autoReduceTextSpace=False)
+
+
 class PositionView2D(BufferedViewMixin, QWidget):
     """XY trail with current and target markers, and a position-time chart, from a buffer."""
 
@@ -129,8 +144,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         buttons.addWidget(reset_button)
 
         for plot in (self.xy_plot, self.time_plot):
-            for side in ("left", "bottom"):
-                plot.getPlotItem().getAxis(side).enableAutoSIPrefix(False)  # no "(x0.001)"
+            _steady_axes(plot.getPlotItem())
         self.splitter = QSplitter(Qt.Orientation.Horizontal)
         self.splitter.addWidget(self.xy_plot)
         self.splitter.addWidget(self.time_plot)

@@ -431,3 +431,27 @@ def test_preview_is_drawn(view: PositionView2D, qtbot) -> None:
     assert sum(drawn) > len(drawn) / 3  # drawn
     gaps = sum(1 for a, b in itertools.pairwise(drawn) if a and not b)
     assert gaps >= 5, drawn  # dashed: the line breaks again and again
+
+
+def test_the_xy_layout_settles_at_every_size(qtbot) -> None:
+    """With the aspect locked, a narrower Y tick label widened the view, which changed the
+    ticks and the label back: the layout swung between two widths on every frame, rebuilding
+    the axes and the grid ~30 times a second with nothing moving (issue 11)."""
+    buffer = PositionBuffer(capacity=10)
+    buffer.append(100.0, 0.0, 0.0, 0.0)  # fitted to -2..2 mm: ticks of 1 or 0.5 mm
+    widget = PositionView2D(buffer)
+    qtbot.addWidget(widget)
+    widget.show()
+    axis = widget.xy_plot.getPlotItem().getAxis("left")
+    swinging = []
+    for height, width in itertools.product((350, 360), range(520, 600, 8)):
+        widget.resize(width, height)
+        for _ in range(3):
+            QApplication.processEvents()
+        widths = set()
+        for _ in range(4):
+            QApplication.processEvents()
+            widths.add(round(axis.width(), 2))
+        if len(widths) > 1:
+            swinging.append((width, height, sorted(widths)))
+    assert not swinging
