@@ -11,6 +11,7 @@ from PySide6.QtCore import QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QWidget
 
 from app import jobs
+from app.dock_layout import DEVICE_DOCKS
 from app.settings import write_protocol_settings
 from app.worker import DeviceInfo
 from drivers.capabilities import Capabilities
@@ -45,25 +46,21 @@ class DeviceDocks(QObject):
         self.program = ProgramPanel(window)
         self.points: list[ProgramPoint] = []
         self.program_name = ""
-        left, bottom = Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
-        self.firmata_dock = self._dock("Stepper setup", self.firmata, bottom)
-        self.piframe_dock = self._dock("Frame setup", self.piframe, bottom)
-        self.arc_dock = self._dock("Arc", self.arc, left)
-        self.dwell_dock = self._dock("Dwell", self.dwell, left)
-        self.program_dock = self._dock("Program", self.program, bottom)
-        self.docks = (
-            self.firmata_dock,
-            self.piframe_dock,
-            self.program_dock,
-            self.arc_dock,
-            self.dwell_dock,
-        )
+        self.firmata_dock = self._dock(self.firmata)
+        self.piframe_dock = self._dock(self.piframe)
+        self.arc_dock = self._dock(self.arc)
+        self.dwell_dock = self._dock(self.dwell)
+        self.program_dock = self._dock(self.program)
+        made = (self.firmata_dock, self.piframe_dock, self.arc_dock, self.dwell_dock)
+        by_name = {dock.objectName(): dock for dock in (*made, self.program_dock)}
+        self.docks = tuple(by_name[name] for name in DEVICE_DOCKS)  # in tab order
         self._wire()
 
-    def _dock(self, title: str, widget: QWidget, area: Qt.DockWidgetArea) -> QDockWidget:
+    def _dock(self, widget: QWidget) -> QDockWidget:
         """The panel's dock: the window's empty one of that name if it made one before its
         first paint (placed and restored already), else a new, hidden one."""
         name = f"{widget.objectName()}Dock"
+        title, area = DEVICE_DOCKS[name]
         dock = self.window.findChild(QDockWidget, name, Qt.FindChildOption.FindDirectChildrenOnly)
         if dock is not None and dock.widget() is None:
             dock.setWidget(PanelScrollArea(widget, dock))

@@ -20,6 +20,7 @@ from PySide6.QtWidgets import (
 )
 
 from app import jobs
+from app.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
 from app.keyboard_jog import KeyboardJog
 from app.move_estimate import MoveEstimate
 from app.ports import PortWatcher
@@ -84,17 +85,6 @@ CONSOLE_CALLS = frozenset(
 BUFFER_CALLS = frozenset({"append", "shift"})
 PARAMETER_CALLS = frozenset({"device_ready", "disconnected", "forget"})
 DEVICE_CALLS = frozenset({"device_ready", "disconnected", "adapt", "set_speed"})
-# The device docks (title, object name, area), made empty before the first paint so that the
-# saved layout places them; in the order the device docks' own code adds them.
-_LEFT, _BOTTOM = Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
-DEVICE_DOCKS = (
-    ("Stepper setup", "firmataPanelDock", _BOTTOM),
-    ("Frame setup", "piFramePanelDock", _BOTTOM),
-    ("Arc", "arcEntryDock", _LEFT),
-    ("Dwell", "dwellEntryDock", _LEFT),
-    ("Program", "programPanelDock", _BOTTOM),
-)
-DEVICE_DOCK_ORDER = (0, 1, 4, 2, 3)  # as in DeviceDocks.docks: the bottom ones first
 
 
 def _stamp_note(name: str, args: tuple, kwargs: dict) -> tuple[tuple, dict]:
@@ -241,7 +231,7 @@ class MainWindow(QMainWindow):
         self.parameters: ParameterDock = LazyPart(self._build_parameters, PARAMETER_CALLS)  # type: ignore[assignment]
         self.devices: DeviceDocks = LazyPart(self._build_devices, DEVICE_CALLS)  # type: ignore[assignment]
         self.timeline: TrafficTimeline | None = None
-        left, bottom = _LEFT, _BOTTOM
+        left, bottom = LEFT, BOTTOM
         docks = [
             self._dock("Position", self.readout, left),
             self._dock("Jog", self.jog_panel, left),
@@ -253,8 +243,10 @@ class MainWindow(QMainWindow):
         parameter_dock = self._empty_dock("Parameters", "parameterEditor", bottom, hidden=True)
         self.tabifyDockWidget(docks[-1], parameter_dock)
         docks.append(parameter_dock)
-        device_docks = [self._empty_dock(*made, hidden=True) for made in DEVICE_DOCKS]
-        device_docks = [device_docks[i] for i in DEVICE_DOCK_ORDER]
+        device_docks = [
+            self._empty_dock(title, name, area, hidden=True)
+            for name, (title, area) in DEVICE_DOCKS.items()
+        ]
         for dock in device_docks[:3]:
             self.tabifyDockWidget(docks[-2], dock)
         docks.extend(device_docks)
