@@ -8,7 +8,6 @@ import logging
 import math
 import os
 import select
-import threading
 import time
 import tty
 
@@ -52,13 +51,16 @@ class PtyServer:
             # the path: that is how an open is seen, and the board resets then.
             os.close(self.slave)
             self.slave = -1
-        self._stop = threading.Event()
+        # A plain flag and a pipe, no lock: a signal handler that took a lock the interrupted
+        # main thread holds (Event.set inside Event.wait) would wait for itself forever.
+        self._stopping = False
         self._wake_r, self._wake_w = os.pipe()
+        os.set_blocking(self._wake_w, False)
         self._unsent = bytearray()
 
     def stop(self) -> None:
         """Ask `serve_forever` to return (safe from a signal handler or another thread)."""
-        self._stop.set()
+        self._stopping = True
         with contextlib.suppress(OSError):
             os.write(self._wake_w, b"x")
 
@@ -71,7 +73,7 @@ class PtyServer:
         """
         self.device.boot()
         frame: float | None = None
-        while not self._stop.is_set():
+        while not self._stopping:
             if not self.client_open:
                 self._wait_for_client()
                 continue
@@ -107,7 +109,7 @@ class PtyServer:
             data = os.read(self.master, 4096)
         except OSError as exc:
             if exc.errno == errno.EIO:
-                self._stop.wait(CLIENT_POLL)  # still closed
+                select.select([self._wake_r], [], [], CLIENT_POLL)  # still closed
                 return
             if exc.errno != errno.EAGAIN:
                 raise
