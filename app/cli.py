@@ -10,9 +10,16 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 from typing import Any
 
-from app.cli_devices import DEVICE_COMMANDS, check_device_offline, run_device
-from app.cli_log import check_log_offline, decode_log
-from app.cli_params import check_param_offline, param_rows, param_table, run_param
+from app.cli_log import decode_log
+from app.cli_macro import find_macro, macro_offline, macro_text, run_macro
+from app.cli_params import param_rows, param_table
+from app.command_line import (
+    COMMANDS,
+    PROTOCOL_CHOICES,
+    UsageError,
+    run_command,
+    validate_offline,
+)
 from app.settings import (
     open_settings,
     read_parameters,
@@ -21,17 +28,14 @@ from app.settings import (
     write_parameters,
     write_protocol_settings,
 )
-from drivers import commands as cmd
 from drivers.client import Client
 from drivers.errors import BadInput, CommunicationError, DeviceError, MotionError, UnknownProtocol
-from drivers.events import PositionReport
 from drivers.motion import Motion
-from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
-from drivers.traffic import RX, Traffic, TrafficLogWriter
+from drivers.traffic import TrafficLogWriter
 from drivers.transport import open_link
-from drivers.travel import TravelLimits, check_resolution, parse_travel
+from drivers.travel import TravelLimits, parse_travel
 from drivers.urlhandler.protocol_sim import with_sim_variant
 
 log = logging.getLogger("motionctl")
@@ -41,29 +45,6 @@ EXIT_DEVICE_ERROR = 1
 EXIT_BAD_INPUT = 2
 EXIT_NO_DEVICE = 3
 EXIT_INTERRUPTED = 130  # Ctrl-C, as shells report it
-
-PROTOCOL_CHOICES = ("coxiris", "visiomex", "laser-frame", "pi-frame", "firmata")
-COMMANDS = (
-    "id", "position", "home", "set-home", "move", "jog", "speed", "limits", "check", "raw", "param",
-    *DEVICE_COMMANDS, "log",
-)  # fmt: skip
-_ARITY = {
-    "id": (0, 0), "position": (0, 0), "home": (0, 0), "set-home": (0, 0), "limits": (0, 0),
-    "check": (0, 0), "move": (1, 3), "jog": (1, 3), "speed": (0, 1), "raw": (1, 1),
-    "param": (1, 3), "log": (2, 4), **{name: (0, 20) for name in DEVICE_COMMANDS},
-}  # fmt: skip
-_USAGE = {
-    "move": "move X Y [Z]",
-    "jog": "jog DX DY [DZ]",
-    "speed": "speed [VALUE]",
-    "raw": "raw TEXT",
-    "param": "param list | param set NAME|ID VALUE | param write FILE",
-}
-_PARAM_ARITY = {"list": 0, "set": 2, "write": 1}
-
-
-class UsageError(Exception):
-    """The command line itself is wrong (exit 2, nothing sent)."""
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -121,27 +102,9 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _check_arity(command: str, args: list[str]) -> None:
-    low, high = _ARITY[command]
-    if not low <= len(args) <= high:
-        raise UsageError(f"usage: {_USAGE.get(command, command)} (got {len(args)} arguments)")
-    if command == "param" and _PARAM_ARITY.get(args[0]) != len(args) - 1:
-        raise UsageError(f"usage: {_USAGE['param']}")
-
-
-def _numbers(args: list[str], names: Sequence[str]) -> list[float]:
-    values = [parse_number(text, name) for text, name in zip(args, names, strict=False)]
-    return values + [0.0] * (3 - len(values))
-
-
-def _position(report: PositionReport) -> dict[str, Any]:
-    result: dict[str, Any] = {"position": [report.x, report.y, report.z]}
-    if not report.measured:
-        result["measured"] = False
-    return result
-
-
 def _text(result: dict[str, Any]) -> str:
+    if {"macros", "exported", "imported", "macro"} & result.keys():
+        return macro_text(result, _text)
     if "position" in result:
         text = " ".join(f"{v:.2f}" for v in result["position"])
         return text if result.get("measured", True) else text + " (commanded, not measured)"
@@ -181,104 +144,6 @@ def _text(result: dict[str, Any]) -> str:
             f"{w['name']} = {w['value']:g} {w['unit']}".rstrip() for w in result["written"]
         )
     return "ok"
-
-
-def run_command(
-    motion: Motion, command: str, args: list[str], kind: str = "linear", remember: Any = None
-) -> dict[str, Any]:
-    """Carry out one motionctl command; returns the JSON-able result."""
-    if command == "param":
-        return run_param(motion, args, remember or (lambda values: None))
-    if command in DEVICE_COMMANDS:
-        return run_device(motion, command, args)
-    if command == "id":
-        return {"id": motion.identify()}
-    if command == "position":
-        return _position(motion.position())
-    if command == "home":
-        return _position(motion.home())
-    if command == "set-home":
-        motion.set_home()
-        return {"ok": True}
-    if command == "move":
-        return _position(motion.move_to(*_numbers(args, ("x", "y", "z"))))
-    if command == "jog":
-        return _position(motion.move_by(*_numbers(args, ("dx", "dy", "dz")), kind=kind))
-    if command == "speed":
-        if args:
-            requested = parse_number(args[0], "speed")
-            return {"speed": motion.set_speed(requested), "requested": requested}
-        return {"speed": motion.speed()}
-    if command == "limits":
-        low, high = motion.speed_limits()
-        return {"min_speed": low, "max_speed": high}
-    if command == "check":
-        motion.check()
-        return {"errors": []}
-    received: list[bytes] = []
-    link = motion.client.link
-
-    def keep(record: Traffic) -> None:
-        if record.direction == RX:
-            received.append(record.data)
-
-    link.listeners.append(keep)
-    try:
-        motion.raw(args[0].encode("utf-8"))
-    finally:
-        link.listeners.remove(keep)
-    text = b"".join(received).decode("ascii", errors="backslashreplace")
-    return {"reply": text.splitlines()}
-
-
-def _validate_offline(
-    command: str, args: list[str], protocol: Protocol, travel: TravelLimits | None, kind: str
-) -> None:
-    """Refuse what can be refused before the port is even opened."""
-    _check_arity(command, args)
-    caps = protocol.capabilities
-    if command in ("move", "jog") and len(args) < min(2, len(caps.axes)):
-        axes = " ".join(a.upper() for a in caps.axes)
-        raise UsageError(f"usage: {command} {axes} ({protocol.name} has {len(caps.axes)} axes)")
-    if kind not in caps.move_kinds and command == "jog":
-        raise BadInput(
-            f"--kind {kind} refused: {protocol.name} moves are {', '.join(caps.move_kinds)}"
-        )
-    if command == "move":
-        x, y, z = _numbers(args, ("x", "y", "z"))
-        # A relative-only device is sent the distance from where this run starts: the origin.
-        protocol.encode(cmd.MoveTo(x, y, z) if caps.absolute_moves else cmd.MoveBy(x, y, z))
-        check_resolution((x, y, z), ("x", "y", "z"), caps.resolution)
-        if travel is not None:
-            travel.apply((x, y, z), f"move to ({x:g}, {y:g}, {z:g}) mm")
-    elif command == "jog":
-        dx, dy, dz = _numbers(args, ("dx", "dy", "dz"))
-        # A device with absolute moves only is sent the target: checked here from the origin.
-        protocol.encode(
-            cmd.MoveBy(dx, dy, dz, kind) if caps.relative_moves else cmd.MoveTo(dx, dy, dz)
-        )
-        if kind == "linear":
-            check_resolution((dx, dy, dz), ("dx", "dy", "dz"), caps.resolution)
-    elif command == "speed" and args:
-        speed = parse_number(args[0], "speed")
-        if caps.speed_range is not None and not caps.speed_range[0] <= speed <= caps.speed_range[1]:
-            low, high = caps.speed_range
-            raise BadInput(
-                f"speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s"
-            )
-        for part in protocol.expand(cmd.SetSpeed(speed)):
-            try:
-                protocol.encode(part)
-            except BadInput as exc:
-                raise BadInput(f"speed {speed:g} mm/s refused ({exc})") from None
-    elif command == "raw":
-        protocol.encode(cmd.Raw(args[0].encode("utf-8")))
-    elif command == "param":
-        check_param_offline(protocol, args)
-    elif command == "log":
-        check_log_offline(args)
-    elif command in DEVICE_COMMANDS:
-        check_device_offline(protocol, command, args)
 
 
 def _travel(options: argparse.Namespace) -> TravelLimits | None:
@@ -352,7 +217,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         protocol = create_protocol(options.protocol, options.variant)
         protocol.configure(_protocol_settings(options, protocol))
         travel = _travel(options)
-        _validate_offline(options.command, options.args, protocol, travel, options.kind)
+        validate_offline(options.command, options.args, protocol, travel, options.kind)
         if options.timeout <= 0:
             raise UsageError("--timeout must be positive")
         if options.baud is not None and options.baud <= 0:
@@ -368,6 +233,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     if options.command == "log":  # offline: no port is opened
         try:
             return report.done(decode_log(protocol, options.args))
+        except BadInput as exc:
+            return report.fail(exc, EXIT_BAD_INPUT)
+    macro = None
+    if options.command == "macro":  # all but `run` offline; `run` is checked whole first
+        try:
+            offline = macro_offline(settings, protocol, options.args)
+            if offline is not None:
+                return report.done(offline)
+            macro = find_macro(settings, protocol, options.args[1])
         except BadInput as exc:
             return report.fail(exc, EXIT_BAD_INPUT)
 
@@ -394,7 +268,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             motion.notice_listeners.append(report.notice)
             if options.command != "config":
                 motion.start()  # e.g. the saved Firmata config: the board reset when opened
-            result = run_command(motion, options.command, options.args, options.kind, remember)
+            if macro is not None:
+                result = run_macro(motion, macro)
+            else:
+                result = run_command(motion, options.command, options.args, options.kind, remember)
             if options.command == "config":
                 saved = {s.name: protocol.values[s.name] for s in protocol.settings}
                 write_protocol_settings(settings, options.protocol, options.port, saved)

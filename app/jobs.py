@@ -3,9 +3,13 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from drivers.commands import Arc
 from drivers.program import ProgramPoint
+
+if TYPE_CHECKING:
+    from app.macros import Macro
 
 
 @dataclass(frozen=True)
@@ -178,3 +182,14 @@ class RefreshJob(Job):
     def describe(self) -> str:
         """`refresh`."""
         return "refresh position and speed"
+
+
+@dataclass(frozen=True)
+class MacroJob(Job):
+    """Run a macro's steps in order, each waiting for the device."""
+
+    macro: Macro
+
+    def describe(self) -> str:
+        """E.g. `macro probe (4 steps)`."""
+        return self.macro.describe()

@@ -13,6 +13,7 @@ from typing import TextIO
 from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, Slot
 
 from app import jobs
+from app.macros import Macro, run_macro
 from drivers.capabilities import Capabilities
 from drivers.client import Client
 from drivers.commands import Stop
@@ -96,6 +97,7 @@ class SerialWorker(QObject):
     job_timed_out = Signal(object)  # Job: the device did not answer it (before job_failed)
     capabilities_changed = Signal(object)  # Capabilities, after new protocol settings
     stream_progress = Signal(object)  # StreamProgress (a copy), while a program streams
+    macro_step = Signal(str, int, int, str)  # macro name, step number, step count, step text
 
     def __init__(self, poll_moving_hz: float = 10.0, poll_idle_s: float = 1.0) -> None:
         super().__init__()
@@ -343,7 +345,10 @@ class SerialWorker(QObject):
         """Where the device rests after `job`, as its last position; unknown after console
         bytes (a move they started may still run)."""
         known = self._motion.last_position if self._motion is not None else None
-        if known is not None and not isinstance(job, jobs.RawJob):
+        raw = isinstance(job, jobs.RawJob) or (
+            isinstance(job, jobs.MacroJob) and any(s.startswith("raw") for s in job.macro.steps)
+        )
+        if known is not None and not raw:
             self._idle_position = self._idle_stable = (known.x, known.y, known.z)
 
     def _lose_device(self, exc: CommunicationError) -> None:
@@ -443,7 +448,19 @@ class SerialWorker(QObject):
         if isinstance(job, jobs.RefreshJob):
             self._refresh()
             return None
+        if isinstance(job, jobs.MacroJob):
+            return self._macro(motion, job.macro)
         raise MotionError(f"unknown job {job!r}")
+
+    def _macro(self, motion: Motion, macro: Macro) -> list[dict[str, object]]:
+        """Run a macro, telling each step before it starts; the traffic goes out as it runs."""
+        count = len(macro.steps)
+
+        def step(number: int, text: str) -> None:
+            self._flush_traffic()
+            self.macro_step.emit(macro.name, number, count, text)
+
+        return run_macro(motion, macro, step)
 
     def _stream(self, motion: Motion, job: jobs.StreamJob) -> StreamProgress:
         def progress(state: StreamProgress) -> None:

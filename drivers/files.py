@@ -1,4 +1,4 @@
-"""Reading files from others (profiles, programs, logs, settings) as data: bounded, text only.
+"""Reading files from others (profiles, programs, macros, logs, settings) as data: bounded, text.
 
 Every reader of a file a user hands the panel goes through here, so all get the same checks,
 made before a byte is read: the path must name a regular file (a directory, a FIFO, a socket or
@@ -30,6 +30,7 @@ PROGRAM_MAX_BYTES = 64 * MiB  # a CSV point is 20 to 60 bytes: room for program.
 LOG_MAX_BYTES = 512 * MiB  # streamed, so this bounds the time taken, not memory; a session log
 # is pruned to 200 MiB, `motionctl --log` appends to its file without end
 LOG_MAX_LINE = 64 * KiB  # our lines are ~90 characters and spy's ~80: a longer one is no log's
+MACRO_MAX_BYTES = 1 * MiB  # macros are a few KiB: room for hundreds of long ones
 SETTINGS_MAX_BYTES = 1 * MiB  # the panel writes a few KiB: its window layout, numbers per device
 CHUNK_BYTES = 1 * MiB  # a streamed file is read this much at a time
 

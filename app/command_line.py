@@ -1,0 +1,167 @@
+"""motionctl's command vocabulary, shared with macros: each command checked before the port is
+opened, and carried out on a Motion."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from app.cli_devices import DEVICE_COMMANDS, check_device_offline, run_device
+from app.cli_log import check_log_offline
+from app.cli_params import check_param_offline, run_param
+from drivers import commands as cmd
+from drivers.errors import BadInput
+from drivers.events import PositionReport
+from drivers.motion import Motion
+from drivers.numbers import parse_number
+from drivers.protocols.base import Protocol
+from drivers.traffic import RX, Traffic
+from drivers.travel import TravelLimits, check_resolution
+
+PROTOCOL_CHOICES = ("coxiris", "visiomex", "laser-frame", "pi-frame", "firmata")
+COMMANDS = (
+    "id", "position", "home", "set-home", "move", "jog", "speed", "limits", "check", "raw", "param",
+    *DEVICE_COMMANDS, "log", "macro",
+)  # fmt: skip
+_ARITY = {
+    "id": (0, 0), "position": (0, 0), "home": (0, 0), "set-home": (0, 0), "limits": (0, 0),
+    "check": (0, 0), "move": (1, 3), "jog": (1, 3), "speed": (0, 1), "raw": (1, 1),
+    "param": (1, 3), "log": (2, 4), "macro": (1, 2), **{name: (0, 20) for name in DEVICE_COMMANDS},
+}  # fmt: skip
+_USAGE = {
+    "move": "move X Y [Z]",
+    "jog": "jog DX DY [DZ]",
+    "speed": "speed [VALUE]",
+    "raw": "raw TEXT",
+    "param": "param list | param set NAME|ID VALUE | param write FILE",
+    "macro": "macro list | macro run NAME | macro import FILE | macro export FILE",
+}
+_PARAM_ARITY = {"list": 0, "set": 2, "write": 1}
+_MACRO_ARITY = {"list": 0, "run": 1, "import": 1, "export": 1}
+
+
+class UsageError(BadInput):
+    """The command line itself is wrong (exit 2, nothing sent)."""
+
+
+def check_arity(command: str, args: list[str]) -> None:
+    """Refuse a command with the wrong number of arguments (UsageError)."""
+    low, high = _ARITY[command]
+    if not low <= len(args) <= high:
+        raise UsageError(f"usage: {_USAGE.get(command, command)} (got {len(args)} arguments)")
+    if command == "param" and _PARAM_ARITY.get(args[0]) != len(args) - 1:
+        raise UsageError(f"usage: {_USAGE['param']}")
+    if command == "macro" and _MACRO_ARITY.get(args[0]) != len(args) - 1:
+        raise UsageError(f"usage: {_USAGE['macro']}")
+
+
+def numbers(args: list[str], names: Sequence[str]) -> list[float]:
+    """The arguments as numbers, named in any error; missing ones are 0."""
+    values = [parse_number(text, name) for text, name in zip(args, names, strict=False)]
+    return values + [0.0] * (3 - len(values))
+
+
+def position_result(report: PositionReport) -> dict[str, Any]:
+    """A position as motionctl reports it."""
+    result: dict[str, Any] = {"position": [report.x, report.y, report.z]}
+    if not report.measured:
+        result["measured"] = False
+    return result
+
+
+def run_command(
+    motion: Motion, command: str, args: list[str], kind: str = "linear", remember: Any = None
+) -> dict[str, Any]:
+    """Carry out one motionctl command; returns the JSON-able result."""
+    if command == "param":
+        return run_param(motion, args, remember or (lambda values: None))
+    if command in DEVICE_COMMANDS:
+        return run_device(motion, command, args)
+    if command == "id":
+        return {"id": motion.identify()}
+    if command == "position":
+        return position_result(motion.position())
+    if command == "home":
+        return position_result(motion.home())
+    if command == "set-home":
+        motion.set_home()
+        return {"ok": True}
+    if command == "move":
+        return position_result(motion.move_to(*numbers(args, ("x", "y", "z"))))
+    if command == "jog":
+        return position_result(motion.move_by(*numbers(args, ("dx", "dy", "dz")), kind=kind))
+    if command == "speed":
+        if args:
+            requested = parse_number(args[0], "speed")
+            return {"speed": motion.set_speed(requested), "requested": requested}
+        return {"speed": motion.speed()}
+    if command == "limits":
+        low, high = motion.speed_limits()
+        return {"min_speed": low, "max_speed": high}
+    if command == "check":
+        motion.check()
+        return {"errors": []}
+    received: list[bytes] = []
+    link = motion.client.link
+
+    def keep(record: Traffic) -> None:
+        if record.direction == RX:
+            received.append(record.data)
+
+    link.listeners.append(keep)
+    try:
+        motion.raw(args[0].encode("utf-8"))
+    finally:
+        link.listeners.remove(keep)
+    text = b"".join(received).decode("ascii", errors="backslashreplace")
+    return {"reply": text.splitlines()}
+
+
+def validate_offline(
+    command: str, args: list[str], protocol: Protocol, travel: TravelLimits | None, kind: str
+) -> None:
+    """Refuse what can be refused before the port is even opened."""
+    check_arity(command, args)
+    caps = protocol.capabilities
+    if command in ("move", "jog") and len(args) < min(2, len(caps.axes)):
+        axes = " ".join(a.upper() for a in caps.axes)
+        raise UsageError(f"usage: {command} {axes} ({protocol.name} has {len(caps.axes)} axes)")
+    if kind not in caps.move_kinds and command == "jog":
+        raise BadInput(
+            f"--kind {kind} refused: {protocol.name} moves are {', '.join(caps.move_kinds)}"
+        )
+    if command == "move":
+        x, y, z = numbers(args, ("x", "y", "z"))
+        # A relative-only device is sent the distance from where this run starts: the origin.
+        protocol.encode(cmd.MoveTo(x, y, z) if caps.absolute_moves else cmd.MoveBy(x, y, z))
+        check_resolution((x, y, z), ("x", "y", "z"), caps.resolution)
+        if travel is not None:
+            travel.apply((x, y, z), f"move to ({x:g}, {y:g}, {z:g}) mm")
+    elif command == "jog":
+        dx, dy, dz = numbers(args, ("dx", "dy", "dz"))
+        # A device with absolute moves only is sent the target: checked here from the origin.
+        protocol.encode(
+            cmd.MoveBy(dx, dy, dz, kind) if caps.relative_moves else cmd.MoveTo(dx, dy, dz)
+        )
+        if kind == "linear":
+            check_resolution((dx, dy, dz), ("dx", "dy", "dz"), caps.resolution)
+    elif command == "speed" and args:
+        speed = parse_number(args[0], "speed")
+        if caps.speed_range is not None and not caps.speed_range[0] <= speed <= caps.speed_range[1]:
+            low, high = caps.speed_range
+            raise BadInput(
+                f"speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s"
+            )
+        for part in protocol.expand(cmd.SetSpeed(speed)):
+            try:
+                protocol.encode(part)
+            except BadInput as exc:
+                raise BadInput(f"speed {speed:g} mm/s refused ({exc})") from None
+    elif command == "raw":
+        protocol.encode(cmd.Raw(args[0].encode("utf-8")))
+    elif command == "param":
+        check_param_offline(protocol, args)
+    elif command == "log":
+        check_log_offline(args)
+    elif command in DEVICE_COMMANDS:
+        check_device_offline(protocol, command, args)

@@ -1,0 +1,278 @@
+"""Macros: named sequences of motionctl commands (and waits), per protocol; checked whole before
+anything is sent, run step by step on a Motion, kept as JSON (data only, never code)."""
+
+from __future__ import annotations
+
+import json
+import logging
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from app.cli_devices import DEVICE_COMMANDS
+from app.command_line import UsageError, run_command, validate_offline
+from drivers.errors import BadFile, BadInput, MotionError
+from drivers.files import MACRO_MAX_BYTES, read_text
+from drivers.motion import Motion
+from drivers.numbers import parse_number
+from drivers.protocols.base import Protocol
+from drivers.registry import protocol_names
+
+log = logging.getLogger(__name__)
+
+FORMAT = "motionpanel-macros"
+VERSION = 1
+MAX_NAME = 40
+MAX_STEPS = 500
+MAX_STEP_CHARS = 1000
+MAX_MACROS = 200
+MAX_WAIT_S = 3600.0
+WAIT_SLICE_S = 0.1  # a wait looks for a stop this often
+STEP_COMMANDS = (
+    "id", "position", "home", "set-home", "move", "jog", "speed", "limits", "check", "raw",
+    "step", "version", "dwell", "arc", "status", "stop", "wait",
+)  # fmt: skip
+"""What a step may be: motionctl's commands that neither write files nor settings, and `wait S`
+(the panel pauses S seconds, reading the port meanwhile)."""
+
+
+class BadMacro(BadInput):
+    """A macro that cannot run: unknown command, bad argument, too long; nothing was sent."""
+
+
+class BadMacroFile(BadFile):
+    """A macro file refused whole: not JSON, not ours, or a macro in it is malformed."""
+
+
+class MacroStopped(MotionError):
+    """The operator stopped the macro between two steps, or during a wait."""
+
+
+@dataclass(frozen=True)
+class Macro:
+    """A named sequence of steps for one protocol, e.g. `home`, `move 10 5 0`, `wait 0.5`."""
+
+    name: str
+    protocol: str
+    steps: tuple[str, ...]
+
+    def describe(self) -> str:
+        """E.g. `macro probe (4 steps)`."""
+        count = len(self.steps)
+        return f"macro {self.name} ({count} step{'s' if count != 1 else ''})"
+
+
+def split_step(text: str) -> tuple[str, list[str]]:
+    """A step's command and arguments: `raw` keeps the rest of the line whole."""
+    stripped = text.strip()
+    command, _, rest = stripped.partition(" ")
+    if command == "raw":
+        return command, [rest.strip()] if rest.strip() else []
+    return command, rest.split()
+
+
+def check_name(name: str) -> str:
+    """The name, stripped; BadMacro if it is empty, too long or holds control characters."""
+    stripped = name.strip()
+    if not stripped:
+        raise BadMacro("a macro needs a name")
+    if len(stripped) > MAX_NAME:
+        raise BadMacro(f"macro name {stripped[:MAX_NAME]!r}… is over {MAX_NAME} characters")
+    if any(not ch.isprintable() for ch in stripped):
+        raise BadMacro(f"macro name {stripped!r} holds a control character")
+    return stripped
+
+
+def check_macro(macro: Macro, protocol: Protocol) -> None:
+    """Refuse a macro any step of which the device would refuse (BadMacro, nothing sent)."""
+    name = check_name(macro.name)
+    if macro.protocol != protocol.name:
+        raise BadMacro(f"macro {name} is for {macro.protocol}, not {protocol.name}")
+    if not macro.steps:
+        raise BadMacro(f"macro {name} has no steps")
+    if len(macro.steps) > MAX_STEPS:
+        raise BadMacro(f"macro {name} has {len(macro.steps)} steps; at most {MAX_STEPS}")
+    for number, step in enumerate(macro.steps, 1):
+        try:
+            check_step(step, protocol)
+        except BadInput as exc:
+            raise BadMacro(f"macro {name}, step {number} ({step.strip()[:60]!r}): {exc}") from None
+
+
+def check_step(step: str, protocol: Protocol) -> None:
+    """Refuse one step as motionctl would refuse the same command (BadInput)."""
+    if len(step) > MAX_STEP_CHARS:
+        raise BadMacro(f"the step is over {MAX_STEP_CHARS} characters")
+    if any(ch in step for ch in "\r\n\x00"):
+        raise BadMacro("a step is one line (use one step per line)")
+    command, args = split_step(step)
+    if not command:
+        raise BadMacro("the step is empty")
+    if command not in STEP_COMMANDS:
+        raise BadMacro(f"unknown command {command!r}; a step is one of: {', '.join(STEP_COMMANDS)}")
+    if command == "wait":
+        wait_seconds(args)
+        return
+    owner = DEVICE_COMMANDS.get(command, (protocol.name,))[0]
+    if owner != protocol.name:
+        raise BadMacro(f"{command} is a {owner} command")
+    try:
+        validate_offline(command, args, protocol, None, "linear")
+    except UsageError as exc:
+        raise BadMacro(str(exc)) from None
+
+
+def wait_seconds(args: list[str]) -> float:
+    """The seconds of `wait S`: a number from 0 to MAX_WAIT_S."""
+    if len(args) != 1:
+        raise BadMacro("usage: wait SECONDS")
+    seconds = parse_number(args[0], "wait")
+    if not 0 <= seconds <= MAX_WAIT_S:
+        raise BadMacro(f"wait {seconds:g} s refused: from 0 to {MAX_WAIT_S:g} s")
+    return seconds
+
+
+def run_macro(
+    motion: Motion,
+    macro: Macro,
+    on_step: Callable[[int, str], None] = lambda number, step: None,
+) -> list[dict[str, Any]]:
+    """Run every step in order, each waiting for the device as motionctl does; returns each
+    step's result. A stop asked on `motion.stop_requested` ends it between steps (MacroStopped)."""
+    results: list[dict[str, Any]] = []
+    for number, step in enumerate(macro.steps, 1):
+        if motion.stop_requested.is_set():
+            raise MacroStopped(f"{macro.name} stopped before step {number} ({step})")
+        on_step(number, step)
+        command, args = split_step(step)
+        if command == "wait":
+            _wait(motion, wait_seconds(args), f"{macro.name} stopped during step {number}")
+            results.append({"waited": wait_seconds(args)})
+        else:
+            results.append(run_command(motion, command, args))
+    return results
+
+
+def _wait(motion: Motion, seconds: float, stopped: str) -> None:
+    """Wait on the port for `seconds`, in slices, so a stop or an abort ends it soon."""
+    left = seconds
+    while left > 0:
+        if motion.stop_requested.is_set():
+            raise MacroStopped(stopped)
+        piece = min(WAIT_SLICE_S, left)
+        if motion.wait(piece):
+            raise MacroStopped(stopped)
+        left -= piece
+
+
+# -- as data -----------------------------------------------------------------------------------
+def to_data(macros: Iterable[Macro]) -> dict[str, Any]:
+    """The JSON-able form of macros, as files and the settings keep them."""
+    return {
+        "format": FORMAT,
+        "version": VERSION,
+        "macros": [
+            {"name": m.name, "protocol": m.protocol, "steps": list(m.steps)} for m in macros
+        ],
+    }
+
+
+def from_data(data: object, where: str) -> list[Macro]:
+    """Macros from their JSON-able form; BadMacro naming `where` and the fault if malformed."""
+    if not isinstance(data, dict) or data.get("format") != FORMAT:
+        raise BadMacro(f'{where}: not a Motion Panel macro file (no "format": "{FORMAT}")')
+    if data.get("version") != VERSION:
+        raise BadMacro(f"{where}: macro file version {data.get('version')!r}; this reads {VERSION}")
+    entries = data.get("macros")
+    if not isinstance(entries, list):
+        raise BadMacro(f'{where}: "macros" is not a list')
+    if len(entries) > MAX_MACROS:
+        raise BadMacro(f"{where}: {len(entries)} macros; at most {MAX_MACROS}")
+    macros: list[Macro] = []
+    seen: set[tuple[str, str]] = set()
+    known = set(protocol_names())
+    for number, entry in enumerate(entries, 1):
+        macro = _entry(entry, f"{where}: macro {number}", known)
+        if (macro.protocol, macro.name) in seen:
+            raise BadMacro(f"{where}: two {macro.protocol} macros are named {macro.name!r}")
+        seen.add((macro.protocol, macro.name))
+        macros.append(macro)
+    return macros
+
+
+def _entry(entry: object, where: str, known: set[str]) -> Macro:
+    if not isinstance(entry, dict):
+        raise BadMacro(f"{where} is not an object with name, protocol and steps")
+    name, protocol, steps = entry.get("name"), entry.get("protocol"), entry.get("steps")
+    if not isinstance(name, str):
+        raise BadMacro(f"{where} has no name")
+    if protocol not in known:
+        raise BadMacro(f"{where} ({name!r}): unknown protocol {protocol!r}")
+    if not isinstance(steps, list) or not all(isinstance(s, str) for s in steps):
+        raise BadMacro(f'{where} ({name!r}): "steps" is not a list of strings')
+    if len(steps) > MAX_STEPS or any(len(s) > MAX_STEP_CHARS for s in steps):
+        raise BadMacro(f"{where} ({name!r}): over {MAX_STEPS} steps or a step too long")
+    try:
+        return Macro(check_name(name), str(protocol), tuple(s.strip() for s in steps))
+    except BadMacro as exc:
+        raise BadMacro(f"{where}: {exc}") from None
+
+
+def read_macro_file(path: str | Path) -> list[Macro]:
+    """The macros in a file (JSON, at most MACRO_MAX_BYTES); BadMacroFile if it is not one.
+    Steps are checked against their protocol when run or imported, not here."""
+    text = read_text(path, MACRO_MAX_BYTES, "macro file", BadMacroFile)
+    try:
+        data = json.loads(text, parse_constant=_no_constant)
+    except (ValueError, RecursionError) as exc:
+        raise BadMacroFile(f"{path}: not JSON ({exc})") from None
+    try:
+        return from_data(data, str(path))
+    except BadMacro as exc:
+        raise BadMacroFile(str(exc)) from None
+
+
+def _no_constant(name: str) -> float:
+    """JSON's NaN and Infinity are not data a macro file holds."""
+    raise ValueError(f"{name} is not a JSON number")
+
+
+def write_macro_file(path: str | Path, macros: Iterable[Macro]) -> None:
+    """Write macros to a file that `read_macro_file` reads back."""
+    text = json.dumps(to_data(macros), indent=2, ensure_ascii=False) + "\n"
+    Path(path).write_text(text, encoding="utf-8")
+
+
+def merge(existing: list[Macro], incoming: Iterable[Macro]) -> list[Macro]:
+    """`existing` with `incoming` added; one of the same protocol and name replaces the old."""
+    merged = {(m.protocol, m.name): m for m in existing}
+    for macro in incoming:
+        merged[(macro.protocol, macro.name)] = macro
+    return list(merged.values())
+
+
+# -- kept with the settings ------------------------------------------------------------------------
+def settings_key(protocol: str) -> str:
+    """Where a protocol's macros are kept in the settings (one JSON text)."""
+    return f"macros/{protocol}"
+
+
+def read_saved(settings: Any, protocol: str) -> list[Macro]:
+    """The macros saved for a protocol; a malformed entry (an edited file) gives none, logged."""
+    text = settings.value(settings_key(protocol))
+    if not isinstance(text, str) or not text:
+        return []
+    try:
+        macros = from_data(json.loads(text, parse_constant=_no_constant), "saved macros")
+    except (ValueError, RecursionError) as exc:  # BadMacro is a ValueError too
+        log.warning("the saved %s macros are unreadable and were left out: %s", protocol, exc)
+        return []
+    return [m for m in macros if m.protocol == protocol]
+
+
+def save(settings: Any, protocol: str, macros: Iterable[Macro]) -> None:
+    """Keep a protocol's macros in the settings (replacing those kept before)."""
+    mine = [m for m in macros if m.protocol == protocol]
+    settings.setValue(settings_key(protocol), json.dumps(to_data(mine), ensure_ascii=False))
+    settings.sync()
