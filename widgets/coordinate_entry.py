@@ -8,6 +8,7 @@ from collections.abc import Callable, Iterable
 from PySide6.QtCore import Signal
 from PySide6.QtWidgets import (
     QButtonGroup,
+    QComboBox,
     QDoubleSpinBox,
     QGridLayout,
     QHBoxLayout,
@@ -26,6 +27,8 @@ log = logging.getLogger(__name__)
 UNBOUNDED_MM = 99999.0  # the fields' range where no travel limits are set
 ABSOLUTE = "absolute"
 RELATIVE = "relative"
+MACHINE = "machine"
+WORK = "work"
 SET_HOME_QUESTION = (
     "Make the current position the new home (0, 0, 0)?\n"
     "All coordinates will be measured from here from now on."
@@ -60,7 +63,7 @@ class _AxisSpinBox(QDoubleSpinBox):
 class CoordinateEntry(QWidget):
     """X/Y/Z fields, absolute or relative, and Go, Home, Set Home, Stop, Use current."""
 
-    go_requested = Signal(str, object)  # mode ("absolute"/"relative"), (x, y, z) in mm
+    go_requested = Signal(str, object)  # mode ("absolute"/"relative"), machine (x, y, z) in mm
     home_requested = Signal()
     set_home_requested = Signal()
     stop_requested = Signal()
@@ -72,6 +75,7 @@ class CoordinateEntry(QWidget):
         self._axes = frozenset(AXES)
         self._box: Box | None = None
         self._known: tuple[float, float, float] | None = None
+        self._zero: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
         grid = QGridLayout()
         self.fields: dict[str, QDoubleSpinBox] = {}
@@ -95,6 +99,17 @@ class CoordinateEntry(QWidget):
         self._mode_group.addButton(self.relative_radio)
         self.absolute_radio.setChecked(True)
         self.relative_radio.toggled.connect(self._mode_toggled)
+        self.frame_combo = QComboBox()
+        self.frame_combo.setObjectName("coordinateFrame")
+        self.frame_combo.addItem(self.tr("Machine"), MACHINE)
+        self.frame_combo.addItem(self.tr("Work"), WORK)
+        self.frame_combo.setToolTip(
+            self.tr(
+                "Which frame the typed coordinates are in: Machine (mm from the device's home) "
+                "or Work (mm from the work zero); the device is always sent machine coordinates"
+            )
+        )
+        self.frame_combo.currentIndexChanged.connect(self._frame_changed)
 
         self.go_button = make_button("Go", "goButton", "Start the move (Enter in a field)")
         self.go_button.clicked.connect(self._go)
@@ -116,6 +131,7 @@ class CoordinateEntry(QWidget):
         modes = QHBoxLayout()
         modes.addWidget(self.absolute_radio)
         modes.addWidget(self.relative_radio)
+        modes.addWidget(self.frame_combo)
         modes.addStretch(1)
         modes.addWidget(self.use_current_button)
         modes.addWidget(self.go_button)
@@ -137,6 +153,41 @@ class CoordinateEntry(QWidget):
     def mode(self) -> str:
         """`"absolute"` or `"relative"`."""
         return RELATIVE if self.relative_radio.isChecked() else ABSOLUTE
+
+    def frame(self) -> str:
+        """`"machine"` or `"work"`: the frame absolute coordinates are typed in."""
+        return str(self.frame_combo.currentData())
+
+    def set_frame(self, frame: str) -> None:
+        """Type absolute coordinates in the machine or the work frame."""
+        index = self.frame_combo.findData(frame)
+        if index < 0:
+            raise ValueError(f"frame must be {MACHINE!r} or {WORK!r}, not {frame!r}")
+        self.frame_combo.setCurrentIndex(index)
+
+    def set_work_zero(self, zero: tuple[float, float, float]) -> None:
+        """The work zero in machine mm; typed work coordinates are taken from it."""
+        moved = zero != self._zero
+        self._zero = (float(zero[0]), float(zero[1]), float(zero[2]))
+        if moved:
+            self._apply_range()
+
+    def _offset(self) -> tuple[float, float, float]:
+        """What is added to typed coordinates to make them machine ones."""
+        return self._zero if self.frame() == WORK else (0.0, 0.0, 0.0)
+
+    def machine_target(self) -> tuple[float, float, float]:
+        """The typed target in machine mm (a relative move's distances as they are)."""
+        values = self.values()
+        if self.mode() == RELATIVE:
+            return values
+        offset = self._offset()
+        return (values[0] + offset[0], values[1] + offset[1], values[2] + offset[2])
+
+    def _frame_changed(self) -> None:
+        self._apply_range()
+        if self.mode() == ABSOLUTE and self._known is not None:
+            self._fill_known()
 
     def set_mode(self, mode: str) -> None:
         """Select `"absolute"` or `"relative"` (relative clears the fields to 0)."""
@@ -161,10 +212,17 @@ class CoordinateEntry(QWidget):
             self.fields[axis].setValue(value)
 
     def set_current(self, x: float, y: float, z: float) -> None:
-        """Fill the fields with a position (and switch to absolute mode); emits nothing."""
+        """Fill the fields with a machine position, in the frame chosen (and switch to absolute
+        mode); emits nothing."""
         self.set_known_position(x, y, z)
         self.set_mode(ABSOLUTE)
-        self.set_values(x, y, z)
+        self._fill_known()
+
+    def _fill_known(self) -> None:
+        if self._known is None:
+            return
+        offset = self._offset()
+        self.set_values(*(v - o for v, o in zip(self._known, offset, strict=True)))
 
     def set_known_position(self, x: float, y: float, z: float) -> None:
         """Remember the stage position for "Use current" without touching the fields."""
@@ -204,7 +262,11 @@ class CoordinateEntry(QWidget):
     def _range(self, index: int) -> tuple[float, float]:
         if self._box is None:
             return (-UNBOUNDED_MM, UNBOUNDED_MM)
-        return self._box[index]
+        lo, hi = self._box[index]
+        if self.mode() == RELATIVE:
+            return lo, hi
+        offset = self._offset()[index]  # the box is in machine mm
+        return lo - offset, hi - offset
 
     def _apply_range(self) -> None:
         relative = self.mode() == RELATIVE
@@ -214,7 +276,8 @@ class CoordinateEntry(QWidget):
                 lo, hi = -(hi - lo), hi - lo
             field.setRange(lo, hi)
             state = "" if axis in self._axes else "\n(this device has no such axis)"
-            word = "distance to move" if relative else "target coordinate"
+            frame = "" if relative or self.frame() == MACHINE else " in the work frame"
+            word = "distance to move" if relative else f"target coordinate{frame}"
             limits = "travel limits" if self._box is not None else "no travel limits set"
             field.setToolTip(f"{axis.upper()} {word}, {lo:g} to {hi:g} mm ({limits}){state}")
 
@@ -231,8 +294,8 @@ class CoordinateEntry(QWidget):
         self._apply_range()
         if relative:
             self.set_values(0.0, 0.0, 0.0)  # a relative move must never reuse a coordinate
-        elif self._known is not None:
-            self.set_values(*self._known)
+        else:
+            self._fill_known()
 
     def _use_current(self) -> None:
         if self._known is not None:
@@ -241,8 +304,8 @@ class CoordinateEntry(QWidget):
     def _go(self) -> None:
         if not self.isEnabled() or not self.go_button.isEnabled():
             return
-        mode, target = self.mode(), self.values()
-        log.debug("go %s %s", mode, target)
+        mode, target = self.mode(), self.machine_target()
+        log.debug("go %s %s (machine)", mode, target)
         self.go_requested.emit(mode, target)
 
     def _set_home(self) -> None:

@@ -4,9 +4,17 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, Signal
 from PySide6.QtGui import QFont, QFontDatabase
-from PySide6.QtWidgets import QGridLayout, QLabel, QSizePolicy, QVBoxLayout, QWidget
+from PySide6.QtWidgets import (
+    QGridLayout,
+    QHBoxLayout,
+    QLabel,
+    QSizePolicy,
+    QToolButton,
+    QVBoxLayout,
+    QWidget,
+)
 
 from widgets._axes import AXES, decimals_for, normalize_axes
 
@@ -40,15 +48,23 @@ _STATUS = {
 
 
 class PositionReadout(QWidget):
-    """Shows the stage position as "12.34 mm" per axis, in a large fixed-width font."""
+    """Shows the stage position as "12.34 mm" per axis, in a large fixed-width font: in machine
+    coordinates (from the device's home) and in work coordinates (from the panel's work zero),
+    with a Zero button per axis; `zero_requested(axes)`, `clear_zero_requested()`."""
+
+    zero_requested = Signal(str)  # "x", "y", "z" or "xyz"
+    clear_zero_requested = Signal()
 
     def __init__(self, parent: QWidget | None = None, decimals: int = 2) -> None:
         super().__init__(parent)
         self.setObjectName("positionReadout")
-        self.setToolTip("Stage position in mm from home")
+        self.setToolTip(
+            self.tr("Stage position in mm: from the device's home, and from the work zero")
+        )
         self._decimals = decimals
         self._axes = frozenset(AXES)
         self._position: tuple[float, float, float] | None = None
+        self._zero: tuple[float, float, float] = (0.0, 0.0, 0.0)
         self._status = LIVE
 
         font = QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)
@@ -57,24 +73,71 @@ class PositionReadout(QWidget):
         name_font = QFont(font)
         name_font.setWeight(QFont.Weight.Normal)
 
+        work_font = QFont(font)
+        work_font.setPointSizeF(font.pointSizeF() * 0.7)
         grid = QGridLayout()
         grid.setHorizontalSpacing(12)
+        self.machine_header = QLabel(self.tr("Machine"))
+        self.machine_header.setObjectName("machineFrameHeader")
+        self.machine_header.setToolTip(self.tr("Millimetres from the device's home (its origin)"))
+        self.work_header = QLabel(self.tr("Work"))
+        self.work_header.setObjectName("workFrameHeader")
+        self.work_header.setToolTip(
+            self.tr("Millimetres from the work zero the panel keeps (the device is not told)")
+        )
+        for header in (self.machine_header, self.work_header):
+            header.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignBottom)
+        grid.addWidget(self.machine_header, 0, 1)
+        grid.addWidget(self.work_header, 0, 2)
         self.labels: dict[str, QLabel] = {}
+        self.work_labels: dict[str, QLabel] = {}
         self.names: dict[str, QLabel] = {}
-        for row, axis in enumerate(AXES):
+        self.zero_buttons: dict[str, QToolButton] = {}
+        for row, axis in enumerate(AXES, start=1):
             name = QLabel(f"{axis.upper()}")
             name.setFont(name_font)
-            value = QLabel()
-            value.setObjectName(f"position{axis.upper()}")
-            value.setFont(font)
-            value.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
-            value.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
-            value.setMinimumWidth(value.fontMetrics().horizontalAdvance("-0000.000 mm"))
+            value = self._value_label(f"position{axis.upper()}", font)
+            work = self._value_label(f"work{axis.upper()}", work_font)
+            zero = QToolButton()
+            zero.setText(self.tr("Zero %1").replace("%1", axis.upper()))
+            zero.setObjectName(f"zero{axis.upper()}")
+            zero.setToolTip(
+                self.tr(
+                    "Make the current %1 the work zero (0 mm in the work frame); the device "
+                    "is not told, and its home stays where it is"
+                ).replace("%1", axis.upper())
+            )
+            zero.clicked.connect(self._zero_clicked)
+            zero.setProperty("axis", axis)
             grid.addWidget(name, row, 0)
             grid.addWidget(value, row, 1)
+            grid.addWidget(work, row, 2)
+            grid.addWidget(zero, row, 3)
             self.labels[axis] = value
+            self.work_labels[axis] = work
             self.names[axis] = name
+            self.zero_buttons[axis] = zero
         grid.setColumnStretch(1, 1)
+        grid.setColumnStretch(2, 1)
+        self.zero_all_button = QToolButton()
+        self.zero_all_button.setText(self.tr("Zero all"))
+        self.zero_all_button.setObjectName("zeroAll")
+        self.zero_all_button.setToolTip(self.tr("Make the current position the work zero"))
+        self.zero_all_button.clicked.connect(self._zero_all_clicked)
+        self.clear_zero_button = QToolButton()
+        self.clear_zero_button.setText(self.tr("Clear zero"))
+        self.clear_zero_button.setObjectName("clearWorkZero")
+        self.clear_zero_button.setToolTip(
+            self.tr("Put the work zero back at the device's home (work = machine)")
+        )
+        self.clear_zero_button.clicked.connect(self.clear_zero_requested)
+        self.zero_label = QLabel()
+        self.zero_label.setObjectName("workZeroText")
+        zeros = QHBoxLayout()
+        zeros.addWidget(self.zero_label, 1)
+        zeros.addWidget(self.zero_all_button)
+        zeros.addWidget(self.clear_zero_button)
+        self.set_zero_enabled(False)
 
         self.measured_label = QLabel(NOT_MEASURED_TEXT)
         self.measured_label.setObjectName("positionNotMeasured")
@@ -96,10 +159,47 @@ class PositionReadout(QWidget):
 
         layout = QVBoxLayout(self)
         layout.addLayout(grid)
+        layout.addLayout(zeros)
         layout.addWidget(self.measured_label)
         layout.addWidget(self.status_label)
         self._render_status()
         self._render()
+
+    def _value_label(self, name: str, font: QFont) -> QLabel:
+        value = QLabel()
+        value.setObjectName(name)
+        value.setFont(font)
+        value.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
+        value.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+        value.setMinimumWidth(value.fontMetrics().horizontalAdvance("-0000.000 mm"))
+        return value
+
+    def set_work_zero(self, zero: tuple[float, float, float]) -> None:
+        """The work zero in machine mm ((0, 0, 0): the work frame is the machine frame)."""
+        self._zero = (float(zero[0]), float(zero[1]), float(zero[2]))
+        self._render()
+
+    def work_zero(self) -> tuple[float, float, float]:
+        """The work zero shown, in machine mm."""
+        return self._zero
+
+    def set_zero_enabled(self, enabled: bool) -> None:
+        """Zero buttons on (a position is known) or off."""
+        for axis, button in self.zero_buttons.items():
+            button.setEnabled(enabled and axis in self._axes)
+        self.zero_all_button.setEnabled(enabled)
+
+    def work_text(self, axis: str) -> str:
+        """The work-frame text shown for one axis, e.g. "2.34 mm"."""
+        return self.work_labels[axis.lower()].text()
+
+    def _zero_clicked(self) -> None:
+        button = self.sender()
+        if button is not None:
+            self.zero_requested.emit(str(button.property("axis")))
+
+    def _zero_all_clicked(self) -> None:
+        self.zero_requested.emit("".join(a for a in AXES if a in self._axes))
 
     def set_status(self, status: str) -> None:
         """`"live"` (measured or commanded), `"estimated"` (moving) or `"stale"` (last known)."""
@@ -165,22 +265,38 @@ class PositionReadout(QWidget):
         self.status_label.setText(text)
         self.status_label.setStyleSheet(f"{badge} border-radius: 3px; padding: 2px 6px;")
         self.status_label.setVisible(bool(text))
-        for label in self.labels.values():
+        for label in (*self.labels.values(), *self.work_labels.values()):
             label.setStyleSheet(value_style)
 
     def _render(self) -> None:
         for index, axis in enumerate(AXES):
-            label = self.labels[axis]
+            label, work = self.labels[axis], self.work_labels[axis]
             enabled = axis in self._axes
+            for widget in (label, work, self.names[axis], self.zero_buttons[axis]):
+                widget.setVisible(enabled)  # a device without the axis: its row is not shown
             label.setEnabled(enabled)
-            label.setVisible(enabled)  # a device without the axis: its row is not shown
-            self.names[axis].setVisible(enabled)
             if not enabled:
                 label.setText(f"{UNKNOWN} mm")
-                label.setToolTip(f"This device has no {axis.upper()} axis")
+                work.setText(f"{UNKNOWN} mm")
+                label.setToolTip(self.tr("This device has no %1 axis").replace("%1", axis.upper()))
             elif self._position is None:
                 label.setText(f"{UNKNOWN} mm")
-                label.setToolTip("Position unknown")
+                work.setText(f"{UNKNOWN} mm")
+                label.setToolTip(self.tr("Position unknown"))
             else:
                 label.setText(f"{self._position[index]:.{self._decimals}f} mm")
-                label.setToolTip(f"{axis.upper()} position in mm from home")
+                work.setText(f"{self._position[index] - self._zero[index]:.{self._decimals}f} mm")
+                label.setToolTip(
+                    self.tr("%1 position in mm from the device's home").replace("%1", axis.upper())
+                )
+                work.setToolTip(
+                    self.tr("%1 position in mm from the work zero").replace("%1", axis.upper())
+                )
+        at_home = self._zero == (0.0, 0.0, 0.0)
+        shown = ", ".join(f"{v:.{self._decimals}f}" for v in self._zero)
+        self.zero_label.setText(
+            self.tr("work zero: home")
+            if at_home
+            else self.tr("work zero at %1 mm (machine)").replace("%1", f"({shown})")
+        )
+        self.clear_zero_button.setEnabled(not at_home)
