@@ -17,6 +17,7 @@ from app.macros import Macro, run_macro
 from drivers.capabilities import Capabilities
 from drivers.client import Client
 from drivers.commands import Stop
+from drivers.control_lines import BREAK_S, ControlLines
 from drivers.errors import (
     Aborted,
     CommunicationError,
@@ -24,6 +25,7 @@ from drivers.errors import (
     DeviceRestarted,
     DeviceTimeout,
     MotionError,
+    NoControlLines,
     PortError,
 )
 from drivers.events import ErrorReport, Event, TextLine, Undecodable
@@ -44,6 +46,7 @@ TICK_MS = 20  # the worker's loop period: queue, unsolicited input, polling
 TRAFFIC_BATCH_S = 0.05  # traffic is handed to the GUI at most this often (20 Hz)
 RECOVER_S = 1.0  # s between attempts to talk again to a device that stopped answering
 POSITION_TOLERANCE = 1e-6  # mm: readings closer than this are the same position
+CONTROL_POLL_S = 0.25  # s between reads of the modem lines (CTS, DSR, CD, RI) while idle
 
 
 @dataclass(frozen=True)
@@ -70,6 +73,8 @@ class ConnectOptions:
     """The protocol's settings kept by the panel (ticks per mm...)."""
     parameters: dict[str, float] = field(default_factory=dict)
     """Values written earlier and kept by the panel (the device may have no read-back)."""
+    dtr: bool | None = None  # DTR when the port opens (None: the protocol's default)
+    rts: bool | None = None  # RTS when the port opens (None: as the port opens it, asserted)
 
 
 class SerialWorker(QObject):
@@ -98,6 +103,8 @@ class SerialWorker(QObject):
     capabilities_changed = Signal(object)  # Capabilities, after new protocol settings
     stream_progress = Signal(object)  # StreamProgress (a copy), while a program streams
     macro_step = Signal(str, int, int, str)  # macro name, step number, step count, step text
+    control_lines_changed = Signal(object)  # ControlLines: after connecting, a change, an input
+    control_note = Signal(str)  # a line change or a break, for the console: "DTR off", "CTS on"
 
     def __init__(self, poll_moving_hz: float = 10.0, poll_idle_s: float = 1.0) -> None:
         super().__init__()
@@ -120,6 +127,8 @@ class SerialWorker(QObject):
         self._connection: tuple[str, str, ConnectOptions] | None = None
         self._idle_position: tuple[float, float, float] | None = None
         self._idle_stable: tuple[float, float, float] | None = None  # the reading before
+        self._lines: ControlLines | None = None  # as last reported
+        self._next_lines_poll = 0.0
 
     # -- thread-safe API ---------------------------------------------------------------------
     def submit(self, job: jobs.Job) -> None:
@@ -204,11 +213,13 @@ class SerialWorker(QObject):
             protocol = create_protocol(protocol_name, options.variant or None)
             protocol.assume_parameters(options.parameters)
             protocol.configure(options.settings)
-            link = open_link(url, baud, dtr=protocol.capabilities.dtr)
+            dtr = protocol.capabilities.dtr if options.dtr is None else options.dtr
+            link = open_link(url, baud, dtr=dtr, rts=options.rts)
         except MotionError as exc:
             self.state_changed.emit("error", str(exc))
             return
         link.listeners.append(self._on_traffic)
+        link.note_listeners.append(self._on_link_note)
         if self._session_log is not None:
             link.listeners.append(self._session_log)
             shown = f"{protocol_name} {options.variant}" if options.variant else protocol_name
@@ -227,7 +238,9 @@ class SerialWorker(QObject):
         self._motion.travel = self._travel
         self._connection = (url, protocol_name, options)
         self._recovering = ""
+        self._lines = None
         try:
+            self._report_lines(note=True)
             self._handshake()
         except MotionError as exc:
             self._fail_connection(exc)
@@ -261,6 +274,74 @@ class SerialWorker(QObject):
         )
         self._idle_position = self._idle_stable = None
         self._next_poll = time.monotonic() + self.poll_idle_s
+        self._report_lines(force=True)  # again: the window enables the lines once connected
+
+    @Slot(str, bool)
+    def set_control_line(self, name: str, on: bool) -> None:
+        """Drive DTR or RTS (`name`: "dtr" or "rts"); then report the lines as they are (a port
+        without modem lines: a notice saying why, and the lines as unknown)."""
+        link = self._link
+        if link is None:
+            self.notice.emit(f"{name.upper()} not changed: not connected")
+            return
+        try:
+            link.set_control(name, on)
+        except PortError as exc:
+            self._fail_connection(exc)
+            return
+        except MotionError as exc:  # NoControlLines, or a line that is not DTR or RTS
+            self.notice.emit(str(exc))
+        self._after_line_change()
+
+    @Slot()
+    def send_break(self) -> None:
+        """Send a break (BREAK_S, 250 ms: the worker waits it out); a notice if it cannot."""
+        link = self._link
+        if link is None:
+            self.notice.emit("no break sent: not connected")
+            return
+        self._flush_traffic()  # the console shows what went before the break, before it
+        try:
+            link.send_break(BREAK_S)
+        except PortError as exc:
+            self._fail_connection(exc)
+            return
+        except NoControlLines as exc:
+            self.notice.emit(str(exc))
+        self._after_line_change()
+
+    def _after_line_change(self) -> None:
+        """Report the lines after a change asked for, even unchanged (a refused toggle must
+        show its line as it is); a lost port ends the connection."""
+        try:
+            self._report_lines(force=True)
+        except PortError as exc:
+            self._fail_connection(exc)
+        self._flush_traffic()
+
+    def _report_lines(self, force: bool = False, note: bool = False) -> None:
+        """Read the lines; emit them if they changed (or `force`), noting the inputs that
+        changed by themselves; `note`: write them all to the session log (at connection)."""
+        link = self._link
+        if link is None:
+            return
+        self._next_lines_poll = time.monotonic() + CONTROL_POLL_S
+        lines = link.control_lines()
+        before, self._lines = self._lines, lines
+        if note:
+            self._log_note(f"control lines: {lines.describe()}")
+        elif before is not None and not force:
+            for change in lines.changes(before):
+                self._on_link_note(change)
+        if force or lines != before:
+            self.control_lines_changed.emit(lines)
+
+    def _on_link_note(self, text: str) -> None:
+        """A control-line change or break: to the session log and the console, in order with
+        the traffic."""
+        self._flush_traffic()
+        self._log_note(text)
+        self.control_note.emit(text)
 
     @Slot()
     def close_port(self) -> None:
@@ -293,6 +374,8 @@ class SerialWorker(QObject):
         if self._motion is None:
             return
         try:
+            if time.monotonic() >= self._next_lines_poll:
+                self._report_lines()
             if self._recovering:
                 self._recover()
             else:

@@ -59,3 +59,8 @@ class Retransmit(CommunicationError):
 
 class QueueFull(DeviceError):
     """The device's queue has no room now: wait and send again (back-pressure, not a loss)."""
+
+
+class NoControlLines(MotionError):
+    """The port has no modem control lines (a pseudo-terminal, a TCP socket): DTR and RTS cannot
+    be set, the inputs cannot be read, no break can be sent."""

@@ -2,18 +2,25 @@
 
 from __future__ import annotations
 
+import errno
 import logging
 import os
+import re
 import select
+import struct
 import time
 from collections.abc import Callable
 
 import serial
 
 if os.name == "posix":
+    import fcntl
     import termios
 
-from drivers.errors import PortError
+    from serial import serialposix
+
+from drivers.control_lines import BREAK_S, OUTPUTS, ControlLines
+from drivers.errors import BadInput, NoControlLines, PortError
 from drivers.traffic import RX, TX, Traffic
 
 log = logging.getLogger(__name__)
@@ -25,6 +32,10 @@ POLL_INTERVAL = 0.02  # seconds a read waits for the first byte; bounds the read
 READ_SIZE = 4096  # bytes taken from a descriptor at once (a whole tty input buffer)
 
 TrafficListener = Callable[[Traffic], None]
+NoteListener = Callable[[str], None]
+NO_MODEM_LINES = (errno.ENOTTY, errno.EINVAL)  # a modem-line ioctl on a tty that has none
+MAX_BREAK_S = 5.0  # a longer break is refused (the caller's thread waits it out)
+_PTY_PATH = re.compile(r"^/dev/(pts/\d+|ttys\d+|ttyp\w+)$")  # Linux, macOS, BSD pty slaves
 
 
 class Link:
@@ -38,7 +49,10 @@ class Link:
         self.port = port
         self.url = url or str(getattr(port, "portstr", "") or port.port)
         self.listeners: list[TrafficListener] = []
+        self.note_listeners: list[NoteListener] = []
+        """Told of every control-line change and break made here ("DTR off", "break 250 ms")."""
         self.closed = False
+        self._no_lines: str | None = None  # why the port has no modem lines ("": it has them)
 
     def _report(self, direction: str, data: bytes) -> None:
         if not self.listeners:
@@ -100,6 +114,141 @@ class Link:
             self._report(RX, data)
         return data
 
+    # -- control lines ---------------------------------------------------------------------
+    def set_control(self, name: str, on: bool) -> None:
+        """Drive the DTR or RTS line (`name`: "dtr" or "rts"); the change is noted ("DTR off").
+
+        NoControlLines where the port has none (a pseudo-terminal); PortError if it fails.
+        """
+        key = name.strip().lower()
+        if key not in OUTPUTS:
+            raise BadInput(f"{name!r} is not a line the host drives (DTR or RTS)")
+        label = key.upper()
+        self._require_lines(f"{label} cannot be set")
+        before = getattr(self.port, f"_{key}_state", None)
+        try:
+            setattr(self.port, key, bool(on))
+        except (serial.SerialException, OSError, ValueError) as exc:
+            if before is not None:  # pyserial keeps the asked state even when the ioctl fails
+                setattr(self.port, f"_{key}_state", before)
+            if isinstance(exc, OSError) and exc.errno in NO_MODEM_LINES:
+                self._no_lines = self._why_no_lines()
+                raise NoControlLines(self._no_lines_text(f"{label} cannot be set")) from exc
+            raise PortError(f"setting {label} on {self.url} failed: {exc}") from exc
+        self._note(f"{label} {'on' if on else 'off'}")
+
+    def control_lines(self) -> ControlLines:
+        """All six lines as the port reports them; all None on a port without modem lines.
+
+        On a POSIX serial port, one ioctl reads them all (the outputs as they really are); other
+        ports report the outputs as last set and each input on its own.
+        """
+        if self._lines_missing():
+            return ControlLines()
+        fd = self._modem_descriptor()
+        if fd is not None:
+            bits = self._modem_bits(fd)
+            if bits is None:
+                return ControlLines()
+            return ControlLines(
+                dtr=bool(bits & serialposix.TIOCM_DTR),
+                rts=bool(bits & serialposix.TIOCM_RTS),
+                cts=bool(bits & serialposix.TIOCM_CTS),
+                dsr=bool(bits & serialposix.TIOCM_DSR),
+                cd=bool(bits & serialposix.TIOCM_CD),
+                ri=bool(bits & serialposix.TIOCM_RI),
+            )
+        return ControlLines(
+            dtr=bool(self.port.dtr),
+            rts=bool(self.port.rts),
+            cts=self._input("cts"),
+            dsr=self._input("dsr"),
+            cd=self._input("cd"),
+            ri=self._input("ri"),
+        )
+
+    def send_break(self, seconds: float = BREAK_S) -> None:
+        """Hold the transmit line in the break state for `seconds` (the calling thread waits
+        that long), then note it ("break 250 ms"). NoControlLines where the port has no line to
+        break (a pseudo-terminal: the break would go nowhere); PortError if it fails."""
+        if not 0 < seconds <= MAX_BREAK_S:
+            raise BadInput(f"a break lasts more than 0 and at most {MAX_BREAK_S:g} s")
+        self._require_lines("no break can be sent")
+        try:
+            self.port.break_condition = True
+            try:
+                time.sleep(seconds)  # the line is held, not a synchronisation
+            finally:
+                self.port.break_condition = False
+        except (serial.SerialException, OSError, ValueError) as exc:
+            raise PortError(f"sending a break on {self.url} failed: {exc}") from exc
+        self._note(f"break {seconds * 1000:.0f} ms")
+
+    def _note(self, text: str) -> None:
+        for listener in list(self.note_listeners):
+            listener(text)
+
+    def _input(self, name: str) -> bool | None:
+        """One input line through pyserial (None where this kind of port cannot tell)."""
+        try:
+            return bool(getattr(self.port, name))
+        except (AttributeError, NotImplementedError):
+            return None
+        except OSError as exc:
+            if exc.errno in NO_MODEM_LINES:
+                return None
+            raise PortError(f"reading {name.upper()} on {self.url} failed: {exc}") from exc
+        except (serial.SerialException, ValueError) as exc:
+            raise PortError(f"reading {name.upper()} on {self.url} failed: {exc}") from exc
+
+    def _modem_descriptor(self) -> int | None:
+        """The descriptor of a POSIX serial port (spy:// on one included), for modem ioctls."""
+        if os.name != "posix" or not isinstance(self.port, serial.Serial):
+            return None
+        if not self.port.is_open:
+            raise PortError(f"{self.url} is not open")
+        return self.port.fd  # type: ignore[no-any-return]
+
+    def _modem_bits(self, fd: int) -> int | None:
+        """TIOCMGET's bits; None when the tty has no modem lines (remembered)."""
+        try:
+            packed = fcntl.ioctl(fd, serialposix.TIOCMGET, struct.pack("I", 0))
+        except OSError as exc:
+            if exc.errno in NO_MODEM_LINES:
+                self._no_lines = self._why_no_lines()
+                return None
+            raise PortError(f"reading the control lines of {self.url} failed: {exc}") from exc
+        return int(struct.unpack("I", packed)[0])
+
+    def _lines_missing(self) -> str:
+        """Why the port has no modem lines ("": it has them); looked at once per link."""
+        if self._no_lines is None:
+            self._no_lines = ""
+            if _is_socket(self.port):
+                self._no_lines = "a TCP socket"  # pyserial's socket:// ignores them silently
+            else:
+                fd = self._modem_descriptor()
+                if fd is not None:
+                    self._modem_bits(fd)  # sets the reason if the tty has none
+        return self._no_lines
+
+    def _require_lines(self, what: str) -> None:
+        if self._lines_missing():
+            raise NoControlLines(self._no_lines_text(what))
+
+    def _no_lines_text(self, what: str) -> str:
+        return f"{self.url} has no modem control lines ({self._no_lines}): {what}"
+
+    def _why_no_lines(self) -> str:
+        """ "a pseudo-terminal" for a pty's slave, else what the driver says."""
+        try:
+            path = os.ttyname(self.port.fd)
+        except (OSError, AttributeError, TypeError):
+            path = ""
+        if _PTY_PATH.match(path):
+            return "a pseudo-terminal"
+        return "its driver has no modem-line control"
+
     def close(self) -> None:
         """Close the port (idempotent)."""
         if self.closed:
@@ -139,14 +288,22 @@ def _write_all(fd: int, data: bytes) -> None:
         raise OSError(*exc.args) from exc
 
 
-def open_link(url: str, baud: int, *, dtr: bool | None = None) -> Link:
-    """Open `url` (path, COM name or pyserial URL, `sim://NAME` included) at `baud`, 8N1."""
+def _is_socket(port: serial.SerialBase) -> bool:
+    """Whether `port` is pyserial's socket:// (raw TCP: no modem lines, no break)."""
+    return type(port).__module__ == "serial.urlhandler.protocol_socket"
+
+
+def open_link(url: str, baud: int, *, dtr: bool | None = None, rts: bool | None = None) -> Link:
+    """Open `url` (path, COM name or pyserial URL, `sim://NAME` included) at `baud`, 8N1, with
+    DTR and RTS as given (None: as the port opens them, asserted with pyserial)."""
     if not url:
         raise PortError("no port given")
     try:
         port = serial.serial_for_url(url, baudrate=baud, timeout=POLL_INTERVAL, do_not_open=True)
         if dtr is not None:
             port.dtr = dtr
+        if rts is not None:
+            port.rts = rts
         port.open()
     except (serial.SerialException, OSError, ValueError) as exc:
         raise PortError(f"cannot open {url}: {exc}") from exc

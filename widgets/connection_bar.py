@@ -1,4 +1,5 @@
-"""Port, protocol and baud rate, a connect/disconnect button, and the connection state."""
+"""Port, protocol and baud rate, a connect/disconnect button, and the connection state; below
+them, the port's control lines (DTR, RTS, CTS, DSR, CD, RI, a break)."""
 
 from __future__ import annotations
 
@@ -13,8 +14,11 @@ from PySide6.QtWidgets import (
     QLabel,
     QLineEdit,
     QPushButton,
+    QVBoxLayout,
     QWidget,
 )
+
+from widgets.control_lines_bar import ControlLinesBar
 
 log = logging.getLogger(__name__)
 
@@ -45,7 +49,11 @@ def _restore_edit(edit: QLineEdit, text: str, cursor: int, start: int, length: i
 
 
 class ConnectionBar(QWidget):
-    """Choose where and how to connect; emits `connect_requested` / `disconnect_requested`."""
+    """Choose where and how to connect; emits `connect_requested` / `disconnect_requested`.
+
+    A second row holds `control_lines` (a ControlLinesBar: its signals are the window's to
+    forward to the worker; it is enabled with `control_lines.set_connected`).
+    """
 
     connect_requested = Signal(str, str, int)  # port (device or pyserial URL), protocol, baud
     disconnect_requested = Signal()
@@ -124,7 +132,19 @@ class ConnectionBar(QWidget):
         self.state_label.setMinimumWidth(110)
         self.state_label.setMaximumWidth(STATE_MAX_WIDTH)
 
-        layout = QHBoxLayout(self)
+        self.control_lines = ControlLinesBar(self)
+        self.control_lines_label = QLabel(self.tr("Lines:"))
+        self.control_lines_label.setToolTip(self.control_lines.toolTip())
+
+        rows = QVBoxLayout(self)
+        rows.setSpacing(2)
+        layout = QHBoxLayout()
+        rows.addLayout(layout)
+        lines_row = QHBoxLayout()
+        lines_row.addWidget(self.control_lines_label)
+        lines_row.addWidget(self.control_lines)
+        lines_row.addStretch(1)
+        rows.addLayout(lines_row)
         for text, widget in (
             ("Port:", self.port_combo),
             (None, self.description_label),

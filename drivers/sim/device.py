@@ -8,6 +8,7 @@ from collections import deque
 from collections.abc import Container
 from typing import ClassVar
 
+from drivers.control_lines import ControlLines
 from drivers.sim.clock import Clock, monotonic
 
 log = logging.getLogger(__name__)
@@ -23,6 +24,13 @@ class SimulatedDevice(ABC):
     then. With `baud` set, both directions are paced at the line rate, as on a real UART.
     A device that is busy (a blocking firmware callback) leaves input in its receive buffer, which
     holds `rx_capacity` bytes like an Arduino's; what does not fit is lost.
+
+    The control lines (`set_lines`, `modem_inputs`, `receive_break`): the host's DTR and RTS start
+    asserted, as a port opened by pyserial has them, so a device nobody touches the lines of
+    behaves as it always did. A board that resets when its port opens (`resets_on_open`: an
+    Arduino) resets on every DTR assertion, as its auto-reset capacitor turns the edge into a
+    reset pulse; RTS is wired to nothing on these boards. A break reaches the firmware as one
+    NUL byte (see `receive_break`).
     """
 
     protocol: ClassVar[str]
@@ -39,6 +47,10 @@ class SimulatedDevice(ABC):
         self._tx_line_free = 0.0
         self.busy_until = 0.0
         self.dropped_rx = 0
+        self.dtr = True  # the host's lines as the device sees them (asserted: True)
+        self.rts = True
+        self.resets = 0  # resets by a DTR assertion
+        self.breaks = 0
 
     # -- host side -------------------------------------------------------------------------
     def boot(self) -> None:
@@ -66,6 +78,46 @@ class SimulatedDevice(ABC):
             self._rx.append((t, byte))
         self._rx_line_free = t
         self._process(now)
+
+    def set_lines(self, dtr: bool, rts: bool) -> None:
+        """The host drives DTR and RTS (True: asserted) from now on.
+
+        Input that has arrived by now is read under the lines as they were. A board that resets
+        when its port opens (an Arduino's DTR auto-reset) resets when DTR is asserted again.
+        """
+        now = self.clock()
+        self._process(now)
+        asserted = dtr and not self.dtr
+        self.dtr, self.rts = bool(dtr), bool(rts)
+        if asserted and self.resets_on_open:
+            log.debug("DTR asserted: the board resets")
+            self.dtr_reset(now)
+
+    def dtr_reset(self, now: float) -> None:
+        """The reset a DTR assertion causes: what the device had already put on the line by
+        `now` still reaches the host; the rest, and the input not read yet, is lost; it boots."""
+        sent = [(t, data) for t, data in self._tx if t <= now]
+        self.resets += 1
+        self._tx_line_free = self._rx_line_free = now  # bytes on their way are cut short
+        self.power_cycle()
+        self._tx.extendleft(reversed(sent))
+
+    def modem_inputs(self) -> ControlLines:
+        """The lines the device drives, with the host's as it sees them.
+
+        A powered device asserts DSR (it is there and ready) and CTS (none of these boards does
+        hardware flow control, so it is always clear to send); CD (a modem's carrier) and RI (a
+        modem's ring) are off, as there is no modem.
+        """
+        return ControlLines(dtr=self.dtr, rts=self.rts, cts=True, dsr=True, cd=False, ri=False)
+
+    def receive_break(self) -> None:
+        """A break from the host: the UART reads one NUL byte with a framing error, which the
+        firmware takes as a NUL (an AVR's HardwareSerial checks only parity errors; a Linux tty
+        in raw mode without IGNBRK or BRKINT also reads a break as a NUL); the line then stays
+        low until the break ends, so nothing more is read meanwhile."""
+        self.breaks += 1
+        self.receive(b"\x00")
 
     def read_output(self) -> bytes:
         """Everything the device has sent by now."""

@@ -14,6 +14,7 @@ import time
 from collections import deque
 from collections.abc import Callable
 
+from drivers.control_lines import ControlLines
 from drivers.framers.base import Framer
 from drivers.sim.device import SimulatedDevice
 
@@ -84,6 +85,26 @@ class FaultyDevice:
             if not self.hung:
                 self.device.receive(data)
 
+    def set_lines(self, dtr: bool, rts: bool) -> None:
+        """The host's DTR and RTS reach the wrapped device even when it hangs (a DTR reset is
+        hardware; like `reboot`, it leaves the injected faults as they are)."""
+        with self._lock:
+            resets = self.device.resets
+            self.device.set_lines(dtr, rts)
+            if self.device.resets != resets:
+                self._out = b""  # a frame cut by the reset is never completed
+
+    def modem_inputs(self) -> ControlLines:
+        """The wrapped device's modem lines."""
+        with self._lock:
+            return self.device.modem_inputs()
+
+    def receive_break(self) -> None:
+        """A break from the host; a hung device never reads it."""
+        with self._lock:
+            if not self.hung:
+                self.device.receive_break()
+
     def read_output(self) -> bytes:
         """What the device has sent by now, after the faults."""
         with self._lock:
@@ -130,7 +151,9 @@ class FaultyDevice:
                     raise FaultError("wrong: this device sends no frames to mix up")
                 self._wrong = True
             elif name == "reboot":
+                lines = self.device.dtr, self.device.rts
                 self.device = self._factory()
+                self.device.dtr, self.device.rts = lines  # the host's lines stay as they are
                 self.device.boot()
                 self._out = b""
                 self.reboots += 1

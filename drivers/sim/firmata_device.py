@@ -100,6 +100,10 @@ class FirmataDevice(SimulatedDevice):
 
     `boot()` is the reset when the port opens: for `reset_delay` seconds bytes are lost, then the
     board announces itself. `instant` makes steps take no time; `mute` is a port with no board.
+    Asserting DTR again (off, then on) resets the board the same way, through the Uno's
+    auto-reset capacitor: the banner comes again and the stepper must be configured again; a
+    step under way stops where the motor is. (Opening the port always resets it: the kernel
+    asserts DTR when a tty opens, whatever DTR was asked for.)
     """
 
     protocol = "firmata"
@@ -164,6 +168,12 @@ class FirmataDevice(SimulatedDevice):
         self._waiting = 0
         self._step_end = None
         super().power_cycle()
+
+    def dtr_reset(self, now: float) -> None:
+        """DTR asserted: the Arduino resets; a step under way stops where the motor is."""
+        here = round(self._steps_at(now))
+        self._move = _Move(now, 0.0, here, here)
+        super().dtr_reset(now)
 
     def boot(self) -> None:
         """The port opened: the Arduino resets, then Firmata.begin() reports version and name."""

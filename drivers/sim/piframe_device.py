@@ -108,6 +108,11 @@ class PiFrameDevice(SimulatedDevice):
     Every frame is planned when it arrives (it starts when the previous one ends), so `position`
     can be asked for any time. `instant` makes moves and dwells take no time; `mute` is accepted
     for a uniform interface and changes nothing (the device is silent anyway).
+
+    DTR gates reception: the seed's set-up ticks the DTR box, and the panel takes DTR as the line
+    that powers the frame's serial interface, so while DTR is off every byte is lost (counted in
+    `ignored_bytes`) and a frame cut by DTR going off is dropped whole. Frames received before
+    keep running: the Pi executes its queue on its own.
     """
 
     protocol = "pi-frame"
@@ -127,6 +132,7 @@ class PiFrameDevice(SimulatedDevice):
         self.frames_ok = 0
         self.frames_bad = 0
         self.garbage_bytes = 0
+        self.ignored_bytes = 0  # bytes lost while DTR was off
         self.history: list[Frame] = []
         self._buffer = bytearray()
         self._planned: deque[_Planned] = deque()
@@ -151,8 +157,18 @@ class PiFrameDevice(SimulatedDevice):
         return sum(1 for planned in self._planned if not planned.started)
 
     # -- the frame parser ----------------------------------------------------------------------
+    def set_lines(self, dtr: bool, rts: bool) -> None:
+        """DTR going off drops a frame half received (see the class)."""
+        super().set_lines(dtr, rts)
+        if not self.dtr:
+            self._buffer.clear()
+
     def handle_byte(self, byte: int, t: float) -> None:
-        """Look for `7B 7D`, take 25 bytes, check the end byte; skip anything else."""
+        """Look for `7B 7D`, take 25 bytes, check the end byte; skip anything else. Nothing is
+        read while DTR is off."""
+        if not self.dtr:
+            self.ignored_bytes += 1
+            return
         self._buffer.append(byte)
         buf = self._buffer
         while buf:

@@ -7,6 +7,9 @@ Firmata: `reset_delay=S` (seconds the board ignores input after the port opens);
 laser-frame: fault rates `corrupt=F`, `drop=F`, `drop_reply=F`, `delay_reply=F`, `garbage=F`
 (probabilities 0..1), `seed=N` (their random generator), `queue=N` (queue depth in instructions).
 Only the options given are passed to the device.
+
+The control lines reach the device: DTR and RTS as pyserial sets them (at open too), a break
+as it starts, and CTS, DSR, RI and CD as the device drives them (see SimulatedDevice).
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ from typing import Any
 import serial
 from serial.serialutil import PortNotOpenError, SerialBase, SerialException
 
+from drivers.control_lines import ControlLines
 from drivers.errors import MotionError
 from drivers.sim.device import SimulatedDevice
 from drivers.sim.registry import create_device
@@ -88,6 +92,7 @@ class Serial(SerialBase):
         self._pending = bytearray()
         self._wakeup = threading.Event()
         self.is_open = True
+        self.device.set_lines(self._dtr_state, self._rts_state)  # as asked before the open
         self.device.boot()
 
     def close(self) -> None:
@@ -98,6 +103,46 @@ class Serial(SerialBase):
 
     def _reconfigure_port(self) -> None:
         """Nothing to configure: the device is in-process."""
+
+    def _update_dtr_state(self) -> None:
+        """DTR reaches the device (an Arduino resets when it is asserted again)."""
+        self.device.set_lines(self._dtr_state, self._rts_state)
+
+    def _update_rts_state(self) -> None:
+        """RTS reaches the device."""
+        self.device.set_lines(self._dtr_state, self._rts_state)
+
+    def _update_break_state(self) -> None:
+        """A break reaches the device as it starts (its end changes nothing more)."""
+        if not self.is_open:
+            raise PortNotOpenError()
+        if self._break_state:
+            self.device.receive_break()
+
+    def _modem_inputs(self) -> ControlLines:
+        if not self.is_open:
+            raise PortNotOpenError()
+        return self.device.modem_inputs()
+
+    @property
+    def cts(self) -> bool:
+        """Clear To Send, as the device drives it."""
+        return bool(self._modem_inputs().cts)
+
+    @property
+    def dsr(self) -> bool:
+        """Data Set Ready, as the device drives it."""
+        return bool(self._modem_inputs().dsr)
+
+    @property
+    def ri(self) -> bool:
+        """Ring Indicator, as the device drives it."""
+        return bool(self._modem_inputs().ri)
+
+    @property
+    def cd(self) -> bool:
+        """Carrier Detect, as the device drives it."""
+        return bool(self._modem_inputs().cd)
 
     def from_url(self, url: str) -> str:
         """Keep the URL; options are read at open."""
