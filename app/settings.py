@@ -134,8 +134,11 @@ def device_key(protocol: str, port: str) -> str:
     return f"devices/{protocol}/{quote(where, safe='')}"
 
 
-def read_travel(settings: QSettings, protocol: str, port: str) -> TravelLimits | None:
-    """The travel limits saved for a device, else the protocol's own (None: none known)."""
+def read_travel(
+    settings: QSettings, protocol: str, port: str, clamp_default: bool = False
+) -> TravelLimits | None:
+    """The travel limits saved for a device, else the protocol's own (None: none known);
+    `clamp_default` (the preference) is the clamp choice where none was saved."""
     key = device_key(protocol, port)
     text = settings.value(f"{key}/travel")
     if isinstance(text, str):
@@ -143,13 +146,14 @@ def read_travel(settings: QSettings, protocol: str, port: str) -> TravelLimits |
             limits = parse_travel(text)
         except BadInput:
             limits = None
-        clamp = str(settings.value(f"{key}/travel_clamp", "false")).lower() == "true"
+        saved = str(settings.value(f"{key}/travel_clamp", "")).lower()
+        clamp = saved == "true" if saved in ("true", "false") else clamp_default
         return TravelLimits(limits.box, clamp) if limits is not None else None
     try:
         box = get_protocol_class(protocol).capabilities.travel
     except LookupError:
         return None
-    return TravelLimits(box) if box is not None else None
+    return TravelLimits(box, clamp_default) if box is not None else None
 
 
 def write_travel(
