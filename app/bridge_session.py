@@ -17,6 +17,7 @@ from PySide6.QtCore import QObject, QTimer, Signal, Slot
 from drivers.bridge import Bridge
 from drivers.errors import MotionError
 from drivers.traffic import Traffic, TrafficLogWriter
+from widgets._i18n import fill
 
 log = logging.getLogger(__name__)
 
@@ -50,7 +51,7 @@ class BridgeSession(QObject):
         self._stopped = False
         self._done.connect(self._on_done)
 
-    _done = Signal(str)  # from the bridge's thread; queued to the GUI thread
+    _done = Signal(str, str)  # (for the log, for the operator), from the bridge's thread; queued
 
     def start(self) -> str:
         """Open the device and the pty, start forwarding; the pty's path (PortError if not)."""
@@ -70,17 +71,18 @@ class BridgeSession(QObject):
 
     def _serve(self) -> None:
         """In the bridge's thread: forward until stopped, close the ports, say how it ended."""
-        error = ""
+        error = shown = ""
         try:
             self.bridge.serve_forever()
         except MotionError as exc:
-            error = str(exc)
+            error = shown = str(exc)
         except Exception as exc:  # the thread's last word must reach the window
             log.exception("the bridge failed")
-            error = f"the bridge failed: {exc}"
+            error = f"the bridge failed: {exc}"  # the log's words stay English
+            shown = fill(self.tr("the bridge failed: %1"), exc)
         finally:
             self.bridge.close()
-        self._done.emit(error)
+        self._done.emit(error, shown)
 
     @Slot()
     def drain(self) -> None:
@@ -96,12 +98,12 @@ class BridgeSession(QObject):
         self._stopped = True
         self.bridge.stop()
 
-    @Slot(str)
-    def _on_done(self, error: str) -> None:
+    @Slot(str, str)
+    def _on_done(self, error: str, shown: str) -> None:
         self._timer.stop()
         self.drain()
         if self._log is not None:
             self._log.note(f"bridge ended: {error}" if error else "bridge ended")
             self._log.stream.close()
             self._log = None
-        self.ended.emit("" if self._stopped else error or "the bridge stopped")
+        self.ended.emit("" if self._stopped else shown or self.tr("the bridge stopped"))

@@ -7,7 +7,7 @@ import logging
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QObject, Qt
+from PySide6.QtCore import QCoreApplication, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QWidget
 
 from app import jobs
@@ -19,6 +19,7 @@ from drivers.commands import Arc
 from drivers.errors import BadInput
 from drivers.program import ProgramPoint, read_program, write_program
 from drivers.streaming import StreamProgress
+from widgets._i18n import fill
 from widgets.arc_entry import ArcEntry
 from widgets.dwell_entry import DwellEntry
 from widgets.firmata_panel import FirmataPanel
@@ -65,7 +66,8 @@ class DeviceDocks(QObject):
         if dock is not None and dock.widget() is None:
             dock.setWidget(PanelScrollArea(widget, dock))
             return dock
-        dock = QDockWidget(title, self.window)
+        # The titles are marked in app/dock_layout.py, context "DockLayout".
+        dock = QDockWidget(QCoreApplication.translate("DockLayout", title), self.window)
         dock.setObjectName(name)
         dock.setWidget(PanelScrollArea(widget, dock))
         self.window.addDockWidget(area, dock)
@@ -130,7 +132,8 @@ class DeviceDocks(QObject):
         self.piframe.set_dtr(caps.dtr)
         if caps.travel is not None:
             (x0, x1), _, _ = caps.travel
-            self.piframe.set_range_text(f"{x0:g} to {x1:g} mm on every axis (16-bit ticks)")
+            reach = self.tr("%1 to %2 mm on every axis (16-bit ticks)")
+            self.piframe.set_range_text(fill(reach, f"{x0:g}", f"{x1:g}"))
         self._preview(self.arc.arc_points() if self.arc.preview_check.isChecked() else [])
 
     def disconnected(self) -> None:
@@ -176,7 +179,8 @@ class DeviceDocks(QObject):
         self.program_name = Path(path).name
         self.program.set_program(self.program_name, len(points))
         self._show_path(0)
-        self.window.say(f"program {self.program_name}: {len(points)} points, nothing sent yet")
+        loaded = self.tr("program %1: %2 points, nothing sent yet")
+        self.window.say(fill(loaded, self.program_name, len(points)))
 
     def save_program(self, path: str) -> None:
         """Save the loaded program as the panel's JSON."""
@@ -185,7 +189,7 @@ class DeviceDocks(QObject):
         except BadInput as exc:
             self.program.show_error(str(exc))
             return
-        self.window.say(f"program saved to {path} ({len(self.points)} points)")
+        self.window.say(fill(self.tr("program saved to %1 (%2 points)"), path, len(self.points)))
 
     def run_program(self) -> None:
         """Stream the loaded program (the worker runs it; progress comes by signal)."""
@@ -219,7 +223,7 @@ class DeviceDocks(QObject):
     def _on_job_failed(self, job: jobs.Job, message: str) -> None:
         if isinstance(job, jobs.StreamJob):
             self.program.set_running(False)
-            self.program.show_error(f"the program stopped: {message}")
+            self.program.show_error(fill(self.tr("the program stopped: %1"), message))
 
     def _preview(self, points: list[tuple[float, float, float]]) -> None:
         if self.info is None or not self.info.capabilities.arcs:
@@ -231,11 +235,25 @@ class DeviceDocks(QObject):
         if isinstance(job, jobs.StreamJob) and isinstance(result, StreamProgress):
             self.program.set_running(False)
             self._on_stream_progress(result)
-            done = "done" if result.finished else "stopped, the device's queue flushed"
+            if result.finished:
+                done = self.tr(
+                    "program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s"
+                )
+            else:
+                done = self.tr(
+                    "program %1 stopped, the device's queue flushed: %2/%3 executed, %4 frames, "
+                    "%5 retransmission(s), %6 s"
+                )
             self.window.say(
-                f"program {job.name} {done}: {result.executed}/{result.total} executed, "
-                f"{result.frames} frames, {result.retransmissions} retransmission(s), "
-                f"{result.seconds:.1f} s"
+                fill(
+                    done,
+                    job.name,
+                    result.executed,
+                    result.total,
+                    result.frames,
+                    result.retransmissions,
+                    f"{result.seconds:.1f}",
+                )
             )
         if isinstance(job, (jobs.StepperConfigJob, jobs.StepperVersionJob)):
             self.firmata.set_library_version(str(result))

@@ -14,7 +14,7 @@ import threading
 from itertools import islice
 from pathlib import Path
 
-from PySide6.QtCore import Qt, Signal, Slot
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Qt, Signal, Slot
 from PySide6.QtGui import QCloseEvent
 from PySide6.QtWidgets import (
     QComboBox,
@@ -34,11 +34,12 @@ from drivers.errors import MotionError
 from drivers.log_reader import LogRecord, open_any_log
 from drivers.registry import create_protocol, protocol_names
 from drivers.traffic_index import TrafficIndex
+from widgets._i18n import fill
 from widgets.traffic_timeline import TrafficTimeline
 
 log = logging.getLogger(__name__)
 
-RAW = "(undecoded)"
+RAW = QT_TRANSLATE_NOOP("LogViewer", "(undecoded)")  # the key; shown translated
 LOOKAHEAD = 10_000  # records searched for the connection note (a session log's second line)
 BATCH = 65_536  # records handed to the index at a time
 _CONNECTION = re.compile(r"(?:connected to|bridge) .*\(([\w-]+)(?: ([\w-]+))?[,)]")
@@ -58,7 +59,10 @@ def detect_protocol(records: list[LogRecord]) -> tuple[str, str] | None:
 def ask_open_path(parent: QWidget) -> str:
     """Ask for a log file; "" when cancelled."""
     path, _ = QFileDialog.getOpenFileName(
-        parent, "Open traffic log", "", "Logs (*.log *.txt);;All files (*)"
+        parent,
+        QCoreApplication.translate("LogViewer", "Open traffic log"),
+        "",
+        QCoreApplication.translate("LogViewer", "Logs (*.log *.txt);;All files (*)"),
     )
     return path
 
@@ -71,26 +75,30 @@ class LogViewer(QMainWindow):
     def __init__(self, parent: QWidget | None = None, protocol: str = "") -> None:
         super().__init__(parent)
         self.setObjectName("logViewer")
-        self.setWindowTitle("Traffic log")
+        self.setWindowTitle(self.tr("Traffic log"))
         self.path: Path | None = None
         self._default_protocol = protocol
         self._busy = False
         self.protocol_combo = QComboBox()
         self.protocol_combo.setObjectName("logViewerProtocol")
-        self.protocol_combo.addItems([RAW, *protocol_names()])
+        self.protocol_combo.addItem(self.tr(RAW), RAW)
+        for name in protocol_names():
+            self.protocol_combo.addItem(name, name)
         self.protocol_combo.setToolTip(
-            "Decode with this protocol (chosen from the log's connection note when it has one)"
+            self.tr(
+                "Decode with this protocol (chosen from the log's connection note when it has one)"
+            )
         )
         self.protocol_combo.activated.connect(self._protocol_chosen)
-        open_button = QPushButton("Open…")
+        open_button = QPushButton(self.tr("Open…"))
         open_button.setObjectName("logViewerOpen")
-        open_button.setToolTip("Open a Motion Panel log or a pyserial spy:// capture")
+        open_button.setToolTip(self.tr("Open a Motion Panel log or a pyserial spy:// capture"))
         open_button.clicked.connect(self.open_interactively)
-        self.status = QLabel("no log open")
+        self.status = QLabel(self.tr("no log open"))
         self.status.setObjectName("logViewerStatus")
         self.status.setWordWrap(True)
         top = QHBoxLayout()
-        top.addWidget(QLabel("Protocol:"))
+        top.addWidget(QLabel(self.tr("Protocol:")))
         top.addWidget(self.protocol_combo)
         top.addWidget(open_button)
         top.addWidget(self.status, 1)
@@ -120,7 +128,7 @@ class LogViewer(QMainWindow):
         """Read and decode `path` in the background (protocol None: the log's own, else chosen)."""
         self.path = Path(path)
         self._busy = True
-        self._show(f"reading {self.path.name}…", error=False)
+        self._show(fill(self.tr("reading %1…"), self.path.name), error=False)
         chosen = protocol if protocol is not None else None
         threading.Thread(
             target=self._read, args=(self.path, chosen), name="log-reader", daemon=True
@@ -159,15 +167,18 @@ class LogViewer(QMainWindow):
             self._show(result, error=True)
             return
         path, kind, name, variant, index = result
-        self.protocol_combo.setCurrentText(name if name else RAW)
+        found = self.protocol_combo.findData(name or RAW)
+        if found >= 0:
+            self.protocol_combo.setCurrentIndex(found)
         self.console.load(index)
-        self.setWindowTitle(f"{path.name} — traffic log")
-        shown = f"{name} {variant}".strip()
-        self._show(f"{path} ({kind}): {len(index):,} lines, decoded as {shown}", error=False)
+        self.setWindowTitle(fill(self.tr("%1 — traffic log"), path.name))
+        shown = self.tr(RAW) if name == RAW else f"{name} {variant}".strip()
+        text = self.tr("%1 (%2): %3 lines, decoded as %4")
+        self._show(fill(text, path, kind, f"{len(index):,}", shown), error=False)
 
     def _protocol_chosen(self) -> None:
         if self.path is not None:
-            self.open(self.path, self.protocol_combo.currentText())
+            self.open(self.path, str(self.protocol_combo.currentData()))
 
     def _show(self, text: str, error: bool) -> None:
         self.status.setText(text)

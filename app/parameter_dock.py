@@ -5,7 +5,7 @@ from __future__ import annotations
 import logging
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QObject, Qt
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow
 
 from app import jobs
@@ -16,7 +16,9 @@ from drivers.param_profile import read_profile, write_profile
 from drivers.parameters import Parameter, ParameterWritten
 from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
+from widgets._i18n import fill
 from widgets.parameter_editor import ParameterEditor, ParameterRow
+from widgets.parameter_values import CANCELLED, CONFIRMED, ERROR, TIMED_OUT
 
 if TYPE_CHECKING:
     from app.main_window import MainWindow
@@ -24,7 +26,9 @@ if TYPE_CHECKING:
 log = logging.getLogger(__name__)
 
 SECONDS_PER_PACKET = 1.05  # Visiomex: the reply comes 1 s after the packet, then the next goes
-FORCED_NOTE = "the device now holds {value:g}: the firmware forces it after every set"
+FORCED_NOTE = QT_TRANSLATE_NOOP(
+    "ParameterDock", "the device now holds %1: the firmware forces it after every set"
+)  # translated at use, %1 the value
 
 
 def editor_rows(parameters: tuple[Parameter, ...]) -> list[ParameterRow]:
@@ -40,7 +44,7 @@ DOCK_NAME = "parameterEditor"
 
 def make_dock(window: QMainWindow) -> QDockWidget:
     """The parameter editor's dock, empty and hidden, at the bottom of `window`."""
-    dock = QDockWidget("Parameters", window)
+    dock = QDockWidget(QCoreApplication.translate("ParameterDock", "Parameters"), window)
     dock.setObjectName(DOCK_NAME)
     dock.setFeatures(
         QDockWidget.DockWidgetFeature.DockWidgetMovable
@@ -96,8 +100,8 @@ class ParameterDock(QObject):
         self.editor.set_last_written(last)
         self.editor.set_derivation(self.protocol.derived_values)
         self.editor.set_connected(True)
-        self.dock.setWindowTitle(f"Parameters ({info.protocol})")
-        self.dock.setToolTip(f"{info.identity} on {info.port}")
+        self.dock.setWindowTitle(fill(self.tr("Parameters (%1)"), info.protocol))
+        self.dock.setToolTip(fill(self.tr("%1 on %2"), info.identity, info.port))
         self.dock.show()
         self.dock.raise_()
 
@@ -132,14 +136,14 @@ class ParameterDock(QObject):
             self.window.worker.submit(job)  # only the parameter writes are cancelled
         cancelled = [job for job in dropped if isinstance(job, jobs.SetParameterJob)]
         self.forget(cancelled)
-        self.window.say(f"parameter writing cancelled: {len(cancelled)} not sent")
+        self.window.say(fill(self.tr("parameter writing cancelled: %1 not sent"), len(cancelled)))
 
     def forget(self, dropped: list[jobs.Job]) -> None:
         """Jobs that will never run (cancelled or stopped): their rows say so."""
         for job in dropped:
             if job in self._writing:
                 self._writing.remove(job)
-                self.editor.set_status(job.param_id, "cancelled", "not sent")
+                self.editor.set_status(job.param_id, CANCELLED, self.tr("not sent"))
         self._end_if_done()
 
     def _end_if_done(self) -> None:
@@ -155,10 +159,10 @@ class ParameterDock(QObject):
         values = {name: written.value, **written.device_values}
         write_parameters(self.window.settings, info.protocol, info.port, values)
         self.protocol.assume_parameters(values)
-        self.editor.set_status(written.parameter.id, "confirmed", "; ".join(written.notes))
+        self.editor.set_status(written.parameter.id, CONFIRMED, "; ".join(written.notes))
         self.editor.set_last_written({**self.editor.last_written(), **values})
         for other, value in written.device_values.items():
-            self.editor.set_row_note(other, FORCED_NOTE.format(value=value))
+            self.editor.set_row_note(other, fill(self.tr(FORCED_NOTE), f"{value:g}"))
 
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
         if job in self._writing:
@@ -167,22 +171,24 @@ class ParameterDock(QObject):
 
     def _on_job_timed_out(self, job: jobs.Job) -> None:
         if isinstance(job, jobs.SetParameterJob) and job in self._writing:
-            self.editor.set_status(job.param_id, "timed out", "the device did not answer")
+            self.editor.set_status(job.param_id, TIMED_OUT, self.tr("the device did not answer"))
 
     def _on_job_failed(self, job: jobs.Job, message: str) -> None:
         if job not in self._writing:
             return
         self._writing.remove(job)
         assert isinstance(job, jobs.SetParameterJob)
-        if self.editor.status(job.param_id) != "timed out":
-            self.editor.set_status(job.param_id, "error", message)
+        if self.editor.status(job.param_id) != TIMED_OUT:
+            self.editor.set_status(job.param_id, ERROR, message)
         self._end_if_done()
 
     # -- profiles ----------------------------------------------------------------------------
     def load(self, path: str) -> None:
         """Put a profile's values in the editor (nothing is sent)."""
         if self.protocol is None:
-            self.editor.show_message("connect to a device with parameters first", error=True)
+            self.editor.show_message(
+                self.tr("connect to a device with parameters first"), error=True
+            )
             return
         try:
             values = read_profile(path, self.protocol.parameters, self.protocol.name)
@@ -191,7 +197,11 @@ class ParameterDock(QObject):
             return
         self.editor.set_values(values)
         self.editor.show_message(
-            f"loaded {len(values)} values from {path}; nothing sent (Write changed sends them)"
+            fill(
+                self.tr("loaded %1 values from %2; nothing sent (Write changed sends them)"),
+                len(values),
+                path,
+            )
         )
 
     def save(self, path: str) -> None:
@@ -203,4 +213,5 @@ class ParameterDock(QObject):
         except BadInput as exc:
             self.editor.show_message(str(exc), error=True)
             return
-        self.editor.show_message(f"saved {len(self.editor.values())} values to {path}")
+        saved = self.tr("saved %1 values to %2")
+        self.editor.show_message(fill(saved, len(self.editor.values()), path))

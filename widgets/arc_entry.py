@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
 
 from widgets._axes import Box, decimals_for
 from widgets._buttons import make_button
+from widgets._i18n import fill
 
 log = logging.getLogger(__name__)
 
@@ -122,30 +123,36 @@ class ArcEntry(QWidget):
         self._points: list[Point] = []
 
         self.cx_field = _spin("arcCentreX", " mm", -UNBOUNDED_MM, UNBOUNDED_MM, 3)
-        self.cx_field.setToolTip("X of the arc's centre, in mm from home")
+        self.cx_field.setToolTip(self.tr("X of the arc's centre, in mm from home"))
         self.cy_field = _spin("arcCentreY", " mm", -UNBOUNDED_MM, UNBOUNDED_MM, 3)
-        self.cy_field.setToolTip("Y of the arc's centre, in mm from home")
+        self.cy_field.setToolTip(self.tr("Y of the arc's centre, in mm from home"))
         self.radius_field = _spin("arcRadius", " mm", 0.001, UNBOUNDED_MM, 3)
         self.radius_field.setValue(10.0)
-        self.radius_field.setToolTip("Radius of the arc, in mm (more than 0)")
+        self.radius_field.setToolTip(self.tr("Radius of the arc, in mm (more than 0)"))
         self.start_field = _spin("arcStart", " °", 0.0, 360.0, 1)
         self.start_field.setWrapping(True)
         self.start_field.setSingleStep(15.0)
         self.start_field.setToolTip(
-            "Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above"
+            self.tr(
+                "Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above"
+            )
         )
         self.end_field = _spin("arcEnd", " °", 0.0, 360.0, 1)
         self.end_field.setWrapping(True)
         self.end_field.setSingleStep(15.0)
         self.end_field.setValue(90.0)
         self.end_field.setToolTip(
-            "Angle of the end point, 0 to 360°, counter-clockwise from +X seen from above;"
-            "\nthe same as the start angle: a full circle"
+            self.tr(
+                "Angle of the end point, 0 to 360°, counter-clockwise from +X seen from above;"
+                "\nthe same as the start angle: a full circle"
+            )
         )
         self.z_field = _spin("arcFinalZ", " mm", -UNBOUNDED_MM, UNBOUNDED_MM, 3)
         self.z_field.setToolTip(
-            "Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc"
-            "\n(a helix when it differs)"
+            self.tr(
+                "Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc"
+                "\n(a helix when it differs)"
+            )
         )
         self.fields: dict[str, QDoubleSpinBox] = {
             "cx": self.cx_field,
@@ -158,12 +165,12 @@ class ArcEntry(QWidget):
 
         grid = QGridLayout()
         labels = (
-            ("Centre X:", self.cx_field),
-            ("Centre Y:", self.cy_field),
-            ("Radius:", self.radius_field),
-            ("Start:", self.start_field),
-            ("End:", self.end_field),
-            ("Final Z:", self.z_field),
+            (self.tr("Centre X:"), self.cx_field),
+            (self.tr("Centre Y:"), self.cy_field),
+            (self.tr("Radius:"), self.radius_field),
+            (self.tr("Start:"), self.start_field),
+            (self.tr("End:"), self.end_field),
+            (self.tr("Final Z:"), self.z_field),
         )
         for index, (text, field) in enumerate(labels):
             label = QLabel(text)
@@ -174,24 +181,26 @@ class ArcEntry(QWidget):
             grid.addWidget(field, row, 2 * column + 1)
             grid.setColumnStretch(2 * column + 1, 1)
 
-        self.cw_radio = QRadioButton("CW")
+        self.cw_radio = QRadioButton(self.tr("CW"))
         self.cw_radio.setObjectName("arcCw")
-        self.cw_radio.setToolTip("Clockwise seen from above: the angle decreases")
-        self.ccw_radio = QRadioButton("CCW")
+        self.cw_radio.setToolTip(self.tr("Clockwise seen from above: the angle decreases"))
+        self.ccw_radio = QRadioButton(self.tr("CCW"))
         self.ccw_radio.setObjectName("arcCcw")
-        self.ccw_radio.setToolTip("Counter-clockwise seen from above: the angle increases")
+        self.ccw_radio.setToolTip(self.tr("Counter-clockwise seen from above: the angle increases"))
         self._direction = QButtonGroup(self)
         self._direction.addButton(self.cw_radio)
         self._direction.addButton(self.ccw_radio)
         self.ccw_radio.setChecked(True)
 
-        self.preview_check = QCheckBox("Preview")
+        self.preview_check = QCheckBox(self.tr("Preview"))
         self.preview_check.setObjectName("arcPreview")
-        self.preview_check.setToolTip("Draw the arc, dashed, in the position views")
+        self.preview_check.setToolTip(self.tr("Draw the arc, dashed, in the position views"))
         self.preview_check.setChecked(True)
 
         self.run_button = make_button(
-            "Run arc", "runArcButton", "Move along the arc, from its start point to its end point"
+            self.tr("Run arc"),
+            "runArcButton",
+            self.tr("Move along the arc, from its start point to its end point"),
         )
         self.run_button.clicked.connect(self._run)
 
@@ -199,7 +208,7 @@ class ArcEntry(QWidget):
         self.problem_label.setObjectName("arcProblem")
         self.problem_label.setWordWrap(True)
         self.problem_label.setStyleSheet("color: #c62828;")
-        self.problem_label.setToolTip("Why the arc cannot run")
+        self.problem_label.setToolTip(self.tr("Why the arc cannot run"))
         self.problem_label.setVisible(False)
 
         actions = QHBoxLayout()
@@ -321,28 +330,31 @@ class ArcEntry(QWidget):
         self.problem_label.setText(problem)
         self.problem_label.setVisible(bool(problem))
         self.run_button.setEnabled(not problem)
-        tip = "Move along the arc, from its start point to its end point"
+        tip = self.tr("Move along the arc, from its start point to its end point")
         self.run_button.setToolTip(f"{tip}\n{problem}" if problem else tip)
 
     def _find_problem(self) -> str:
         v = self.values()
         if not v["radius"] > 0:
-            return "The radius must be more than 0 mm."
+            return self.tr("The radius must be more than 0 mm.")
         if self._box is None:
             return ""
         xs, ys = arc_extent(v["cx"], v["cy"], v["radius"], v["start"], v["end"], v["ccw"])
         zs = (min(self._start_z, v["z"]), max(self._start_z, v["z"]))
         outside = []
+        span = self.tr("%1 %2 to %3 mm (travel %4 to %5 mm)")
+        point = self.tr("%1 %2 mm (travel %3 to %4 mm)")
         for name, (low, high), (lo, hi) in zip("XYZ", (xs, ys, zs), self._box, strict=True):
             if low < lo - TOLERANCE_MM or high > hi + TOLERANCE_MM:
+                travel = (f"{lo:g}", f"{hi:g}")
                 outside.append(
-                    f"{name} {low:.3f} to {high:.3f} mm (travel {lo:g} to {hi:g} mm)"
+                    fill(span, name, f"{low:.3f}", f"{high:.3f}", *travel)
                     if low != high
-                    else f"{name} {low:.3f} mm (travel {lo:g} to {hi:g} mm)"
+                    else fill(point, name, f"{low:.3f}", *travel)
                 )
         if not outside:
             return ""
-        return "The arc leaves the travel limits: " + "; ".join(outside) + "."
+        return fill(self.tr("The arc leaves the travel limits: %1."), "; ".join(outside))
 
     def _run(self) -> None:
         values = self.values()  # takes a half-typed field first, which rechecks the arc

@@ -5,7 +5,7 @@ from __future__ import annotations
 import logging
 from collections.abc import Callable, Iterable
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Signal
 from PySide6.QtWidgets import (
     QButtonGroup,
     QComboBox,
@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
 
 from widgets._axes import AXES, Box, decimals_for, normalize_axes
 from widgets._buttons import make_button
+from widgets._i18n import fill
 
 log = logging.getLogger(__name__)
 
@@ -29,17 +30,18 @@ ABSOLUTE = "absolute"
 RELATIVE = "relative"
 MACHINE = "machine"
 WORK = "work"
-SET_HOME_QUESTION = (
+SET_HOME_QUESTION = QT_TRANSLATE_NOOP(
+    "CoordinateEntry",
     "Make the current position the new home (0, 0, 0)?\n"
-    "All coordinates will be measured from here from now on."
-)
+    "All coordinates will be measured from here from now on.",
+)  # translated at use
 
 
 def ask_with_message_box(question: str, parent: QWidget | None = None) -> bool:
     """Ask a yes/no question in a modal QMessageBox; True for Yes."""
     answer = QMessageBox.question(
         parent,
-        "Motion Panel",
+        QCoreApplication.translate("CoordinateEntry", "Motion Panel"),
         question,
         QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
         QMessageBox.StandardButton.No,
@@ -80,7 +82,7 @@ class CoordinateEntry(QWidget):
         grid = QGridLayout()
         self.fields: dict[str, QDoubleSpinBox] = {}
         for column, axis in enumerate(AXES):
-            label = QLabel(f"{axis.upper()}:")
+            label = QLabel(fill(self.tr("%1:", "an axis field's label"), axis.upper()))
             field = _AxisSpinBox(axis)
             field.lineEdit().returnPressed.connect(self._go)
             label.setBuddy(field)
@@ -88,12 +90,14 @@ class CoordinateEntry(QWidget):
             grid.addWidget(field, 0, 2 * column + 1)
             self.fields[axis] = field
 
-        self.absolute_radio = QRadioButton("Absolute")
+        self.absolute_radio = QRadioButton(self.tr("Absolute"))
         self.absolute_radio.setObjectName("modeAbsolute")
-        self.absolute_radio.setToolTip("Go to the typed coordinates (mm from home)")
-        self.relative_radio = QRadioButton("Relative")
+        self.absolute_radio.setToolTip(self.tr("Go to the typed coordinates (mm from home)"))
+        self.relative_radio = QRadioButton(self.tr("Relative"))
         self.relative_radio.setObjectName("modeRelative")
-        self.relative_radio.setToolTip("Move by the typed distances (mm) from where the stage is")
+        self.relative_radio.setToolTip(
+            self.tr("Move by the typed distances (mm) from where the stage is")
+        )
         self._mode_group = QButtonGroup(self)
         self._mode_group.addButton(self.absolute_radio)
         self._mode_group.addButton(self.relative_radio)
@@ -111,21 +115,29 @@ class CoordinateEntry(QWidget):
         )
         self.frame_combo.currentIndexChanged.connect(self._frame_changed)
 
-        self.go_button = make_button("Go", "goButton", "Start the move (Enter in a field)")
+        self.go_button = make_button(
+            self.tr("Go"), "goButton", self.tr("Start the move (Enter in a field)")
+        )
         self.go_button.clicked.connect(self._go)
         self.use_current_button = make_button(
-            "Use current", "useCurrentButton", "Fill the fields with the current position"
+            self.tr("Use current"),
+            "useCurrentButton",
+            self.tr("Fill the fields with the current position"),
         )
         self.use_current_button.setEnabled(False)
         self.use_current_button.clicked.connect(self._use_current)
-        self.home_button = make_button("Home", "homeButton", "Run the homing sequence")
+        self.home_button = make_button(
+            self.tr("Home"), "homeButton", self.tr("Run the homing sequence")
+        )
         self.home_button.clicked.connect(self.home_requested)
         self.set_home_button = make_button(
-            "Set Home", "setHomeButton", "Make the current position the origin (asks first)"
+            self.tr("Set Home"),
+            "setHomeButton",
+            self.tr("Make the current position the origin (asks first)"),
         )
         self.set_home_button.clicked.connect(self._set_home)
-        self.stop_button = make_button("Stop", "stopButton", "Stop the stage now")
-        self.set_stop_mode(True, "Stop the stage now (Esc)")
+        self.stop_button = make_button(self.tr("Stop"), "stopButton", self.tr("Stop the stage now"))
+        self.set_stop_mode(True, self.tr("Stop the stage now (Esc)"))
         self.stop_button.clicked.connect(self.stop_requested)
 
         modes = QHBoxLayout()
@@ -251,7 +263,7 @@ class CoordinateEntry(QWidget):
 
     def set_stop_mode(self, can_stop: bool, tooltip: str) -> None:
         """A real Stop (red) where the protocol can halt a move; else "Drop queued"."""
-        self.stop_button.setText("Stop" if can_stop else "Drop queued")
+        self.stop_button.setText(self.tr("Stop") if can_stop else self.tr("Drop queued"))
         self.stop_button.setToolTip(tooltip)
         colour = "#c62828" if can_stop else "#6d4c41"
         self.stop_button.setStyleSheet(
@@ -275,11 +287,18 @@ class CoordinateEntry(QWidget):
             if relative:
                 lo, hi = -(hi - lo), hi - lo
             field.setRange(lo, hi)
-            state = "" if axis in self._axes else "\n(this device has no such axis)"
-            frame = "" if relative or self.frame() == MACHINE else " in the work frame"
-            word = "distance to move" if relative else f"target coordinate{frame}"
-            limits = "travel limits" if self._box is not None else "no travel limits set"
-            field.setToolTip(f"{axis.upper()} {word}, {lo:g} to {hi:g} mm ({limits}){state}")
+            if relative:
+                tip = self.tr("%1 distance to move, %2 to %3 mm (%4)")
+            elif self.frame() == MACHINE:
+                tip = self.tr("%1 target coordinate, %2 to %3 mm (%4)")
+            else:
+                tip = self.tr("%1 target coordinate in the work frame, %2 to %3 mm (%4)")
+            if self._box is not None:
+                limits = self.tr("travel limits")
+            else:
+                limits = self.tr("no travel limits set")
+            state = "" if axis in self._axes else "\n" + self.tr("(this device has no such axis)")
+            field.setToolTip(fill(tip, axis.upper(), f"{lo:g}", f"{hi:g}", limits) + state)
 
     def set_axes_enabled(self, axes: Iterable[str]) -> None:
         """Only the fields of `axes` can be edited."""
@@ -309,5 +328,5 @@ class CoordinateEntry(QWidget):
         self.go_requested.emit(mode, target)
 
     def _set_home(self) -> None:
-        if self.confirm(SET_HOME_QUESTION):
+        if self.confirm(self.tr(SET_HOME_QUESTION)):
             self.set_home_requested.emit()

@@ -8,6 +8,7 @@ from PySide6.QtCore import Signal
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QSpinBox, QWidget
 
 from widgets._buttons import make_button
+from widgets._i18n import fill
 
 log = logging.getLogger(__name__)
 
@@ -22,7 +23,7 @@ class DwellEntry(QWidget):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("dwellEntry")
-        label = QLabel("Dwell:")
+        label = QLabel(self.tr("Dwell:"))
         self.spin = QSpinBox()
         self.spin.setObjectName("dwellMs")
         self.spin.setRange(0, MAX_DWELL_MS)
@@ -32,13 +33,18 @@ class DwellEntry(QWidget):
         self.spin.setAccelerated(True)
         self.spin.setMinimumWidth(100)
         self.spin.setToolTip(
-            f"How long the device waits, 0 to {MAX_DWELL_MS} ms; press Enter or Dwell to send"
+            fill(
+                self.tr("How long the device waits, 0 to %1 ms; press Enter or Dwell to send"),
+                MAX_DWELL_MS,
+            )
         )
         self.spin.lineEdit().returnPressed.connect(self._dwell)
         label.setBuddy(self.spin)
         label.setToolTip(self.spin.toolTip())
         self.dwell_button = make_button(
-            "Dwell", "dwellButton", "Make the device wait this long before its next command"
+            self.tr("Dwell"),
+            "dwellButton",
+            self.tr("Make the device wait this long before its next command"),
         )
         self.dwell_button.clicked.connect(self._dwell)
         layout = QHBoxLayout(self)

@@ -6,7 +6,7 @@ import itertools
 import logging
 from collections.abc import Sequence
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, Signal
 from PySide6.QtWidgets import (
     QComboBox,
     QDoubleSpinBox,
@@ -19,6 +19,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._buttons import make_button
+from widgets._i18n import fill
 
 log = logging.getLogger(__name__)
 
@@ -26,7 +27,7 @@ MAX_STEPS_PER_REV = 16383  # 14 bits, as Firmata's stepper messages carry it
 MAX_PIN = 127
 PIN_COUNTS = (2, 4)
 DEFAULT_PINS = (8, 9, 10, 11)
-NO_VERSION = "version unknown"
+NO_VERSION = QT_TRANSLATE_NOOP("FirmataPanel", "version unknown")  # translated at use
 
 
 class FirmataPanel(QWidget):
@@ -54,17 +55,22 @@ class FirmataPanel(QWidget):
         self.steps_per_rev_spin.setAccelerated(True)
         self.steps_per_rev_spin.setMinimumWidth(120)
         self.steps_per_rev_spin.setToolTip(
-            f"Full steps per revolution of the motor, 1 to {MAX_STEPS_PER_REV} (e.g. 200)"
+            fill(
+                self.tr("Full steps per revolution of the motor, 1 to %1 (e.g. 200)"),
+                MAX_STEPS_PER_REV,
+            )
         )
         self.steps_per_rev_spin.valueChanged.connect(self._update_rpm)
 
         self.pin_count_combo = QComboBox()
         self.pin_count_combo.setObjectName("firmataPinCount")
         for count in PIN_COUNTS:
-            self.pin_count_combo.addItem(f"{count} pins", count)
+            self.pin_count_combo.addItem(fill(self.tr("%1 pins"), count), count)
         self.pin_count_combo.setCurrentIndex(PIN_COUNTS.index(4))
         self.pin_count_combo.setToolTip(
-            "2 pins: a driver with step and direction inputs; 4 pins: the motor's four wires"
+            self.tr(
+                "2 pins: a driver with step and direction inputs; 4 pins: the motor's four wires"
+            )
         )
         self.pin_count_combo.currentIndexChanged.connect(self._pin_count_changed)
 
@@ -76,7 +82,7 @@ class FirmataPanel(QWidget):
             spin.setObjectName(f"firmataPin{index}")
             spin.setRange(0, MAX_PIN)
             spin.setValue(default)
-            spin.setPrefix("pin ")
+            spin.setPrefix(self.tr("pin "))
             spin.setMinimumWidth(70)
             label = QLabel(f"{index}:")
             label.setBuddy(spin)
@@ -95,32 +101,36 @@ class FirmataPanel(QWidget):
         self.steps_per_mm_spin.setAccelerated(True)
         self.steps_per_mm_spin.setMinimumWidth(120)
         self.steps_per_mm_spin.setToolTip(
-            "Motor steps per mm of travel (more than 0): converts mm and mm/s to steps"
+            self.tr("Motor steps per mm of travel (more than 0): converts mm and mm/s to steps")
         )
         self.steps_per_mm_spin.valueChanged.connect(self._steps_per_mm_edited)
 
         self.rpm_label = QLabel()
         self.rpm_label.setObjectName("firmataRpm")
         self.rpm_label.setToolTip(
-            "The speed in mm/s and the motor speed it means, in revolutions per minute"
+            self.tr("The speed in mm/s and the motor speed it means, in revolutions per minute")
         )
 
         self.configure_button = make_button(
-            "Configure", "firmataConfigure", "Set up the stepper on the board with these settings"
+            self.tr("Configure"),
+            "firmataConfigure",
+            self.tr("Set up the stepper on the board with these settings"),
         )
         self.configure_button.clicked.connect(self._configure)
         self.version_button = make_button(
-            "Library version", "firmataVersion", "Ask the board for its stepper library's version"
+            self.tr("Library version"),
+            "firmataVersion",
+            self.tr("Ask the board for its stepper library's version"),
         )
         self.version_button.clicked.connect(self.version_requested)
-        self.version_label = QLabel(NO_VERSION)
+        self.version_label = QLabel(self.tr(NO_VERSION))
         self.version_label.setObjectName("firmataVersionLabel")
-        self.version_label.setToolTip("The stepper library version the board reported")
+        self.version_label.setToolTip(self.tr("The stepper library version the board reported"))
 
         grid = QGridLayout()
         rows = (
-            ("Steps/rev:", self.steps_per_rev_spin, self.pin_count_combo),
-            ("Steps per mm:", self.steps_per_mm_spin, self.rpm_label),
+            (self.tr("Steps/rev:"), self.steps_per_rev_spin, self.pin_count_combo),
+            (self.tr("Steps per mm:"), self.steps_per_mm_spin, self.rpm_label),
         )
         for row, (text, field, beside) in enumerate(rows):
             label = QLabel(text)
@@ -129,8 +139,10 @@ class FirmataPanel(QWidget):
             grid.addWidget(label, row, 0)
             grid.addWidget(field, row, 1)
             grid.addWidget(beside, row, 2)
-        pins_label = QLabel("Pins:")
-        pins_label.setToolTip(f"The board's pin numbers (0 to {MAX_PIN}) wired to the motor")
+        pins_label = QLabel(self.tr("Pins:"))
+        pins_label.setToolTip(
+            fill(self.tr("The board's pin numbers (0 to %1) wired to the motor"), MAX_PIN)
+        )
         grid.addWidget(pins_label, 2, 0)
         grid.addLayout(pins_row, 2, 1, 1, 2)
         grid.setColumnStretch(2, 1)
@@ -229,7 +241,7 @@ class FirmataPanel(QWidget):
 
     def set_library_version(self, text: str) -> None:
         """Show the library version the board reported ("" : unknown)."""
-        self.version_label.setText(text or NO_VERSION)
+        self.version_label.setText(text or self.tr(NO_VERSION))
 
     # -- updates -----------------------------------------------------------------------------
 
@@ -239,17 +251,23 @@ class FirmataPanel(QWidget):
             used = index < count
             spin.setVisible(used)
             label.setVisible(used)
-            role = ("step", "direction") if count == 2 else ("motor wire",) * 4
+            if count == 2:
+                role = (self.tr("step"), self.tr("direction"))
+            else:
+                role = (self.tr("motor wire"),) * 4
             spin.setToolTip(
-                f"Pin {index + 1} ({role[index]}), 0 to {MAX_PIN}" if used else "not used"
+                fill(self.tr("Pin %1 (%2), 0 to %3"), index + 1, role[index], MAX_PIN)
+                if used
+                else self.tr("not used")
             )
 
     def _update_rpm(self, *_: object) -> None:
         rpm = self.rpm()
         if rpm is None:
-            self.rpm_label.setText("speed: — mm/s = — rpm")
+            self.rpm_label.setText(fill(self.tr("speed: %1 mm/s = %2 rpm"), "—", "—"))
         else:
-            self.rpm_label.setText(f"speed: {self._speed:g} mm/s = {rpm:.4g} rpm")
+            speed = fill(self.tr("speed: %1 mm/s = %2 rpm"), f"{self._speed:g}", f"{rpm:.4g}")
+            self.rpm_label.setText(speed)
 
     def _steps_per_mm_edited(self, value: float) -> None:
         self._update_rpm()

@@ -10,7 +10,7 @@ from __future__ import annotations
 from itertools import pairwise
 from pathlib import Path
 
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, Qt, Signal
 from PySide6.QtWidgets import (
     QFileDialog,
     QHBoxLayout,
@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._buttons import make_button
+from widgets._i18n import fill
 from widgets.parameter_table import (
     ERROR_STYLE,
     Derivation,
@@ -29,11 +30,20 @@ from widgets.parameter_table import (
     ParameterTableView,
     ValueDelegate,
 )
-from widgets.parameter_values import CANCELLED, CONFIRMED, PENDING, STATUS_COLOURS, ParameterRow
+from widgets.parameter_values import (
+    CANCELLED,
+    CONFIRMED,
+    PENDING,
+    STATUS_COLOURS,
+    ParameterRow,
+    translated,
+)
 
 __all__ = ["PROFILE_FILTER", "STATUSES", "Derivation", "ParameterEditor", "ParameterRow"]
 
-PROFILE_FILTER = "Parameter profiles (*.toml);;All files (*)"
+PROFILE_FILTER = QT_TRANSLATE_NOOP(
+    "ParameterEditor", "Parameter profiles (*.toml);;All files (*)"
+)  # translated at use
 STATUSES = tuple(STATUS_COLOURS)  # not written, pending, confirmed, error, timed out, cancelled
 
 
@@ -71,7 +81,7 @@ class ParameterEditor(QWidget):
         self.changed_label = QLabel()
         self.changed_label.setObjectName("changedSummary")
         self.changed_label.setToolTip(
-            "The device cannot be read back: this compares with what this panel last wrote"
+            self.tr("The device cannot be read back: this compares with what this panel last wrote")
         )
         self.message_label = QLabel()
         self.message_label.setObjectName("parameterMessage")
@@ -81,26 +91,38 @@ class ParameterEditor(QWidget):
         self.derived_box.hide()
         self.progress = QProgressBar()
         self.progress.setObjectName("writeProgress")
-        self.progress.setToolTip("Packets written so far; each is confirmed before the next")
+        self.progress.setToolTip(
+            self.tr("Packets written so far; each is confirmed before the next")
+        )
         self.progress.hide()
 
         button = make_button
         self.write_selected_button = button(
-            "Write selected", "writeSelectedButton", "Write the values of the selected rows"
+            self.tr("Write selected"),
+            "writeSelectedButton",
+            self.tr("Write the values of the selected rows"),
         )
         self.write_all_button = button(
-            "Write all", "writeAllButton", "Write every value in the table, one packet each"
+            self.tr("Write all"),
+            "writeAllButton",
+            self.tr("Write every value in the table, one packet each"),
         )
         self.write_changed_button = button(
-            "Write changed", "writeChangedButton", "Write the values marked • (not yet written)"
+            self.tr("Write changed"),
+            "writeChangedButton",
+            self.tr("Write the values marked • (not yet written)"),
         )
         self.cancel_button = button(
-            "Cancel", "cancelWriteButton", "Stop writing after the packet under way"
+            self.tr("Cancel"),
+            "cancelWriteButton",
+            self.tr("Stop writing after the packet under way"),
         )
         self.load_button = button(
-            "Load profile…", "loadProfileButton", "Fill the table from a file"
+            self.tr("Load profile…"), "loadProfileButton", self.tr("Fill the table from a file")
         )
-        self.save_button = button("Save profile…", "saveProfileButton", "Save the values to a file")
+        self.save_button = button(
+            self.tr("Save profile…"), "saveProfileButton", self.tr("Save the values to a file")
+        )
         self.write_selected_button.clicked.connect(self._write_selected)
         self.write_all_button.clicked.connect(self._write_all)
         self.write_changed_button.clicked.connect(self._write_changed)
@@ -153,7 +175,7 @@ class ParameterEditor(QWidget):
         """Fill values by name (a profile, the defaults); refused ones are listed and shown."""
         problems = self.model.set_values(values)
         if problems:
-            self.show_message("Not loaded: " + "; ".join(problems), error=True)
+            self.show_message(fill(self.tr("Not loaded: %1"), "; ".join(problems)), error=True)
         return problems
 
     def values(self) -> dict[str, float]:
@@ -271,9 +293,10 @@ class ParameterEditor(QWidget):
         self._writing = self._cancelling = False
         self._in_flight = {}
         self.progress.hide()
-        parts = [f"{count} {status}" for status, count in counts.items() if count]
+        parts = [f"{count} {translated(status)}" for status, count in counts.items() if count]
         failed = any(count for status, count in counts.items() if status != CONFIRMED)
-        self.show_message("Write finished: " + ", ".join(parts or ["nothing sent"]), error=failed)
+        summary = ", ".join(parts or [self.tr("nothing sent")])
+        self.show_message(fill(self.tr("Write finished: %1"), summary), error=failed)
         self._sync()
 
     def progress_text(self) -> str:
@@ -285,30 +308,35 @@ class ParameterEditor(QWidget):
         done = sum(states[self.model.index_of(id=i)].status != PENDING for i in self._write_ids)
         left = (total - done) * self._seconds_per_packet
         self.progress.setValue(done)
-        self.progress.setFormat(f"{done} / {total} packets, about {_seconds(left)} left")
+        text = self.tr("%1 / %2 packets, about %3 left")
+        self.progress.setFormat(fill(text, done, total, _seconds(left)))
 
     def _write_selected(self) -> None:
         rows = {index.row() for index in self.table.selectionModel().selectedIndexes()}
-        self._request(sorted(rows), "no row selected")
+        self._request(sorted(rows), self.tr("no row selected"))
 
     def _write_all(self) -> None:
-        self._request(range(self.model.rowCount()), "the table has no values")
+        self._request(range(self.model.rowCount()), self.tr("the table has no values"))
 
     def _write_changed(self) -> None:
         states = self.model.states()
-        self._request([p for p, s in enumerate(states) if s.changed()], "nothing differs")
+        self._request([p for p, s in enumerate(states) if s.changed()], self.tr("nothing differs"))
 
     def _request(self, positions: range | list[int], empty: str) -> None:
         states = [self.model.states()[position] for position in positions]
         pairs = [(s.row.id, s.value) for s in states if s.value is not None]
         if not pairs:
-            self.show_message(f"Nothing to write: {empty}")
+            self.show_message(fill(self.tr("Nothing to write: %1"), empty))
             return
-        notes = [f"Writing {len(pairs)} value{'s' if len(pairs) != 1 else ''}"]
+        if len(pairs) == 1:
+            notes = [self.tr("Writing 1 value")]
+        else:
+            notes = [fill(self.tr("Writing %1 values"), len(pairs))]
         if skipped := [s.row.name for s in states if s.value is None]:
-            notes.append(f"no value, not written: {', '.join(skipped)}")
+            notes.append(fill(self.tr("no value, not written: %1"), ", ".join(skipped)))
         if outputs := [s.row.name for s in states if s.value is not None and s.row.output]:
-            notes.append(f"computed by the firmware, which may replace them: {', '.join(outputs)}")
+            why = self.tr("computed by the firmware, which may replace them: %1")
+            notes.append(fill(why, ", ".join(outputs)))
         self.show_message("; ".join(notes))
         self._requested = dict(pairs)
         self.write_requested.emit(pairs)
@@ -316,7 +344,9 @@ class ParameterEditor(QWidget):
     def _cancel(self) -> None:
         self._cancelling = True
         self._sync()
-        self.show_message("Cancelling: the packet under way finishes, the rest are not sent")
+        self.show_message(
+            self.tr("Cancelling: the packet under way finishes, the rest are not sent")
+        )
         self.cancel_requested.emit()
 
     # -- profiles -----------------------------------------------------------------------
@@ -325,11 +355,11 @@ class ParameterEditor(QWidget):
         """Ask for a profile file ("" if the user gives up); tests replace this."""
         if save:
             path, _ = QFileDialog.getSaveFileName(
-                self, "Save parameter profile", self._last_dir, PROFILE_FILTER
+                self, self.tr("Save parameter profile"), self._last_dir, self.tr(PROFILE_FILTER)
             )
         else:
             path, _ = QFileDialog.getOpenFileName(
-                self, "Load parameter profile", self._last_dir, PROFILE_FILTER
+                self, self.tr("Load parameter profile"), self._last_dir, self.tr(PROFILE_FILTER)
             )
         return path
 
@@ -353,14 +383,20 @@ class ParameterEditor(QWidget):
         changed = len(self.changed_names())
         has_values = bool(self.values())
         if not self.model.rowCount():
-            summary = "No parameters"
+            summary = self.tr("No parameters")
         elif not has_values:
-            summary = "No values yet: load a profile or type them into the Value column"
+            summary = self.tr("No values yet: load a profile or type them into the Value column")
+        elif changed == 1:
+            summary = self.tr(
+                "1 value differs from what was last written to this device (marked •)"
+            )
         elif changed:
-            verb = "value differs" if changed == 1 else "values differ"
-            summary = f"{changed} {verb} from what was last written to this device (marked •)"
+            summary = fill(
+                self.tr("%1 values differ from what was last written to this device (marked •)"),
+                changed,
+            )
         else:
-            summary = "Every value is what was last written to this device"
+            summary = self.tr("Every value is what was last written to this device")
         self.changed_label.setText(summary)
         can_write = self._connected and not self._writing
         selected = self.table.selectionModel().hasSelection()

@@ -11,6 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from PySide6.QtCore import (
+    QT_TRANSLATE_NOOP,
     QAbstractItemModel,
     QAbstractTableModel,
     QEvent,
@@ -37,6 +38,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from widgets._i18n import fill
 from widgets.parameter_values import (
     OUTPUT_TIP,
     STATUS_COLOURS,
@@ -46,10 +48,20 @@ from widgets.parameter_values import (
     check_row,
     check_value,
     format_value,
+    translated,
     with_unit,
 )
 
-COLUMNS = ("ID", "Name", "Unit", "Value", "Last written", "Kind", "Description", "Status")
+COLUMNS = (  # the headers, translated at use (ParameterModel context)
+    QT_TRANSLATE_NOOP("ParameterModel", "ID"),
+    QT_TRANSLATE_NOOP("ParameterModel", "Name"),
+    QT_TRANSLATE_NOOP("ParameterModel", "Unit"),
+    QT_TRANSLATE_NOOP("ParameterModel", "Value"),
+    QT_TRANSLATE_NOOP("ParameterModel", "Last written"),
+    QT_TRANSLATE_NOOP("ParameterModel", "Kind"),
+    QT_TRANSLATE_NOOP("ParameterModel", "Description"),
+    QT_TRANSLATE_NOOP("ParameterModel", "Status"),
+)
 COLUMN_WIDTHS = (40, 170, 60, 100, 110, 60, 240, 220)  # Description stretches
 ID_COL, NAME_COL, UNIT_COL, VALUE_COL, WRITTEN_COL, KIND_COL, DESC_COL, STATUS_COL = range(8)
 CHANGED_BACKGROUND = "#fff3cd"
@@ -59,11 +71,21 @@ _NO_UPDATE = QItemSelectionModel.SelectionFlag.NoUpdate
 ROW_ROLE = Qt.ItemDataRole.UserRole + 1  # the ParameterRow of any cell
 ERROR_STYLE = "color: #c62828; font-weight: bold;"
 Derivation = Callable[[dict[str, float]], list[tuple[str, str]]]
-_HEADER_TIPS = {
-    VALUE_COL: "The value to write, in the unit beside it (double-click, F2, Enter or type)",
-    WRITTEN_COL: "What this panel last wrote to the device (the device cannot be read back)",
-    KIND_COL: "input: set by you; output: computed by the firmware",
-    STATUS_COL: "The outcome of the last write of this parameter",
+_HEADER_TIPS = {  # translated at use
+    VALUE_COL: QT_TRANSLATE_NOOP(
+        "ParameterModel",
+        "The value to write, in the unit beside it (double-click, F2, Enter or type)",
+    ),
+    WRITTEN_COL: QT_TRANSLATE_NOOP(
+        "ParameterModel",
+        "What this panel last wrote to the device (the device cannot be read back)",
+    ),
+    KIND_COL: QT_TRANSLATE_NOOP(
+        "ParameterModel", "input: set by you; output: computed by the firmware"
+    ),
+    STATUS_COL: QT_TRANSLATE_NOOP(
+        "ParameterModel", "The outcome of the last write of this parameter"
+    ),
 }
 
 
@@ -100,9 +122,10 @@ class ParameterModel(QAbstractTableModel):
         if orientation != Qt.Orientation.Horizontal:
             return None
         if role == Qt.ItemDataRole.DisplayRole:
-            return COLUMNS[section]
+            return self.tr(COLUMNS[section])
         if role == Qt.ItemDataRole.ToolTipRole:
-            return _HEADER_TIPS.get(section)
+            tip = _HEADER_TIPS.get(section)
+            return self.tr(tip) if tip else None
         return None
 
     def flags(self, index: QModelIndex | QPersistentModelIndex) -> Qt.ItemFlag:
@@ -157,28 +180,34 @@ class ParameterModel(QAbstractTableModel):
             ID_COL: str(row.id),
             NAME_COL: row.name,
             UNIT_COL: row.unit,
-            KIND_COL: "output" if row.output else "input",
+            KIND_COL: self.tr("output") if row.output else self.tr("input"),
             DESC_COL: row.description,
         }[column]
 
     def _tooltip(self, state: RowState, column: int) -> str:
         row = state.row
         if column == KIND_COL:
-            return OUTPUT_TIP if row.output else "Input: set by you and written to the device"
+            if row.output:
+                return translated(OUTPUT_TIP)
+            return self.tr("Input: set by you and written to the device")
         if column == STATUS_COL:
             return state.status_text().replace(" — ", "\n")
         if column == WRITTEN_COL:
             if state.written is None:
-                return f"{row.name}: never written to this device from this panel"
+                return fill(self.tr("%1: never written to this device from this panel"), row.name)
             shown = with_unit(format_value(row, state.written), row.unit)
-            return f"{row.name}: last written {shown}"
-        lines = [f"{row.id} {row.name}: {row.description}", f"Allowed: {allowed(row)}"]
+            return fill(self.tr("%1: last written %2"), row.name, shown)
+        lines = [
+            f"{row.id} {row.name}: {row.description}",
+            fill(self.tr("Allowed: %1"), allowed(row)),
+        ]
         if column == VALUE_COL and state.value is not None:
-            lines.insert(1, f"Value: {with_unit(format_value(row, state.value), row.unit)}")
+            shown = with_unit(format_value(row, state.value), row.unit)
+            lines.insert(1, fill(self.tr("Value: %1"), shown))
             if state.changed():
-                lines.append("• Differs from what was last written to this device")
+                lines.append(self.tr("• Differs from what was last written to this device"))
         if row.output:
-            lines.append(OUTPUT_TIP)
+            lines.append(translated(OUTPUT_TIP))
         return "\n".join(lines)
 
     def setData(
@@ -233,7 +262,7 @@ class ParameterModel(QAbstractTableModel):
             try:
                 state = self._states[self.index_of(name=name)]
             except ValueError:
-                problems.append(f"{name}: no such parameter")
+                problems.append(fill(self.tr("%1: no such parameter"), name))
                 continue
             number, why = check_value(state.row, _as_text(value))
             if number is None:
@@ -295,7 +324,8 @@ class ValueDelegate(QStyledItemDelegate):
     def _closed(self, editor: QWidget, hint: QAbstractItemDelegate.EndEditHint) -> None:
         reverted = hint == QAbstractItemDelegate.EndEditHint.RevertModelCache
         if reverted and isinstance(editor, _ValueEditor):
-            self.feedback.emit(f"{editor.row.name}: edit cancelled, value unchanged", False)
+            message = self.tr("%1: edit cancelled, value unchanged")
+            self.feedback.emit(fill(message, editor.row.name), False)
 
     def createEditor(
         self,
@@ -306,10 +336,12 @@ class ValueDelegate(QStyledItemDelegate):
         row: ParameterRow = index.data(ROW_ROLE)
         editor = _ValueEditor(row, parent)
         editor.setObjectName("parameterValueEditor")
-        editor.setToolTip(f"{row.name}: {allowed(row)}" + (f"\n{OUTPUT_TIP}" if row.output else ""))
+        output = "\n" + translated(OUTPUT_TIP) if row.output else ""
+        editor.setToolTip(f"{row.name}: {allowed(row)}" + output)
         editor.textEdited.connect(lambda _text: self._check(editor, row))
         if row.output:
-            self.feedback.emit(f"{row.name} is an output. {OUTPUT_TIP}", False)
+            message = fill(self.tr("%1 is an output. %2"), row.name, translated(OUTPUT_TIP))
+            self.feedback.emit(message, False)
         return editor
 
     def setEditorData(self, editor: QWidget, index: QModelIndex | QPersistentModelIndex) -> None:
@@ -330,7 +362,8 @@ class ValueDelegate(QStyledItemDelegate):
             return  # untouched: nothing to check or store
         if model.setData(index, editor.text(), Qt.ItemDataRole.EditRole):
             shown = with_unit(index.data(Qt.ItemDataRole.EditRole), row.unit)
-            self.feedback.emit(f"{row.name} = {shown}, not yet written to the device", False)
+            message = self.tr("%1 = %2, not yet written to the device")
+            self.feedback.emit(fill(message, row.name, shown), False)
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """Enter on a refused value keeps the editor open (and says why) instead of closing."""
@@ -354,7 +387,8 @@ class ValueDelegate(QStyledItemDelegate):
             self.feedback.emit(why, True)
         else:
             shown = with_unit(format_value(row, value), row.unit)
-            self.feedback.emit(f"{row.name}: {shown} (Enter keeps it, Escape cancels)", False)
+            message = self.tr("%1: %2 (Enter keeps it, Escape cancels)")
+            self.feedback.emit(fill(message, row.name, shown), False)
         return value is not None
 
 
@@ -384,7 +418,9 @@ class ParameterTableView(QTableView):
         for column, width in enumerate(COLUMN_WIDTHS):
             header.resizeSection(column, width)
         header.setSectionResizeMode(DESC_COL, QHeaderView.ResizeMode.Stretch)
-        self.setToolTip("Double-click a value, or select a row and press Enter or type, to edit")
+        self.setToolTip(
+            self.tr("Double-click a value, or select a row and press Enter or type, to edit")
+        )
 
     def keyPressEvent(self, event: QKeyEvent) -> None:
         current = self.currentIndex()
@@ -405,9 +441,10 @@ class DerivedValues(QGroupBox):
     """(label, text) pairs computed from the values, one to a line; or why they cannot be."""
 
     def __init__(self, parent: QWidget | None = None) -> None:
-        super().__init__("Derived values", parent)
+        super().__init__(parent)
+        self.setTitle(self.tr("Derived values"))
         self.setObjectName("derivedValues")
-        self.setToolTip("Computed from the values in the table, not read from the device")
+        self.setToolTip(self.tr("Computed from the values in the table, not read from the device"))
         self.grid = QGridLayout(self)
         self.grid.setContentsMargins(6, 2, 6, 2)
         self.grid.setHorizontalSpacing(12)
@@ -426,7 +463,8 @@ class DerivedValues(QGroupBox):
         try:
             self.pairs = list(fn(values))
         except KeyError as exc:  # a value the derivation needs is not in the table yet
-            self._show_error(f"needs a value for {exc.args[0] if exc.args else 'a parameter'}")
+            what = exc.args[0] if exc.args else self.tr("a parameter")
+            self._show_error(fill(self.tr("needs a value for %1"), what))
             return
         except (ValueError, ArithmeticError, LookupError) as exc:
             self._show_error(str(exc) or type(exc).__name__)

@@ -1,4 +1,4 @@
-"""Parameter rows as plain data, and the checks and formats of their values (no Qt).
+"""Parameter rows as plain data, and the checks and formats of their values (Qt for words only).
 
 A row is an id, a name, a unit, a range and a step; a value is acceptable when it is a finite
 number inside the range and a multiple of the step.
@@ -9,6 +9,15 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from decimal import Decimal
+
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
+
+from widgets._i18n import fill
+
+
+def translated(text: str) -> str:
+    """A word marked with QT_TRANSLATE_NOOP in this module's context, translated."""
+    return QCoreApplication.translate("ParameterValues", text)
 
 
 @dataclass(frozen=True)
@@ -25,13 +34,13 @@ class ParameterRow:
     description: str
 
 
-NOT_WRITTEN, PENDING, CONFIRMED, ERROR, TIMED_OUT, CANCELLED = (
-    "not written",
-    "pending",
-    "confirmed",
-    "error",
-    "timed out",
-    "cancelled",
+NOT_WRITTEN, PENDING, CONFIRMED, ERROR, TIMED_OUT, CANCELLED = (  # keys; shown translated
+    QT_TRANSLATE_NOOP("ParameterValues", "not written"),
+    QT_TRANSLATE_NOOP("ParameterValues", "pending"),
+    QT_TRANSLATE_NOOP("ParameterValues", "confirmed"),
+    QT_TRANSLATE_NOOP("ParameterValues", "error"),
+    QT_TRANSLATE_NOOP("ParameterValues", "timed out"),
+    QT_TRANSLATE_NOOP("ParameterValues", "cancelled"),
 )
 STATUS_COLOURS = {
     NOT_WRITTEN: "#616161",
@@ -41,10 +50,11 @@ STATUS_COLOURS = {
     TIMED_OUT: "#ad1457",
     CANCELLED: "#6d4c41",
 }
-OUTPUT_TIP = (
+OUTPUT_TIP = QT_TRANSLATE_NOOP(
+    "ParameterValues",
     "Output: computed by the firmware. Writing it is allowed, but the firmware may replace "
-    "what is written."
-)
+    "what is written.",
+)  # translated at use: translated(OUTPUT_TIP)
 
 
 def decimals(step: float) -> int:
@@ -65,10 +75,15 @@ def with_unit(text: str, unit: str) -> str:
 
 def allowed(row: ParameterRow) -> str:
     """E.g. "0 to 99999.9 mm in steps of 0.1 mm"."""
-    span = f"{plain(row.minimum)} to {with_unit(plain(row.maximum), row.unit)}"
+    low, high = plain(row.minimum), with_unit(plain(row.maximum), row.unit)
     if row.step == 1:
-        return f"{span}, whole numbers"
-    return f"{span} in steps of {with_unit(plain(row.step), row.unit)}"
+        return fill(
+            QCoreApplication.translate("ParameterValues", "%1 to %2, whole numbers"), low, high
+        )
+    step = with_unit(plain(row.step), row.unit)
+    return fill(
+        QCoreApplication.translate("ParameterValues", "%1 to %2 in steps of %3"), low, high, step
+    )
 
 
 def format_value(row: ParameterRow, value: float) -> str:
@@ -81,27 +96,33 @@ def check_value(row: ParameterRow, text: str) -> tuple[float | None, str]:
     typed = text.strip()
 
     def refuse(shown: str, reason: str) -> tuple[None, str]:
-        return None, f"{row.name}: {shown} refused ({reason}): {allowed(row)}"
+        why = QCoreApplication.translate("ParameterValues", "%1: %2 refused (%3): %4")
+        return None, fill(why, row.name, shown, reason, allowed(row))
 
     if not typed:
-        return refuse('""', "empty")
+        return refuse('""', QCoreApplication.translate("ParameterValues", "empty"))
     if "," in typed and "." not in typed:
-        return refuse(f'"{typed}"', "use a point for decimals")
+        return refuse(
+            f'"{typed}"', QCoreApplication.translate("ParameterValues", "use a point for decimals")
+        )
     try:
         number = float(typed)
     except ValueError:
-        return refuse(f'"{typed}"', "not a number")
+        return refuse(f'"{typed}"', QCoreApplication.translate("ParameterValues", "not a number"))
     shown = with_unit(typed, row.unit)
     if not math.isfinite(number):
-        return refuse(shown, "not a finite number")
+        return refuse(shown, QCoreApplication.translate("ParameterValues", "not a finite number"))
     tolerance = 1e-9 * max(abs(row.minimum), abs(row.maximum), row.step)
     if number < row.minimum - tolerance:
-        return refuse(shown, "below the minimum")
+        return refuse(shown, QCoreApplication.translate("ParameterValues", "below the minimum"))
     if number > row.maximum + tolerance:
-        return refuse(shown, "above the maximum")
+        return refuse(shown, QCoreApplication.translate("ParameterValues", "above the maximum"))
     snapped = round(number / row.step) * row.step
     if abs(number - snapped) > 1e-9 * max(abs(number), row.step):
-        return refuse(shown, f"not a multiple of {with_unit(plain(row.step), row.unit)}")
+        step = with_unit(plain(row.step), row.unit)
+        return refuse(
+            shown, fill(QCoreApplication.translate("ParameterValues", "not a multiple of %1"), step)
+        )
     return round(snapped, decimals(row.step)) + 0.0, ""  # + 0.0: no -0.0
 
 
@@ -131,5 +152,7 @@ class RowState:
         return not math.isclose(self.value, self.written, rel_tol=1e-9, abs_tol=self.row.step / 1e6)
 
     def status_text(self) -> str:
-        text = f"{self.status}: {self.message}" if self.message else self.status
+        """The status (translated), its message and the row's note, as the Status cell shows."""
+        status = translated(self.status)
+        text = f"{status}: {self.message}" if self.message else status
         return f"{text} — {self.note}" if self.note else text

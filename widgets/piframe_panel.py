@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, Signal
 from PySide6.QtWidgets import (
     QDoubleSpinBox,
     QFormLayout,
@@ -11,7 +11,11 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-DTR_TEXT = {True: "DTR on", False: "DTR off", None: "DTR unknown"}
+DTR_TEXT = {  # translated at use
+    True: QT_TRANSLATE_NOOP("PiFramePanel", "DTR on"),
+    False: QT_TRANSLATE_NOOP("PiFramePanel", "DTR off"),
+    None: QT_TRANSLATE_NOOP("PiFramePanel", "DTR unknown"),
+}
 
 
 class PiFramePanel(QWidget):
@@ -34,24 +38,30 @@ class PiFramePanel(QWidget):
         self.ticks_spin.setAccelerated(True)
         self.ticks_spin.setMinimumWidth(130)
         self.ticks_spin.setToolTip(
-            "Encoder ticks per mm of travel (more than 0): converts the frame's ticks to mm"
+            self.tr(
+                "Encoder ticks per mm of travel (more than 0): converts the frame's ticks to mm"
+            )
         )
         self.ticks_spin.valueChanged.connect(self._ticks_changed)
 
         self.dtr_label = QLabel()
         self.dtr_label.setObjectName("piFrameDtr")
-        self.dtr_label.setToolTip("The state of the serial DTR line, which powers the frame")
+        self.dtr_label.setToolTip(
+            self.tr("The state of the serial DTR line, which powers the frame")
+        )
 
         self.range_line = QLineEdit()
         self.range_line.setObjectName("piFrameRange")
         self.range_line.setReadOnly(True)
-        self.range_line.setToolTip("The range the frame can reach, from its travel and ticks/mm")
-        self.range_line.setPlaceholderText("unknown")
+        self.range_line.setToolTip(
+            self.tr("The range the frame can reach, from its travel and ticks/mm")
+        )
+        self.range_line.setPlaceholderText(self.tr("unknown"))
 
         form = QFormLayout(self)
-        form.addRow("Ticks per mm:", self.ticks_spin)
-        form.addRow("DTR:", self.dtr_label)
-        form.addRow("Reachable:", self.range_line)
+        form.addRow(self.tr("Ticks per mm:"), self.ticks_spin)
+        form.addRow(self.tr("DTR:"), self.dtr_label)
+        form.addRow(self.tr("Reachable:"), self.range_line)
         for row in range(form.rowCount()):
             label = form.itemAt(row, QFormLayout.ItemRole.LabelRole).widget()
             field = form.itemAt(row, QFormLayout.ItemRole.FieldRole).widget()
@@ -74,7 +84,7 @@ class PiFramePanel(QWidget):
     def set_dtr(self, on: bool | None) -> None:
         """Show "DTR on", "DTR off" or "DTR unknown" (None)."""
         self._dtr = None if on is None else bool(on)
-        self.dtr_label.setText(DTR_TEXT[self._dtr])
+        self.dtr_label.setText(self.tr(DTR_TEXT[self._dtr]))
 
     def dtr(self) -> bool | None:
         """The DTR state shown."""

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, Qt, Signal
 from PySide6.QtGui import QFont, QFontDatabase
 from PySide6.QtWidgets import (
     QGridLayout,
@@ -19,28 +19,38 @@ from PySide6.QtWidgets import (
 from widgets._axes import AXES, decimals_for, normalize_axes
 
 UNKNOWN = "—"
-NOT_MEASURED_TEXT = "commanded, not measured"
-CONFIRMED_TEXT = "commanded, move confirmed"
-COMMANDED_TIP = "This device does not report its position: the numbers are where it was told to go."
-CONFIRMED_TIP = (
+# Translated at use, in the PositionReadout context.
+NOT_MEASURED_TEXT = QT_TRANSLATE_NOOP("PositionReadout", "commanded, not measured")
+CONFIRMED_TEXT = QT_TRANSLATE_NOOP("PositionReadout", "commanded, move confirmed")
+COMMANDED_TIP = QT_TRANSLATE_NOOP(
+    "PositionReadout",
+    "This device does not report its position: the numbers are where it was told to go.",
+)
+CONFIRMED_TIP = QT_TRANSLATE_NOOP(
+    "PositionReadout",
     "Where the device was told to go, and its reply said the move ended there; not read back "
-    "(a device that can report its position is asked again when idle)."
+    "(a device that can report its position is asked again when idle).",
 )
 LIVE, ESTIMATED, STALE, LOST = "live", "estimated", "stale", "lost"
 _STATUS = {
     LOST: (
-        "position unknown: the link failed or the device restarted, and it cannot report "
-        "where it is; home it or set home",
+        QT_TRANSLATE_NOOP(
+            "PositionReadout",
+            "position unknown: the link failed or the device restarted, and it cannot report "
+            "where it is; home it or set home",
+        ),
         "color: #b71c1c; background: #ffebee; border: 1px solid #ef9a9a;",
         "color: #9e9e9e;",
     ),
     ESTIMATED: (
-        "estimated from the speed: the device cannot be asked while it moves",
+        QT_TRANSLATE_NOOP(
+            "PositionReadout", "estimated from the speed: the device cannot be asked while it moves"
+        ),
         "color: #0d47a1; background: #e3f2fd; border: 1px solid #90caf9;",
         "color: #1565c0; font-style: italic;",
     ),
     STALE: (
-        "last known position: not connected",
+        QT_TRANSLATE_NOOP("PositionReadout", "last known position: not connected"),
         "color: #616161; background: #eeeeee; border: 1px solid #bdbdbd;",
         "color: #9e9e9e;",
     ),
@@ -139,9 +149,9 @@ class PositionReadout(QWidget):
         zeros.addWidget(self.clear_zero_button)
         self.set_zero_enabled(False)
 
-        self.measured_label = QLabel(NOT_MEASURED_TEXT)
+        self.measured_label = QLabel(self.tr(NOT_MEASURED_TEXT))
         self.measured_label.setObjectName("positionNotMeasured")
-        self.measured_label.setToolTip(COMMANDED_TIP)
+        self.measured_label.setToolTip(self.tr(COMMANDED_TIP))
         self.measured_label.setStyleSheet(
             "color: #8a4b00; background: #fff3cd; border: 1px solid #e0b44c;"
             " border-radius: 3px; padding: 2px 6px;"
@@ -232,9 +242,9 @@ class PositionReadout(QWidget):
         confirmed reaching it (`confirmed`: None where the device never says)."""
         self.measured_label.setVisible(not measured)
         if confirmed:
-            text, tip = CONFIRMED_TEXT, CONFIRMED_TIP
+            text, tip = self.tr(CONFIRMED_TEXT), self.tr(CONFIRMED_TIP)
         else:
-            text, tip = NOT_MEASURED_TEXT, COMMANDED_TIP
+            text, tip = self.tr(NOT_MEASURED_TEXT), self.tr(COMMANDED_TIP)
         if self.measured_label.text() != text:
             self.measured_label.setText(text)
             self.measured_label.setToolTip(tip)
@@ -262,7 +272,7 @@ class PositionReadout(QWidget):
     def _render_status(self) -> None:
         """The badge and the values' style (style sheets are costly: only when it changes)."""
         text, badge, value_style = _STATUS.get(self._status, ("", "", ""))
-        self.status_label.setText(text)
+        self.status_label.setText(self.tr(text) if text else "")
         self.status_label.setStyleSheet(f"{badge} border-radius: 3px; padding: 2px 6px;")
         self.status_label.setVisible(bool(text))
         for label in (*self.labels.values(), *self.work_labels.values()):

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, Signal
 from PySide6.QtWidgets import (
     QFileDialog,
     QGridLayout,
@@ -14,8 +14,10 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._buttons import make_button
+from widgets._i18n import fill
 
-PROGRAM_FILTER = "Programs (*.csv *.json);;All files (*)"
+PROGRAM_FILTER = QT_TRANSLATE_NOOP("ProgramPanel", "Programs (*.csv *.json);;All files (*)")
+NO_PROGRAM = QT_TRANSLATE_NOOP("ProgramPanel", "no program loaded")  # both translated at use
 
 
 class ProgramPanel(QWidget):
@@ -31,28 +33,39 @@ class ProgramPanel(QWidget):
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("programPanel")
-        self.file_label = QLabel("no program loaded")
+        self._loaded = False
+        self.file_label = QLabel(self.tr(NO_PROGRAM))
         self.file_label.setObjectName("programFile")
         self.file_label.setWordWrap(True)
         self.load_button = make_button(
-            "Load…", "programLoad", "Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON"
+            self.tr("Load…"),
+            "programLoad",
+            self.tr("Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON"),
         )
         self.save_button = make_button(
-            "Save…", "programSave", "Save the loaded program as JSON (x, y, z, speed per point)"
+            self.tr("Save…"),
+            "programSave",
+            self.tr("Save the loaded program as JSON (x, y, z, speed per point)"),
         )
         self.run_button = make_button(
-            "Run", "programRun", "Stream the program to the device, 7 moves a frame"
+            self.tr("Run"),
+            "programRun",
+            self.tr("Stream the program to the device, 7 moves a frame"),
         )
         self.pause_button = make_button(
-            "Pause", "programPause", "Send nothing more until Resume (queued moves go on)"
+            self.tr("Pause"),
+            "programPause",
+            self.tr("Send nothing more until Resume (queued moves go on)"),
         )
         self.stop_button = make_button(
-            "Stop", "programStop", "Send nothing more and flush the device's queue (STOP)"
+            self.tr("Stop"),
+            "programStop",
+            self.tr("Send nothing more and flush the device's queue (STOP)"),
         )
         self.progress = QProgressBar()
         self.progress.setObjectName("programProgress")
-        self.progress.setToolTip("Instructions executed by the device")
-        self.progress.setFormat("%v / %m executed")
+        self.progress.setToolTip(self.tr("Instructions executed by the device"))
+        self.progress.setFormat(self.tr("%v / %m executed"))
         self.figures = QLabel()
         self.figures.setObjectName("programFigures")
         self.figures.setWordWrap(True)
@@ -71,7 +84,7 @@ class ProgramPanel(QWidget):
         ):
             buttons.addWidget(button)
         grid = QGridLayout()
-        grid.addWidget(QLabel("Program:"), 0, 0)
+        grid.addWidget(QLabel(self.tr("Program:")), 0, 0)
         grid.addWidget(self.file_label, 0, 1)
         grid.setColumnStretch(1, 1)
         layout = QVBoxLayout(self)
@@ -85,11 +98,15 @@ class ProgramPanel(QWidget):
         self.set_running(False)
 
     def _choose_path(self) -> str:
-        path, _ = QFileDialog.getOpenFileName(self, "Load a program", "", PROGRAM_FILTER)
+        path, _ = QFileDialog.getOpenFileName(
+            self, self.tr("Load a program"), "", self.tr(PROGRAM_FILTER)
+        )
         return path
 
     def _choose_save_path(self) -> str:
-        path, _ = QFileDialog.getSaveFileName(self, "Save the program", "", "JSON (*.json)")
+        path, _ = QFileDialog.getSaveFileName(
+            self, self.tr("Save the program"), "", self.tr("JSON (*.json)")
+        )
         return path if not path or path.endswith(".json") else path + ".json"
 
     def _save(self) -> None:
@@ -110,10 +127,14 @@ class ProgramPanel(QWidget):
 
     def set_program(self, name: str, points: int) -> None:
         """Show the loaded program (an empty name: none)."""
-        self.file_label.setText(f"{name} ({points} points)" if name else "no program loaded")
+        self._loaded = bool(name)
+        if name:
+            self.file_label.setText(fill(self.tr("%1 (%2 points)"), name, points))
+        else:
+            self.file_label.setText(self.tr(NO_PROGRAM))
         self.progress.setRange(0, max(points, 1))
         self.progress.setValue(0)
-        self.progress.setFormat("%v / %m executed" if name else "no program")
+        self.progress.setFormat(self.tr("%v / %m executed") if name else self.tr("no program"))
         self.run_button.setEnabled(bool(name))
         self.save_button.setEnabled(bool(name))
 
@@ -125,7 +146,7 @@ class ProgramPanel(QWidget):
     def set_running(self, running: bool) -> None:
         """While streaming: Run and Load off, Pause and Stop on."""
         self.load_button.setEnabled(not running)
-        self.run_button.setEnabled(not running and self.file_label.text() != "no program loaded")
+        self.run_button.setEnabled(not running and self._loaded)
         self.pause_button.setEnabled(running)
         self.stop_button.setEnabled(running)
         if not running:
@@ -134,7 +155,7 @@ class ProgramPanel(QWidget):
     def set_paused(self, paused: bool) -> None:
         """Show Pause or Resume."""
         self._paused = paused
-        self.pause_button.setText("Resume" if paused else "Pause")
+        self.pause_button.setText(self.tr("Resume") if paused else self.tr("Pause"))
 
     def show_progress(
         self,
@@ -147,9 +168,22 @@ class ProgramPanel(QWidget):
     ) -> None:
         """Counts, rate, time left."""
         self.progress.setValue(executed)
-        left = f", about {seconds_left:.0f} s left" if seconds_left is not None else ""
+        if seconds_left is not None:
+            left = fill(self.tr(", about %1 s left"), f"{seconds_left:.0f}")
+        else:
+            left = ""
         self.figures.setStyleSheet("")
         self.figures.setText(
-            f"sent {sent}, acknowledged {acknowledged}, executed {executed}; "
-            f"{rate:.0f} instructions/s{left}; {retransmissions} retransmission(s)"
+            fill(
+                self.tr(
+                    "sent %1, acknowledged %2, executed %3; %4 instructions/s%5; "
+                    "%6 retransmission(s)"
+                ),
+                sent,
+                acknowledged,
+                executed,
+                f"{rate:.0f}",
+                left,
+                retransmissions,
+            )
         )

@@ -5,7 +5,7 @@ from __future__ import annotations
 import logging
 from collections.abc import Iterable
 
-from PySide6.QtCore import QEvent, QObject, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QEvent, QObject, Signal
 from PySide6.QtGui import QKeyEvent, QKeySequence
 from PySide6.QtWidgets import QComboBox, QHBoxLayout, QLabel, QPushButton, QVBoxLayout, QWidget
 
@@ -15,7 +15,12 @@ from widgets.history_line_edit import HistoryLineEdit
 log = logging.getLogger(__name__)
 
 TEXT, HEX = "text", "hex"
+MODE_NAMES = {  # shown translated; the keys are what mode() returns
+    TEXT: QT_TRANSLATE_NOOP("SendLine", "text"),
+    HEX: QT_TRANSLATE_NOOP("SendLine", "hex"),
+}
 LINE_ENDINGS = {"LF (\\n)": b"\n", "CR (\\r)": b"\r", "CR+LF": b"\r\n", "none": b""}
+ENDING_NAMES = {"none": QT_TRANSLATE_NOOP("SendLine", "none")}  # the others are not words
 WINDOW_SHORTCUTS = ("Ctrl+E",)  # the window's "Export traffic log", not the edit's end of line
 
 
@@ -64,19 +69,25 @@ class SendLine(QWidget):
         pass_shortcuts_through(self.edit, WINDOW_SHORTCUTS)
         self.mode_combo = QComboBox()
         self.mode_combo.setObjectName("consoleSendMode")
-        self.mode_combo.addItems([TEXT, HEX])
+        for mode, name in MODE_NAMES.items():
+            self.mode_combo.addItem(self.tr(name), mode)
         self.mode_combo.setToolTip(
-            "text: UTF-8 with \\r \\n \\t \\0 \\\\ \\xNN escapes, plus the line ending;\n"
-            "hex: bytes like 48 45 4C 4C 4F, sent as they are"
+            self.tr(
+                "text: UTF-8 with \\r \\n \\t \\0 \\\\ \\xNN escapes, plus the line ending;\n"
+                "hex: bytes like 48 45 4C 4C 4F, sent as they are"
+            )
         )
-        self.mode_combo.currentTextChanged.connect(self._mode_changed)
+        self.mode_combo.currentIndexChanged.connect(self._mode_index_changed)
         self.ending_combo = QComboBox()
         self.ending_combo.setObjectName("consoleLineEnding")
-        self.ending_combo.addItems(list(LINE_ENDINGS))
-        self.ending_combo.setToolTip("Appended to every line sent in text mode")
-        self.button = QPushButton("Send")
+        for ending in LINE_ENDINGS:
+            self.ending_combo.addItem(
+                self.tr(ENDING_NAMES[ending]) if ending in ENDING_NAMES else ending, ending
+            )
+        self.ending_combo.setToolTip(self.tr("Appended to every line sent in text mode"))
+        self.button = QPushButton(self.tr("Send"))
         self.button.setObjectName("consoleSend")
-        self.button.setToolTip("Send the line to the device (Enter)")
+        self.button.setToolTip(self.tr("Send the line to the device (Enter)"))
         self.button.clicked.connect(self.send)
         self.error_label = QLabel()
         self.error_label.setObjectName("consoleError")
@@ -97,25 +108,31 @@ class SendLine(QWidget):
 
     def mode(self) -> str:
         """How the line is read: `"text"` or `"hex"`."""
-        return self.mode_combo.currentText()
+        return str(self.mode_combo.currentData())
 
     def set_mode(self, mode: str) -> None:
         """Read the line as text (with escapes and the line ending) or as hex bytes."""
         if mode not in (TEXT, HEX):
             raise ValueError(f"send mode must be 'text' or 'hex', not {mode!r}")
-        self.mode_combo.setCurrentText(mode)
+        self.mode_combo.setCurrentIndex(self.mode_combo.findData(mode))
 
     def set_line_ending(self, ending: bytes) -> None:
         """The bytes appended to a text line: b"\\n", b"\\r", b"\\r\\n" or b""."""
         names = {value: name for name, value in LINE_ENDINGS.items()}
         if ending not in names:
             raise ValueError(f"unsupported line ending {ending!r}")
-        self.ending_combo.setCurrentText(names[ending])
+        self.ending_combo.setCurrentIndex(self.ending_combo.findData(names[ending]))
+
+    def _mode_index_changed(self, _index: int) -> None:
+        self._mode_changed(self.mode())
 
     def _mode_changed(self, mode: str) -> None:
         self.ending_combo.setEnabled(mode == TEXT)
-        hint = "hex bytes, e.g. 48 45 4C 4C 4F" if mode == HEX else "text to send"
-        self.edit.setPlaceholderText(f"{hint} (Up/Down: history)")
+        if mode == HEX:
+            hint = self.tr("hex bytes, e.g. 48 45 4C 4C 4F (Up/Down: history)")
+        else:
+            hint = self.tr("text to send (Up/Down: history)")
+        self.edit.setPlaceholderText(hint)
         self.show_error("")
 
     def data(self) -> bytes:
@@ -124,9 +141,9 @@ class SendLine(QWidget):
         if self.mode() == HEX:
             data = fmt.parse_hex(text)
         else:
-            data = fmt.unescape(text) + LINE_ENDINGS[self.ending_combo.currentText()]
+            data = fmt.unescape(text) + LINE_ENDINGS[str(self.ending_combo.currentData())]
         if not data:
-            raise ValueError("nothing to send")
+            raise ValueError(self.tr("nothing to send"))
         return data
 
     def send(self) -> None:

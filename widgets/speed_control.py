@@ -15,6 +15,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from widgets._i18n import fill
+
 log = logging.getLogger(__name__)
 
 SLIDER_STEPS = 1000
@@ -30,8 +32,8 @@ class SpeedControl(QWidget):
         self.setObjectName("speedControl")
         self._min, self._max = 0.0, 100.0
 
-        label = QLabel("Speed:")
-        label.setToolTip("Speed of the next moves")
+        label = QLabel(self.tr("Speed:"))
+        label.setToolTip(self.tr("Speed of the next moves"))
         self.slider = QSlider(Qt.Orientation.Horizontal)
         self.slider.setObjectName("speedSlider")
         self.slider.setRange(0, SLIDER_STEPS)
@@ -49,14 +51,14 @@ class SpeedControl(QWidget):
         self.spin.valueChanged.connect(self._spin_changed)
         self.spin.lineEdit().returnPressed.connect(self.apply)
 
-        self.apply_button = QPushButton("Apply")
+        self.apply_button = QPushButton(self.tr("Apply"))
         self.apply_button.setObjectName("speedApply")
-        self.apply_button.setToolTip("Send the speed in the field to the device")
+        self.apply_button.setToolTip(self.tr("Send the speed in the field to the device"))
         self.apply_button.clicked.connect(self.apply)
 
         self.reported_label = QLabel()
         self.reported_label.setObjectName("speedReported")
-        self.reported_label.setToolTip("The speed the device reports (it may round)")
+        self.reported_label.setToolTip(self.tr("The speed the device reports (it may round)"))
         self.reported_label.setMinimumWidth(110)
         self.set_reported(None)
 
@@ -85,9 +87,8 @@ class SpeedControl(QWidget):
         """Say what setting the speed does on this device (hidden when empty)."""
         self.note_label.setText(text)
         self.note_label.setVisible(bool(text))
-        self.apply_button.setToolTip(
-            "Send the speed in the field to the device" + (f"\n{text}" if text else "")
-        )
+        tip = self.tr("Send the speed in the field to the device")
+        self.apply_button.setToolTip(tip + (f"\n{text}" if text else ""))
 
     def set_decimals(self, decimals: int) -> None:
         """The decimals the device takes (0: whole mm/s)."""
@@ -115,9 +116,10 @@ class SpeedControl(QWidget):
         self.spin.setSingleStep(max((self._max - self._min) / 100.0, 0.01))
         self.spin.blockSignals(False)
         self.slider.setEnabled(self._max > self._min)
-        tip = f"Speed, {self._min:g} to {self._max:g} mm/s; press Enter or Apply to send"
-        self.spin.setToolTip(tip)
-        self.slider.setToolTip(f"Drag and release to send ({self._min:g} to {self._max:g} mm/s)")
+        low, high = f"{self._min:g}", f"{self._max:g}"
+        tip = self.tr("Speed, %1 to %2 mm/s; press Enter or Apply to send")
+        self.spin.setToolTip(fill(tip, low, high))
+        self.slider.setToolTip(fill(self.tr("Drag and release to send (%1 to %2 mm/s)"), low, high))
         self.set_value(current)
 
     def speed_range(self) -> tuple[float, float]:
@@ -127,7 +129,7 @@ class SpeedControl(QWidget):
     def set_reported(self, speed: float | None) -> None:
         """Show the device-reported speed, e.g. "device: 13 mm/s" (None: unknown)."""
         text = "—" if speed is None else f"{speed:g}"
-        self.reported_label.setText(f"device: {text} mm/s")
+        self.reported_label.setText(fill(self.tr("device: %1 mm/s"), text))
 
     # -- user actions --------------------------------------------------------------------
 

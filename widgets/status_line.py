@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QT_TRANSLATE_NOOP, Qt
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QSizePolicy, QWidget
 
 DISCONNECTED, CONNECTING, IDLE, MOVING, BUSY, ERROR = (
@@ -13,13 +13,37 @@ DISCONNECTED, CONNECTING, IDLE, MOVING, BUSY, ERROR = (
     "busy",
     "error",
 )
-_STATES = {
-    DISCONNECTED: ("Disconnected", "#616161", "No device is connected"),
-    CONNECTING: ("Connecting…", "#ef6c00", "Opening the port and asking the device who it is"),
-    IDLE: ("Idle", "#2e7d32", "Connected and not moving"),
-    MOVING: ("Moving", "#1565c0", "A move is under way"),
-    BUSY: ("Busy", "#6a1b9a", "A command is under way"),
-    ERROR: ("Error", "#c62828", "The last command failed, or the connection did"),
+_STATES = {  # text and tooltip translated at use, in the StatusLine context
+    DISCONNECTED: (
+        QT_TRANSLATE_NOOP("StatusLine", "Disconnected"),
+        "#616161",
+        QT_TRANSLATE_NOOP("StatusLine", "No device is connected"),
+    ),
+    CONNECTING: (
+        QT_TRANSLATE_NOOP("StatusLine", "Connecting…"),
+        "#ef6c00",
+        QT_TRANSLATE_NOOP("StatusLine", "Opening the port and asking the device who it is"),
+    ),
+    IDLE: (
+        QT_TRANSLATE_NOOP("StatusLine", "Idle"),
+        "#2e7d32",
+        QT_TRANSLATE_NOOP("StatusLine", "Connected and not moving"),
+    ),
+    MOVING: (
+        QT_TRANSLATE_NOOP("StatusLine", "Moving"),
+        "#1565c0",
+        QT_TRANSLATE_NOOP("StatusLine", "A move is under way"),
+    ),
+    BUSY: (
+        QT_TRANSLATE_NOOP("StatusLine", "Busy"),
+        "#6a1b9a",
+        QT_TRANSLATE_NOOP("StatusLine", "A command is under way"),
+    ),
+    ERROR: (
+        QT_TRANSLATE_NOOP("StatusLine", "Error"),
+        "#c62828",
+        QT_TRANSLATE_NOOP("StatusLine", "The last command failed, or the connection did"),
+    ),
 }
 INFO, WARNING, FAILURE = "info", "warning", "error"
 _MESSAGE_COLOURS = {INFO: "#212121", WARNING: "#8a4b00", FAILURE: "#c62828"}
@@ -34,7 +58,9 @@ class StatusLine(QWidget):
         self.state_label = QLabel()
         self.state_label.setObjectName("machineState")
         self.state_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
-        self.state_label.setMinimumWidth(self.fontMetrics().horizontalAdvance("● Connecting…") + 24)
+        self.state_label.setMinimumWidth(
+            self.fontMetrics().horizontalAdvance("● " + self.tr("Connecting…")) + 24
+        )
         self.message_label = QLabel()
         self.message_label.setObjectName("statusMessage")
         self.message_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
@@ -53,11 +79,11 @@ class StatusLine(QWidget):
         if state not in _STATES:
             raise ValueError(f"unknown machine state {state!r}: one of {sorted(_STATES)}")
         text, colour, tip = _STATES[state]
-        self.state_label.setToolTip(detail or tip)
+        self.state_label.setToolTip(detail or self.tr(tip))
         if state == self._state:
             return  # style sheets are costly: restyle only on a change
         self._state = state
-        self.state_label.setText(f"● {text}")
+        self.state_label.setText(f"● {self.tr(text)}")
         self.state_label.setStyleSheet(
             f"color: white; background: {colour}; border-radius: 3px; padding: 1px 8px;"
             " font-weight: bold;"

@@ -15,6 +15,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._axes import AXES, Box
+from widgets._i18n import fill
 
 SPIN_LIMIT_MM = 99999.0
 DEFAULT_BOX: Box = ((-100.0, 100.0), (-100.0, 100.0), (0.0, 50.0))
@@ -28,33 +29,41 @@ class TravelLimitsDialog(QDialog):
     ) -> None:
         super().__init__(parent)
         self.setObjectName("travelLimitsDialog")
-        self.setWindowTitle("Travel limits")
+        self.setWindowTitle(self.tr("Travel limits"))
         intro = QLabel(
-            f"Where the stage may go on {device}. A jog, go-to or command-line move that "
-            "would leave the box is refused before anything is sent, or clamped to its edge."
+            fill(
+                self.tr(
+                    "Where the stage may go on %1. A jog, go-to or command-line move that "
+                    "would leave the box is refused before anything is sent, or clamped to "
+                    "its edge."
+                ),
+                device,
+            )
         )
         intro.setWordWrap(True)
-        self.enabled_check = QCheckBox("Limit moves to this box")
+        self.enabled_check = QCheckBox(self.tr("Limit moves to this box"))
         self.enabled_check.setObjectName("travelEnabled")
         self.enabled_check.setChecked(box is not None)
         self.enabled_check.toggled.connect(self._sync)
 
         grid = QGridLayout()
-        grid.addWidget(QLabel("min"), 0, 1)
-        grid.addWidget(QLabel("max"), 0, 2)
+        grid.addWidget(QLabel(self.tr("min")), 0, 1)
+        grid.addWidget(QLabel(self.tr("max")), 0, 2)
         self.spins: dict[str, tuple[QDoubleSpinBox, QDoubleSpinBox]] = {}
         shown = box or DEFAULT_BOX
         for row, (axis, (low, high)) in enumerate(zip(AXES, shown, strict=True), start=1):
-            grid.addWidget(QLabel(f"{axis.upper()}:"), row, 0)
+            grid.addWidget(
+                QLabel(fill(self.tr("%1:", "an axis field's label"), axis.upper())), row, 0
+            )
             name = f"travel{axis.upper()}"
             pair = (self._spin(f"{name}Min", low), self._spin(f"{name}Max", high))
             grid.addWidget(pair[0], row, 1)
             grid.addWidget(pair[1], row, 2)
             self.spins[axis] = pair
 
-        self.refuse_radio = QRadioButton("Refuse a move that would leave the box")
+        self.refuse_radio = QRadioButton(self.tr("Refuse a move that would leave the box"))
         self.refuse_radio.setObjectName("travelRefuse")
-        self.clamp_radio = QRadioButton("Clamp it: go as far as the edge, and say so")
+        self.clamp_radio = QRadioButton(self.tr("Clamp it: go as far as the edge, and say so"))
         self.clamp_radio.setObjectName("travelClamp")
         (self.clamp_radio if clamp else self.refuse_radio).setChecked(True)
         self.problem_label = QLabel()
@@ -100,7 +109,8 @@ class TravelLimitsDialog(QDialog):
         """Why the box cannot be used ("" when it can)."""
         for axis, (low, high) in self.spins.items():
             if low.value() >= high.value():
-                return f"{axis.upper()}: the minimum must be below the maximum"
+                why = self.tr("%1: the minimum must be below the maximum")
+                return fill(why, axis.upper())
         return ""
 
     def result_limits(self) -> tuple[Box | None, bool]:
