@@ -14,7 +14,9 @@ DEBIAN_PACKAGES=(
   libxkbcommon0 libxkbcommon-x11-0 libxcb-cursor0 libxcb-icccm4 libxcb-keysyms1
   libxcb-shape0 libxcb-render-util0 libxcb-image0 libxcb-xinerama0 libxcb-randr0
   libfontconfig1 libdbus-1-3 libglib2.0-0
-)
+  fonts-droid-fallback desktop-file-utils
+)  # fonts-droid-fallback: Chinese glyphs for the zh_CN interface; desktop-file-utils: the
+   # launcher file's check
 
 say() { printf 'setup: %s\n' "$*" >&2; }
 
