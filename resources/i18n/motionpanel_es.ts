@@ -6,62 +6,62 @@
     <message>
         <location filename="../../widgets/about_dialog.py" line="+105"/>
         <source>About Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Acerca de Motion Panel</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Motion Panel</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Version %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Versión %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>desconocida</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>A desktop control panel for serial stepper-motor positioning stages.</source>
-        <translation type="unfinished"></translation>
+        <translation>Panel de control de escritorio para platinas de posicionamiento con motores paso a paso por línea serie.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>see LICENSE</source>
-        <translation type="unfinished"></translation>
+        <translation>ver LICENSE</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Licence: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Licencia: %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Components</source>
-        <translation type="unfinished"></translation>
+        <translation>Componentes</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>not installed</source>
-        <translation type="unfinished"></translation>
+        <translation>no instalado</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1:</source>
-        <translation type="unfinished"></translation>
+        <translation>%1:</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>&amp;Copy details</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Copiar detalles</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Copy the versions, e.g. for a bug report</source>
-        <translation type="unfinished"></translation>
+        <translation>Copiar las versiones, p. ej. para un informe de error</translation>
     </message>
 </context>
 <context>
@@ -69,130 +69,132 @@
     <message>
         <location filename="../../widgets/arc_entry.py" line="+126"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
-        <translation type="unfinished"></translation>
+        <translation>X del centro del arco, en mm desde el origen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Y of the arc&apos;s centre, in mm from home</source>
-        <translation type="unfinished"></translation>
+        <translation>Y del centro del arco, en mm desde el origen</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Radius of the arc, in mm (more than 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Radio del arco, en mm (mayor que 0)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above</source>
-        <translation type="unfinished"></translation>
+        <translation>Ángulo del punto inicial, de 0 a 360°, en sentido antihorario desde +X visto desde arriba</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Angle of the end point, 0 to 360°, counter-clockwise from +X seen from above;
 the same as the start angle: a full circle</source>
-        <translation type="unfinished"></translation>
+        <translation>Ángulo del punto final, de 0 a 360°, en sentido antihorario desde +X visto desde arriba;
+igual al ángulo inicial: una circunferencia completa</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
-        <translation type="unfinished"></translation>
+        <translation>Z al final del arco, en mm; Z avanza de forma uniforme desde la Z actual a lo largo del arco
+(una hélice si es distinta)</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Centre X:</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro X:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Centre Y:</source>
-        <translation type="unfinished"></translation>
+        <translation>Centro Y:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Radius:</source>
-        <translation type="unfinished"></translation>
+        <translation>Radio:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Start:</source>
-        <translation type="unfinished"></translation>
+        <translation>Inicio:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>End:</source>
-        <translation type="unfinished"></translation>
+        <translation>Fin:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Final Z:</source>
-        <translation type="unfinished"></translation>
+        <translation>Z final:</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>CW</source>
-        <translation type="unfinished"></translation>
+        <translation>Horario</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clockwise seen from above: the angle decreases</source>
-        <translation type="unfinished"></translation>
+        <translation>Sentido horario visto desde arriba: el ángulo disminuye</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CCW</source>
-        <translation type="unfinished"></translation>
+        <translation>Antihorario</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Counter-clockwise seen from above: the angle increases</source>
-        <translation type="unfinished"></translation>
+        <translation>Sentido antihorario visto desde arriba: el ángulo aumenta</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Preview</source>
-        <translation type="unfinished"></translation>
+        <translation>Vista previa</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Draw the arc, dashed, in the position views</source>
-        <translation type="unfinished"></translation>
+        <translation>Dibujar el arco, con línea discontinua, en las vistas de posición</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Run arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecutar arco</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+130"/>
         <source>Move along the arc, from its start point to its end point</source>
-        <translation type="unfinished"></translation>
+        <translation>Moverse a lo largo del arco, desde su punto inicial hasta su punto final</translation>
     </message>
     <message>
         <location line="-122"/>
         <source>Why the arc cannot run</source>
-        <translation type="unfinished"></translation>
+        <translation>Por qué no se puede ejecutar el arco</translation>
     </message>
     <message>
         <location line="+128"/>
         <source>The radius must be more than 0 mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>El radio debe ser mayor que 0 mm.</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 %2 to %3 mm (travel %4 to %5 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 de %2 a %3 mm (recorrido de %4 a %5 mm)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 %2 mm (travel %3 to %4 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 mm (recorrido de %3 a %4 mm)</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>The arc leaves the travel limits: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>El arco sale de los límites de recorrido: %1.</translation>
     </message>
 </context>
 <context>
@@ -200,12 +202,12 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../app/bridge_session.py" line="+82"/>
         <source>the bridge failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el puente falló: %1</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>the bridge stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>el puente se detuvo</translation>
     </message>
 </context>
 <context>
@@ -213,7 +215,7 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../widgets/connection_bar.py" line="+136"/>
         <source>Lines:</source>
-        <translation type="unfinished"></translation>
+        <translation>Líneas:</translation>
     </message>
 </context>
 <context>
@@ -221,108 +223,108 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../widgets/control_lines_bar.py" line="+42"/>
         <source>DTR</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>RTS</source>
-        <translation type="unfinished"></translation>
+        <translation>RTS</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CTS</source>
-        <translation type="unfinished"></translation>
+        <translation>CTS</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DSR</source>
-        <translation type="unfinished"></translation>
+        <translation>DSR</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CD</source>
-        <translation type="unfinished"></translation>
+        <translation>CD</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>RI</source>
-        <translation type="unfinished"></translation>
+        <translation>RI</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Data Terminal Ready</source>
-        <translation type="unfinished"></translation>
+        <translation>Terminal de datos listo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Request To Send</source>
-        <translation type="unfinished"></translation>
+        <translation>Solicitud de envío</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Clear To Send</source>
-        <translation type="unfinished"></translation>
+        <translation>Listo para enviar</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Data Set Ready</source>
-        <translation type="unfinished"></translation>
+        <translation>Equipo de datos listo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Carrier Detect</source>
-        <translation type="unfinished"></translation>
+        <translation>Detección de portadora</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Ring Indicator</source>
-        <translation type="unfinished"></translation>
+        <translation>Indicador de llamada</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Break</source>
-        <translation type="unfinished"></translation>
+        <translation>Break</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Send a break: hold the transmit line low for %1 ms (the device sees a framing error; some boards take it as a reset or attention signal)</source>
-        <translation type="unfinished"></translation>
+        <translation>Enviar un break: mantener la línea de transmisión en nivel bajo durante %1 ms (el dispositivo ve un error de trama; algunas placas lo interpretan como reinicio o señal de atención)</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>The serial port&apos;s control lines</source>
-        <translation type="unfinished"></translation>
+        <translation>Líneas de control del puerto serie</translation>
     </message>
     <message>
         <location line="+49"/>
         <location line="+16"/>
         <source>%1 (%2): not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2): no conectado</translation>
     </message>
     <message>
         <location line="-14"/>
         <source>%1 (%2): this port cannot set %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2): este puerto no puede fijar %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 (%2), driven by this computer: tick to assert it, untick to release it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2), controlada por este equipo: marcar para activarla, desmarcar para liberarla</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>this port cannot report %1</source>
-        <translation type="unfinished"></translation>
+        <translation>este puerto no puede informar de %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2), driven by the device: on</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2), controlada por el dispositivo: activa</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2), driven by the device: off</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2), controlada por el dispositivo: inactiva</translation>
     </message>
 </context>
 <context>
@@ -331,144 +333,145 @@ the same as the start angle: a full circle</source>
         <location filename="../../widgets/coordinate_entry.py" line="+33"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
-        <translation type="unfinished"></translation>
+        <translation>¿Convertir la posición actual en el nuevo origen (0, 0, 0)?
+A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Motion Panel</translation>
     </message>
     <message>
         <location line="+41"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1:</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Absolute</source>
-        <translation type="unfinished"></translation>
+        <translation>Absoluto</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Go to the typed coordinates (mm from home)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ir a las coordenadas introducidas (mm desde el origen)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Relative</source>
-        <translation type="unfinished"></translation>
+        <translation>Relativo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Move by the typed distances (mm) from where the stage is</source>
-        <translation type="unfinished"></translation>
+        <translation>Mover las distancias introducidas (mm) desde la posición actual de la platina</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Máquina</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Work</source>
-        <translation type="unfinished"></translation>
+        <translation>Trabajo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
-        <translation type="unfinished"></translation>
+        <translation>Sistema de las coordenadas introducidas: Máquina (mm desde el origen del dispositivo) o Trabajo (mm desde el cero de pieza); al dispositivo siempre se le envían coordenadas de máquina</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Go</source>
-        <translation type="unfinished"></translation>
+        <translation>Ir</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Start the move (Enter in a field)</source>
-        <translation type="unfinished"></translation>
+        <translation>Iniciar el movimiento (Enter en un campo)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Use current</source>
-        <translation type="unfinished"></translation>
+        <translation>Usar actual</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Fill the fields with the current position</source>
-        <translation type="unfinished"></translation>
+        <translation>Rellenar los campos con la posición actual</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Home</source>
-        <translation type="unfinished"></translation>
+        <translation>Origen</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Run the homing sequence</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecutar la secuencia de búsqueda de origen</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Set Home</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijar origen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Make the current position the origin (asks first)</source>
-        <translation type="unfinished"></translation>
+        <translation>Convertir la posición actual en el origen (pide confirmación)</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+127"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Detener</translation>
     </message>
     <message>
         <location line="-127"/>
         <source>Stop the stage now</source>
-        <translation type="unfinished"></translation>
+        <translation>Detener la platina ahora</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Stop the stage now (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>Detener la platina ahora (Esc)</translation>
     </message>
     <message>
         <location line="+126"/>
         <source>Drop queued</source>
-        <translation type="unfinished"></translation>
+        <translation>Descartar cola</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>%1 distance to move, %2 to %3 mm (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia a mover en %1, de %2 a %3 mm (%4)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 target coordinate, %2 to %3 mm (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>Coordenada de destino %1, de %2 a %3 mm (%4)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 target coordinate in the work frame, %2 to %3 mm (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>Coordenada de destino %1 en el sistema de trabajo, de %2 a %3 mm (%4)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>travel limits</source>
-        <translation type="unfinished"></translation>
+        <translation>límites de recorrido</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no travel limits set</source>
-        <translation type="unfinished"></translation>
+        <translation>sin límites de recorrido definidos</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>(this device has no such axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>(este dispositivo no tiene ese eje)</translation>
     </message>
 </context>
 <context>
@@ -476,22 +479,22 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_table.py" line="+445"/>
         <source>Derived values</source>
-        <translation type="unfinished"></translation>
+        <translation>Valores derivados</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Computed from the values in the table, not read from the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Calculados a partir de los valores de la tabla, no leídos del dispositivo</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>a parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>un parámetro</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>needs a value for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>necesita un valor para %1</translation>
     </message>
 </context>
 <context>
@@ -499,32 +502,32 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/device_docks.py" line="+135"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 a %2 mm en cada eje (cuentas de 16 bits)</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>program %1: %2 points, nothing sent yet</source>
-        <translation type="unfinished"></translation>
+        <translation>programa %1: %2 puntos, aún no se ha enviado nada</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>program saved to %1 (%2 points)</source>
-        <translation type="unfinished"></translation>
+        <translation>programa guardado en %1 (%2 puntos)</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>the program stopped: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el programa se detuvo: %1</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation type="unfinished"></translation>
+        <translation>programa %1 terminado: %2/%3 ejecutadas, %4 tramas, %5 retransmisión(es), %6 s</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>program %1 stopped, the device&apos;s queue flushed: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation type="unfinished"></translation>
+        <translation>programa %1 detenido, cola del dispositivo vaciada: %2/%3 ejecutadas, %4 tramas, %5 retransmisión(es), %6 s</translation>
     </message>
 </context>
 <context>
@@ -532,22 +535,22 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/dwell_entry.py" line="+26"/>
         <source>Dwell:</source>
-        <translation type="unfinished"></translation>
+        <translation>Espera:</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>How long the device waits, 0 to %1 ms; press Enter or Dwell to send</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo de espera del dispositivo, de 0 a %1 ms; pulsar Enter o Esperar para enviar</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Dwell</source>
-        <translation type="unfinished"></translation>
+        <translation>Esperar</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Make the device wait this long before its next command</source>
-        <translation type="unfinished"></translation>
+        <translation>Hacer que el dispositivo espere este tiempo antes de su siguiente comando</translation>
     </message>
 </context>
 <context>
@@ -555,113 +558,113 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/firmata_panel.py" line="+30"/>
         <source>version unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>versión desconocida</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Full steps per revolution of the motor, 1 to %1 (e.g. 200)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasos completos por revolución del motor, de 1 a %1 (p. ej. 200)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 pins</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 pines</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>2 pins: a driver with step and direction inputs; 4 pins: the motor&apos;s four wires</source>
-        <translation type="unfinished"></translation>
+        <translation>2 pines: un driver con entradas de paso y dirección; 4 pines: los cuatro hilos del motor</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>pin </source>
-        <translation type="unfinished"></translation>
+        <translation>pin </translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Motor steps per mm of travel (more than 0): converts mm and mm/s to steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasos del motor por mm de recorrido (mayor que 0): convierte mm y mm/s en pasos</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The speed in mm/s and the motor speed it means, in revolutions per minute</source>
-        <translation type="unfinished"></translation>
+        <translation>La velocidad en mm/s y la velocidad del motor correspondiente, en revoluciones por minuto</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Configure</source>
-        <translation type="unfinished"></translation>
+        <translation>Configurar</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Set up the stepper on the board with these settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Configurar el motor paso a paso de la placa con estos ajustes</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Library version</source>
-        <translation type="unfinished"></translation>
+        <translation>Versión de biblioteca</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Ask the board for its stepper library&apos;s version</source>
-        <translation type="unfinished"></translation>
+        <translation>Pedir a la placa la versión de su biblioteca de motores paso a paso</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>The stepper library version the board reported</source>
-        <translation type="unfinished"></translation>
+        <translation>La versión de la biblioteca de motores paso a paso que indicó la placa</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Steps/rev:</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasos/rev:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Steps per mm:</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasos por mm:</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Pins:</source>
-        <translation type="unfinished"></translation>
+        <translation>Pines:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The board&apos;s pin numbers (0 to %1) wired to the motor</source>
-        <translation type="unfinished"></translation>
+        <translation>Números de pin de la placa (0 a %1) conectados al motor</translation>
     </message>
     <message>
         <location line="+111"/>
         <source>step</source>
-        <translation type="unfinished"></translation>
+        <translation>paso</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>direction</source>
-        <translation type="unfinished"></translation>
+        <translation>dirección</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>motor wire</source>
-        <translation type="unfinished"></translation>
+        <translation>hilo del motor</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Pin %1 (%2), 0 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Pin %1 (%2), de 0 a %3</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>not used</source>
-        <translation type="unfinished"></translation>
+        <translation>sin usar</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+2"/>
         <source>speed: %1 mm/s = %2 rpm</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad: %1 mm/s = %2 rpm</translation>
     </message>
 </context>
 <context>
@@ -669,62 +672,62 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/log_viewer.py" line="+42"/>
         <source>(undecoded)</source>
-        <translation type="unfinished"></translation>
+        <translation>(sin decodificar)</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Open traffic log</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir registro de tráfico</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Logs (*.log *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Registros (*.log *.txt);;Todos los archivos (*)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Traffic log</source>
-        <translation type="unfinished"></translation>
+        <translation>Registro de tráfico</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Decode with this protocol (chosen from the log&apos;s connection note when it has one)</source>
-        <translation type="unfinished"></translation>
+        <translation>Decodificar con este protocolo (elegido a partir de la nota de conexión del registro, si la tiene)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Open a Motion Panel log or a pyserial spy:// capture</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir un registro de Motion Panel o una captura spy:// de pyserial</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no log open</source>
-        <translation type="unfinished"></translation>
+        <translation>ningún registro abierto</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Protocol:</source>
-        <translation type="unfinished"></translation>
+        <translation>Protocolo:</translation>
     </message>
     <message>
         <location line="+30"/>
         <source>reading %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>leyendo %1…</translation>
     </message>
     <message>
         <location line="+43"/>
         <source>%1 — traffic log</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — registro de tráfico</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2): %3 lines, decoded as %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2): %3 líneas, decodificadas como %4</translation>
     </message>
 </context>
 <context>
@@ -732,88 +735,88 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/macro_dock.py" line="+27"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Macros de Motion Panel (*.json);;Todos los archivos (*)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Macros</source>
-        <translation type="unfinished"></translation>
+        <translation>Macros</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Steps (one per line, each waits for the device): home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXT (sent as typed, its reply awaited) · wait S (s, the panel pauses) · check · id · limits; and where the device has them: dwell MS (ms) · arc CX CY R START END --cw|--ccw · step RPM STEPS · status · stop · version.</source>
         <comment>the command words (home, move, --cw …) are typed as they are: keep them in English</comment>
-        <translation type="unfinished"></translation>
+        <translation>Pasos (uno por línea, cada uno espera al dispositivo): home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXT (se envía tal cual y se espera su respuesta) · wait S (s, el panel hace una pausa) · check · id · limits; y si el dispositivo los admite: dwell MS (ms) · arc CX CY R START END --cw|--ccw · step RPM STEPS · status · stop · version.</translation>
     </message>
     <message>
         <location line="+45"/>
         <source>Macros (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Macros (%1)</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>%1; nothing sent</source>
-        <translation type="unfinished"></translation>
+        <translation>%1; no se ha enviado nada</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>macro %1: step %2/%3: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>macro %1: paso %2/%3: %4</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>choose a protocol first</source>
-        <translation type="unfinished"></translation>
+        <translation>elegir primero un protocolo</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>a macro named %1 exists already</source>
-        <translation type="unfinished"></translation>
+        <translation>ya existe una macro llamada %1</translation>
     </message>
     <message>
         <location line="+41"/>
         <source>macro %1 kept (%2 steps)</source>
-        <translation type="unfinished"></translation>
+        <translation>macro %1 guardada (%2 pasos)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>macro %1 deleted</source>
-        <translation type="unfinished"></translation>
+        <translation>macro %1 eliminada</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>macros not imported: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>macros no importadas: %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>; %1 for other protocols left out</source>
-        <translation type="unfinished"></translation>
+        <translation>; %1 de otros protocolos omitidas</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>imported %1 macro(s) from %2%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 macro(s) importada(s) de %2%3</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>macros not exported: cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>macros no exportadas: no se puede escribir %1: %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>exported %1 macro(s) to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 macro(s) exportada(s) a %2</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Import macros</source>
-        <translation type="unfinished"></translation>
+        <translation>Importar macros</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Export macros</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar macros</translation>
     </message>
 </context>
 <context>
@@ -821,42 +824,42 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/macro_editor.py" line="+51"/>
         <source>Edit macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Editar macro</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>New macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Nueva macro</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The button&apos;s label: 1 to 40 characters</source>
-        <translation type="unfinished"></translation>
+        <translation>Etiqueta del botón: de 1 a 40 caracteres</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>One step per line, as motionctl takes it: distances in mm, speeds in mm/s, waits in s. Each step waits for the device&apos;s reply before the next.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un paso por línea, tal como lo acepta motionctl: distancias en mm, velocidades en mm/s, esperas en s. Cada paso espera la respuesta del dispositivo antes del siguiente.</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Eliminar</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Remove this macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Eliminar esta macro</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Name:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nombre:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Steps:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pasos:</translation>
     </message>
 </context>
 <context>
@@ -864,53 +867,54 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/macro_panel.py" line="+37"/>
         <source>No macros yet: New… writes one, Import… reads a file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aún no hay macros: Nueva… crea una, Importar… lee un archivo.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>New…</source>
-        <translation type="unfinished"></translation>
+        <translation>Nueva…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Write a new macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir una macro nueva</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>Editar</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Change or delete a macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Modificar o eliminar una macro</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Import…</source>
-        <translation type="unfinished"></translation>
+        <translation>Importar…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Add the macros of a file (JSON; data only, checked before any is kept)</source>
-        <translation type="unfinished"></translation>
+        <translation>Añadir las macros de un archivo (JSON; solo datos, se comprueban antes de guardar ninguna)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Write this protocol&apos;s macros to a file</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir las macros de este protocolo en un archivo</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>Run %1:
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecutar %1:
+%2</translation>
     </message>
 </context>
 <context>
@@ -918,52 +922,52 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/parameter_dock.py" line="+29"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
-        <translation type="unfinished"></translation>
+        <translation>el dispositivo tiene ahora %1: el firmware lo impone tras cada escritura</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Parámetros</translation>
     </message>
     <message>
         <location line="+56"/>
         <source>Parameters (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Parámetros (%1)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 en %2</translation>
     </message>
     <message>
         <location line="+35"/>
         <source>parameter writing cancelled: %1 not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>escritura de parámetros cancelada: %1 sin enviar</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>sin enviar</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>the device did not answer</source>
-        <translation type="unfinished"></translation>
+        <translation>el dispositivo no respondió</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>connect to a device with parameters first</source>
-        <translation type="unfinished"></translation>
+        <translation>conectar primero a un dispositivo con parámetros</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>loaded %1 values from %2; nothing sent (Write changed sends them)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 valores cargados de %2; no se ha enviado nada (Escribir cambios los envía)</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>saved %1 values to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 valores guardados en %2</translation>
     </message>
 </context>
 <context>
@@ -971,177 +975,177 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_editor.py" line="+44"/>
         <source>Parameter profiles (*.toml);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Perfiles de parámetros (*.toml);;Todos los archivos (*)</translation>
     </message>
     <message>
         <location line="+40"/>
         <source>The device cannot be read back: this compares with what this panel last wrote</source>
-        <translation type="unfinished"></translation>
+        <translation>El dispositivo no se puede releer: se compara con lo último que escribió este panel</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Packets written so far; each is confirmed before the next</source>
-        <translation type="unfinished"></translation>
+        <translation>Paquetes escritos hasta ahora; cada uno se confirma antes del siguiente</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Write selected</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir selección</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Write the values of the selected rows</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir los valores de las filas seleccionadas</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Write all</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir todo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Write every value in the table, one packet each</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir todos los valores de la tabla, un paquete por valor</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Write changed</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir cambios</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Write the values marked • (not yet written)</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir los valores marcados con • (aún sin escribir)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Cancelar</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stop writing after the packet under way</source>
-        <translation type="unfinished"></translation>
+        <translation>Dejar de escribir tras el paquete en curso</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Load profile…</source>
-        <translation type="unfinished"></translation>
+        <translation>Cargar perfil…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Fill the table from a file</source>
-        <translation type="unfinished"></translation>
+        <translation>Rellenar la tabla desde un archivo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Save profile…</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar perfil…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Save the values to a file</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar los valores en un archivo</translation>
     </message>
     <message>
         <location line="+54"/>
         <source>Not loaded: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No cargado: %1</translation>
     </message>
     <message>
         <location line="+120"/>
         <source>nothing sent</source>
-        <translation type="unfinished"></translation>
+        <translation>no se ha enviado nada</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Write finished: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Escritura terminada: %1</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1 / %2 packets, about %3 left</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 paquetes, quedan unos %3</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>no row selected</source>
-        <translation type="unfinished"></translation>
+        <translation>ninguna fila seleccionada</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>the table has no values</source>
-        <translation type="unfinished"></translation>
+        <translation>la tabla no tiene valores</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>nothing differs</source>
-        <translation type="unfinished"></translation>
+        <translation>no hay diferencias</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Nothing to write: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nada que escribir: %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Writing 1 value</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribiendo 1 valor</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Writing %1 values</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribiendo %1 valores</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no value, not written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>sin valor, no escrito: %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>computed by the firmware, which may replace them: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>calculados por el firmware, que puede reemplazarlos: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Cancelling: the packet under way finishes, the rest are not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Cancelando: el paquete en curso termina, el resto no se envía</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Save parameter profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar perfil de parámetros</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Load parameter profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Cargar perfil de parámetros</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>No parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Sin parámetros</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No values yet: load a profile or type them into the Value column</source>
-        <translation type="unfinished"></translation>
+        <translation>Aún no hay valores: cargar un perfil o escribirlos en la columna Valor</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>1 value differs from what was last written to this device (marked •)</source>
-        <translation type="unfinished"></translation>
+        <translation>1 valor difiere de lo último escrito en este dispositivo (marcado con •)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 values differ from what was last written to this device (marked •)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 valores difieren de lo último escrito en este dispositivo (marcados con •)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Every value is what was last written to this device</source>
-        <translation type="unfinished"></translation>
+        <translation>Todos los valores coinciden con lo último escrito en este dispositivo</translation>
     </message>
 </context>
 <context>
@@ -1149,107 +1153,107 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-411"/>
         <source>ID</source>
-        <translation type="unfinished"></translation>
+        <translation>ID</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Nombre</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>Unidad</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Last written</source>
-        <translation type="unfinished"></translation>
+        <translation>Último escrito</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Kind</source>
-        <translation type="unfinished"></translation>
+        <translation>Tipo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Description</source>
-        <translation type="unfinished"></translation>
+        <translation>Descripción</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Status</source>
-        <translation type="unfinished"></translation>
+        <translation>Estado</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>The value to write, in the unit beside it (double-click, F2, Enter or type)</source>
-        <translation type="unfinished"></translation>
+        <translation>El valor a escribir, en la unidad indicada al lado (doble clic, F2, Enter o escribir)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>What this panel last wrote to the device (the device cannot be read back)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lo último que este panel escribió en el dispositivo (el dispositivo no se puede releer)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>input: set by you; output: computed by the firmware</source>
-        <translation type="unfinished"></translation>
+        <translation>entrada: la fija el usuario; salida: la calcula el firmware</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The outcome of the last write of this parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>El resultado de la última escritura de este parámetro</translation>
     </message>
     <message>
         <location line="+97"/>
         <source>output</source>
-        <translation type="unfinished"></translation>
+        <translation>salida</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>input</source>
-        <translation type="unfinished"></translation>
+        <translation>entrada</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Input: set by you and written to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Entrada: la fija el usuario y se escribe en el dispositivo</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: never written to this device from this panel</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: nunca escrito en este dispositivo desde este panel</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1: last written %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: último valor escrito %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Allowed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Permitido: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Value: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Valor: %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>• Differs from what was last written to this device</source>
-        <translation type="unfinished"></translation>
+        <translation>• Difiere de lo último escrito en este dispositivo</translation>
     </message>
     <message>
         <location line="+57"/>
         <source>%1: no such parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: no existe ese parámetro</translation>
     </message>
 </context>
 <context>
@@ -1257,7 +1261,7 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location line="+157"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
-        <translation type="unfinished"></translation>
+        <translation>Para editar, hacer doble clic en un valor, o seleccionar una fila y pulsar Enter o escribir</translation>
     </message>
 </context>
 <context>
@@ -1265,87 +1269,87 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_values.py" line="+38"/>
         <source>not written</source>
-        <translation type="unfinished"></translation>
+        <translation>sin escribir</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>pending</source>
-        <translation type="unfinished"></translation>
+        <translation>pendiente</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>confirmed</source>
-        <translation type="unfinished"></translation>
+        <translation>confirmado</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>error</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>timed out</source>
-        <translation type="unfinished"></translation>
+        <translation>tiempo agotado</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>cancelado</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Output: computed by the firmware. Writing it is allowed, but the firmware may replace what is written.</source>
-        <translation type="unfinished"></translation>
+        <translation>Salida: la calcula el firmware. Se permite escribirla, pero el firmware puede reemplazar lo escrito.</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>%1 to %2, whole numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>de %1 a %2, números enteros</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 to %2 in steps of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>de %1 a %2 en pasos de %3</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1: %2 refused (%3): %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 rechazado (%3): %4</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>empty</source>
-        <translation type="unfinished"></translation>
+        <translation>vacío</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>use a point for decimals</source>
-        <translation type="unfinished"></translation>
+        <translation>usar punto como separador decimal</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un número</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un número finito</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>below the minimum</source>
-        <translation type="unfinished"></translation>
+        <translation>por debajo del mínimo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>above the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>por encima del máximo</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>not a multiple of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no es múltiplo de %1</translation>
     </message>
 </context>
 <context>
@@ -1353,52 +1357,52 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/piframe_panel.py" line="+15"/>
         <source>DTR on</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR activa</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR off</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR inactiva</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR desconocida</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>Encoder ticks per mm of travel (more than 0): converts the frame&apos;s ticks to mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Cuentas del encoder por mm de recorrido (mayor que 0): convierte las cuentas del bastidor en mm</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>The state of the serial DTR line, which powers the frame</source>
-        <translation type="unfinished"></translation>
+        <translation>El estado de la línea serie DTR, que alimenta el bastidor</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The range the frame can reach, from its travel and ticks/mm</source>
-        <translation type="unfinished"></translation>
+        <translation>El rango que alcanza el bastidor, según su recorrido y sus cuentas/mm</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>desconocido</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Ticks per mm:</source>
-        <translation type="unfinished"></translation>
+        <translation>Cuentas por mm:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR:</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reachable:</source>
-        <translation type="unfinished"></translation>
+        <translation>Alcance:</translation>
     </message>
 </context>
 <context>
@@ -1406,122 +1410,122 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/position_readout.py" line="+23"/>
         <source>commanded, not measured</source>
-        <translation type="unfinished"></translation>
+        <translation>ordenada, no medida</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>commanded, move confirmed</source>
-        <translation type="unfinished"></translation>
+        <translation>ordenada, movimiento confirmado</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>This device does not report its position: the numbers are where it was told to go.</source>
-        <translation type="unfinished"></translation>
+        <translation>Este dispositivo no informa de su posición: los valores indican adónde se le ordenó ir.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Where the device was told to go, and its reply said the move ended there; not read back (a device that can report its position is asked again when idle).</source>
-        <translation type="unfinished"></translation>
+        <translation>Adónde se le ordenó ir al dispositivo, y su respuesta indicó que el movimiento terminó allí; no se ha releído (a un dispositivo que puede informar de su posición se le vuelve a consultar en reposo).</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>position unknown: the link failed or the device restarted, and it cannot report where it is; home it or set home</source>
-        <translation type="unfinished"></translation>
+        <translation>posición desconocida: el enlace falló o el dispositivo se reinició, y no puede informar de dónde está; buscar el origen o fijar el origen</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>estimated from the speed: the device cannot be asked while it moves</source>
-        <translation type="unfinished"></translation>
+        <translation>estimada a partir de la velocidad: no se puede consultar al dispositivo mientras se mueve</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>last known position: not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>última posición conocida: no conectado</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Stage position in mm: from the device&apos;s home, and from the work zero</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición de la platina en mm: desde el origen del dispositivo y desde el cero de pieza</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Máquina</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Millimetres from the device&apos;s home (its origin)</source>
-        <translation type="unfinished"></translation>
+        <translation>Milímetros desde el origen del dispositivo (su posición de referencia)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Work</source>
-        <translation type="unfinished"></translation>
+        <translation>Trabajo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Millimetres from the work zero the panel keeps (the device is not told)</source>
-        <translation type="unfinished"></translation>
+        <translation>Milímetros desde el cero de pieza que guarda el panel (no se comunica al dispositivo)</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Zero %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Cero %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Make the current %1 the work zero (0 mm in the work frame); the device is not told, and its home stays where it is</source>
-        <translation type="unfinished"></translation>
+        <translation>Convertir la %1 actual en el cero de pieza (0 mm en el sistema de trabajo); no se comunica al dispositivo y su origen no cambia</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Zero all</source>
-        <translation type="unfinished"></translation>
+        <translation>Todo a cero</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Make the current position the work zero</source>
-        <translation type="unfinished"></translation>
+        <translation>Convertir la posición actual en el cero de pieza</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Clear zero</source>
-        <translation type="unfinished"></translation>
+        <translation>Borrar cero</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Put the work zero back at the device&apos;s home (work = machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>Devolver el cero de pieza al origen del dispositivo (trabajo = máquina)</translation>
     </message>
     <message>
         <location line="+150"/>
         <source>This device has no %1 axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Este dispositivo no tiene eje %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Position unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición desconocida</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 position in mm from the device&apos;s home</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición %1 en mm desde el origen del dispositivo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 position in mm from the work zero</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición %1 en mm desde el cero de pieza</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>work zero: home</source>
-        <translation type="unfinished"></translation>
+        <translation>cero de pieza: origen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>work zero at %1 mm (machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>cero de pieza en %1 mm (máquina)</translation>
     </message>
 </context>
 <context>
@@ -1529,99 +1533,99 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/preferences.py" line="+65"/>
         <source>Stop (Motion menu)</source>
-        <translation type="unfinished"></translation>
+        <translation>Detener (menú Movimiento)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the console&apos;s next match</source>
-        <translation type="unfinished"></translation>
+        <translation>la siguiente coincidencia de la consola</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+1"/>
         <source>moving the focus</source>
-        <translation type="unfinished"></translation>
+        <translation>mover el foco</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+1"/>
         <source>connecting and sending</source>
-        <translation type="unfinished"></translation>
+        <translation>conectar y enviar</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>pressing the focused button</source>
-        <translation type="unfinished"></translation>
+        <translation>pulsar el botón que tiene el foco</translation>
     </message>
     <message>
         <location line="+62"/>
         <source>Poll while moving</source>
-        <translation type="unfinished"></translation>
+        <translation>Consulta en movimiento</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Poll when idle</source>
-        <translation type="unfinished"></translation>
+        <translation>Consulta en reposo</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Console lines kept</source>
-        <translation type="unfinished"></translation>
+        <translation>Líneas conservadas en consola</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>lines</source>
-        <translation type="unfinished"></translation>
+        <translation>líneas</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Session log</source>
-        <translation type="unfinished"></translation>
+        <translation>Registro de sesión</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Session log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Carpeta del registro de sesión</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Units shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Unidades mostradas</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Decimals shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Decimales mostrados</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>decimals</source>
-        <translation type="unfinished"></translation>
+        <translation>decimales</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Clamp moves to the limits</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustar los movimientos a los límites</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>smaller step</source>
-        <translation type="unfinished"></translation>
+        <translation>paso menor</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>larger step</source>
-        <translation type="unfinished"></translation>
+        <translation>paso mayor</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Theme</source>
-        <translation type="unfinished"></translation>
+        <translation>Tema</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Language</source>
-        <translation type="unfinished"></translation>
+        <translation>Idioma</translation>
     </message>
 </context>
 <context>
@@ -1629,119 +1633,119 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/program_panel.py" line="+19"/>
         <source>Programs (*.csv *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Programas (*.csv *.json);;Todos los archivos (*)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>no program loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>ningún programa cargado</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Load…</source>
-        <translation type="unfinished"></translation>
+        <translation>Cargar…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
-        <translation type="unfinished"></translation>
+        <translation>Cargar un programa: CSV con x,y,z,speed (mm, mm/s) o JSON</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Save…</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save the loaded program as JSON (x, y, z, speed per point)</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar el programa cargado como JSON (x, y, z, speed por punto)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Ejecutar</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stream the program to the device, 7 moves a frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Enviar el programa al dispositivo en flujo continuo, 7 movimientos por trama</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+102"/>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausa</translation>
     </message>
     <message>
         <location line="-100"/>
         <source>Send nothing more until Resume (queued moves go on)</source>
-        <translation type="unfinished"></translation>
+        <translation>No enviar nada más hasta Reanudar (los movimientos en cola continúan)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Detener</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Send nothing more and flush the device&apos;s queue (STOP)</source>
-        <translation type="unfinished"></translation>
+        <translation>No enviar nada más y vaciar la cola del dispositivo (STOP)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Instructions executed by the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Instrucciones ejecutadas por el dispositivo</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+69"/>
         <source>%v / %m executed</source>
-        <translation type="unfinished"></translation>
+        <translation>%v / %m ejecutadas</translation>
     </message>
     <message>
         <location line="-50"/>
         <source>Program:</source>
-        <translation type="unfinished"></translation>
+        <translation>Programa:</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Load a program</source>
-        <translation type="unfinished"></translation>
+        <translation>Cargar un programa</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Save the program</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar el programa</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>JSON (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON (*.json)</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>%1 (%2 points)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2 puntos)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>no program</source>
-        <translation type="unfinished"></translation>
+        <translation>sin programa</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>Reanudar</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>, about %1 s left</source>
-        <translation type="unfinished"></translation>
+        <translation>, quedan unos %1 s</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>sent %1, acknowledged %2, executed %3; %4 instructions/s%5; %6 retransmission(s)</source>
-        <translation type="unfinished"></translation>
+        <translation>enviadas %1, confirmadas %2, ejecutadas %3; %4 instrucciones/s%5; %6 retransmisión(es)</translation>
     </message>
 </context>
 <context>
@@ -1749,53 +1753,54 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/send_line.py" line="+19"/>
         <source>text</source>
-        <translation type="unfinished"></translation>
+        <translation>texto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>hex</source>
-        <translation type="unfinished"></translation>
+        <translation>hex</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>ninguno</translation>
     </message>
     <message>
         <location line="+53"/>
         <source>text: UTF-8 with \r \n \t \0 \\ \xNN escapes, plus the line ending;
 hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
-        <translation type="unfinished"></translation>
+        <translation>texto: UTF-8 con los escapes \r \n \t \0 \\ \xNN, más el fin de línea;
+hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Appended to every line sent in text mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Se añade a cada línea enviada en modo texto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Send</source>
-        <translation type="unfinished"></translation>
+        <translation>Enviar</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Send the line to the device (Enter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Enviar la línea al dispositivo (Enter)</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>hex bytes, e.g. 48 45 4C 4C 4F (Up/Down: history)</source>
-        <translation type="unfinished"></translation>
+        <translation>bytes hex, p. ej. 48 45 4C 4C 4F (Arriba/Abajo: historial)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>text to send (Up/Down: history)</source>
-        <translation type="unfinished"></translation>
+        <translation>texto a enviar (Arriba/Abajo: historial)</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>nothing to send</source>
-        <translation type="unfinished"></translation>
+        <translation>nada que enviar</translation>
     </message>
 </context>
 <context>
@@ -1803,403 +1808,403 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/settings_dialog.py" line="+87"/>
         <source>Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustes</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Connection</source>
-        <translation type="unfinished"></translation>
+        <translation>Conexión</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Console &amp;&amp; log</source>
-        <translation type="unfinished"></translation>
+        <translation>Consola &amp;&amp; registro</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Display</source>
-        <translation type="unfinished"></translation>
+        <translation>Visualización</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Keyboard jog</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazamiento por teclado</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Appearance &amp;&amp; language</source>
-        <translation type="unfinished"></translation>
+        <translation>Apariencia &amp;&amp; idioma</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Use and save</source>
-        <translation type="unfinished"></translation>
+        <translation>Aplicar y guardar</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Use and save, and keep this open</source>
-        <translation type="unfinished"></translation>
+        <translation>Aplicar y guardar, y mantener abierto</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Put every field back to its default (saved only with OK or Apply)</source>
-        <translation type="unfinished"></translation>
+        <translation>Devolver cada campo a su valor predeterminado (solo se guarda con Aceptar o Aplicar)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Close without saving</source>
-        <translation type="unfinished"></translation>
+        <translation>Cerrar sin guardar</translation>
     </message>
     <message>
         <location line="+101"/>
         <source>Position polling</source>
-        <translation type="unfinished"></translation>
+        <translation>Consulta de posición</translation>
     </message>
     <message>
         <location line="+4"/>
         <source> Hz</source>
-        <translation type="unfinished"></translation>
+        <translation> Hz</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>How often the position is read while a move is being confirmed, in hertz (%1 to %2 Hz). Faster confirms the end of each jog step sooner; above 20 Hz nothing is seen sooner.</source>
-        <translation type="unfinished"></translation>
+        <translation>Frecuencia de lectura de la posición mientras se confirma un movimiento, en hercios (%1 a %2 Hz). Cuanto más rápida, antes se confirma el final de cada paso de desplazamiento; por encima de 20 Hz no se ve nada antes.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Poll while moving:</source>
-        <translation type="unfinished"></translation>
+        <translation>Consulta en movimiento:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Seconds between position reads while nothing moves (%1 to %2 s). This is also how a device that restarted or stopped answering is noticed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Segundos entre lecturas de posición mientras nada se mueve (%1 a %2 s). Así también se detecta un dispositivo que se ha reiniciado o ha dejado de responder.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Poll when idle:</source>
-        <translation type="unfinished"></translation>
+        <translation>Consulta en reposo:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Console</source>
-        <translation type="unfinished"></translation>
+        <translation>Consola</translation>
     </message>
     <message>
         <location line="+5"/>
         <source> lines</source>
-        <translation type="unfinished"></translation>
+        <translation> líneas</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Keep every line</source>
-        <translation type="unfinished"></translation>
+        <translation>Conservar todas las líneas</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines. The session log keeps every byte either way.</source>
-        <translation type="unfinished"></translation>
+        <translation>Máximo de líneas que conserva la consola: 0 conserva todas (un archivo de volcado en disco y unos 33 bytes por línea en memoria); si no, de %1 a %2 líneas. El registro de sesión conserva todos los bytes en cualquier caso.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Console lines kept:</source>
-        <translation type="unfinished"></translation>
+        <translation>Líneas conservadas en consola:</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Session log</source>
-        <translation type="unfinished"></translation>
+        <translation>Registro de sesión</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Write every byte of every session to a file</source>
-        <translation type="unfinished"></translation>
+        <translation>Escribir cada byte de cada sesión en un archivo</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>One file a session in the log folder; the oldest go beyond 200 MiB</source>
-        <translation type="unfinished"></translation>
+        <translation>Un archivo por sesión en la carpeta de registros; los más antiguos se borran al superar 200 MiB</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>the app-data folder</source>
-        <translation type="unfinished"></translation>
+        <translation>la carpeta de datos de la aplicación</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Default: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Predeterminado: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>An absolute path to a folder you can write to; empty: the default folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Ruta absoluta a una carpeta con permiso de escritura; vacío: la carpeta predeterminada</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Browse…</source>
-        <translation type="unfinished"></translation>
+        <translation>Examinar…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Choose the session log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Elegir la carpeta del registro de sesión</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Session log folder:</source>
-        <translation type="unfinished"></translation>
+        <translation>Carpeta del registro de sesión:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Positions</source>
-        <translation type="unfinished"></translation>
+        <translation>Posiciones</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Millimetres (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Milímetros (mm)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Inches (in)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pulgadas (in)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>The unit positions are shown in; the device is always sent millimetres</source>
-        <translation type="unfinished"></translation>
+        <translation>Unidad en que se muestran las posiciones; al dispositivo siempre se le envían milímetros</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Units shown:</source>
-        <translation type="unfinished"></translation>
+        <translation>Unidades mostradas:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source> decimals</source>
-        <translation type="unfinished"></translation>
+        <translation> decimales</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>As the device resolves</source>
-        <translation type="unfinished"></translation>
+        <translation>Según la resolución del dispositivo</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Decimals of the positions shown (%1 to %2), or as many as the device resolves (0.01 mm: 2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Decimales de las posiciones mostradas (%1 a %2), o tantos como resuelva el dispositivo (0.01 mm: 2)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Decimals shown:</source>
-        <translation type="unfinished"></translation>
+        <translation>Decimales mostrados:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Travel limits</source>
-        <translation type="unfinished"></translation>
+        <translation>Límites de recorrido</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Clamp a move to the limits instead of refusing it</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustar un movimiento a los límites en lugar de rechazarlo</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>What a device starts with until its own limits are saved</source>
-        <translation type="unfinished"></translation>
+        <translation>Lo que usa un dispositivo hasta que se guarden sus propios límites</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Each device&apos;s box is set in Motion → Travel limits…</source>
-        <translation type="unfinished"></translation>
+        <translation>La caja de cada dispositivo se define en Movimiento → Límites de recorrido…</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Jog keys</source>
-        <translation type="unfinished"></translation>
+        <translation>Teclas de desplazamiento</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>X-:</source>
-        <translation type="unfinished"></translation>
+        <translation>X-:</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog X down by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar X un paso en sentido negativo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>X+:</source>
-        <translation type="unfinished"></translation>
+        <translation>X+:</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog X up by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar X un paso en sentido positivo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Y-:</source>
-        <translation type="unfinished"></translation>
+        <translation>Y-:</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Y down by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar Y un paso en sentido negativo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Y+:</source>
-        <translation type="unfinished"></translation>
+        <translation>Y+:</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Y up by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar Y un paso en sentido positivo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Z-:</source>
-        <translation type="unfinished"></translation>
+        <translation>Z-:</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Z down by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar Z un paso en sentido negativo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Z+:</source>
-        <translation type="unfinished"></translation>
+        <translation>Z+:</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Z up by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar Z un paso en sentido positivo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Smaller step:</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso menor:</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>The next smaller step</source>
-        <translation type="unfinished"></translation>
+        <translation>El siguiente paso más pequeño</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Larger step:</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso mayor:</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>The next larger step</source>
-        <translation type="unfinished"></translation>
+        <translation>El siguiente paso más grande</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Click, then press one key (no Shift, Ctrl, Alt or Meta)</source>
-        <translation type="unfinished"></translation>
+        <translation>Hacer clic y pulsar una tecla (sin Shift, Ctrl, Alt ni Meta)</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Shift with a jog key makes the step ten times bigger. Esc (Stop), Tab, Enter, Space and F3 are the window&apos;s own.</source>
-        <translation type="unfinished"></translation>
+        <translation>Shift con una tecla de desplazamiento multiplica el paso por diez. Esc (Detener), Tab, Enter, Espacio y F3 están reservadas para la ventana.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Appearance and language</source>
-        <translation type="unfinished"></translation>
+        <translation>Apariencia e idioma</translation>
     </message>
     <message>
         <location line="+4"/>
         <location line="+10"/>
         <source>As the system</source>
-        <translation type="unfinished"></translation>
+        <translation>Como el sistema</translation>
     </message>
     <message>
         <location line="-9"/>
         <source>Light</source>
-        <translation type="unfinished"></translation>
+        <translation>Claro</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dark</source>
-        <translation type="unfinished"></translation>
+        <translation>Oscuro</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Light or dark colours, or those of the desktop</source>
-        <translation type="unfinished"></translation>
+        <translation>Colores claros u oscuros, o los del escritorio</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Theme:</source>
-        <translation type="unfinished"></translation>
+        <translation>Tema:</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>English</source>
-        <translation type="unfinished"></translation>
+        <translation>English</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Español</source>
-        <translation type="unfinished"></translation>
+        <translation>Español</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Français</source>
-        <translation type="unfinished"></translation>
+        <translation>Français</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>简体中文</source>
-        <translation type="unfinished"></translation>
+        <translation>简体中文</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The interface&apos;s language; --lang and $MOTIONPANEL_LANG come first</source>
-        <translation type="unfinished"></translation>
+        <translation>Idioma de la interfaz; --lang y $MOTIONPANEL_LANG tienen prioridad</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Language:</source>
-        <translation type="unfinished"></translation>
+        <translation>Idioma:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>A new language shows when the panel next starts.</source>
-        <translation type="unfinished"></translation>
+        <translation>El nuevo idioma se aplicará la próxima vez que se inicie el panel.</translation>
     </message>
     <message>
         <location line="+60"/>
         <source>%1: %2 is not a number from %3 to %4 %5</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 no es un número de %3 a %4 %5</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>Memory grows with the session: about 33 MB a million lines.</source>
-        <translation type="unfinished"></translation>
+        <translation>La memoria crece con la sesión: unos 33 MB por millón de líneas.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>About %1 MB of memory at most.</source>
-        <translation type="unfinished"></translation>
+        <translation>Como máximo, unos %1 MB de memoria.</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Session log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Carpeta del registro de sesión</translation>
     </message>
 </context>
 <context>
@@ -2207,37 +2212,37 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/shortcuts_dialog.py" line="+75"/>
         <source>Keyboard Shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>Atajos de teclado</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Search shortcuts…</source>
-        <translation type="unfinished"></translation>
+        <translation>Buscar atajos…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Search shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>Buscar atajos</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Keys</source>
-        <translation type="unfinished"></translation>
+        <translation>Teclas</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Action</source>
-        <translation type="unfinished"></translation>
+        <translation>Acción</translation>
     </message>
     <message>
         <location line="+77"/>
         <source>No shortcut matches “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ningún atajo coincide con “%1”.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No keyboard shortcuts.</source>
-        <translation type="unfinished"></translation>
+        <translation>No hay atajos de teclado.</translation>
     </message>
 </context>
 <context>
@@ -2245,43 +2250,43 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/speed_control.py" line="+35"/>
         <source>Speed:</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Speed of the next moves</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad de los próximos movimientos</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Apply</source>
-        <translation type="unfinished"></translation>
+        <translation>Aplicar</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+34"/>
         <source>Send the speed in the field to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Enviar al dispositivo la velocidad del campo</translation>
     </message>
     <message>
         <location line="-29"/>
         <source>The speed the device reports (it may round)</source>
-        <translation type="unfinished"></translation>
+        <translation>La velocidad que indica el dispositivo (puede redondearla)</translation>
     </message>
     <message>
         <location line="+59"/>
         <source>Speed, %1 to %2 mm/s; press Enter or Apply to send</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad, de %1 a %2 mm/s; pulsar Enter o Aplicar para enviar</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Drag and release to send (%1 to %2 mm/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrastrar y soltar para enviar (%1 a %2 mm/s)</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>device: %1 mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation>dispositivo: %1 mm/s</translation>
     </message>
 </context>
 <context>
@@ -2289,63 +2294,63 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/status_line.py" line="+18"/>
         <source>Disconnected</source>
-        <translation type="unfinished"></translation>
+        <translation>Desconectado</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No device is connected</source>
-        <translation type="unfinished"></translation>
+        <translation>No hay ningún dispositivo conectado</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+39"/>
         <source>Connecting…</source>
-        <translation type="unfinished"></translation>
+        <translation>Conectando…</translation>
     </message>
     <message>
         <location line="-37"/>
         <source>Opening the port and asking the device who it is</source>
-        <translation type="unfinished"></translation>
+        <translation>Abriendo el puerto y preguntando al dispositivo su identidad</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Idle</source>
-        <translation type="unfinished"></translation>
+        <translation>En reposo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Connected and not moving</source>
-        <translation type="unfinished"></translation>
+        <translation>Conectado y sin movimiento</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Moving</source>
-        <translation type="unfinished"></translation>
+        <translation>En movimiento</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>A move is under way</source>
-        <translation type="unfinished"></translation>
+        <translation>Hay un movimiento en curso</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Busy</source>
-        <translation type="unfinished"></translation>
+        <translation>Ocupado</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>A command is under way</source>
-        <translation type="unfinished"></translation>
+        <translation>Hay un comando en curso</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>Error</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The last command failed, or the connection did</source>
-        <translation type="unfinished"></translation>
+        <translation>Falló el último comando, o la conexión</translation>
     </message>
 </context>
 <context>
@@ -2353,22 +2358,22 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../app/theme.py" line="+354"/>
         <source>&amp;Theme</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Tema</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Follow the &amp;system</source>
-        <translation type="unfinished"></translation>
+        <translation>Seguir el &amp;sistema</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Light</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Claro</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Dark</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Oscuro</translation>
     </message>
 </context>
 <context>
@@ -2376,48 +2381,48 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/travel_limits_dialog.py" line="+32"/>
         <source>Travel limits</source>
-        <translation type="unfinished"></translation>
+        <translation>Límites de recorrido</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zona por la que puede moverse la platina en %1. Un desplazamiento, un Ir a o un movimiento desde la línea de comandos que saldría de la caja se rechaza antes de enviar nada, o se ajusta a su borde.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Limit moves to this box</source>
-        <translation type="unfinished"></translation>
+        <translation>Limitar los movimientos a esta caja</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>min</source>
-        <translation type="unfinished"></translation>
+        <translation>mín</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>max</source>
-        <translation type="unfinished"></translation>
+        <translation>máx</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1:</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Refuse a move that would leave the box</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechazar un movimiento que saldría de la caja</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clamp it: go as far as the edge, and say so</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustarlo: ir hasta el borde e indicarlo</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>%1: the minimum must be below the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: el mínimo debe ser menor que el máximo</translation>
     </message>
 </context>
 <context>
@@ -2425,22 +2430,22 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-95"/>
         <source>%1: edit cancelled, value unchanged</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: edición cancelada, valor sin cambios</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 is an output. %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 es una salida. %2</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>%1 = %2, not yet written to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 = %2, aún no escrito en el dispositivo</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>%1: %2 (Enter keeps it, Escape cancels)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 (Enter lo conserva, Esc cancela)</translation>
     </message>
 </context>
 <context>
@@ -2448,27 +2453,27 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../app/work_frame.py" line="+57"/>
         <source>work coordinates: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>coordenadas de trabajo: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>work zero not set: the position is unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>cero de pieza no fijado: la posición es desconocida</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>work zero set at %1 mm (machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>cero de pieza fijado en %1 mm (máquina)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>work zero cleared: work coordinates are machine coordinates</source>
-        <translation type="unfinished"></translation>
+        <translation>cero de pieza borrado: las coordenadas de trabajo son las de máquina</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>work zero kept in place: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>cero de pieza mantenido: %1</translation>
     </message>
 </context>
 </TS>

@@ -6,62 +6,62 @@
     <message>
         <location filename="../../widgets/about_dialog.py" line="+105"/>
         <source>About Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>À propos de Motion Panel</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Motion Panel</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Version %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Version %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>inconnue</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>A desktop control panel for serial stepper-motor positioning stages.</source>
-        <translation type="unfinished"></translation>
+        <translation>Panneau de commande de bureau pour platines de positionnement à moteurs pas à pas pilotées par liaison série.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>see LICENSE</source>
-        <translation type="unfinished"></translation>
+        <translation>voir LICENSE</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Licence: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Licence : %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Components</source>
-        <translation type="unfinished"></translation>
+        <translation>Composants</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>not installed</source>
-        <translation type="unfinished"></translation>
+        <translation>non installé</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1:</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 :</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>&amp;Copy details</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Copier les détails</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Copy the versions, e.g. for a bug report</source>
-        <translation type="unfinished"></translation>
+        <translation>Copier les versions, par ex. pour un rapport de bogue</translation>
     </message>
 </context>
 <context>
@@ -69,130 +69,132 @@
     <message>
         <location filename="../../widgets/arc_entry.py" line="+126"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
-        <translation type="unfinished"></translation>
+        <translation>X du centre de l&apos;arc, en mm depuis l&apos;origine</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Y of the arc&apos;s centre, in mm from home</source>
-        <translation type="unfinished"></translation>
+        <translation>Y du centre de l&apos;arc, en mm depuis l&apos;origine</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Radius of the arc, in mm (more than 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rayon de l&apos;arc, en mm (supérieur à 0)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above</source>
-        <translation type="unfinished"></translation>
+        <translation>Angle du point de départ, de 0 à 360°, dans le sens antihoraire depuis +X, vu de dessus</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Angle of the end point, 0 to 360°, counter-clockwise from +X seen from above;
 the same as the start angle: a full circle</source>
-        <translation type="unfinished"></translation>
+        <translation>Angle du point d&apos;arrivée, de 0 à 360°, dans le sens antihoraire depuis +X, vu de dessus ;
+identique à l&apos;angle de départ : un cercle complet</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
-        <translation type="unfinished"></translation>
+        <translation>Z à la fin de l&apos;arc, en mm ; Z varie uniformément depuis le Z actuel le long de l&apos;arc
+(une hélice s&apos;il diffère)</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Centre X:</source>
-        <translation type="unfinished"></translation>
+        <translation>Centre X :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Centre Y:</source>
-        <translation type="unfinished"></translation>
+        <translation>Centre Y :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Radius:</source>
-        <translation type="unfinished"></translation>
+        <translation>Rayon :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Start:</source>
-        <translation type="unfinished"></translation>
+        <translation>Départ :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>End:</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrivée :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Final Z:</source>
-        <translation type="unfinished"></translation>
+        <translation>Z final :</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>CW</source>
-        <translation type="unfinished"></translation>
+        <translation>Horaire</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clockwise seen from above: the angle decreases</source>
-        <translation type="unfinished"></translation>
+        <translation>Sens horaire vu de dessus : l&apos;angle diminue</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CCW</source>
-        <translation type="unfinished"></translation>
+        <translation>Antihoraire</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Counter-clockwise seen from above: the angle increases</source>
-        <translation type="unfinished"></translation>
+        <translation>Sens antihoraire vu de dessus : l&apos;angle augmente</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Preview</source>
-        <translation type="unfinished"></translation>
+        <translation>Aperçu</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Draw the arc, dashed, in the position views</source>
-        <translation type="unfinished"></translation>
+        <translation>Tracer l&apos;arc en pointillés dans les vues de position</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Run arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Exécuter l&apos;arc</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+130"/>
         <source>Move along the arc, from its start point to its end point</source>
-        <translation type="unfinished"></translation>
+        <translation>Se déplacer le long de l&apos;arc, de son point de départ à son point d&apos;arrivée</translation>
     </message>
     <message>
         <location line="-122"/>
         <source>Why the arc cannot run</source>
-        <translation type="unfinished"></translation>
+        <translation>Pourquoi l&apos;arc ne peut pas être exécuté</translation>
     </message>
     <message>
         <location line="+128"/>
         <source>The radius must be more than 0 mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>Le rayon doit être supérieur à 0 mm.</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 %2 to %3 mm (travel %4 to %5 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 de %2 à %3 mm (course de %4 à %5 mm)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 %2 mm (travel %3 to %4 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 mm (course de %3 à %4 mm)</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>The arc leaves the travel limits: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;arc sort des limites de course : %1.</translation>
     </message>
 </context>
 <context>
@@ -200,12 +202,12 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../app/bridge_session.py" line="+82"/>
         <source>the bridge failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>la passerelle a échoué : %1</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>the bridge stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>la passerelle s&apos;est arrêtée</translation>
     </message>
 </context>
 <context>
@@ -213,7 +215,7 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../widgets/connection_bar.py" line="+136"/>
         <source>Lines:</source>
-        <translation type="unfinished"></translation>
+        <translation>Lignes :</translation>
     </message>
 </context>
 <context>
@@ -221,108 +223,108 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../widgets/control_lines_bar.py" line="+42"/>
         <source>DTR</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>RTS</source>
-        <translation type="unfinished"></translation>
+        <translation>RTS</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CTS</source>
-        <translation type="unfinished"></translation>
+        <translation>CTS</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DSR</source>
-        <translation type="unfinished"></translation>
+        <translation>DSR</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CD</source>
-        <translation type="unfinished"></translation>
+        <translation>CD</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>RI</source>
-        <translation type="unfinished"></translation>
+        <translation>RI</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Data Terminal Ready</source>
-        <translation type="unfinished"></translation>
+        <translation>Terminal de données prêt</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Request To Send</source>
-        <translation type="unfinished"></translation>
+        <translation>Demande pour émettre</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Clear To Send</source>
-        <translation type="unfinished"></translation>
+        <translation>Prêt à émettre</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Data Set Ready</source>
-        <translation type="unfinished"></translation>
+        <translation>Poste de données prêt</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Carrier Detect</source>
-        <translation type="unfinished"></translation>
+        <translation>Détection de porteuse</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Ring Indicator</source>
-        <translation type="unfinished"></translation>
+        <translation>Indicateur d&apos;appel</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Break</source>
-        <translation type="unfinished"></translation>
+        <translation>Break</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Send a break: hold the transmit line low for %1 ms (the device sees a framing error; some boards take it as a reset or attention signal)</source>
-        <translation type="unfinished"></translation>
+        <translation>Envoyer un break : maintenir la ligne d&apos;émission à l&apos;état bas pendant %1 ms (l&apos;appareil voit une erreur de trame ; certaines cartes le prennent pour une réinitialisation ou un signal d&apos;attention)</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>The serial port&apos;s control lines</source>
-        <translation type="unfinished"></translation>
+        <translation>Les lignes de contrôle du port série</translation>
     </message>
     <message>
         <location line="+49"/>
         <location line="+16"/>
         <source>%1 (%2): not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2) : non connecté</translation>
     </message>
     <message>
         <location line="-14"/>
         <source>%1 (%2): this port cannot set %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2) : ce port ne peut pas piloter %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 (%2), driven by this computer: tick to assert it, untick to release it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2), piloté par cet ordinateur : cocher pour l&apos;activer, décocher pour le relâcher</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>this port cannot report %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ce port ne peut pas indiquer l&apos;état de %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2), driven by the device: on</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2), piloté par l&apos;appareil : actif</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2), driven by the device: off</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2), piloté par l&apos;appareil : inactif</translation>
     </message>
 </context>
 <context>
@@ -331,144 +333,145 @@ the same as the start angle: a full circle</source>
         <location filename="../../widgets/coordinate_entry.py" line="+33"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Faire de la position actuelle la nouvelle origine (0, 0, 0) ?
+Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Motion Panel</translation>
     </message>
     <message>
         <location line="+41"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 :</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Absolute</source>
-        <translation type="unfinished"></translation>
+        <translation>Absolu</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Go to the typed coordinates (mm from home)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aller aux coordonnées saisies (mm depuis l&apos;origine)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Relative</source>
-        <translation type="unfinished"></translation>
+        <translation>Relatif</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Move by the typed distances (mm) from where the stage is</source>
-        <translation type="unfinished"></translation>
+        <translation>Se déplacer des distances saisies (mm) depuis la position actuelle de la platine</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Machine</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Work</source>
-        <translation type="unfinished"></translation>
+        <translation>Pièce</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
-        <translation type="unfinished"></translation>
+        <translation>Repère des coordonnées saisies : Machine (mm depuis l&apos;origine de l&apos;appareil) ou Pièce (mm depuis le zéro pièce) ; l&apos;appareil reçoit toujours des coordonnées machine</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Go</source>
-        <translation type="unfinished"></translation>
+        <translation>Aller</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Start the move (Enter in a field)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lancer le mouvement (Entrée dans un champ)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Use current</source>
-        <translation type="unfinished"></translation>
+        <translation>Position actuelle</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Fill the fields with the current position</source>
-        <translation type="unfinished"></translation>
+        <translation>Remplir les champs avec la position actuelle</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Home</source>
-        <translation type="unfinished"></translation>
+        <translation>Origine</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Run the homing sequence</source>
-        <translation type="unfinished"></translation>
+        <translation>Lancer la prise d&apos;origine</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Set Home</source>
-        <translation type="unfinished"></translation>
+        <translation>Définir l&apos;origine</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Make the current position the origin (asks first)</source>
-        <translation type="unfinished"></translation>
+        <translation>Faire de la position actuelle l&apos;origine (avec confirmation)</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+127"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrêt</translation>
     </message>
     <message>
         <location line="-127"/>
         <source>Stop the stage now</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrêter la platine immédiatement</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Stop the stage now (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrêter la platine immédiatement (Échap)</translation>
     </message>
     <message>
         <location line="+126"/>
         <source>Drop queued</source>
-        <translation type="unfinished"></translation>
+        <translation>Vider la file</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>%1 distance to move, %2 to %3 mm (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>Distance à parcourir sur %1, de %2 à %3 mm (%4)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 target coordinate, %2 to %3 mm (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>Coordonnée cible %1, de %2 à %3 mm (%4)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 target coordinate in the work frame, %2 to %3 mm (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>Coordonnée cible %1 dans le repère pièce, de %2 à %3 mm (%4)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>travel limits</source>
-        <translation type="unfinished"></translation>
+        <translation>limites de course</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no travel limits set</source>
-        <translation type="unfinished"></translation>
+        <translation>aucune limite de course définie</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>(this device has no such axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>(cet appareil n&apos;a pas cet axe)</translation>
     </message>
 </context>
 <context>
@@ -476,22 +479,22 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_table.py" line="+445"/>
         <source>Derived values</source>
-        <translation type="unfinished"></translation>
+        <translation>Valeurs dérivées</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Computed from the values in the table, not read from the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Calculées à partir des valeurs du tableau, non lues sur l&apos;appareil</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>a parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>un paramètre</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>needs a value for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>nécessite une valeur pour %1</translation>
     </message>
 </context>
 <context>
@@ -499,32 +502,32 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/device_docks.py" line="+135"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
-        <translation type="unfinished"></translation>
+        <translation>de %1 à %2 mm sur chaque axe (impulsions sur 16 bits)</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>program %1: %2 points, nothing sent yet</source>
-        <translation type="unfinished"></translation>
+        <translation>programme %1 : %2 points, rien n&apos;a encore été envoyé</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>program saved to %1 (%2 points)</source>
-        <translation type="unfinished"></translation>
+        <translation>programme enregistré dans %1 (%2 points)</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>the program stopped: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>le programme s&apos;est arrêté : %1</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation type="unfinished"></translation>
+        <translation>programme %1 terminé : %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>program %1 stopped, the device&apos;s queue flushed: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation type="unfinished"></translation>
+        <translation>programme %1 arrêté, file de l&apos;appareil vidée : %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
     </message>
 </context>
 <context>
@@ -532,22 +535,22 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/dwell_entry.py" line="+26"/>
         <source>Dwell:</source>
-        <translation type="unfinished"></translation>
+        <translation>Temporisation :</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>How long the device waits, 0 to %1 ms; press Enter or Dwell to send</source>
-        <translation type="unfinished"></translation>
+        <translation>Durée d&apos;attente de l&apos;appareil, de 0 à %1 ms ; appuyer sur Entrée ou Temporiser pour envoyer</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Dwell</source>
-        <translation type="unfinished"></translation>
+        <translation>Temporiser</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Make the device wait this long before its next command</source>
-        <translation type="unfinished"></translation>
+        <translation>Faire attendre l&apos;appareil pendant cette durée avant sa commande suivante</translation>
     </message>
 </context>
 <context>
@@ -555,113 +558,113 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/firmata_panel.py" line="+30"/>
         <source>version unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>version inconnue</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Full steps per revolution of the motor, 1 to %1 (e.g. 200)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas entiers par tour du moteur, de 1 à %1 (par ex. 200)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 pins</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 broches</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>2 pins: a driver with step and direction inputs; 4 pins: the motor&apos;s four wires</source>
-        <translation type="unfinished"></translation>
+        <translation>2 broches : un driver avec entrées pas et direction ; 4 broches : les quatre fils du moteur</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>pin </source>
-        <translation type="unfinished"></translation>
+        <translation>broche </translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Motor steps per mm of travel (more than 0): converts mm and mm/s to steps</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas moteur par mm de course (supérieur à 0) : convertit les mm et mm/s en pas</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The speed in mm/s and the motor speed it means, in revolutions per minute</source>
-        <translation type="unfinished"></translation>
+        <translation>La vitesse en mm/s et la vitesse moteur correspondante, en tours par minute</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Configure</source>
-        <translation type="unfinished"></translation>
+        <translation>Configurer</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Set up the stepper on the board with these settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Configurer le moteur pas à pas sur la carte avec ces réglages</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Library version</source>
-        <translation type="unfinished"></translation>
+        <translation>Version de la bibliothèque</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Ask the board for its stepper library&apos;s version</source>
-        <translation type="unfinished"></translation>
+        <translation>Demander à la carte la version de sa bibliothèque pas à pas</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>The stepper library version the board reported</source>
-        <translation type="unfinished"></translation>
+        <translation>La version de la bibliothèque pas à pas indiquée par la carte</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Steps/rev:</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas/tour :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Steps per mm:</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas par mm :</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Pins:</source>
-        <translation type="unfinished"></translation>
+        <translation>Broches :</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The board&apos;s pin numbers (0 to %1) wired to the motor</source>
-        <translation type="unfinished"></translation>
+        <translation>Les numéros des broches de la carte (0 à %1) reliées au moteur</translation>
     </message>
     <message>
         <location line="+111"/>
         <source>step</source>
-        <translation type="unfinished"></translation>
+        <translation>pas</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>direction</source>
-        <translation type="unfinished"></translation>
+        <translation>direction</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>motor wire</source>
-        <translation type="unfinished"></translation>
+        <translation>fil moteur</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Pin %1 (%2), 0 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Broche %1 (%2), de 0 à %3</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>not used</source>
-        <translation type="unfinished"></translation>
+        <translation>non utilisée</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+2"/>
         <source>speed: %1 mm/s = %2 rpm</source>
-        <translation type="unfinished"></translation>
+        <translation>vitesse : %1 mm/s = %2 rpm</translation>
     </message>
 </context>
 <context>
@@ -669,62 +672,62 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/log_viewer.py" line="+42"/>
         <source>(undecoded)</source>
-        <translation type="unfinished"></translation>
+        <translation>(non décodé)</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Open traffic log</source>
-        <translation type="unfinished"></translation>
+        <translation>Ouvrir un journal de trafic</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Logs (*.log *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Journaux (*.log *.txt);;Tous les fichiers (*)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Traffic log</source>
-        <translation type="unfinished"></translation>
+        <translation>Journal de trafic</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Decode with this protocol (chosen from the log&apos;s connection note when it has one)</source>
-        <translation type="unfinished"></translation>
+        <translation>Décoder avec ce protocole (choisi d&apos;après la note de connexion du journal, s&apos;il en a une)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>Ouvrir…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Open a Motion Panel log or a pyserial spy:// capture</source>
-        <translation type="unfinished"></translation>
+        <translation>Ouvrir un journal Motion Panel ou une capture pyserial spy://</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no log open</source>
-        <translation type="unfinished"></translation>
+        <translation>aucun journal ouvert</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Protocol:</source>
-        <translation type="unfinished"></translation>
+        <translation>Protocole :</translation>
     </message>
     <message>
         <location line="+30"/>
         <source>reading %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>lecture de %1…</translation>
     </message>
     <message>
         <location line="+43"/>
         <source>%1 — traffic log</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — journal de trafic</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2): %3 lines, decoded as %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2) : %3 lignes, décodées en %4</translation>
     </message>
 </context>
 <context>
@@ -732,88 +735,88 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/macro_dock.py" line="+27"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Macros Motion Panel (*.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Macros</source>
-        <translation type="unfinished"></translation>
+        <translation>Macros</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Steps (one per line, each waits for the device): home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXT (sent as typed, its reply awaited) · wait S (s, the panel pauses) · check · id · limits; and where the device has them: dwell MS (ms) · arc CX CY R START END --cw|--ccw · step RPM STEPS · status · stop · version.</source>
         <comment>the command words (home, move, --cw …) are typed as they are: keep them in English</comment>
-        <translation type="unfinished"></translation>
+        <translation>Étapes (une par ligne, chacune attend l&apos;appareil) : home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXTE (envoyé tel que saisi, sa réponse attendue) · wait S (s, le panneau fait une pause) · check · id · limits ; et si l&apos;appareil les possède : dwell MS (ms) · arc CX CY R DÉBUT FIN --cw|--ccw · step RPM PAS · status · stop · version.</translation>
     </message>
     <message>
         <location line="+45"/>
         <source>Macros (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Macros (%1)</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>%1; nothing sent</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ; rien n&apos;a été envoyé</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>macro %1: step %2/%3: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>macro %1 : étape %2/%3 : %4</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>choose a protocol first</source>
-        <translation type="unfinished"></translation>
+        <translation>choisir d&apos;abord un protocole</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>a macro named %1 exists already</source>
-        <translation type="unfinished"></translation>
+        <translation>une macro nommée %1 existe déjà</translation>
     </message>
     <message>
         <location line="+41"/>
         <source>macro %1 kept (%2 steps)</source>
-        <translation type="unfinished"></translation>
+        <translation>macro %1 enregistrée (%2 étapes)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>macro %1 deleted</source>
-        <translation type="unfinished"></translation>
+        <translation>macro %1 supprimée</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>macros not imported: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>macros non importées : %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>; %1 for other protocols left out</source>
-        <translation type="unfinished"></translation>
+        <translation>; %1 pour d&apos;autres protocoles ignorée(s)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>imported %1 macro(s) from %2%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 macro(s) importée(s) depuis %2%3</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>macros not exported: cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>macros non exportées : impossible d&apos;écrire %1 : %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>exported %1 macro(s) to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 macro(s) exportée(s) vers %2</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Import macros</source>
-        <translation type="unfinished"></translation>
+        <translation>Importer des macros</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Export macros</source>
-        <translation type="unfinished"></translation>
+        <translation>Exporter des macros</translation>
     </message>
 </context>
 <context>
@@ -821,42 +824,42 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/macro_editor.py" line="+51"/>
         <source>Edit macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifier la macro</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>New macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Nouvelle macro</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The button&apos;s label: 1 to 40 characters</source>
-        <translation type="unfinished"></translation>
+        <translation>Le libellé du bouton : 1 à 40 caractères</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>One step per line, as motionctl takes it: distances in mm, speeds in mm/s, waits in s. Each step waits for the device&apos;s reply before the next.</source>
-        <translation type="unfinished"></translation>
+        <translation>Une étape par ligne, comme motionctl les accepte : distances en mm, vitesses en mm/s, attentes en s. Chaque étape attend la réponse de l&apos;appareil avant la suivante.</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Supprimer</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Remove this macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Supprimer cette macro</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Name:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nom :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Steps:</source>
-        <translation type="unfinished"></translation>
+        <translation>É&amp;tapes :</translation>
     </message>
 </context>
 <context>
@@ -864,53 +867,54 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/macro_panel.py" line="+37"/>
         <source>No macros yet: New… writes one, Import… reads a file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucune macro pour l&apos;instant : Nouvelle… en crée une, Importer… lit un fichier.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>New…</source>
-        <translation type="unfinished"></translation>
+        <translation>Nouvelle…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Write a new macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Écrire une nouvelle macro</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifier</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Change or delete a macro</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifier ou supprimer une macro</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Import…</source>
-        <translation type="unfinished"></translation>
+        <translation>Importer…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Add the macros of a file (JSON; data only, checked before any is kept)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajouter les macros d&apos;un fichier (JSON ; données uniquement, vérifiées avant tout enregistrement)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exporter…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Write this protocol&apos;s macros to a file</source>
-        <translation type="unfinished"></translation>
+        <translation>Écrire les macros de ce protocole dans un fichier</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>Run %1:
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Exécuter %1 :
+%2</translation>
     </message>
 </context>
 <context>
@@ -918,52 +922,52 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/parameter_dock.py" line="+29"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;appareil contient maintenant %1 : le firmware l&apos;impose après chaque écriture</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Paramètres</translation>
     </message>
     <message>
         <location line="+56"/>
         <source>Parameters (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Paramètres (%1)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 sur %2</translation>
     </message>
     <message>
         <location line="+35"/>
         <source>parameter writing cancelled: %1 not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>écriture des paramètres annulée : %1 non envoyé(s)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>non envoyé</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>the device did not answer</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;appareil n&apos;a pas répondu</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>connect to a device with parameters first</source>
-        <translation type="unfinished"></translation>
+        <translation>se connecter d&apos;abord à un appareil doté de paramètres</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>loaded %1 values from %2; nothing sent (Write changed sends them)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 valeurs chargées depuis %2 ; rien n&apos;a été envoyé (le bouton « Écrire les modifications » les envoie)</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>saved %1 values to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 valeurs enregistrées dans %2</translation>
     </message>
 </context>
 <context>
@@ -971,177 +975,177 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_editor.py" line="+44"/>
         <source>Parameter profiles (*.toml);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Profils de paramètres (*.toml);;Tous les fichiers (*)</translation>
     </message>
     <message>
         <location line="+40"/>
         <source>The device cannot be read back: this compares with what this panel last wrote</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;appareil ne peut pas être relu : la comparaison porte sur ce que ce panneau a écrit en dernier</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Packets written so far; each is confirmed before the next</source>
-        <translation type="unfinished"></translation>
+        <translation>Paquets écrits jusqu&apos;ici ; chacun est confirmé avant le suivant</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Write selected</source>
-        <translation type="unfinished"></translation>
+        <translation>Écrire la sélection</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Write the values of the selected rows</source>
-        <translation type="unfinished"></translation>
+        <translation>Écrire les valeurs des lignes sélectionnées</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Write all</source>
-        <translation type="unfinished"></translation>
+        <translation>Tout écrire</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Write every value in the table, one packet each</source>
-        <translation type="unfinished"></translation>
+        <translation>Écrire toutes les valeurs du tableau, un paquet par valeur</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Write changed</source>
-        <translation type="unfinished"></translation>
+        <translation>Écrire les modifications</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Write the values marked • (not yet written)</source>
-        <translation type="unfinished"></translation>
+        <translation>Écrire les valeurs marquées • (pas encore écrites)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Annuler</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stop writing after the packet under way</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrêter l&apos;écriture après le paquet en cours</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Load profile…</source>
-        <translation type="unfinished"></translation>
+        <translation>Charger un profil…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Fill the table from a file</source>
-        <translation type="unfinished"></translation>
+        <translation>Remplir le tableau depuis un fichier</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Save profile…</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer le profil…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Save the values to a file</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer les valeurs dans un fichier</translation>
     </message>
     <message>
         <location line="+54"/>
         <source>Not loaded: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Non chargé : %1</translation>
     </message>
     <message>
         <location line="+120"/>
         <source>nothing sent</source>
-        <translation type="unfinished"></translation>
+        <translation>rien n&apos;a été envoyé</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Write finished: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Écriture terminée : %1</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1 / %2 packets, about %3 left</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 paquets, reste environ %3</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>no row selected</source>
-        <translation type="unfinished"></translation>
+        <translation>aucune ligne sélectionnée</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>the table has no values</source>
-        <translation type="unfinished"></translation>
+        <translation>le tableau ne contient aucune valeur</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>nothing differs</source>
-        <translation type="unfinished"></translation>
+        <translation>aucune différence</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Nothing to write: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Rien à écrire : %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Writing 1 value</source>
-        <translation type="unfinished"></translation>
+        <translation>Écriture d&apos;une valeur</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Writing %1 values</source>
-        <translation type="unfinished"></translation>
+        <translation>Écriture de %1 valeurs</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no value, not written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>sans valeur, non écrit(s) : %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>computed by the firmware, which may replace them: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>calculé(s) par le firmware, qui peut les remplacer : %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Cancelling: the packet under way finishes, the rest are not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Annulation : le paquet en cours se termine, les suivants ne sont pas envoyés</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Save parameter profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer le profil de paramètres</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Load parameter profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Charger un profil de paramètres</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>No parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucun paramètre</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No values yet: load a profile or type them into the Value column</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucune valeur pour l&apos;instant : charger un profil ou les saisir dans la colonne Valeur</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>1 value differs from what was last written to this device (marked •)</source>
-        <translation type="unfinished"></translation>
+        <translation>1 valeur diffère de la dernière valeur écrite sur cet appareil (marquée •)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 values differ from what was last written to this device (marked •)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 valeurs diffèrent des dernières valeurs écrites sur cet appareil (marquées •)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Every value is what was last written to this device</source>
-        <translation type="unfinished"></translation>
+        <translation>Toutes les valeurs sont celles écrites en dernier sur cet appareil</translation>
     </message>
 </context>
 <context>
@@ -1149,107 +1153,107 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-411"/>
         <source>ID</source>
-        <translation type="unfinished"></translation>
+        <translation>ID</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Nom</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>Unité</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>Valeur</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Last written</source>
-        <translation type="unfinished"></translation>
+        <translation>Dernière écriture</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Kind</source>
-        <translation type="unfinished"></translation>
+        <translation>Type</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Description</source>
-        <translation type="unfinished"></translation>
+        <translation>Description</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Status</source>
-        <translation type="unfinished"></translation>
+        <translation>État</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>The value to write, in the unit beside it (double-click, F2, Enter or type)</source>
-        <translation type="unfinished"></translation>
+        <translation>La valeur à écrire, dans l&apos;unité indiquée à côté (double-clic, F2, Entrée ou saisie directe)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>What this panel last wrote to the device (the device cannot be read back)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ce que ce panneau a écrit en dernier sur l&apos;appareil (l&apos;appareil ne peut pas être relu)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>input: set by you; output: computed by the firmware</source>
-        <translation type="unfinished"></translation>
+        <translation>entrée : définie par vous ; sortie : calculée par le firmware</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The outcome of the last write of this parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Le résultat de la dernière écriture de ce paramètre</translation>
     </message>
     <message>
         <location line="+97"/>
         <source>output</source>
-        <translation type="unfinished"></translation>
+        <translation>sortie</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>input</source>
-        <translation type="unfinished"></translation>
+        <translation>entrée</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Input: set by you and written to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Entrée : définie par vous et écrite sur l&apos;appareil</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: never written to this device from this panel</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : jamais écrit sur cet appareil depuis ce panneau</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1: last written %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : dernière valeur écrite : %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Allowed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Valeurs autorisées : %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Value: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Valeur : %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>• Differs from what was last written to this device</source>
-        <translation type="unfinished"></translation>
+        <translation>• Diffère de la dernière valeur écrite sur cet appareil</translation>
     </message>
     <message>
         <location line="+57"/>
         <source>%1: no such parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : paramètre inexistant</translation>
     </message>
 </context>
 <context>
@@ -1257,7 +1261,7 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location line="+157"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
-        <translation type="unfinished"></translation>
+        <translation>Pour modifier : double-cliquer sur une valeur, ou sélectionner une ligne puis appuyer sur Entrée ou saisir</translation>
     </message>
 </context>
 <context>
@@ -1265,87 +1269,87 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_values.py" line="+38"/>
         <source>not written</source>
-        <translation type="unfinished"></translation>
+        <translation>non écrit</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>pending</source>
-        <translation type="unfinished"></translation>
+        <translation>en attente</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>confirmed</source>
-        <translation type="unfinished"></translation>
+        <translation>confirmé</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>erreur</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>timed out</source>
-        <translation type="unfinished"></translation>
+        <translation>délai dépassé</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>annulé</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Output: computed by the firmware. Writing it is allowed, but the firmware may replace what is written.</source>
-        <translation type="unfinished"></translation>
+        <translation>Sortie : calculée par le firmware. L&apos;écrire est permis, mais le firmware peut remplacer la valeur écrite.</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>%1 to %2, whole numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 à %2, nombres entiers</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 to %2 in steps of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 à %2 par pas de %3</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1: %2 refused (%3): %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 refusé (%3) : %4</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>empty</source>
-        <translation type="unfinished"></translation>
+        <translation>vide</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>use a point for decimals</source>
-        <translation type="unfinished"></translation>
+        <translation>utiliser un point comme séparateur décimal</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>pas un nombre</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>pas un nombre fini</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>below the minimum</source>
-        <translation type="unfinished"></translation>
+        <translation>inférieur au minimum</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>above the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>supérieur au maximum</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>not a multiple of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>pas un multiple de %1</translation>
     </message>
 </context>
 <context>
@@ -1353,52 +1357,52 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/piframe_panel.py" line="+15"/>
         <source>DTR on</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR actif</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR off</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR inactif</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR inconnu</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>Encoder ticks per mm of travel (more than 0): converts the frame&apos;s ticks to mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Impulsions codeur par mm de course (supérieur à 0) : convertit les impulsions du cadre en mm</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>The state of the serial DTR line, which powers the frame</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;état de la ligne série DTR, qui alimente le cadre</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The range the frame can reach, from its travel and ticks/mm</source>
-        <translation type="unfinished"></translation>
+        <translation>La plage que le cadre peut atteindre, d&apos;après sa course et ses impulsions/mm</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>inconnue</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Ticks per mm:</source>
-        <translation type="unfinished"></translation>
+        <translation>Impulsions par mm :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR:</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reachable:</source>
-        <translation type="unfinished"></translation>
+        <translation>Atteignable :</translation>
     </message>
 </context>
 <context>
@@ -1406,122 +1410,122 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/position_readout.py" line="+23"/>
         <source>commanded, not measured</source>
-        <translation type="unfinished"></translation>
+        <translation>commandée, non mesurée</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>commanded, move confirmed</source>
-        <translation type="unfinished"></translation>
+        <translation>commandée, mouvement confirmé</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>This device does not report its position: the numbers are where it was told to go.</source>
-        <translation type="unfinished"></translation>
+        <translation>Cet appareil n&apos;indique pas sa position : les valeurs affichées sont celles de la consigne envoyée.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Where the device was told to go, and its reply said the move ended there; not read back (a device that can report its position is asked again when idle).</source>
-        <translation type="unfinished"></translation>
+        <translation>Position de consigne, et la réponse de l&apos;appareil indique que le mouvement s&apos;y est terminé ; non relue (un appareil capable d&apos;indiquer sa position est réinterrogé au repos).</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>position unknown: the link failed or the device restarted, and it cannot report where it is; home it or set home</source>
-        <translation type="unfinished"></translation>
+        <translation>position inconnue : la liaison a échoué ou l&apos;appareil a redémarré, et il ne peut pas indiquer où il se trouve ; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>estimated from the speed: the device cannot be asked while it moves</source>
-        <translation type="unfinished"></translation>
+        <translation>estimée d&apos;après la vitesse : l&apos;appareil ne peut pas être interrogé pendant un mouvement</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>last known position: not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>dernière position connue : non connecté</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Stage position in mm: from the device&apos;s home, and from the work zero</source>
-        <translation type="unfinished"></translation>
+        <translation>Position de la platine en mm : depuis l&apos;origine de l&apos;appareil et depuis le zéro pièce</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Machine</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Millimetres from the device&apos;s home (its origin)</source>
-        <translation type="unfinished"></translation>
+        <translation>Millimètres depuis l&apos;origine de l&apos;appareil (son point de référence)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Work</source>
-        <translation type="unfinished"></translation>
+        <translation>Pièce</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Millimetres from the work zero the panel keeps (the device is not told)</source>
-        <translation type="unfinished"></translation>
+        <translation>Millimètres depuis le zéro pièce conservé par le panneau (l&apos;appareil n&apos;en est pas informé)</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Zero %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zéro %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Make the current %1 the work zero (0 mm in the work frame); the device is not told, and its home stays where it is</source>
-        <translation type="unfinished"></translation>
+        <translation>Prendre la position %1 actuelle comme zéro pièce (0 mm dans le repère pièce) ; l&apos;appareil n&apos;en est pas informé et son origine reste inchangée</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Zero all</source>
-        <translation type="unfinished"></translation>
+        <translation>Tout à zéro</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Make the current position the work zero</source>
-        <translation type="unfinished"></translation>
+        <translation>Prendre la position actuelle comme zéro pièce</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Clear zero</source>
-        <translation type="unfinished"></translation>
+        <translation>Effacer le zéro</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Put the work zero back at the device&apos;s home (work = machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ramener le zéro pièce à l&apos;origine de l&apos;appareil (pièce = machine)</translation>
     </message>
     <message>
         <location line="+150"/>
         <source>This device has no %1 axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Cet appareil n&apos;a pas d&apos;axe %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Position unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>Position inconnue</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 position in mm from the device&apos;s home</source>
-        <translation type="unfinished"></translation>
+        <translation>Position %1 en mm depuis l&apos;origine de l&apos;appareil</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 position in mm from the work zero</source>
-        <translation type="unfinished"></translation>
+        <translation>Position %1 en mm depuis le zéro pièce</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>work zero: home</source>
-        <translation type="unfinished"></translation>
+        <translation>zéro pièce : origine</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>work zero at %1 mm (machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>zéro pièce à %1 mm (machine)</translation>
     </message>
 </context>
 <context>
@@ -1529,99 +1533,99 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/preferences.py" line="+65"/>
         <source>Stop (Motion menu)</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrêt (menu Mouvement)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the console&apos;s next match</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;occurrence suivante dans la console</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+1"/>
         <source>moving the focus</source>
-        <translation type="unfinished"></translation>
+        <translation>déplacer le focus</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+1"/>
         <source>connecting and sending</source>
-        <translation type="unfinished"></translation>
+        <translation>se connecter et envoyer</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>pressing the focused button</source>
-        <translation type="unfinished"></translation>
+        <translation>appuyer sur le bouton actif</translation>
     </message>
     <message>
         <location line="+62"/>
         <source>Poll while moving</source>
-        <translation type="unfinished"></translation>
+        <translation>Interrogation en mouvement</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Poll when idle</source>
-        <translation type="unfinished"></translation>
+        <translation>Interrogation au repos</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Console lines kept</source>
-        <translation type="unfinished"></translation>
+        <translation>Lignes de console conservées</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>lines</source>
-        <translation type="unfinished"></translation>
+        <translation>lignes</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Session log</source>
-        <translation type="unfinished"></translation>
+        <translation>Journal de session</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Session log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Dossier du journal de session</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Units shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Unités affichées</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Decimals shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Décimales affichées</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>decimals</source>
-        <translation type="unfinished"></translation>
+        <translation>décimales</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Clamp moves to the limits</source>
-        <translation type="unfinished"></translation>
+        <translation>Borner les mouvements aux limites</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>smaller step</source>
-        <translation type="unfinished"></translation>
+        <translation>pas plus petit</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>larger step</source>
-        <translation type="unfinished"></translation>
+        <translation>pas plus grand</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Theme</source>
-        <translation type="unfinished"></translation>
+        <translation>Thème</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Language</source>
-        <translation type="unfinished"></translation>
+        <translation>Langue</translation>
     </message>
 </context>
 <context>
@@ -1629,119 +1633,119 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/program_panel.py" line="+19"/>
         <source>Programs (*.csv *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Programmes (*.csv *.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>no program loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>aucun programme chargé</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Load…</source>
-        <translation type="unfinished"></translation>
+        <translation>Charger…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
-        <translation type="unfinished"></translation>
+        <translation>Charger un programme : CSV avec x,y,z,speed (mm, mm/s) ou JSON</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Save…</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save the loaded program as JSON (x, y, z, speed per point)</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer le programme chargé en JSON (x, y, z, speed par point)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Exécuter</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stream the program to the device, 7 moves a frame</source>
-        <translation type="unfinished"></translation>
+        <translation>Envoyer le programme en continu à l&apos;appareil, 7 mouvements par trame</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+102"/>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Pause</translation>
     </message>
     <message>
         <location line="-100"/>
         <source>Send nothing more until Resume (queued moves go on)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ne plus rien envoyer jusqu&apos;à Reprendre (les mouvements en file se poursuivent)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrêt</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Send nothing more and flush the device&apos;s queue (STOP)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ne plus rien envoyer et vider la file de l&apos;appareil (STOP)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Instructions executed by the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Instructions exécutées par l&apos;appareil</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+69"/>
         <source>%v / %m executed</source>
-        <translation type="unfinished"></translation>
+        <translation>%v / %m exécutées</translation>
     </message>
     <message>
         <location line="-50"/>
         <source>Program:</source>
-        <translation type="unfinished"></translation>
+        <translation>Programme :</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Load a program</source>
-        <translation type="unfinished"></translation>
+        <translation>Charger un programme</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Save the program</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer le programme</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>JSON (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON (*.json)</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>%1 (%2 points)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2 points)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>no program</source>
-        <translation type="unfinished"></translation>
+        <translation>aucun programme</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>Reprendre</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>, about %1 s left</source>
-        <translation type="unfinished"></translation>
+        <translation>, reste environ %1 s</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>sent %1, acknowledged %2, executed %3; %4 instructions/s%5; %6 retransmission(s)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 envoyées, %2 acquittées, %3 exécutées ; %4 instructions/s%5 ; %6 retransmission(s)</translation>
     </message>
 </context>
 <context>
@@ -1749,53 +1753,54 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/send_line.py" line="+19"/>
         <source>text</source>
-        <translation type="unfinished"></translation>
+        <translation>texte</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>hex</source>
-        <translation type="unfinished"></translation>
+        <translation>hex</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>aucune</translation>
     </message>
     <message>
         <location line="+53"/>
         <source>text: UTF-8 with \r \n \t \0 \\ \xNN escapes, plus the line ending;
 hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
-        <translation type="unfinished"></translation>
+        <translation>texte : UTF-8 avec les échappements \r \n \t \0 \\ \xNN, plus la fin de ligne ;
+hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Appended to every line sent in text mode</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajoutée à chaque ligne envoyée en mode texte</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Send</source>
-        <translation type="unfinished"></translation>
+        <translation>Envoyer</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Send the line to the device (Enter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Envoyer la ligne à l&apos;appareil (Entrée)</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>hex bytes, e.g. 48 45 4C 4C 4F (Up/Down: history)</source>
-        <translation type="unfinished"></translation>
+        <translation>octets hex, par ex. 48 45 4C 4C 4F (Haut/Bas : historique)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>text to send (Up/Down: history)</source>
-        <translation type="unfinished"></translation>
+        <translation>texte à envoyer (Haut/Bas : historique)</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>nothing to send</source>
-        <translation type="unfinished"></translation>
+        <translation>rien à envoyer</translation>
     </message>
 </context>
 <context>
@@ -1803,403 +1808,403 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/settings_dialog.py" line="+87"/>
         <source>Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>Réglages</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Connection</source>
-        <translation type="unfinished"></translation>
+        <translation>Connexion</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Console &amp;&amp; log</source>
-        <translation type="unfinished"></translation>
+        <translation>Console &amp;&amp; journal</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Display</source>
-        <translation type="unfinished"></translation>
+        <translation>Affichage</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Keyboard jog</source>
-        <translation type="unfinished"></translation>
+        <translation>Clavier</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Appearance &amp;&amp; language</source>
-        <translation type="unfinished"></translation>
+        <translation>Apparence &amp;&amp; langue</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Use and save</source>
-        <translation type="unfinished"></translation>
+        <translation>Appliquer et enregistrer</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Use and save, and keep this open</source>
-        <translation type="unfinished"></translation>
+        <translation>Appliquer et enregistrer, sans fermer la fenêtre</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Put every field back to its default (saved only with OK or Apply)</source>
-        <translation type="unfinished"></translation>
+        <translation>Remettre chaque champ à sa valeur par défaut (enregistré seulement avec OK ou Appliquer)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Close without saving</source>
-        <translation type="unfinished"></translation>
+        <translation>Fermer sans enregistrer</translation>
     </message>
     <message>
         <location line="+101"/>
         <source>Position polling</source>
-        <translation type="unfinished"></translation>
+        <translation>Interrogation de la position</translation>
     </message>
     <message>
         <location line="+4"/>
         <source> Hz</source>
-        <translation type="unfinished"></translation>
+        <translation> Hz</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>How often the position is read while a move is being confirmed, in hertz (%1 to %2 Hz). Faster confirms the end of each jog step sooner; above 20 Hz nothing is seen sooner.</source>
-        <translation type="unfinished"></translation>
+        <translation>Fréquence de lecture de la position pendant la confirmation d&apos;un mouvement, en hertz (%1 à %2 Hz). Plus elle est élevée, plus la fin de chaque pas de déplacement est confirmée tôt ; au-delà de 20 Hz, rien n&apos;est vu plus tôt.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Poll while moving:</source>
-        <translation type="unfinished"></translation>
+        <translation>Interrogation en mouvement :</translation>
     </message>
     <message>
         <location line="+4"/>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Seconds between position reads while nothing moves (%1 to %2 s). This is also how a device that restarted or stopped answering is noticed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Secondes entre deux lectures de la position au repos (%1 à %2 s). C&apos;est aussi ainsi qu&apos;est détecté un appareil qui a redémarré ou ne répond plus.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Poll when idle:</source>
-        <translation type="unfinished"></translation>
+        <translation>Interrogation au repos :</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Console</source>
-        <translation type="unfinished"></translation>
+        <translation>Console</translation>
     </message>
     <message>
         <location line="+5"/>
         <source> lines</source>
-        <translation type="unfinished"></translation>
+        <translation> lignes</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Keep every line</source>
-        <translation type="unfinished"></translation>
+        <translation>Conserver toutes les lignes</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines. The session log keeps every byte either way.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nombre maximal de lignes conservées par la console : 0 les conserve toutes (un fichier tampon sur disque et environ 33 octets par ligne en mémoire), sinon de %1 à %2 lignes. Le journal de session conserve chaque octet dans tous les cas.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Console lines kept:</source>
-        <translation type="unfinished"></translation>
+        <translation>Lignes de console conservées :</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Session log</source>
-        <translation type="unfinished"></translation>
+        <translation>Journal de session</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Write every byte of every session to a file</source>
-        <translation type="unfinished"></translation>
+        <translation>Écrire chaque octet de chaque session dans un fichier</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>One file a session in the log folder; the oldest go beyond 200 MiB</source>
-        <translation type="unfinished"></translation>
+        <translation>Un fichier par session dans le dossier des journaux ; les plus anciens sont supprimés au-delà de 200 MiB</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>the app-data folder</source>
-        <translation type="unfinished"></translation>
+        <translation>le dossier de données de l&apos;application</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Default: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Par défaut : %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>An absolute path to a folder you can write to; empty: the default folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Chemin absolu d&apos;un dossier accessible en écriture ; vide : le dossier par défaut</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Browse…</source>
-        <translation type="unfinished"></translation>
+        <translation>Parcourir…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Choose the session log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Choisir le dossier du journal de session</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Session log folder:</source>
-        <translation type="unfinished"></translation>
+        <translation>Dossier du journal de session :</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Positions</source>
-        <translation type="unfinished"></translation>
+        <translation>Positions</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Millimetres (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Millimètres (mm)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Inches (in)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pouces (in)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>The unit positions are shown in; the device is always sent millimetres</source>
-        <translation type="unfinished"></translation>
+        <translation>L&apos;unité d&apos;affichage des positions ; l&apos;appareil reçoit toujours des millimètres</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Units shown:</source>
-        <translation type="unfinished"></translation>
+        <translation>Unités affichées :</translation>
     </message>
     <message>
         <location line="+4"/>
         <source> decimals</source>
-        <translation type="unfinished"></translation>
+        <translation> décimales</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>As the device resolves</source>
-        <translation type="unfinished"></translation>
+        <translation>Selon la résolution de l&apos;appareil</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Decimals of the positions shown (%1 to %2), or as many as the device resolves (0.01 mm: 2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Décimales des positions affichées (%1 à %2), ou autant que la résolution de l&apos;appareil (0.01 mm : 2)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Decimals shown:</source>
-        <translation type="unfinished"></translation>
+        <translation>Décimales affichées :</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Travel limits</source>
-        <translation type="unfinished"></translation>
+        <translation>Limites de course</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Clamp a move to the limits instead of refusing it</source>
-        <translation type="unfinished"></translation>
+        <translation>Borner un mouvement aux limites au lieu de le refuser</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>What a device starts with until its own limits are saved</source>
-        <translation type="unfinished"></translation>
+        <translation>Réglage initial d&apos;un appareil tant que ses propres limites ne sont pas enregistrées</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Each device&apos;s box is set in Motion → Travel limits…</source>
-        <translation type="unfinished"></translation>
+        <translation>La zone de chaque appareil se règle dans Mouvement → Limites de course…</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Jog keys</source>
-        <translation type="unfinished"></translation>
+        <translation>Touches de déplacement</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>X-:</source>
-        <translation type="unfinished"></translation>
+        <translation>X- :</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog X down by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer X d&apos;un pas dans le sens négatif</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>X+:</source>
-        <translation type="unfinished"></translation>
+        <translation>X+ :</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog X up by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer X d&apos;un pas dans le sens positif</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Y-:</source>
-        <translation type="unfinished"></translation>
+        <translation>Y- :</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Y down by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer Y d&apos;un pas dans le sens négatif</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Y+:</source>
-        <translation type="unfinished"></translation>
+        <translation>Y+ :</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Y up by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer Y d&apos;un pas dans le sens positif</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Z-:</source>
-        <translation type="unfinished"></translation>
+        <translation>Z- :</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Z down by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer Z d&apos;un pas dans le sens négatif</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Z+:</source>
-        <translation type="unfinished"></translation>
+        <translation>Z+ :</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Z up by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer Z d&apos;un pas dans le sens positif</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Smaller step:</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas plus petit :</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>The next smaller step</source>
-        <translation type="unfinished"></translation>
+        <translation>Le pas immédiatement inférieur</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Larger step:</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas plus grand :</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>The next larger step</source>
-        <translation type="unfinished"></translation>
+        <translation>Le pas immédiatement supérieur</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Click, then press one key (no Shift, Ctrl, Alt or Meta)</source>
-        <translation type="unfinished"></translation>
+        <translation>Cliquer, puis appuyer sur une touche (sans Maj, Ctrl, Alt ni Méta)</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Shift with a jog key makes the step ten times bigger. Esc (Stop), Tab, Enter, Space and F3 are the window&apos;s own.</source>
-        <translation type="unfinished"></translation>
+        <translation>Maj avec une touche de déplacement multiplie le pas par dix. Échap (Arrêt), Tab, Entrée, Espace et F3 sont réservées à la fenêtre.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Appearance and language</source>
-        <translation type="unfinished"></translation>
+        <translation>Apparence et langue</translation>
     </message>
     <message>
         <location line="+4"/>
         <location line="+10"/>
         <source>As the system</source>
-        <translation type="unfinished"></translation>
+        <translation>Comme le système</translation>
     </message>
     <message>
         <location line="-9"/>
         <source>Light</source>
-        <translation type="unfinished"></translation>
+        <translation>Clair</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dark</source>
-        <translation type="unfinished"></translation>
+        <translation>Sombre</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Light or dark colours, or those of the desktop</source>
-        <translation type="unfinished"></translation>
+        <translation>Couleurs claires ou sombres, ou celles du bureau</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Theme:</source>
-        <translation type="unfinished"></translation>
+        <translation>Thème :</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>English</source>
-        <translation type="unfinished"></translation>
+        <translation>English</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Español</source>
-        <translation type="unfinished"></translation>
+        <translation>Español</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Français</source>
-        <translation type="unfinished"></translation>
+        <translation>Français</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>简体中文</source>
-        <translation type="unfinished"></translation>
+        <translation>简体中文</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The interface&apos;s language; --lang and $MOTIONPANEL_LANG come first</source>
-        <translation type="unfinished"></translation>
+        <translation>La langue de l&apos;interface ; --lang et $MOTIONPANEL_LANG sont prioritaires</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Language:</source>
-        <translation type="unfinished"></translation>
+        <translation>Langue :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>A new language shows when the panel next starts.</source>
-        <translation type="unfinished"></translation>
+        <translation>Une nouvelle langue s&apos;applique au prochain démarrage du panneau.</translation>
     </message>
     <message>
         <location line="+60"/>
         <source>%1: %2 is not a number from %3 to %4 %5</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 n&apos;est pas un nombre de %3 à %4 %5</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>Memory grows with the session: about 33 MB a million lines.</source>
-        <translation type="unfinished"></translation>
+        <translation>La mémoire croît avec la session : environ 33 MB par million de lignes.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>About %1 MB of memory at most.</source>
-        <translation type="unfinished"></translation>
+        <translation>Environ %1 MB de mémoire au maximum.</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Session log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Dossier du journal de session</translation>
     </message>
 </context>
 <context>
@@ -2207,37 +2212,37 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/shortcuts_dialog.py" line="+75"/>
         <source>Keyboard Shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>Raccourcis clavier</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Search shortcuts…</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechercher des raccourcis…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Search shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechercher des raccourcis</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Keys</source>
-        <translation type="unfinished"></translation>
+        <translation>Touches</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Action</source>
-        <translation type="unfinished"></translation>
+        <translation>Action</translation>
     </message>
     <message>
         <location line="+77"/>
         <source>No shortcut matches “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucun raccourci ne correspond à « %1 ».</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No keyboard shortcuts.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucun raccourci clavier.</translation>
     </message>
 </context>
 <context>
@@ -2245,43 +2250,43 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/speed_control.py" line="+35"/>
         <source>Speed:</source>
-        <translation type="unfinished"></translation>
+        <translation>Vitesse :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Speed of the next moves</source>
-        <translation type="unfinished"></translation>
+        <translation>Vitesse des prochains mouvements</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Apply</source>
-        <translation type="unfinished"></translation>
+        <translation>Appliquer</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+34"/>
         <source>Send the speed in the field to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Envoyer à l&apos;appareil la vitesse saisie</translation>
     </message>
     <message>
         <location line="-29"/>
         <source>The speed the device reports (it may round)</source>
-        <translation type="unfinished"></translation>
+        <translation>La vitesse indiquée par l&apos;appareil (il peut l&apos;arrondir)</translation>
     </message>
     <message>
         <location line="+59"/>
         <source>Speed, %1 to %2 mm/s; press Enter or Apply to send</source>
-        <translation type="unfinished"></translation>
+        <translation>Vitesse, de %1 à %2 mm/s ; appuyer sur Entrée ou Appliquer pour envoyer</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Drag and release to send (%1 to %2 mm/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Faire glisser puis relâcher pour envoyer (%1 à %2 mm/s)</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>device: %1 mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation>appareil : %1 mm/s</translation>
     </message>
 </context>
 <context>
@@ -2289,63 +2294,63 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/status_line.py" line="+18"/>
         <source>Disconnected</source>
-        <translation type="unfinished"></translation>
+        <translation>Déconnecté</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No device is connected</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucun appareil n&apos;est connecté</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+39"/>
         <source>Connecting…</source>
-        <translation type="unfinished"></translation>
+        <translation>Connexion…</translation>
     </message>
     <message>
         <location line="-37"/>
         <source>Opening the port and asking the device who it is</source>
-        <translation type="unfinished"></translation>
+        <translation>Ouverture du port et identification de l&apos;appareil</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Idle</source>
-        <translation type="unfinished"></translation>
+        <translation>Au repos</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Connected and not moving</source>
-        <translation type="unfinished"></translation>
+        <translation>Connecté et immobile</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Moving</source>
-        <translation type="unfinished"></translation>
+        <translation>En mouvement</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>A move is under way</source>
-        <translation type="unfinished"></translation>
+        <translation>Un mouvement est en cours</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Busy</source>
-        <translation type="unfinished"></translation>
+        <translation>Occupé</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>A command is under way</source>
-        <translation type="unfinished"></translation>
+        <translation>Une commande est en cours</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>Erreur</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The last command failed, or the connection did</source>
-        <translation type="unfinished"></translation>
+        <translation>La dernière commande a échoué, ou bien la connexion</translation>
     </message>
 </context>
 <context>
@@ -2353,22 +2358,22 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../app/theme.py" line="+354"/>
         <source>&amp;Theme</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Thème</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Follow the &amp;system</source>
-        <translation type="unfinished"></translation>
+        <translation>Suivre le &amp;système</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Light</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Clair</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Dark</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Sombre</translation>
     </message>
 </context>
 <context>
@@ -2376,48 +2381,48 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/travel_limits_dialog.py" line="+32"/>
         <source>Travel limits</source>
-        <translation type="unfinished"></translation>
+        <translation>Limites de course</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone où la platine peut se déplacer sur %1. Un déplacement pas à pas, un « Aller à » ou un mouvement en ligne de commande qui sortirait de la zone est refusé avant tout envoi, ou borné à sa limite.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Limit moves to this box</source>
-        <translation type="unfinished"></translation>
+        <translation>Limiter les mouvements à cette zone</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>min</source>
-        <translation type="unfinished"></translation>
+        <translation>min</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>max</source>
-        <translation type="unfinished"></translation>
+        <translation>max</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 :</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Refuse a move that would leave the box</source>
-        <translation type="unfinished"></translation>
+        <translation>Refuser un mouvement qui sortirait de la zone</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clamp it: go as far as the edge, and say so</source>
-        <translation type="unfinished"></translation>
+        <translation>Le borner : aller jusqu&apos;à la limite, et le signaler</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>%1: the minimum must be below the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : le minimum doit être inférieur au maximum</translation>
     </message>
 </context>
 <context>
@@ -2425,22 +2430,22 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-95"/>
         <source>%1: edit cancelled, value unchanged</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : modification annulée, valeur inchangée</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 is an output. %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 est une sortie. %2</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>%1 = %2, not yet written to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 = %2, pas encore écrit sur l&apos;appareil</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>%1: %2 (Enter keeps it, Escape cancels)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 (Entrée pour valider, Échap pour annuler)</translation>
     </message>
 </context>
 <context>
@@ -2448,27 +2453,27 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../app/work_frame.py" line="+57"/>
         <source>work coordinates: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>coordonnées pièce : %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>work zero not set: the position is unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>zéro pièce non défini : la position est inconnue</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>work zero set at %1 mm (machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>zéro pièce défini à %1 mm (machine)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>work zero cleared: work coordinates are machine coordinates</source>
-        <translation type="unfinished"></translation>
+        <translation>zéro pièce effacé : les coordonnées pièce sont les coordonnées machine</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>work zero kept in place: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>zéro pièce maintenu en place : %1</translation>
     </message>
 </context>
 </TS>

@@ -6,62 +6,62 @@
     <message>
         <location filename="../../widgets/about_dialog.py" line="+105"/>
         <source>About Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>关于 Motion Panel</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Motion Panel</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Version %1</source>
-        <translation type="unfinished"></translation>
+        <translation>版本 %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>未知</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>A desktop control panel for serial stepper-motor positioning stages.</source>
-        <translation type="unfinished"></translation>
+        <translation>用于串口步进电机定位平台的桌面控制面板。</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>see LICENSE</source>
-        <translation type="unfinished"></translation>
+        <translation>见 LICENSE</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Licence: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>许可证：%1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Components</source>
-        <translation type="unfinished"></translation>
+        <translation>组件</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>not installed</source>
-        <translation type="unfinished"></translation>
+        <translation>未安装</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1:</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>&amp;Copy details</source>
-        <translation type="unfinished"></translation>
+        <translation>复制详细信息(&amp;C)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Copy the versions, e.g. for a bug report</source>
-        <translation type="unfinished"></translation>
+        <translation>复制各版本信息，例如用于提交错误报告</translation>
     </message>
 </context>
 <context>
@@ -69,130 +69,132 @@
     <message>
         <location filename="../../widgets/arc_entry.py" line="+126"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧圆心的 X 坐标，单位 mm，从原点起算</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Y of the arc&apos;s centre, in mm from home</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧圆心的 Y 坐标，单位 mm，从原点起算</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Radius of the arc, in mm (more than 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧半径，单位 mm（大于 0）</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above</source>
-        <translation type="unfinished"></translation>
+        <translation>起点角度，0 至 360°，俯视时自 +X 方向逆时针计</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Angle of the end point, 0 to 360°, counter-clockwise from +X seen from above;
 the same as the start angle: a full circle</source>
-        <translation type="unfinished"></translation>
+        <translation>终点角度，0 至 360°，俯视时自 +X 方向逆时针计；
+与起点角度相同：整圆</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧终点处的 Z，单位 mm；Z 沿圆弧从当前 Z 匀速变化
+（与当前 Z 不同时即为螺旋线）</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Centre X:</source>
-        <translation type="unfinished"></translation>
+        <translation>圆心 X：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Centre Y:</source>
-        <translation type="unfinished"></translation>
+        <translation>圆心 Y：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Radius:</source>
-        <translation type="unfinished"></translation>
+        <translation>半径：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Start:</source>
-        <translation type="unfinished"></translation>
+        <translation>起始角：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>End:</source>
-        <translation type="unfinished"></translation>
+        <translation>终止角：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Final Z:</source>
-        <translation type="unfinished"></translation>
+        <translation>终点 Z：</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>CW</source>
-        <translation type="unfinished"></translation>
+        <translation>顺时针</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clockwise seen from above: the angle decreases</source>
-        <translation type="unfinished"></translation>
+        <translation>俯视顺时针：角度递减</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CCW</source>
-        <translation type="unfinished"></translation>
+        <translation>逆时针</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Counter-clockwise seen from above: the angle increases</source>
-        <translation type="unfinished"></translation>
+        <translation>俯视逆时针：角度递增</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Preview</source>
-        <translation type="unfinished"></translation>
+        <translation>预览</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Draw the arc, dashed, in the position views</source>
-        <translation type="unfinished"></translation>
+        <translation>在位置视图中以虚线绘制圆弧</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Run arc</source>
-        <translation type="unfinished"></translation>
+        <translation>执行圆弧</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+130"/>
         <source>Move along the arc, from its start point to its end point</source>
-        <translation type="unfinished"></translation>
+        <translation>沿圆弧从起点移动到终点</translation>
     </message>
     <message>
         <location line="-122"/>
         <source>Why the arc cannot run</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧无法执行的原因</translation>
     </message>
     <message>
         <location line="+128"/>
         <source>The radius must be more than 0 mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>半径必须大于 0 mm。</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 %2 to %3 mm (travel %4 to %5 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 至 %3 mm（行程 %4 至 %5 mm）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 %2 mm (travel %3 to %4 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 mm（行程 %3 至 %4 mm）</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>The arc leaves the travel limits: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧超出行程限位：%1。</translation>
     </message>
 </context>
 <context>
@@ -200,12 +202,12 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../app/bridge_session.py" line="+82"/>
         <source>the bridge failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>桥接失败：%1</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>the bridge stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>桥接已停止</translation>
     </message>
 </context>
 <context>
@@ -213,7 +215,7 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../widgets/connection_bar.py" line="+136"/>
         <source>Lines:</source>
-        <translation type="unfinished"></translation>
+        <translation>信号线：</translation>
     </message>
 </context>
 <context>
@@ -221,108 +223,108 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../widgets/control_lines_bar.py" line="+42"/>
         <source>DTR</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>RTS</source>
-        <translation type="unfinished"></translation>
+        <translation>RTS</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CTS</source>
-        <translation type="unfinished"></translation>
+        <translation>CTS</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DSR</source>
-        <translation type="unfinished"></translation>
+        <translation>DSR</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>CD</source>
-        <translation type="unfinished"></translation>
+        <translation>CD</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>RI</source>
-        <translation type="unfinished"></translation>
+        <translation>RI</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Data Terminal Ready</source>
-        <translation type="unfinished"></translation>
+        <translation>数据终端就绪</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Request To Send</source>
-        <translation type="unfinished"></translation>
+        <translation>请求发送</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Clear To Send</source>
-        <translation type="unfinished"></translation>
+        <translation>清除发送</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Data Set Ready</source>
-        <translation type="unfinished"></translation>
+        <translation>数据设备就绪</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Carrier Detect</source>
-        <translation type="unfinished"></translation>
+        <translation>载波检测</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Ring Indicator</source>
-        <translation type="unfinished"></translation>
+        <translation>振铃指示</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Break</source>
-        <translation type="unfinished"></translation>
+        <translation>中断信号</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Send a break: hold the transmit line low for %1 ms (the device sees a framing error; some boards take it as a reset or attention signal)</source>
-        <translation type="unfinished"></translation>
+        <translation>发送中断（Break）信号：将发送线保持低电平 %1 ms（设备会检测到帧错误；某些板卡将其视为复位或唤醒信号）</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>The serial port&apos;s control lines</source>
-        <translation type="unfinished"></translation>
+        <translation>串口的控制信号线</translation>
     </message>
     <message>
         <location line="+49"/>
         <location line="+16"/>
         <source>%1 (%2): not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2）：未连接</translation>
     </message>
     <message>
         <location line="-14"/>
         <source>%1 (%2): this port cannot set %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2）：此端口无法设置 %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 (%2), driven by this computer: tick to assert it, untick to release it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2），由本机驱动：勾选以置位，取消勾选以释放</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>this port cannot report %1</source>
-        <translation type="unfinished"></translation>
+        <translation>此端口无法报告 %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2), driven by the device: on</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2），由设备驱动：开</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2), driven by the device: off</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2），由设备驱动：关</translation>
     </message>
 </context>
 <context>
@@ -331,144 +333,145 @@ the same as the start angle: a full circle</source>
         <location filename="../../widgets/coordinate_entry.py" line="+33"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
-        <translation type="unfinished"></translation>
+        <translation>将当前位置设为新的原点 (0, 0, 0)？
+此后所有坐标都将从这里起算。</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>Motion Panel</translation>
     </message>
     <message>
         <location line="+41"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1：</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Absolute</source>
-        <translation type="unfinished"></translation>
+        <translation>绝对</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Go to the typed coordinates (mm from home)</source>
-        <translation type="unfinished"></translation>
+        <translation>移动到输入的坐标（从原点起算，单位 mm）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Relative</source>
-        <translation type="unfinished"></translation>
+        <translation>相对</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Move by the typed distances (mm) from where the stage is</source>
-        <translation type="unfinished"></translation>
+        <translation>从平台当前位置按输入的距离（mm）移动</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>机床</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Work</source>
-        <translation type="unfinished"></translation>
+        <translation>工件</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
-        <translation type="unfinished"></translation>
+        <translation>输入坐标所用的坐标系：机床（从设备原点起算，单位 mm）或工件（从工件零点起算，单位 mm）；发送给设备的始终是机床坐标</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Go</source>
-        <translation type="unfinished"></translation>
+        <translation>移动</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Start the move (Enter in a field)</source>
-        <translation type="unfinished"></translation>
+        <translation>开始移动（在输入框中按 Enter）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Use current</source>
-        <translation type="unfinished"></translation>
+        <translation>取当前位置</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Fill the fields with the current position</source>
-        <translation type="unfinished"></translation>
+        <translation>用当前位置填充各输入框</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Home</source>
-        <translation type="unfinished"></translation>
+        <translation>回原点</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Run the homing sequence</source>
-        <translation type="unfinished"></translation>
+        <translation>执行回原点流程</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Set Home</source>
-        <translation type="unfinished"></translation>
+        <translation>设为原点</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Make the current position the origin (asks first)</source>
-        <translation type="unfinished"></translation>
+        <translation>将当前位置设为原点（会先询问）</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+127"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>停止</translation>
     </message>
     <message>
         <location line="-127"/>
         <source>Stop the stage now</source>
-        <translation type="unfinished"></translation>
+        <translation>立即停止平台</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Stop the stage now (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>立即停止平台（Esc）</translation>
     </message>
     <message>
         <location line="+126"/>
         <source>Drop queued</source>
-        <translation type="unfinished"></translation>
+        <translation>清空队列</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>%1 distance to move, %2 to %3 mm (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 移动距离，%2 至 %3 mm（%4）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 target coordinate, %2 to %3 mm (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 目标坐标，%2 至 %3 mm（%4）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 target coordinate in the work frame, %2 to %3 mm (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 工件坐标系中的目标坐标，%2 至 %3 mm（%4）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>travel limits</source>
-        <translation type="unfinished"></translation>
+        <translation>行程限位</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no travel limits set</source>
-        <translation type="unfinished"></translation>
+        <translation>未设置行程限位</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>(this device has no such axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>（此设备没有该轴）</translation>
     </message>
 </context>
 <context>
@@ -476,22 +479,22 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_table.py" line="+445"/>
         <source>Derived values</source>
-        <translation type="unfinished"></translation>
+        <translation>派生值</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Computed from the values in the table, not read from the device</source>
-        <translation type="unfinished"></translation>
+        <translation>根据表中的值计算得出，并非从设备读取</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>a parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>某个参数</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>needs a value for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>需要 %1 的值</translation>
     </message>
 </context>
 <context>
@@ -499,32 +502,32 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/device_docks.py" line="+135"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
-        <translation type="unfinished"></translation>
+        <translation>各轴 %1 至 %2 mm（16 位计数）</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>program %1: %2 points, nothing sent yet</source>
-        <translation type="unfinished"></translation>
+        <translation>程序 %1：%2 个点，尚未发送</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>program saved to %1 (%2 points)</source>
-        <translation type="unfinished"></translation>
+        <translation>程序已保存到 %1（%2 个点）</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>the program stopped: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>程序已停止：%1</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation type="unfinished"></translation>
+        <translation>程序 %1 完成：已执行 %2/%3，%4 帧，重传 %5 次，%6 s</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>program %1 stopped, the device&apos;s queue flushed: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation type="unfinished"></translation>
+        <translation>程序 %1 已停止，设备队列已清空：已执行 %2/%3，%4 帧，重传 %5 次，%6 s</translation>
     </message>
 </context>
 <context>
@@ -532,22 +535,22 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/dwell_entry.py" line="+26"/>
         <source>Dwell:</source>
-        <translation type="unfinished"></translation>
+        <translation>延时：</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>How long the device waits, 0 to %1 ms; press Enter or Dwell to send</source>
-        <translation type="unfinished"></translation>
+        <translation>设备等待的时长，0 至 %1 ms；按 Enter 或“延时”发送</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Dwell</source>
-        <translation type="unfinished"></translation>
+        <translation>延时</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Make the device wait this long before its next command</source>
-        <translation type="unfinished"></translation>
+        <translation>让设备在执行下一条命令前等待这段时间</translation>
     </message>
 </context>
 <context>
@@ -555,113 +558,113 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/firmata_panel.py" line="+30"/>
         <source>version unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>版本未知</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Full steps per revolution of the motor, 1 to %1 (e.g. 200)</source>
-        <translation type="unfinished"></translation>
+        <translation>电机每转整步数，1 至 %1（例如 200）</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 pins</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个引脚</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>2 pins: a driver with step and direction inputs; 4 pins: the motor&apos;s four wires</source>
-        <translation type="unfinished"></translation>
+        <translation>2 个引脚：带脉冲和方向输入的驱动器；4 个引脚：电机的四根线</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>pin </source>
-        <translation type="unfinished"></translation>
+        <translation>引脚 </translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Motor steps per mm of travel (more than 0): converts mm and mm/s to steps</source>
-        <translation type="unfinished"></translation>
+        <translation>每毫米行程的电机步数（大于 0）：用于将 mm 和 mm/s 换算为步数</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The speed in mm/s and the motor speed it means, in revolutions per minute</source>
-        <translation type="unfinished"></translation>
+        <translation>以 mm/s 表示的速度及其对应的电机转速（每分钟转数）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Configure</source>
-        <translation type="unfinished"></translation>
+        <translation>配置</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Set up the stepper on the board with these settings</source>
-        <translation type="unfinished"></translation>
+        <translation>按这些设置在控制板上配置步进电机</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Library version</source>
-        <translation type="unfinished"></translation>
+        <translation>库版本</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Ask the board for its stepper library&apos;s version</source>
-        <translation type="unfinished"></translation>
+        <translation>向控制板查询其步进电机库的版本</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>The stepper library version the board reported</source>
-        <translation type="unfinished"></translation>
+        <translation>控制板报告的步进电机库版本</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Steps/rev:</source>
-        <translation type="unfinished"></translation>
+        <translation>每转步数：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Steps per mm:</source>
-        <translation type="unfinished"></translation>
+        <translation>每毫米步数：</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Pins:</source>
-        <translation type="unfinished"></translation>
+        <translation>引脚：</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The board&apos;s pin numbers (0 to %1) wired to the motor</source>
-        <translation type="unfinished"></translation>
+        <translation>与电机相连的控制板引脚编号（0 至 %1）</translation>
     </message>
     <message>
         <location line="+111"/>
         <source>step</source>
-        <translation type="unfinished"></translation>
+        <translation>脉冲</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>direction</source>
-        <translation type="unfinished"></translation>
+        <translation>方向</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>motor wire</source>
-        <translation type="unfinished"></translation>
+        <translation>电机线</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Pin %1 (%2), 0 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>引脚 %1（%2），0 至 %3</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>not used</source>
-        <translation type="unfinished"></translation>
+        <translation>未使用</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+2"/>
         <source>speed: %1 mm/s = %2 rpm</source>
-        <translation type="unfinished"></translation>
+        <translation>速度：%1 mm/s = %2 rpm</translation>
     </message>
 </context>
 <context>
@@ -669,62 +672,62 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/log_viewer.py" line="+42"/>
         <source>(undecoded)</source>
-        <translation type="unfinished"></translation>
+        <translation>（未解码）</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Open traffic log</source>
-        <translation type="unfinished"></translation>
+        <translation>打开通信日志</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Logs (*.log *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>日志 (*.log *.txt);;所有文件 (*)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Traffic log</source>
-        <translation type="unfinished"></translation>
+        <translation>通信日志</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Decode with this protocol (chosen from the log&apos;s connection note when it has one)</source>
-        <translation type="unfinished"></translation>
+        <translation>用此协议解码（若日志含连接说明，则据此选择）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>打开…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Open a Motion Panel log or a pyserial spy:// capture</source>
-        <translation type="unfinished"></translation>
+        <translation>打开 Motion Panel 日志或 pyserial spy:// 捕获文件</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no log open</source>
-        <translation type="unfinished"></translation>
+        <translation>未打开日志</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Protocol:</source>
-        <translation type="unfinished"></translation>
+        <translation>协议：</translation>
     </message>
     <message>
         <location line="+30"/>
         <source>reading %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在读取 %1…</translation>
     </message>
     <message>
         <location line="+43"/>
         <source>%1 — traffic log</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — 通信日志</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2): %3 lines, decoded as %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2）：%3 行，按 %4 解码</translation>
     </message>
 </context>
 <context>
@@ -732,88 +735,88 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/macro_dock.py" line="+27"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Motion Panel 宏 (*.json);;所有文件 (*)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Macros</source>
-        <translation type="unfinished"></translation>
+        <translation>宏</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Steps (one per line, each waits for the device): home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXT (sent as typed, its reply awaited) · wait S (s, the panel pauses) · check · id · limits; and where the device has them: dwell MS (ms) · arc CX CY R START END --cw|--ccw · step RPM STEPS · status · stop · version.</source>
         <comment>the command words (home, move, --cw …) are typed as they are: keep them in English</comment>
-        <translation type="unfinished"></translation>
+        <translation>步骤（每行一个，每步都等待设备应答）：home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXT（按输入原样发送，并等待其应答）· wait S（s，面板暂停）· check · id · limits；设备支持时还有：dwell MS (ms) · arc CX CY R START END --cw|--ccw · step RPM STEPS · status · stop · version。</translation>
     </message>
     <message>
         <location line="+45"/>
         <source>Macros (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>宏（%1）</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>%1; nothing sent</source>
-        <translation type="unfinished"></translation>
+        <translation>%1；未发送任何内容</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>macro %1: step %2/%3: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>宏 %1：第 %2/%3 步：%4</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>choose a protocol first</source>
-        <translation type="unfinished"></translation>
+        <translation>请先选择协议</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>a macro named %1 exists already</source>
-        <translation type="unfinished"></translation>
+        <translation>已存在名为 %1 的宏</translation>
     </message>
     <message>
         <location line="+41"/>
         <source>macro %1 kept (%2 steps)</source>
-        <translation type="unfinished"></translation>
+        <translation>宏 %1 已保存（%2 步）</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>macro %1 deleted</source>
-        <translation type="unfinished"></translation>
+        <translation>宏 %1 已删除</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>macros not imported: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>宏未导入：%1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>; %1 for other protocols left out</source>
-        <translation type="unfinished"></translation>
+        <translation>；略过 %1 个其他协议的宏</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>imported %1 macro(s) from %2%3</source>
-        <translation type="unfinished"></translation>
+        <translation>已从 %2 导入 %1 个宏%3</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>macros not exported: cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>宏未导出：无法写入 %1：%2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>exported %1 macro(s) to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已导出 %1 个宏到 %2</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Import macros</source>
-        <translation type="unfinished"></translation>
+        <translation>导入宏</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Export macros</source>
-        <translation type="unfinished"></translation>
+        <translation>导出宏</translation>
     </message>
 </context>
 <context>
@@ -821,42 +824,42 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/macro_editor.py" line="+51"/>
         <source>Edit macro</source>
-        <translation type="unfinished"></translation>
+        <translation>编辑宏</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>New macro</source>
-        <translation type="unfinished"></translation>
+        <translation>新建宏</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The button&apos;s label: 1 to 40 characters</source>
-        <translation type="unfinished"></translation>
+        <translation>按钮上的文字：1 至 40 个字符</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>One step per line, as motionctl takes it: distances in mm, speeds in mm/s, waits in s. Each step waits for the device&apos;s reply before the next.</source>
-        <translation type="unfinished"></translation>
+        <translation>每行一个步骤，格式与 motionctl 相同：距离单位 mm，速度单位 mm/s，等待单位 s。每一步都等待设备应答后再执行下一步。</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>删除</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Remove this macro</source>
-        <translation type="unfinished"></translation>
+        <translation>删除此宏</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Name:</source>
-        <translation type="unfinished"></translation>
+        <translation>名称(&amp;N)：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Steps:</source>
-        <translation type="unfinished"></translation>
+        <translation>步骤(&amp;S)：</translation>
     </message>
 </context>
 <context>
@@ -864,53 +867,54 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/macro_panel.py" line="+37"/>
         <source>No macros yet: New… writes one, Import… reads a file.</source>
-        <translation type="unfinished"></translation>
+        <translation>还没有宏：用“新建…”编写，或用“导入…”从文件读取。</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>New…</source>
-        <translation type="unfinished"></translation>
+        <translation>新建…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Write a new macro</source>
-        <translation type="unfinished"></translation>
+        <translation>编写新宏</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>编辑</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Change or delete a macro</source>
-        <translation type="unfinished"></translation>
+        <translation>修改或删除宏</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Import…</source>
-        <translation type="unfinished"></translation>
+        <translation>导入…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Add the macros of a file (JSON; data only, checked before any is kept)</source>
-        <translation type="unfinished"></translation>
+        <translation>添加文件中的宏（JSON；仅含数据，保存前先检查）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Write this protocol&apos;s macros to a file</source>
-        <translation type="unfinished"></translation>
+        <translation>将此协议的宏写入文件</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>Run %1:
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>运行 %1：
+%2</translation>
     </message>
 </context>
 <context>
@@ -918,52 +922,52 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/parameter_dock.py" line="+29"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
-        <translation type="unfinished"></translation>
+        <translation>设备当前值为 %1：每次设置后固件都会强制使用该值</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>参数</translation>
     </message>
     <message>
         <location line="+56"/>
         <source>Parameters (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>参数（%1）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%2 上的 %1</translation>
     </message>
     <message>
         <location line="+35"/>
         <source>parameter writing cancelled: %1 not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>参数写入已取消：%1 未发送</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>未发送</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>the device did not answer</source>
-        <translation type="unfinished"></translation>
+        <translation>设备无应答</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>connect to a device with parameters first</source>
-        <translation type="unfinished"></translation>
+        <translation>请先连接带参数的设备</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>loaded %1 values from %2; nothing sent (Write changed sends them)</source>
-        <translation type="unfinished"></translation>
+        <translation>已从 %2 加载 %1 个值；尚未发送（“写入更改”会发送它们）</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>saved %1 values to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已将 %1 个值保存到 %2</translation>
     </message>
 </context>
 <context>
@@ -971,177 +975,177 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_editor.py" line="+44"/>
         <source>Parameter profiles (*.toml);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>参数配置文件 (*.toml);;所有文件 (*)</translation>
     </message>
     <message>
         <location line="+40"/>
         <source>The device cannot be read back: this compares with what this panel last wrote</source>
-        <translation type="unfinished"></translation>
+        <translation>设备无法回读：此处与本面板上次写入的值比较</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Packets written so far; each is confirmed before the next</source>
-        <translation type="unfinished"></translation>
+        <translation>已写入的数据包；每个数据包确认后才发送下一个</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Write selected</source>
-        <translation type="unfinished"></translation>
+        <translation>写入所选</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Write the values of the selected rows</source>
-        <translation type="unfinished"></translation>
+        <translation>写入所选行的值</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Write all</source>
-        <translation type="unfinished"></translation>
+        <translation>全部写入</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Write every value in the table, one packet each</source>
-        <translation type="unfinished"></translation>
+        <translation>写入表中的每个值，每个值一个数据包</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Write changed</source>
-        <translation type="unfinished"></translation>
+        <translation>写入更改</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Write the values marked • (not yet written)</source>
-        <translation type="unfinished"></translation>
+        <translation>写入标有 • 的值（尚未写入）</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>取消</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stop writing after the packet under way</source>
-        <translation type="unfinished"></translation>
+        <translation>当前数据包完成后停止写入</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Load profile…</source>
-        <translation type="unfinished"></translation>
+        <translation>加载配置…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Fill the table from a file</source>
-        <translation type="unfinished"></translation>
+        <translation>从文件填充表格</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Save profile…</source>
-        <translation type="unfinished"></translation>
+        <translation>保存配置…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Save the values to a file</source>
-        <translation type="unfinished"></translation>
+        <translation>将这些值保存到文件</translation>
     </message>
     <message>
         <location line="+54"/>
         <source>Not loaded: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>未加载：%1</translation>
     </message>
     <message>
         <location line="+120"/>
         <source>nothing sent</source>
-        <translation type="unfinished"></translation>
+        <translation>未发送任何内容</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Write finished: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>写入完成：%1</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1 / %2 packets, about %3 left</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 个数据包，约剩 %3</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>no row selected</source>
-        <translation type="unfinished"></translation>
+        <translation>未选择任何行</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>the table has no values</source>
-        <translation type="unfinished"></translation>
+        <translation>表中没有值</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>nothing differs</source>
-        <translation type="unfinished"></translation>
+        <translation>没有不同的值</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Nothing to write: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无可写入内容：%1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Writing 1 value</source>
-        <translation type="unfinished"></translation>
+        <translation>正在写入 1 个值</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Writing %1 values</source>
-        <translation type="unfinished"></translation>
+        <translation>正在写入 %1 个值</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no value, not written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无值，未写入：%1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>computed by the firmware, which may replace them: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>由固件计算，固件可能会替换写入的值：%1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Cancelling: the packet under way finishes, the rest are not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>正在取消：当前数据包会完成，其余的不再发送</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Save parameter profile</source>
-        <translation type="unfinished"></translation>
+        <translation>保存参数配置</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Load parameter profile</source>
-        <translation type="unfinished"></translation>
+        <translation>加载参数配置</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>No parameters</source>
-        <translation type="unfinished"></translation>
+        <translation>无参数</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No values yet: load a profile or type them into the Value column</source>
-        <translation type="unfinished"></translation>
+        <translation>尚无值：请加载配置，或在“值”列中输入</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>1 value differs from what was last written to this device (marked •)</source>
-        <translation type="unfinished"></translation>
+        <translation>有 1 个值与上次写入此设备的值不同（标有 •）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 values differ from what was last written to this device (marked •)</source>
-        <translation type="unfinished"></translation>
+        <translation>有 %1 个值与上次写入此设备的值不同（标有 •）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Every value is what was last written to this device</source>
-        <translation type="unfinished"></translation>
+        <translation>所有值均与上次写入此设备的值相同</translation>
     </message>
 </context>
 <context>
@@ -1149,107 +1153,107 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-411"/>
         <source>ID</source>
-        <translation type="unfinished"></translation>
+        <translation>ID</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>名称</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>单位</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Value</source>
-        <translation type="unfinished"></translation>
+        <translation>值</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Last written</source>
-        <translation type="unfinished"></translation>
+        <translation>上次写入</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Kind</source>
-        <translation type="unfinished"></translation>
+        <translation>类型</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Description</source>
-        <translation type="unfinished"></translation>
+        <translation>说明</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Status</source>
-        <translation type="unfinished"></translation>
+        <translation>状态</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>The value to write, in the unit beside it (double-click, F2, Enter or type)</source>
-        <translation type="unfinished"></translation>
+        <translation>要写入的值，单位见旁列（双击、按 F2、Enter 或直接输入）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>What this panel last wrote to the device (the device cannot be read back)</source>
-        <translation type="unfinished"></translation>
+        <translation>本面板上次写入设备的值（设备无法回读）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>input: set by you; output: computed by the firmware</source>
-        <translation type="unfinished"></translation>
+        <translation>输入：由您设置；输出：由固件计算</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The outcome of the last write of this parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>此参数上次写入的结果</translation>
     </message>
     <message>
         <location line="+97"/>
         <source>output</source>
-        <translation type="unfinished"></translation>
+        <translation>输出</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>input</source>
-        <translation type="unfinished"></translation>
+        <translation>输入</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Input: set by you and written to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>输入：由您设置并写入设备</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: never written to this device from this panel</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：从未通过本面板写入此设备</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1: last written %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：上次写入 %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Allowed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>允许范围：%1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Value: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>值：%1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>• Differs from what was last written to this device</source>
-        <translation type="unfinished"></translation>
+        <translation>• 与上次写入此设备的值不同</translation>
     </message>
     <message>
         <location line="+57"/>
         <source>%1: no such parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：无此参数</translation>
     </message>
 </context>
 <context>
@@ -1257,7 +1261,7 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location line="+157"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
-        <translation type="unfinished"></translation>
+        <translation>双击某个值，或选中一行后按 Enter 或直接输入，即可编辑</translation>
     </message>
 </context>
 <context>
@@ -1265,87 +1269,87 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/parameter_values.py" line="+38"/>
         <source>not written</source>
-        <translation type="unfinished"></translation>
+        <translation>未写入</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>pending</source>
-        <translation type="unfinished"></translation>
+        <translation>等待中</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>confirmed</source>
-        <translation type="unfinished"></translation>
+        <translation>已确认</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>错误</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>timed out</source>
-        <translation type="unfinished"></translation>
+        <translation>超时</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>已取消</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Output: computed by the firmware. Writing it is allowed, but the firmware may replace what is written.</source>
-        <translation type="unfinished"></translation>
+        <translation>输出：由固件计算。允许写入，但固件可能会替换写入的值。</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>%1 to %2, whole numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 至 %2，整数</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 to %2 in steps of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 至 %2，步进 %3</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1: %2 refused (%3): %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 被拒绝（%3）：允许 %4</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>empty</source>
-        <translation type="unfinished"></translation>
+        <translation>为空</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>use a point for decimals</source>
-        <translation type="unfinished"></translation>
+        <translation>请用点号（.）作小数点</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>不是数字</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>not a finite number</source>
-        <translation type="unfinished"></translation>
+        <translation>不是有限数</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>below the minimum</source>
-        <translation type="unfinished"></translation>
+        <translation>低于最小值</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>above the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>高于最大值</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>not a multiple of %1</source>
-        <translation type="unfinished"></translation>
+        <translation>不是 %1 的整数倍</translation>
     </message>
 </context>
 <context>
@@ -1353,52 +1357,52 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/piframe_panel.py" line="+15"/>
         <source>DTR on</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR 开</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR off</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR 关</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR 未知</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>Encoder ticks per mm of travel (more than 0): converts the frame&apos;s ticks to mm</source>
-        <translation type="unfinished"></translation>
+        <translation>每毫米行程的编码器计数（大于 0）：用于将机架的计数换算为 mm</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>The state of the serial DTR line, which powers the frame</source>
-        <translation type="unfinished"></translation>
+        <translation>串口 DTR 线的状态，该线为机架供电</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The range the frame can reach, from its travel and ticks/mm</source>
-        <translation type="unfinished"></translation>
+        <translation>机架可到达的范围，由其行程和每毫米计数得出</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>未知</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Ticks per mm:</source>
-        <translation type="unfinished"></translation>
+        <translation>每毫米计数：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR:</source>
-        <translation type="unfinished"></translation>
+        <translation>DTR：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reachable:</source>
-        <translation type="unfinished"></translation>
+        <translation>可达范围：</translation>
     </message>
 </context>
 <context>
@@ -1406,122 +1410,122 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/position_readout.py" line="+23"/>
         <source>commanded, not measured</source>
-        <translation type="unfinished"></translation>
+        <translation>指令值，非实测</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>commanded, move confirmed</source>
-        <translation type="unfinished"></translation>
+        <translation>指令值，移动已确认</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>This device does not report its position: the numbers are where it was told to go.</source>
-        <translation type="unfinished"></translation>
+        <translation>此设备不报告其位置：显示的数值是指令要求它到达的位置。</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Where the device was told to go, and its reply said the move ended there; not read back (a device that can report its position is asked again when idle).</source>
-        <translation type="unfinished"></translation>
+        <translation>设备被指令到达的位置，其应答表明移动已在此结束；并非回读值（能报告位置的设备会在空闲时再次查询）。</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>position unknown: the link failed or the device restarted, and it cannot report where it is; home it or set home</source>
-        <translation type="unfinished"></translation>
+        <translation>位置未知：连接故障或设备已重启，且设备无法报告其位置；请回原点或设为原点</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>estimated from the speed: the device cannot be asked while it moves</source>
-        <translation type="unfinished"></translation>
+        <translation>根据速度估算：设备移动时无法查询</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>last known position: not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>最后已知位置：未连接</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Stage position in mm: from the device&apos;s home, and from the work zero</source>
-        <translation type="unfinished"></translation>
+        <translation>平台位置（mm）：相对设备原点，以及相对工件零点</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>机床</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Millimetres from the device&apos;s home (its origin)</source>
-        <translation type="unfinished"></translation>
+        <translation>相对设备原点（其坐标原点）的毫米数</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Work</source>
-        <translation type="unfinished"></translation>
+        <translation>工件</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Millimetres from the work zero the panel keeps (the device is not told)</source>
-        <translation type="unfinished"></translation>
+        <translation>相对面板所记录工件零点的毫米数（不通知设备）</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Zero %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 清零</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Make the current %1 the work zero (0 mm in the work frame); the device is not told, and its home stays where it is</source>
-        <translation type="unfinished"></translation>
+        <translation>将当前 %1 设为工件零点（工件坐标系中的 0 mm）；不通知设备，设备原点保持不变</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Zero all</source>
-        <translation type="unfinished"></translation>
+        <translation>全部清零</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Make the current position the work zero</source>
-        <translation type="unfinished"></translation>
+        <translation>将当前位置设为工件零点</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Clear zero</source>
-        <translation type="unfinished"></translation>
+        <translation>清除零点</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Put the work zero back at the device&apos;s home (work = machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>将工件零点恢复到设备原点（工件坐标 = 机床坐标）</translation>
     </message>
     <message>
         <location line="+150"/>
         <source>This device has no %1 axis</source>
-        <translation type="unfinished"></translation>
+        <translation>此设备没有 %1 轴</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Position unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>位置未知</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 position in mm from the device&apos;s home</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 位置，相对设备原点，单位 mm</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 position in mm from the work zero</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 位置，相对工件零点，单位 mm</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>work zero: home</source>
-        <translation type="unfinished"></translation>
+        <translation>工件零点：原点</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>work zero at %1 mm (machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>工件零点位于 %1 mm（机床坐标）</translation>
     </message>
 </context>
 <context>
@@ -1529,99 +1533,99 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/preferences.py" line="+65"/>
         <source>Stop (Motion menu)</source>
-        <translation type="unfinished"></translation>
+        <translation>停止（运动菜单）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the console&apos;s next match</source>
-        <translation type="unfinished"></translation>
+        <translation>控制台中的下一个匹配项</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+1"/>
         <source>moving the focus</source>
-        <translation type="unfinished"></translation>
+        <translation>移动焦点</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+1"/>
         <source>connecting and sending</source>
-        <translation type="unfinished"></translation>
+        <translation>连接和发送</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>pressing the focused button</source>
-        <translation type="unfinished"></translation>
+        <translation>按下当前焦点按钮</translation>
     </message>
     <message>
         <location line="+62"/>
         <source>Poll while moving</source>
-        <translation type="unfinished"></translation>
+        <translation>移动时轮询</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Poll when idle</source>
-        <translation type="unfinished"></translation>
+        <translation>空闲时轮询</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Console lines kept</source>
-        <translation type="unfinished"></translation>
+        <translation>控制台保留行数</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>lines</source>
-        <translation type="unfinished"></translation>
+        <translation>行</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Session log</source>
-        <translation type="unfinished"></translation>
+        <translation>会话日志</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Session log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>会话日志文件夹</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Units shown</source>
-        <translation type="unfinished"></translation>
+        <translation>显示单位</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Decimals shown</source>
-        <translation type="unfinished"></translation>
+        <translation>显示小数位数</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>decimals</source>
-        <translation type="unfinished"></translation>
+        <translation>位小数</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Clamp moves to the limits</source>
-        <translation type="unfinished"></translation>
+        <translation>将移动限制在限位内</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>smaller step</source>
-        <translation type="unfinished"></translation>
+        <translation>较小步长</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>larger step</source>
-        <translation type="unfinished"></translation>
+        <translation>较大步长</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Theme</source>
-        <translation type="unfinished"></translation>
+        <translation>主题</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Language</source>
-        <translation type="unfinished"></translation>
+        <translation>语言</translation>
     </message>
 </context>
 <context>
@@ -1629,119 +1633,119 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/program_panel.py" line="+19"/>
         <source>Programs (*.csv *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>程序 (*.csv *.json);;所有文件 (*)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>no program loaded</source>
-        <translation type="unfinished"></translation>
+        <translation>未加载程序</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Load…</source>
-        <translation type="unfinished"></translation>
+        <translation>加载…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
-        <translation type="unfinished"></translation>
+        <translation>加载程序：含 x,y,z,speed 列的 CSV（mm、mm/s）或 JSON</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Save…</source>
-        <translation type="unfinished"></translation>
+        <translation>保存…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save the loaded program as JSON (x, y, z, speed per point)</source>
-        <translation type="unfinished"></translation>
+        <translation>将已加载的程序保存为 JSON（每个点含 x, y, z, speed）</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>运行</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stream the program to the device, 7 moves a frame</source>
-        <translation type="unfinished"></translation>
+        <translation>将程序流式发送到设备，每帧 7 个移动</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+102"/>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>暂停</translation>
     </message>
     <message>
         <location line="-100"/>
         <source>Send nothing more until Resume (queued moves go on)</source>
-        <translation type="unfinished"></translation>
+        <translation>在“继续”之前不再发送（已排队的移动照常执行）</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>停止</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Send nothing more and flush the device&apos;s queue (STOP)</source>
-        <translation type="unfinished"></translation>
+        <translation>不再发送，并清空设备队列（STOP）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Instructions executed by the device</source>
-        <translation type="unfinished"></translation>
+        <translation>设备已执行的指令</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+69"/>
         <source>%v / %m executed</source>
-        <translation type="unfinished"></translation>
+        <translation>已执行 %v / %m</translation>
     </message>
     <message>
         <location line="-50"/>
         <source>Program:</source>
-        <translation type="unfinished"></translation>
+        <translation>程序：</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Load a program</source>
-        <translation type="unfinished"></translation>
+        <translation>加载程序</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Save the program</source>
-        <translation type="unfinished"></translation>
+        <translation>保存程序</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>JSON (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON (*.json)</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>%1 (%2 points)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（%2 个点）</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>no program</source>
-        <translation type="unfinished"></translation>
+        <translation>无程序</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>继续</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>, about %1 s left</source>
-        <translation type="unfinished"></translation>
+        <translation>，约剩 %1 s</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>sent %1, acknowledged %2, executed %3; %4 instructions/s%5; %6 retransmission(s)</source>
-        <translation type="unfinished"></translation>
+        <translation>已发送 %1，已确认 %2，已执行 %3；%4 条指令/s%5；重传 %6 次</translation>
     </message>
 </context>
 <context>
@@ -1749,53 +1753,54 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/send_line.py" line="+19"/>
         <source>text</source>
-        <translation type="unfinished"></translation>
+        <translation>文本</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>hex</source>
-        <translation type="unfinished"></translation>
+        <translation>十六进制</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>none</source>
-        <translation type="unfinished"></translation>
+        <translation>无</translation>
     </message>
     <message>
         <location line="+53"/>
         <source>text: UTF-8 with \r \n \t \0 \\ \xNN escapes, plus the line ending;
 hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
-        <translation type="unfinished"></translation>
+        <translation>文本：UTF-8，支持 \r \n \t \0 \\ \xNN 转义，并附加行尾符；
+十六进制：如 48 45 4C 4C 4F 这样的字节，按原样发送</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Appended to every line sent in text mode</source>
-        <translation type="unfinished"></translation>
+        <translation>文本模式下附加到发送的每一行末尾</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Send</source>
-        <translation type="unfinished"></translation>
+        <translation>发送</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Send the line to the device (Enter)</source>
-        <translation type="unfinished"></translation>
+        <translation>将该行发送到设备（Enter）</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>hex bytes, e.g. 48 45 4C 4C 4F (Up/Down: history)</source>
-        <translation type="unfinished"></translation>
+        <translation>十六进制字节，例如 48 45 4C 4C 4F（↑/↓：历史记录）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>text to send (Up/Down: history)</source>
-        <translation type="unfinished"></translation>
+        <translation>要发送的文本（↑/↓：历史记录）</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>nothing to send</source>
-        <translation type="unfinished"></translation>
+        <translation>没有要发送的内容</translation>
     </message>
 </context>
 <context>
@@ -1803,403 +1808,403 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/settings_dialog.py" line="+87"/>
         <source>Settings</source>
-        <translation type="unfinished"></translation>
+        <translation>设置</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Connection</source>
-        <translation type="unfinished"></translation>
+        <translation>连接</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Console &amp;&amp; log</source>
-        <translation type="unfinished"></translation>
+        <translation>控制台 &amp;&amp; 日志</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Display</source>
-        <translation type="unfinished"></translation>
+        <translation>显示</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Keyboard jog</source>
-        <translation type="unfinished"></translation>
+        <translation>键盘点动</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Appearance &amp;&amp; language</source>
-        <translation type="unfinished"></translation>
+        <translation>外观 &amp;&amp; 语言</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Use and save</source>
-        <translation type="unfinished"></translation>
+        <translation>应用并保存</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Use and save, and keep this open</source>
-        <translation type="unfinished"></translation>
+        <translation>应用并保存，且保持此窗口打开</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Put every field back to its default (saved only with OK or Apply)</source>
-        <translation type="unfinished"></translation>
+        <translation>将所有字段恢复为默认值（仅在点击“确定”或“应用”后保存）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Close without saving</source>
-        <translation type="unfinished"></translation>
+        <translation>关闭且不保存</translation>
     </message>
     <message>
         <location line="+101"/>
         <source>Position polling</source>
-        <translation type="unfinished"></translation>
+        <translation>位置轮询</translation>
     </message>
     <message>
         <location line="+4"/>
         <source> Hz</source>
-        <translation type="unfinished"></translation>
+        <translation> Hz</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>How often the position is read while a move is being confirmed, in hertz (%1 to %2 Hz). Faster confirms the end of each jog step sooner; above 20 Hz nothing is seen sooner.</source>
-        <translation type="unfinished"></translation>
+        <translation>确认移动期间读取位置的频率，单位赫兹（%1 至 %2 Hz）。频率越高，越快确认每次点动结束；高于 20 Hz 也不会更早看到结果。</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Poll while moving:</source>
-        <translation type="unfinished"></translation>
+        <translation>移动时轮询：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source> s</source>
-        <translation type="unfinished"></translation>
+        <translation> s</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Seconds between position reads while nothing moves (%1 to %2 s). This is also how a device that restarted or stopped answering is noticed.</source>
-        <translation type="unfinished"></translation>
+        <translation>静止时两次读取位置之间的秒数（%1 至 %2 s）。设备重启或停止应答也是借此发现的。</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Poll when idle:</source>
-        <translation type="unfinished"></translation>
+        <translation>空闲时轮询：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Console</source>
-        <translation type="unfinished"></translation>
+        <translation>控制台</translation>
     </message>
     <message>
         <location line="+5"/>
         <source> lines</source>
-        <translation type="unfinished"></translation>
+        <translation> 行</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Keep every line</source>
-        <translation type="unfinished"></translation>
+        <translation>保留所有行</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines. The session log keeps every byte either way.</source>
-        <translation type="unfinished"></translation>
+        <translation>控制台最多保留的行数：0 表示保留所有行（磁盘上使用缓存文件，内存中每行约 33 字节），否则为 %1 至 %2 行。无论如何，会话日志都会保存每个字节。</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Console lines kept:</source>
-        <translation type="unfinished"></translation>
+        <translation>控制台保留行数：</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Session log</source>
-        <translation type="unfinished"></translation>
+        <translation>会话日志</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Write every byte of every session to a file</source>
-        <translation type="unfinished"></translation>
+        <translation>将每次会话的每个字节写入文件</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>One file a session in the log folder; the oldest go beyond 200 MiB</source>
-        <translation type="unfinished"></translation>
+        <translation>日志文件夹中每次会话一个文件；总量超过 200 MiB 时删除最旧的文件</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>the app-data folder</source>
-        <translation type="unfinished"></translation>
+        <translation>应用数据文件夹</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Default: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>默认：%1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>An absolute path to a folder you can write to; empty: the default folder</source>
-        <translation type="unfinished"></translation>
+        <translation>可写入的文件夹的绝对路径；留空：使用默认文件夹</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Browse…</source>
-        <translation type="unfinished"></translation>
+        <translation>浏览…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Choose the session log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>选择会话日志文件夹</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Session log folder:</source>
-        <translation type="unfinished"></translation>
+        <translation>会话日志文件夹：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Positions</source>
-        <translation type="unfinished"></translation>
+        <translation>位置</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Millimetres (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>毫米（mm）</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Inches (in)</source>
-        <translation type="unfinished"></translation>
+        <translation>英寸（in）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>The unit positions are shown in; the device is always sent millimetres</source>
-        <translation type="unfinished"></translation>
+        <translation>位置的显示单位；发送给设备的始终是毫米</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Units shown:</source>
-        <translation type="unfinished"></translation>
+        <translation>显示单位：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source> decimals</source>
-        <translation type="unfinished"></translation>
+        <translation> 位小数</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>As the device resolves</source>
-        <translation type="unfinished"></translation>
+        <translation>按设备分辨率</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Decimals of the positions shown (%1 to %2), or as many as the device resolves (0.01 mm: 2)</source>
-        <translation type="unfinished"></translation>
+        <translation>位置显示的小数位数（%1 至 %2），或按设备分辨率确定（0.01 mm：2 位）</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Decimals shown:</source>
-        <translation type="unfinished"></translation>
+        <translation>显示小数位数：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Travel limits</source>
-        <translation type="unfinished"></translation>
+        <translation>行程限位</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Clamp a move to the limits instead of refusing it</source>
-        <translation type="unfinished"></translation>
+        <translation>将移动限制在限位内，而不是拒绝执行</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>What a device starts with until its own limits are saved</source>
-        <translation type="unfinished"></translation>
+        <translation>设备保存自身限位之前使用的初始设置</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Each device&apos;s box is set in Motion → Travel limits…</source>
-        <translation type="unfinished"></translation>
+        <translation>每台设备的范围在“运动 → 行程限位…”中设置</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Jog keys</source>
-        <translation type="unfinished"></translation>
+        <translation>点动按键</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>X-:</source>
-        <translation type="unfinished"></translation>
+        <translation>X-：</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog X down by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>X 轴负向点动一步</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>X+:</source>
-        <translation type="unfinished"></translation>
+        <translation>X+：</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog X up by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>X 轴正向点动一步</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Y-:</source>
-        <translation type="unfinished"></translation>
+        <translation>Y-：</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Y down by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Y 轴负向点动一步</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Y+:</source>
-        <translation type="unfinished"></translation>
+        <translation>Y+：</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Y up by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Y 轴正向点动一步</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Z-:</source>
-        <translation type="unfinished"></translation>
+        <translation>Z-：</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Z down by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Z 轴负向点动一步</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Z+:</source>
-        <translation type="unfinished"></translation>
+        <translation>Z+：</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog Z up by one step</source>
-        <translation type="unfinished"></translation>
+        <translation>Z 轴正向点动一步</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Smaller step:</source>
-        <translation type="unfinished"></translation>
+        <translation>较小步长：</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>The next smaller step</source>
-        <translation type="unfinished"></translation>
+        <translation>切换到下一个较小步长</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Larger step:</source>
-        <translation type="unfinished"></translation>
+        <translation>较大步长：</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>The next larger step</source>
-        <translation type="unfinished"></translation>
+        <translation>切换到下一个较大步长</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Click, then press one key (no Shift, Ctrl, Alt or Meta)</source>
-        <translation type="unfinished"></translation>
+        <translation>点击后按一个键（不含 Shift、Ctrl、Alt 或 Meta）</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Shift with a jog key makes the step ten times bigger. Esc (Stop), Tab, Enter, Space and F3 are the window&apos;s own.</source>
-        <translation type="unfinished"></translation>
+        <translation>按住 Shift 再按点动键，步长放大十倍。Esc（停止）、Tab、Enter、Space 和 F3 为窗口自用按键。</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Appearance and language</source>
-        <translation type="unfinished"></translation>
+        <translation>外观和语言</translation>
     </message>
     <message>
         <location line="+4"/>
         <location line="+10"/>
         <source>As the system</source>
-        <translation type="unfinished"></translation>
+        <translation>跟随系统</translation>
     </message>
     <message>
         <location line="-9"/>
         <source>Light</source>
-        <translation type="unfinished"></translation>
+        <translation>浅色</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dark</source>
-        <translation type="unfinished"></translation>
+        <translation>深色</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Light or dark colours, or those of the desktop</source>
-        <translation type="unfinished"></translation>
+        <translation>浅色或深色配色，或跟随桌面配色</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Theme:</source>
-        <translation type="unfinished"></translation>
+        <translation>主题：</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>English</source>
-        <translation type="unfinished"></translation>
+        <translation>English</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Español</source>
-        <translation type="unfinished"></translation>
+        <translation>Español</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Français</source>
-        <translation type="unfinished"></translation>
+        <translation>Français</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>简体中文</source>
-        <translation type="unfinished"></translation>
+        <translation>简体中文</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The interface&apos;s language; --lang and $MOTIONPANEL_LANG come first</source>
-        <translation type="unfinished"></translation>
+        <translation>界面语言；--lang 和 $MOTIONPANEL_LANG 优先</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Language:</source>
-        <translation type="unfinished"></translation>
+        <translation>语言：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>A new language shows when the panel next starts.</source>
-        <translation type="unfinished"></translation>
+        <translation>新语言将在面板下次启动时生效。</translation>
     </message>
     <message>
         <location line="+60"/>
         <source>%1: %2 is not a number from %3 to %4 %5</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 不是有效数字，应为 %3 至 %4 %5</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>Memory grows with the session: about 33 MB a million lines.</source>
-        <translation type="unfinished"></translation>
+        <translation>内存占用随会话增长：每百万行约 33 MB。</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>About %1 MB of memory at most.</source>
-        <translation type="unfinished"></translation>
+        <translation>最多占用约 %1 MB 内存。</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Session log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>会话日志文件夹</translation>
     </message>
 </context>
 <context>
@@ -2207,37 +2212,37 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/shortcuts_dialog.py" line="+75"/>
         <source>Keyboard Shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>键盘快捷键</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Search shortcuts…</source>
-        <translation type="unfinished"></translation>
+        <translation>搜索快捷键…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Search shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>搜索快捷键</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Keys</source>
-        <translation type="unfinished"></translation>
+        <translation>按键</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Action</source>
-        <translation type="unfinished"></translation>
+        <translation>操作</translation>
     </message>
     <message>
         <location line="+77"/>
         <source>No shortcut matches “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有与“%1”匹配的快捷键。</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No keyboard shortcuts.</source>
-        <translation type="unfinished"></translation>
+        <translation>没有键盘快捷键。</translation>
     </message>
 </context>
 <context>
@@ -2245,43 +2250,43 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/speed_control.py" line="+35"/>
         <source>Speed:</source>
-        <translation type="unfinished"></translation>
+        <translation>速度：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Speed of the next moves</source>
-        <translation type="unfinished"></translation>
+        <translation>后续移动的速度</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Apply</source>
-        <translation type="unfinished"></translation>
+        <translation>应用</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+34"/>
         <source>Send the speed in the field to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>将输入框中的速度发送到设备</translation>
     </message>
     <message>
         <location line="-29"/>
         <source>The speed the device reports (it may round)</source>
-        <translation type="unfinished"></translation>
+        <translation>设备报告的速度（可能经过取整）</translation>
     </message>
     <message>
         <location line="+59"/>
         <source>Speed, %1 to %2 mm/s; press Enter or Apply to send</source>
-        <translation type="unfinished"></translation>
+        <translation>速度，%1 至 %2 mm/s；按 Enter 或“应用”发送</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Drag and release to send (%1 to %2 mm/s)</source>
-        <translation type="unfinished"></translation>
+        <translation>拖动后松开即发送（%1 至 %2 mm/s）</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>device: %1 mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation>设备：%1 mm/s</translation>
     </message>
 </context>
 <context>
@@ -2289,63 +2294,63 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/status_line.py" line="+18"/>
         <source>Disconnected</source>
-        <translation type="unfinished"></translation>
+        <translation>未连接</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No device is connected</source>
-        <translation type="unfinished"></translation>
+        <translation>未连接任何设备</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+39"/>
         <source>Connecting…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在连接…</translation>
     </message>
     <message>
         <location line="-37"/>
         <source>Opening the port and asking the device who it is</source>
-        <translation type="unfinished"></translation>
+        <translation>正在打开端口并查询设备身份</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Idle</source>
-        <translation type="unfinished"></translation>
+        <translation>空闲</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Connected and not moving</source>
-        <translation type="unfinished"></translation>
+        <translation>已连接，未在移动</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Moving</source>
-        <translation type="unfinished"></translation>
+        <translation>移动中</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>A move is under way</source>
-        <translation type="unfinished"></translation>
+        <translation>正在移动</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Busy</source>
-        <translation type="unfinished"></translation>
+        <translation>忙碌</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>A command is under way</source>
-        <translation type="unfinished"></translation>
+        <translation>正在执行命令</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>错误</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The last command failed, or the connection did</source>
-        <translation type="unfinished"></translation>
+        <translation>上一条命令失败，或连接出错</translation>
     </message>
 </context>
 <context>
@@ -2353,22 +2358,22 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../app/theme.py" line="+354"/>
         <source>&amp;Theme</source>
-        <translation type="unfinished"></translation>
+        <translation>主题(&amp;T)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Follow the &amp;system</source>
-        <translation type="unfinished"></translation>
+        <translation>跟随系统(&amp;S)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Light</source>
-        <translation type="unfinished"></translation>
+        <translation>浅色(&amp;L)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Dark</source>
-        <translation type="unfinished"></translation>
+        <translation>深色(&amp;D)</translation>
     </message>
 </context>
 <context>
@@ -2376,48 +2381,48 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/travel_limits_dialog.py" line="+32"/>
         <source>Travel limits</source>
-        <translation type="unfinished"></translation>
+        <translation>行程限位</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
-        <translation type="unfinished"></translation>
+        <translation>平台在 %1 上允许到达的范围。若点动、定位或命令行移动会超出此范围，将在发送任何内容之前被拒绝，或被限制到边界。</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Limit moves to this box</source>
-        <translation type="unfinished"></translation>
+        <translation>将移动限制在此范围内</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>min</source>
-        <translation type="unfinished"></translation>
+        <translation>最小</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>max</source>
-        <translation type="unfinished"></translation>
+        <translation>最大</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1：</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Refuse a move that would leave the box</source>
-        <translation type="unfinished"></translation>
+        <translation>拒绝会超出范围的移动</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Clamp it: go as far as the edge, and say so</source>
-        <translation type="unfinished"></translation>
+        <translation>限制：移动到边界为止，并给出提示</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>%1: the minimum must be below the maximum</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：最小值必须小于最大值</translation>
     </message>
 </context>
 <context>
@@ -2425,22 +2430,22 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-95"/>
         <source>%1: edit cancelled, value unchanged</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：编辑已取消，值未更改</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 is an output. %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 是输出参数。%2</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>%1 = %2, not yet written to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 = %2，尚未写入设备</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>%1: %2 (Enter keeps it, Escape cancels)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2（按 Enter 保留，按 Escape 取消）</translation>
     </message>
 </context>
 <context>
@@ -2448,27 +2453,27 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../app/work_frame.py" line="+57"/>
         <source>work coordinates: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>工件坐标：%1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>work zero not set: the position is unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>未设置工件零点：位置未知</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>work zero set at %1 mm (machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>工件零点已设于 %1 mm（机床坐标）</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>work zero cleared: work coordinates are machine coordinates</source>
-        <translation type="unfinished"></translation>
+        <translation>工件零点已清除：工件坐标即机床坐标</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>work zero kept in place: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>工件零点保持不变：%1</translation>
     </message>
 </context>
 </TS>
