@@ -39,6 +39,8 @@ from typing import Any
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QSettings, Qt
 from PySide6.QtGui import QKeySequence
 
+from widgets._i18n import fill
+
 log = logging.getLogger(__name__)
 
 CONTEXT = "Preferences"  # the translation context of the labels and messages
@@ -94,16 +96,6 @@ _TRUE, _FALSE = ("true", "1", "yes", "on"), ("false", "0", "no", "off")
 
 def _tr(text: str) -> str:
     return QCoreApplication.translate(CONTEXT, text)
-
-
-def fill(template: str, *values: object) -> str:
-    """`template` with Qt's %1, %2 ... replaced by `values` in one pass (a value's "%2" stays)."""
-
-    def value(match: re.Match[str]) -> str:
-        number = int(match.group(1))
-        return str(values[number - 1]) if 1 <= number <= len(values) else match.group(0)
-
-    return _PLACEHOLDER.sub(value, template)
 
 
 @dataclass(frozen=True)
@@ -220,7 +212,7 @@ def label(name: str) -> str:
     """The field's label, translated; a jog key's reads "Jog key X-"."""
     text = _tr(_SPECS[name].label)
     if name in JOG_KEY_FIELDS:
-        return fill(_tr("Jog key %1"), text)
+        return fill(QCoreApplication.translate("Preferences", "Jog key %1"), text)
     return text
 
 
@@ -235,14 +227,23 @@ def _range_problem(name: str, value: float) -> str:
         return ""
     if s.low <= value <= s.high:
         return ""
-    span = f"{_number(s.low)} to {_number(s.high)} {_tr(s.unit)}"
+    span = fill(
+        QCoreApplication.translate("Preferences", "%1 to %2 %3"),
+        _number(s.low),
+        _number(s.high),
+        _tr(s.unit),
+    )
     if name == "console_max_lines":
-        template = _tr("%1: %2 lines is out of range: 0 (keep every line) or %3")
+        template = QCoreApplication.translate(
+            "Preferences", "%1: %2 lines is out of range: 0 (keep every line) or %3"
+        )
         return fill(template, label(name), _number(value), span)
     if name == "decimals":
-        template = _tr("%1: %2 is out of range: -1 (as the device resolves) or %3")
+        template = QCoreApplication.translate(
+            "Preferences", "%1: %2 is out of range: -1 (as the device resolves) or %3"
+        )
         return fill(template, label(name), _number(value), span)
-    template = _tr("%1: %2 %3 is out of range (%4)")
+    template = QCoreApplication.translate("Preferences", "%1: %2 %3 is out of range (%4)")
     return fill(template, label(name), _number(value), _tr(s.unit), span)
 
 
@@ -255,16 +256,16 @@ def folder_problem(path: str) -> str:
         return ""
     folder = Path(os.path.expanduser(path))
     if not folder.is_absolute():
-        return _tr("it must be an absolute path")
+        return QCoreApplication.translate("Preferences", "it must be an absolute path")
     if not folder.exists():
-        return _tr("it does not exist")
+        return QCoreApplication.translate("Preferences", "it does not exist")
     if not folder.is_dir():
-        return _tr("it is not a folder")
+        return QCoreApplication.translate("Preferences", "it is not a folder")
     try:
         with tempfile.TemporaryFile(dir=folder, prefix=".motionpanel-probe-"):
             pass
     except OSError:
-        return _tr("it is not writable")
+        return QCoreApplication.translate("Preferences", "it is not writable")
     return ""
 
 
@@ -272,15 +273,19 @@ def key_problem(text: str) -> str:
     """Why `text` cannot be a jog key ("" when it can): one key, no Shift/Ctrl/Alt/Meta."""
     sequence = QKeySequence(text)
     if sequence.count() != 1:
-        return _tr("it must be a single key")
+        return QCoreApplication.translate("Preferences", "it must be a single key")
     combination = sequence[0]
     if combination.key() in _MODIFIER_KEYS or not sequence.toString():
-        return _tr("it is not a key the panel can use")
+        return QCoreApplication.translate("Preferences", "it is not a key the panel can use")
     if combination.keyboardModifiers() & _NOT_ALLOWED:
-        return _tr("no Shift, Ctrl, Alt or Meta: Shift makes the step ten times bigger")
+        return QCoreApplication.translate(
+            "Preferences", "no Shift, Ctrl, Alt or Meta: Shift makes the step ten times bigger"
+        )
     use = RESERVED_KEYS.get(_without_keypad(text))
     if use is not None:
-        return fill(_tr("the window uses it for %1"), _tr(use))
+        return fill(
+            QCoreApplication.translate("Preferences", "the window uses it for %1"), _tr(use)
+        )
     return ""
 
 
@@ -304,16 +309,34 @@ def _key_problems(prefs: Preferences) -> list[tuple[str, str]]:
         text = getattr(prefs, name)
         if not text:
             if name not in OPTIONAL_KEYS:
-                problems.append((name, fill(_tr("%1: choose a key"), label(name))))
+                problems.append(
+                    (
+                        name,
+                        fill(
+                            QCoreApplication.translate("Preferences", "%1: choose a key"),
+                            label(name),
+                        ),
+                    )
+                )
             continue
         why = key_problem(text)
         if why:
-            message = fill(_tr("%1: %2 cannot be used: %3"), label(name), text, why)
+            message = fill(
+                QCoreApplication.translate("Preferences", "%1: %2 cannot be used: %3"),
+                label(name),
+                text,
+                why,
+            )
             problems.append((name, message))
             continue
         bare = _without_keypad(text)
         if bare in seen:
-            message = fill(_tr("%1: %2 is already %3"), label(name), text, label(seen[bare]))
+            message = fill(
+                QCoreApplication.translate("Preferences", "%1: %2 is already %3"),
+                label(name),
+                text,
+                label(seen[bare]),
+            )
             problems.append((name, message))
         else:
             seen[bare] = name
@@ -328,13 +351,23 @@ def _field_problems(prefs: Preferences) -> list[tuple[str, str]]:
             problems.append((name, why))
     why = folder_problem(prefs.log_folder)
     if why:
-        message = fill(_tr("%1: %2: %3"), label("log_folder"), prefs.log_folder, why)
+        message = fill(
+            QCoreApplication.translate("Preferences", "%1: %2: %3"),
+            label("log_folder"),
+            prefs.log_folder,
+            why,
+        )
         problems.append(("log_folder", message))
     for name in ("units", "theme", "language"):
         choices = _SPECS[name].choices
         if getattr(prefs, name) not in choices:
             value = repr(getattr(prefs, name))
-            message = fill(_tr("%1: %2 is not one of %3"), label(name), value, ", ".join(choices))
+            message = fill(
+                QCoreApplication.translate("Preferences", "%1: %2 is not one of %3"),
+                label(name),
+                value,
+                ", ".join(choices),
+            )
             problems.append((name, message))
     return problems + _key_problems(prefs)
 
