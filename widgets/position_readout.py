@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, Qt, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QLocale, Qt, Signal
 from PySide6.QtGui import QFont, QFontDatabase
 from PySide6.QtWidgets import (
     QGridLayout,
@@ -184,6 +184,13 @@ class PositionReadout(QWidget):
         value.setMinimumWidth(value.fontMetrics().horizontalAdvance("-0000.000 mm"))
         return value
 
+    def _number(self, value: float) -> str:
+        """A value with the decimals shown, in the interface's locale (12,34 in French), no
+        thousands separator."""
+        locale = QLocale()
+        locale.setNumberOptions(QLocale.NumberOption.OmitGroupSeparator)
+        return locale.toString(round(float(value), self._decimals) + 0.0, "f", self._decimals)
+
     def set_work_zero(self, zero: tuple[float, float, float]) -> None:
         """The work zero in machine mm ((0, 0, 0): the work frame is the machine frame)."""
         self._zero = (float(zero[0]), float(zero[1]), float(zero[2]))
@@ -294,8 +301,8 @@ class PositionReadout(QWidget):
                 work.setText(f"{UNKNOWN} mm")
                 label.setToolTip(self.tr("Position unknown"))
             else:
-                label.setText(f"{self._position[index]:.{self._decimals}f} mm")
-                work.setText(f"{self._position[index] - self._zero[index]:.{self._decimals}f} mm")
+                label.setText(f"{self._number(self._position[index])} mm")
+                work.setText(f"{self._number(self._position[index] - self._zero[index])} mm")
                 label.setToolTip(
                     self.tr("%1 position in mm from the device's home").replace("%1", axis.upper())
                 )
@@ -303,7 +310,8 @@ class PositionReadout(QWidget):
                     self.tr("%1 position in mm from the work zero").replace("%1", axis.upper())
                 )
         at_home = self._zero == (0.0, 0.0, 0.0)
-        shown = ", ".join(f"{v:.{self._decimals}f}" for v in self._zero)
+        comma = QLocale().decimalPoint() == ","
+        shown = ("; " if comma else ", ").join(self._number(v) for v in self._zero)
         self.zero_label.setText(
             self.tr("work zero: home")
             if at_home

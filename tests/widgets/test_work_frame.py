@@ -124,3 +124,19 @@ def test_use_current_and_ranges_follow_the_frame(entry: CoordinateEntry) -> None
     assert entry.values() == (12.0, 5.0, -2.0)
     with pytest.raises(ValueError, match="frame must be"):
         entry.set_frame("tool")
+
+
+def test_numbers_follow_the_interface_locale(readout: PositionReadout) -> None:
+    from PySide6.QtCore import QLocale
+
+    before = QLocale()
+    QLocale.setDefault(QLocale(QLocale.Language.French, QLocale.Country.France))
+    try:
+        readout.set_position(1234.5, -0.004, 0.0)
+        readout.set_work_zero((1.0, 0.0, 0.0))
+        assert readout.text("x") == "1234,50 mm"  # no thousands separator
+        assert readout.text("y") == "0,00 mm"  # no "-0,00"
+        assert readout.work_text("x") == "1233,50 mm"
+        assert readout.zero_label.text() == "work zero at (1,00; 0,00; 0,00) mm (machine)"
+    finally:
+        QLocale.setDefault(before)
