@@ -3,38 +3,46 @@
 from __future__ import annotations
 
 import sys
+from functools import cache
 
 from PySide6.QtCore import QEvent, QObject
 from PySide6.QtGui import QKeyEvent
-from PySide6.QtWidgets import (
-    QAbstractScrollArea,
-    QAbstractSlider,
-    QAbstractSpinBox,
-    QApplication,
-    QComboBox,
-    QLineEdit,
-    QMenu,
-    QMenuBar,
-    QRadioButton,
-    QTabBar,
-    QWidget,
-)
+from PySide6.QtWidgets import QApplication, QWidget
 
 from widgets.jog_panel import KEY_MAP, JogPanel
 
-# Widgets that use the arrow or page keys themselves (a jog key there is theirs), as the hint
-# names them; the first match describes the widget.
-ARROW_KEY_WIDGETS: tuple[tuple[type[QWidget], str], ...] = (
-    (QLineEdit, "a text field"),
-    (QAbstractSpinBox, "a number field"),
-    (QComboBox, "a drop-down list"),
-    (QAbstractSlider, "a slider"),
-    (QAbstractScrollArea, "a list or text view"),  # lists, tables, text views, the console
-    (QRadioButton, "a choice"),
-    (QMenuBar, "the menu bar"),
-    (QMenu, "a menu"),
-    (QTabBar, "tabs"),
-)
+
+@cache
+def arrow_key_widgets() -> tuple[tuple[type[QWidget], str], ...]:
+    """Widgets that use the arrow or page keys themselves (a jog key there is theirs), as the
+    hint names them; the first match describes the widget.
+
+    Looked up when first needed: a PySide class makes all its enums when first imported, which
+    the window's first paint need not wait for.
+    """
+    from PySide6.QtWidgets import (
+        QAbstractScrollArea,
+        QAbstractSlider,
+        QAbstractSpinBox,
+        QComboBox,
+        QLineEdit,
+        QMenu,
+        QMenuBar,
+        QRadioButton,
+        QTabBar,
+    )
+
+    return (
+        (QLineEdit, "a text field"),
+        (QAbstractSpinBox, "a number field"),
+        (QComboBox, "a drop-down list"),
+        (QAbstractSlider, "a slider"),
+        (QAbstractScrollArea, "a list or text view"),  # lists, tables, text views, the console
+        (QRadioButton, "a choice"),
+        (QMenuBar, "the menu bar"),
+        (QMenu, "a menu"),
+        (QTabBar, "tabs"),
+    )
 
 
 def arrow_key_user(widget: QWidget | None) -> str:
@@ -45,7 +53,7 @@ def arrow_key_user(widget: QWidget | None) -> str:
     pg = sys.modules.get("pyqtgraph")  # not imported yet: no plot exists (start-up stays light)
     if widget is None or (pg is not None and isinstance(widget, pg.GraphicsView)):
         return ""
-    return next((text for cls, text in ARROW_KEY_WIDGETS if isinstance(widget, cls)), "")
+    return next((text for cls, text in arrow_key_widgets() if isinstance(widget, cls)), "")
 
 
 class KeyboardJog(QObject):
@@ -54,20 +62,33 @@ class KeyboardJog(QObject):
     Jog keys act while `window` is the active window, no popup, menu or dialog is open, the jog
     panel is enabled, and the focus is not in a widget that uses the arrow keys itself. Releasing
     the held key, or the window losing the keyboard, ends a held jog.
+
+    It filters once `attach()`ed: the window attaches it just after its first paint, as an
+    application event filter makes PySide wrap every object an event is sent to, before the
+    paint (tens of milliseconds at start-up). `refresh()` sets the panel's hint meanwhile (the
+    window calls it when it enables or disables the panel).
     """
 
     def __init__(self, window: QWidget, panel: JogPanel) -> None:
         super().__init__(window)
         self.window = window
         self.panel = panel
+        self._attached = False
+        self._detached = False  # for good: the window closed
+
+    def attach(self) -> None:
+        """Start filtering the application's events (once; never after `detach()`)."""
         app = QApplication.instance()
-        assert app is not None
+        if app is None or self._attached or self._detached:
+            return
+        self._attached = True
         app.installEventFilter(self)
         app.focusChanged.connect(self._focus_changed)  # type: ignore[attr-defined]
-        self._attached = True
+        self._focus_changed()  # the window may have been activated meanwhile
 
     def detach(self) -> None:
         """Stop filtering (the window is closing)."""
+        self._detached = True
         app = QApplication.instance()
         if app is not None and self._attached:
             self._attached = False
@@ -109,6 +130,10 @@ class KeyboardJog(QObject):
         elif kind == QEvent.Type.WindowActivate and watched is self.window:
             self._focus_changed()
         return False
+
+    def refresh(self) -> None:
+        """Say again where the keys act (the jog panel was enabled or disabled)."""
+        self._focus_changed()
 
     def _focus_changed(self, *_args: object) -> None:
         blocker = self.blocker()

@@ -12,10 +12,11 @@ from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication
 
 from app.gc_main_thread import collect_for
+from app.i18n import LANGUAGES, install_translations, language_arg
 from app.main_window import MainWindow
 from app.settings import DEFAULT_PORT, DEFAULT_PROTOCOL
 from drivers.registry import get_protocol_class, protocol_names
-from widgets._gl_scene import share_opengl_contexts  # imports no OpenGL
+from widgets.gl_share import share_opengl_contexts  # imports no OpenGL, no numpy
 
 log = logging.getLogger("motionpanel")
 
@@ -36,6 +37,13 @@ def build_parser() -> argparse.ArgumentParser:
         "--screenshot",
         metavar="PATH",
         help="save a PNG of the window once connected and settled, then exit",
+    )
+    parser.add_argument(
+        "--lang",
+        metavar="CODE",
+        type=language_arg,
+        help=f"interface language: {', '.join(LANGUAGES)} (zh, zh-CN and zh_Hans are zh_CN;"
+        " default: $MOTIONPANEL_LANG, else the system locale, else en)",
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="log on stderr")
     return parser
@@ -74,18 +82,20 @@ def main(argv: Sequence[str] | None = None) -> int:
     share_opengl_contexts()  # before the QApplication exists
     app = QApplication.instance() or QApplication(sys.argv[:1])
     app.setApplicationName("Motion Panel")
+    install_translations(app, options.lang)  # before any widget is made
     window = MainWindow()
     collect_for(app, window.views.ready)  # collections from the event loop only
     signal.signal(signal.SIGINT, lambda *_: window.close())
     explicit = options.port or options.protocol or options.baud
     port = options.port or (DEFAULT_PORT if explicit or options.screenshot else None)
     protocol = options.protocol or DEFAULT_PROTOCOL
-    baud = options.baud or get_protocol_class(protocol).default_baud(options.variant)
     if port is None:
         # No arguments: reconnect to the last port (the simulated stage the first time).
         bar = window.connection_bar
         port, protocol = bar.port(), bar.protocol()
         baud = bar.baud() or get_protocol_class(protocol).capabilities.default_baud
+    else:  # (a protocol's module is imported before the first paint only when needed here)
+        baud = options.baud or get_protocol_class(protocol).default_baud(options.variant)
     if options.screenshot:
         take_screenshot(window, options.screenshot, app)
     window.show()

@@ -19,10 +19,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app import jobs
 from app.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
 from app.keyboard_jog import KeyboardJog
-from app.move_estimate import MoveEstimate
 from app.ports import PortWatcher
 from app.session_log import log_folder, open_session_log
 from app.settings import (
@@ -37,17 +35,8 @@ from app.settings import (
     settings_problem,
     write_travel,
 )
-from app.worker import ConnectOptions, DeviceInfo, SerialWorker
-from app.worker_thread import WorkerThread
-from drivers.capabilities import Capabilities
 from drivers.errors import BadInput, MotionError
-from drivers.events import PositionReport
-from drivers.motion import MoveStart
-from drivers.registry import create_protocol, get_protocol_class, protocol_names
-from drivers.sim.registry import simulator_names
-from drivers.traffic import Traffic
-from drivers.travel import TravelLimits
-from drivers.urlhandler.protocol_sim import with_sim_variant
+from drivers.registry import create_protocol, get_protocol_class, has_variants, protocol_names
 from widgets import status_line as status
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
@@ -59,11 +48,22 @@ from widgets.speed_control import SpeedControl
 from widgets.status_line import StatusLine
 
 if TYPE_CHECKING:
+    from typing import TextIO
+
+    from app import jobs
     from app.bridge_session import BridgeSession
     from app.device_docks import DeviceDocks
     from app.log_viewer import LogViewer
+    from app.move_estimate import MoveEstimate
     from app.parameter_dock import ParameterDock
     from app.traffic_console import RawConsole
+    from app.worker import DeviceInfo, SerialWorker
+    from app.worker_thread import WorkerThread
+    from drivers.capabilities import Capabilities
+    from drivers.events import PositionReport
+    from drivers.motion import MoveStart
+    from drivers.traffic import Traffic
+    from drivers.travel import TravelLimits
     from widgets.position_buffer import PositionBuffer
     from widgets.traffic_timeline import TrafficTimeline
 
@@ -104,11 +104,19 @@ STOP_TIP = "Stop the stage now: halts the move under way and drops what is queue
 
 def sim_ports() -> list[tuple[str, str]]:
     """Every built-in simulated device as a (port, description) pair."""
+    from drivers.sim.registry import simulator_names  # (listed after the first paint)
+
     return [(f"sim://{name}", f"simulated {name} device") for name in simulator_names()]
 
 
 class MainWindow(QMainWindow):
-    """Wires the widgets to the serial worker; never touches the port itself."""
+    """Wires the widgets to the serial worker; never touches the port itself.
+
+    The serial worker, its thread and the move estimate are built just after the window's first
+    paint (they import the jobs, the motion engine, the client and pyserial), or as soon as
+    `worker` or `worker_thread` is asked for; what the window asks of the worker's thread before
+    that (connect, disconnect, travel limits, the session log) is kept and done then, in order.
+    """
 
     settled = Signal()  # connected, state read, first position drawn
 
@@ -117,8 +125,11 @@ class MainWindow(QMainWindow):
         self.setObjectName("mainWindow")
         self.setWindowTitle("Motion Panel")
         self.settings = open_settings()
-        self.worker_thread = worker_thread or WorkerThread(self._make_worker())
-        self.worker = self.worker_thread.worker
+        self._serial: WorkerThread | None = None  # built by `_build_serial`
+        self._given_serial = worker_thread
+        self._serial_calls: list[Callable[[WorkerThread], object]] = []  # until it is built
+        self._pending_log: TextIO | None = None  # the session log, until the worker has it
+        self._closed = False
         # The whole trail, drawn decimated; built with the views (it imports numpy).
         self.buffer: PositionBuffer = LazyPart(self._build_buffer, BUFFER_CALLS)  # type: ignore[assignment]
         self.t0 = time.monotonic()
@@ -139,16 +150,72 @@ class MainWindow(QMainWindow):
         self._jog_job: jobs.MoveByJob | None = None
         self._jog_next: tuple[str, float] | None = None  # a tap during a step: the next step
         self._home_from: tuple[float, float, float] | None = None
-        self.estimate = MoveEstimate(self)
+        self.estimate: MoveEstimate | None = None  # built with the worker
         self._build()
+        self.keyboard_jog = KeyboardJog(self, self.jog_panel)
         self._wire()
         self._restore()
         problem = settings_problem(self.settings)
         if problem:  # the panel runs on defaults; the file is left as it was
             self._say(problem, status.WARNING)
         self._set_controls_enabled(False)
-        self.keyboard_jog = KeyboardJog(self, self.jog_panel)
+        # Just after the first paint, before the views: the worker (a connection asked for
+        # meanwhile starts), then the jog keys (an application event filter: see KeyboardJog).
+        self.views.add(self.keyboard_jog.attach, first=True)
+        self.views.add(self._start_serial, first=True)
         self.session_log_path = self._start_session_log()
+        if worker_thread is not None:
+            self._build_serial()
+
+    # -- the serial worker -------------------------------------------------------------------
+    @property
+    def worker_thread(self) -> WorkerThread:
+        """The serial worker's thread (built now if it is not yet)."""
+        return self._serial or self._build_serial()
+
+    @property
+    def worker(self) -> SerialWorker:
+        """The serial worker (built now if it is not yet)."""
+        return self.worker_thread.worker
+
+    def _build_serial(self) -> WorkerThread:
+        """The worker, wired to the window, on its running thread; then what was asked of it
+        before, in order. Harmless to call again."""
+        if self._serial is not None:
+            return self._serial
+        from app.move_estimate import MoveEstimate
+        from app.worker_thread import WorkerThread
+
+        self.estimate = MoveEstimate(self)
+        self.estimate.estimated.connect(self._on_estimate)
+        thread = self._given_serial
+        if thread is None:
+            worker = self._make_worker()
+            self._wire_worker(worker)  # before its thread starts: it says nothing unheard
+            thread = WorkerThread(worker)
+        else:
+            self._wire_worker(thread.worker)
+        self._serial, self._given_serial = thread, None
+        if self._closed:  # asked for after the window closed: one that has stopped
+            thread.stop()
+            return thread
+        calls, self._serial_calls = self._serial_calls, []
+        self._pending_log = None  # handed over by the calls
+        for call in calls:
+            call(thread)
+        return thread
+
+    def _start_serial(self) -> None:
+        """Just after the first paint: the worker, unless the window has closed meanwhile."""
+        if not self._closed:
+            self._build_serial()
+
+    def _to_worker(self, call: Callable[[WorkerThread], object]) -> None:
+        """`call(worker_thread)` now, or once the worker is built (in the order asked)."""
+        if self._serial is not None:
+            call(self._serial)
+        else:
+            self._serial_calls.append(call)
 
     def _start_session_log(self) -> Path | None:
         """Every byte of this session to a file in the log folder (on unless turned off)."""
@@ -159,8 +226,14 @@ class MainWindow(QMainWindow):
         except OSError as exc:
             self._say(f"no session log: {exc}", status.WARNING)
             return None
-        self._log_start = time.monotonic()  # the worker's log counts from about now
-        self.worker_thread.set_session_log(stream)
+        self._log_start = time.monotonic()
+        self._pending_log = stream  # closed here should the window close before the worker is
+
+        def hand_over(thread: WorkerThread) -> None:
+            self._log_start = time.monotonic()  # the worker's log counts from about now
+            thread.set_session_log(stream)
+
+        self._to_worker(hand_over)
         self.console.append_note(f"session log: {path}")
         return path
 
@@ -198,6 +271,8 @@ class MainWindow(QMainWindow):
         """A worker with the saved polling rates (5-10 Hz while a move is confirmed, 1 s idle)."""
         moving_hz = min(max(read_number(self.settings, "poll_moving_hz", 10.0), 5.0), 10.0)
         idle_s = min(max(read_number(self.settings, "poll_idle_s", 1.0), 0.2), 10.0)
+        from app.worker import SerialWorker
+
         return SerialWorker(poll_moving_hz=moving_hz, poll_idle_s=idle_s)
 
     # -- layout ------------------------------------------------------------------------------
@@ -332,7 +407,7 @@ class MainWindow(QMainWindow):
 
         self.console = console = RawConsole(self)
         self.console_dock.setWidget(console)
-        console.send_requested.connect(lambda data: self._submit(jobs.RawJob(data)))
+        console.send_requested.connect(self._send_raw)
         self.timeline = TrafficTimeline(self, deferred=True)
         self.timeline_dock.setWidget(self.timeline)
         self.timeline.build_plots()
@@ -361,8 +436,8 @@ class MainWindow(QMainWindow):
         self.devices = DeviceDocks(self)
         return self.devices
 
-    def _wire(self) -> None:
-        w = self.worker
+    def _wire_worker(self, w: SerialWorker) -> None:
+        """The worker's signals to the window (queued: it lives in its own thread)."""
         w.state_changed.connect(self._on_state)
         w.device_ready.connect(self._on_device_ready)
         w.traffic.connect(self._on_traffic)
@@ -377,8 +452,8 @@ class MainWindow(QMainWindow):
         w.device_error.connect(self._on_device_error)
         w.device_note.connect(self._on_device_note)
         w.capabilities_changed.connect(self._on_capabilities_changed)
-        self.estimate.estimated.connect(self._on_estimate)
 
+    def _wire(self) -> None:
         bar = self.connection_bar
         bar.connect_requested.connect(self._connect_from_bar)
         bar.disconnect_requested.connect(self._disconnect_from_bar)
@@ -393,10 +468,10 @@ class MainWindow(QMainWindow):
 
         self.jog_panel.jog_requested.connect(self._on_jog)
         self.coordinates.go_requested.connect(self._on_go)
-        self.coordinates.home_requested.connect(lambda: self._submit(jobs.HomeJob()))
+        self.coordinates.home_requested.connect(self._go_home)
         self.coordinates.set_home_requested.connect(self._set_home)
         self.coordinates.stop_requested.connect(self.stop)
-        self.speed.speed_requested.connect(lambda v: self._submit(jobs.SetSpeedJob(v)))
+        self.speed.speed_requested.connect(self._set_speed)
 
     # -- connection --------------------------------------------------------------------------
     def connect_device(
@@ -422,23 +497,30 @@ class MainWindow(QMainWindow):
             self.settings.setValue(f"variant/{protocol}", variant)
         shown = f"{protocol} {variant}" if variant else protocol
         self.console.append_note(f"connecting to {port} ({shown}, {baud} baud)")
-        try:
-            self.console.set_protocol(create_protocol(protocol, variant or None))
-        except (LookupError, BadInput):
-            self.console.set_protocol(None)  # the worker reports it; traffic is shown undecoded
-        self._apply_travel(read_travel(self.settings, protocol, port))
-        options = ConnectOptions(
-            variant,
-            read_parameters(self.settings, protocol, port),
-            read_protocol_settings(self.settings, protocol, port),
-        )
-        # The built-in simulated device speaks the variant chosen for the protocol.
-        try:
-            default = next((v.name for v in get_protocol_class(protocol).variants), "")
-        except LookupError:
-            default = ""  # the worker reports the unknown protocol
-        sim_variant = variant if variant != default else ""
-        self.worker_thread.open(with_sim_variant(port, sim_variant), protocol, baud, options)
+        parameters = read_parameters(self.settings, protocol, port)
+        protocol_settings = read_protocol_settings(self.settings, protocol, port)
+
+        def open_port(thread: WorkerThread) -> None:
+            """What needs the protocol's module and the worker: done once the worker is (just
+            after the first paint when asked for before it)."""
+            from app.worker import ConnectOptions
+            from drivers.urlhandler.protocol_sim import with_sim_variant
+
+            try:
+                self.console.set_protocol(create_protocol(protocol, variant or None))
+            except (LookupError, BadInput):
+                self.console.set_protocol(None)  # the worker reports it; shown undecoded
+            self._apply_travel(read_travel(self.settings, protocol, port))
+            # The built-in simulated device speaks the variant chosen for the protocol.
+            try:
+                default = next((v.name for v in get_protocol_class(protocol).variants), "")
+            except LookupError:
+                default = ""  # the worker reports the unknown protocol
+            sim_variant = variant if variant != default else ""
+            options = ConnectOptions(variant, parameters, protocol_settings)
+            thread.open(with_sim_variant(port, sim_variant), protocol, baud, options)
+
+        self._to_worker(open_port)
 
     def _connect_from_bar(self, port: str, protocol: str, baud: int) -> None:
         if self.connection_bar.bridge_mode():
@@ -466,6 +548,7 @@ class MainWindow(QMainWindow):
         except (LookupError, BadInput):
             self.console.set_protocol(None)
         from app.bridge_session import BridgeSession
+        from drivers.urlhandler.protocol_sim import with_sim_variant
 
         session = BridgeSession(
             with_sim_variant(port, variant), baud, self.session_log_path, self._log_start, self
@@ -507,9 +590,9 @@ class MainWindow(QMainWindow):
     def disconnect_device(self) -> None:
         """Ask the worker to close the port (and do not reconnect by itself)."""
         self._last_connection = None
-        dropped = self.worker.cancel_pending()
-        self._report_dropped(dropped)
-        self.worker_thread.close()
+        if self._serial is not None:  # (before the worker is built, nothing is queued)
+            self._report_dropped(self._serial.worker.cancel_pending())
+        self._to_worker(lambda thread: thread.close())
 
     def _on_state(self, state: str, detail: str) -> None:
         self.connection_bar.set_state(state)
@@ -615,11 +698,13 @@ class MainWindow(QMainWindow):
         self.connection_bar.set_baud(cls.default_baud(self.connection_bar.variant() or None))
 
     def _show_variants(self, protocol: str, current: str) -> None:
-        """List the protocol's wire variants in the bar (hidden when it has none)."""
+        """List the protocol's wire variants in the bar (hidden when it has none); imports the
+        protocol's module only when it has some."""
         try:
-            variants = [(v.name, v.description) for v in get_protocol_class(protocol).variants]
+            cls = get_protocol_class(protocol) if has_variants(protocol) else None
         except LookupError:
-            variants = []
+            cls = None
+        variants = [(v.name, v.description) for v in cls.variants] if cls is not None else []
         self.connection_bar.set_variants(variants, current)
 
     def _on_variant_changed(self, variant: str) -> None:
@@ -661,7 +746,7 @@ class MainWindow(QMainWindow):
     def _apply_travel(self, limits: TravelLimits | None) -> None:
         self.travel = limits
         box = limits.box if limits is not None else None
-        self.worker_thread.set_travel(limits)
+        self._to_worker(lambda thread: thread.set_travel(limits))
         self.coordinates.set_box(box)
         self.view2d.set_workspace(box)
         self.view3d.set_workspace(box)  # type: ignore[attr-defined]
@@ -683,6 +768,8 @@ class MainWindow(QMainWindow):
         if dialog.exec() != TravelLimitsDialog.DialogCode.Accepted:
             return
         box, clamp = dialog.result_limits()
+        from drivers.travel import TravelLimits
+
         limits = TravelLimits(box, clamp) if box is not None else None
         write_travel(self.settings, protocol, port, limits)
         self._apply_travel(limits)
@@ -708,6 +795,8 @@ class MainWindow(QMainWindow):
             self._jog_next = (axis, distance)
 
     def _jog_step(self, axis: str, distance: float) -> None:
+        from app import jobs
+
         deltas = {"x": 0.0, "y": 0.0, "z": 0.0}
         deltas[axis] = distance
         job = jobs.MoveByJob(deltas["x"], deltas["y"], deltas["z"])
@@ -721,25 +810,46 @@ class MainWindow(QMainWindow):
             self._jog_step(*step)
 
     def _on_go(self, mode: str, values: tuple[float, float, float]) -> None:
+        from app import jobs
+
         if mode == "relative":
             self._submit(jobs.MoveByJob(*values))
         else:
             self._submit(jobs.MoveToJob(*values))
 
     def _set_home(self) -> None:
+        from app import jobs
+
         if self._submit(jobs.SetHomeJob()):
             self._home_from = self._last_position
+
+    def _go_home(self) -> None:
+        from app import jobs
+
+        self._submit(jobs.HomeJob())
+
+    def _set_speed(self, speed: float) -> None:
+        from app import jobs
+
+        self._submit(jobs.SetSpeedJob(speed))
+
+    def _send_raw(self, data: bytes) -> None:
+        """The console's send line: bytes for the device as they are."""
+        from app import jobs
+
+        self._submit(jobs.RawJob(data))
 
     def stop(self) -> None:
         """Cancel what is queued and say what was not sent; where the device can stop, stop
         the move (or program) under way too."""
         self.jog_panel.release()
         self._jog_next = None
-        dropped = self.worker.cancel_pending()
+        serial = self._serial  # (before the worker is built, nothing is queued or moving)
+        dropped = serial.worker.cancel_pending() if serial is not None else []
         self._report_dropped(dropped)
         can_stop = self.info is not None and self.info.capabilities.stop
-        if can_stop and (self._busy_job is not None or self._moving):
-            self.worker.stop_now()
+        if serial is not None and can_stop and (self._busy_job is not None or self._moving):
+            serial.worker.stop_now()
             self._say("stopping the move under way", status.WARNING, note=False)
         elif not dropped:
             self._say("nothing queued; the move under way finishes", note=False)
@@ -756,6 +866,7 @@ class MainWindow(QMainWindow):
     def _set_controls_enabled(self, enabled: bool) -> None:
         for widget in (self.jog_panel, self.coordinates, self.speed):
             widget.setEnabled(enabled)
+        self.keyboard_jog.refresh()  # the hint follows: "keys off: not connected", or not
         self.console.set_send_enabled(enabled)
 
     # -- worker results ----------------------------------------------------------------------
@@ -773,7 +884,7 @@ class MainWindow(QMainWindow):
             self.console.append_note(
                 f"new home: the trail is shifted by ({-x:g}, {-y:g}, {-z:g}) mm"
             )
-        if self.estimate.active():
+        if self.estimate is not None and self.estimate.active():
             self._end_move_estimate()
         devices = self.devices
         if built(devices) and devices.arc_dock.isVisible() and devices.arc.start_z() != report.z:
@@ -791,7 +902,7 @@ class MainWindow(QMainWindow):
     def _on_move_started(self, move: MoveStart) -> None:
         self._moving = True
         self._show_machine_state()
-        if move.duration > 0:
+        if move.duration > 0 and self.estimate is not None:
             self.estimate.start(move)
 
     def _on_estimate(self, x: float, y: float, z: float) -> None:
@@ -811,13 +922,14 @@ class MainWindow(QMainWindow):
         self.view3d.set_estimated(estimated)  # type: ignore[attr-defined]
 
     def _end_move_estimate(self) -> None:
-        self.estimate.stop()
+        if self.estimate is not None:
+            self.estimate.stop()
         if self.readout.status() == "estimated":
             self._mark_estimated(False)
 
     def _end_move(self) -> None:
         self._moving = False
-        if self.estimate.active():
+        if self.estimate is not None and self.estimate.active():
             self._end_move_estimate()
 
     def _on_target(self, target: tuple[float, float, float] | None) -> None:
@@ -841,6 +953,8 @@ class MainWindow(QMainWindow):
         self.console.append_note(f"device: {text}")
 
     def _job_ended(self, job: jobs.Job) -> None:
+        from app import jobs
+
         self._busy_job = None
         if self._moving:  # one job at a time: when it ends, nothing moves (arcs and jogs alike)
             self._end_move()
@@ -859,6 +973,8 @@ class MainWindow(QMainWindow):
         self._show_machine_state()
 
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
+        from app import jobs
+
         self._failed = False
         self.status_line.clear_error()
         caps = self.info.capabilities if self.info is not None else None
@@ -900,11 +1016,19 @@ class MainWindow(QMainWindow):
         self.settings.setValue("windowState", self.saveState())
         self.settings.setValue("jog_step", self.jog_panel.step())
         self.settings.sync()
+        self._closed = True
         self.keyboard_jog.detach()
-        self.estimate.stop()
         self.port_watcher.stop()
-        if not self.worker_thread.stop():
-            log.error("the serial worker did not stop in time")
+        if self._serial is not None:
+            if self.estimate is not None:
+                self.estimate.stop()
+            if not self._serial.stop():
+                log.error("the serial worker did not stop in time")
+        else:  # closed before the worker was built: nothing to stop, nothing asked of it is done
+            self._serial_calls.clear()
+            if self._pending_log is not None:
+                self._pending_log.close()
+                self._pending_log = None
         if self.bridge is not None:
             self.bridge.bridge.close()  # its thread returns within a moment
         for viewer in self._viewers:

@@ -3,9 +3,12 @@
 from __future__ import annotations
 
 import importlib
+from typing import TYPE_CHECKING
 
 from drivers.errors import UnknownProtocol
-from drivers.protocols.base import Protocol
+
+if TYPE_CHECKING:
+    from drivers.protocols.base import Protocol
 
 PROTOCOLS: dict[str, tuple[str, str]] = {
     "coxiris": ("drivers.protocols.coxiris", "CoxirisProtocol"),
@@ -15,11 +18,20 @@ PROTOCOLS: dict[str, tuple[str, str]] = {
     "laser-frame": ("drivers.protocols.laser", "LaserProtocol"),
 }
 PLANNED: tuple[str, ...] = ()
+# The protocols that have wire variants (`Protocol.variants`), known without importing them: the
+# panel's first paint needs no protocol module, and most protocols have none (a test holds this
+# to the classes).
+WITH_VARIANTS: frozenset[str] = frozenset({"visiomex"})
 
 
 def protocol_names() -> list[str]:
     """Names of the protocols that can be used now."""
     return list(PROTOCOLS)
+
+
+def has_variants(name: str) -> bool:
+    """Whether the protocol registered as `name` has wire variants (imports no protocol)."""
+    return name in WITH_VARIANTS
 
 
 def get_protocol_class(name: str) -> type[Protocol]:

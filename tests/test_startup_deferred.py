@@ -1,5 +1,6 @@
 """The window paints before its heavy parts are built: numpy, pyqtgraph, the traffic console,
-the parameter and device docks come just after the first paint, and get the calls made before."""
+the parameter and device docks, the serial worker and the protocol modules come just after the
+first paint, and get the calls made before."""
 
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ import pytest
 from PySide6.QtWidgets import QDockWidget
 
 from app.main_window import MainWindow
+from drivers.registry import get_protocol_class, has_variants, protocol_names
 from widgets.lazy_view import LazyPart, built
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -27,6 +29,20 @@ HEAVY = (
     "app.log_viewer",
     "drivers.traffic_index",
     "serial.tools.list_ports",
+    # the serial worker, its thread, the jobs and the motion engine under them
+    "app.worker",
+    "app.worker_thread",
+    "app.jobs",
+    "app.move_estimate",
+    "drivers.motion",
+    "drivers.client",
+    "drivers.transport",
+    "serial",
+    # the protocols (the connection bar knows which have wire variants without them)
+    "drivers.protocols.base",
+    "drivers.protocols.coxiris",
+    "drivers.commands",
+    "drivers.events",
 )
 
 
@@ -50,7 +66,9 @@ class Painted(QObject):
 
 
 def ready():
-    seen["ready"] = sorted(m for m in ("numpy", "app.traffic_console") if m in sys.modules)
+    seen["ready"] = sorted(
+        m for m in ("numpy", "app.traffic_console", "app.worker") if m in sys.modules
+    )
     QTimer.singleShot(0, app.quit)
 
 
@@ -74,7 +92,7 @@ print(json.dumps(seen))
     )
     assert out.returncode == 0, out.stderr
     seen = json.loads(out.stdout.strip().splitlines()[-1])
-    assert seen == {"painted": [], "ready": ["app.traffic_console", "numpy"]}
+    assert seen == {"painted": [], "ready": ["app.traffic_console", "app.worker", "numpy"]}
 
 
 @pytest.fixture
@@ -90,10 +108,12 @@ def test_the_deferred_parts_get_the_calls_made_before_them(qtbot, unshown: MainW
     win = unshown
     assert not built(win.console) and not built(win.devices) and not built(win.parameters)
     assert not win.views.is_ready()
+    assert win._serial is None  # the serial worker too
     win.connect_device("loop://", "coxiris", 115200)
     win.console.append_note("before the console")
     win.show()
     qtbot.waitUntil(win.views.is_ready, timeout=10_000)
+    assert win._serial is not None and win.worker_thread.thread.isRunning()
     for part in (win.console, win.devices, win.parameters, win.buffer):
         assert built(part) and not isinstance(part, LazyPart)
     assert win.findChild(QDockWidget, "rawConsoleDock").widget() is win.console
@@ -107,11 +127,46 @@ def test_the_deferred_parts_get_the_calls_made_before_them(qtbot, unshown: MainW
     connecting = text.index("connecting to loop:// (coxiris")
     assert connecting < text.index("before the console")
     assert "session log:" in text.splitlines()[0]  # stamped when made, before the connection
+    # the connection asked for before the worker existed is made once it is: the worker asks
+    # (loop:// echoes it; no device answers)
+
+    def asked() -> None:
+        win.console.flush()
+        assert "GET_ID" in win.console.text()
+
+    qtbot.waitUntil(asked, timeout=10_000)
+    assert win.console.index.protocol is not None  # the console decodes it
     win.close()
 
 
 def test_a_window_closed_before_its_first_paint_builds_nothing(unshown: MainWindow) -> None:
     win = unshown
+    win.connect_device("loop://", "coxiris", 115200)
     win.close()
     assert not built(win.console)
+    assert win._serial is None  # no worker, no thread: the connection is not made
+    assert win._pending_log is None or win._pending_log.closed  # the session log is closed
+    # Built after the close (a late paint's building: the docks want the worker), it is a
+    # stopped one, and it was asked for nothing.
+    win.views.build_now()
     assert not win.worker_thread.thread.isRunning()
+    win.console.flush()
+    assert "GET_ID" not in win.console.text()
+
+
+def test_the_worker_is_built_when_asked_for_before_the_first_paint(
+    qtbot, unshown: MainWindow
+) -> None:
+    win = unshown
+    assert win._serial is None
+    worker = win.worker  # (a test, or a part built early, may need it)
+    assert win.worker_thread.thread.isRunning() and worker is win.worker_thread.worker
+    with qtbot.waitSignal(win.settled, timeout=10_000):
+        win.connect_device("sim://coxiris", "coxiris", 115200)  # done at once
+    win.close()
+    assert not win.worker_thread.thread.isRunning()
+
+
+@pytest.mark.parametrize("name", protocol_names())
+def test_the_registry_knows_which_protocols_have_variants(name: str) -> None:
+    assert has_variants(name) == bool(get_protocol_class(name).variants)

@@ -11,6 +11,7 @@ from PySide6.QtGui import QGuiApplication, QOffscreenSurface, QOpenGLContext
 from PySide6.QtWidgets import QToolButton, QWidget
 
 from widgets._axes import Box
+from widgets.gl_share import share_opengl_contexts as share_opengl_contexts
 
 # Qt platforms whose integration cannot draw a QOpenGLWidget (no RasterGLSurface capability).
 # Under a running X server "offscreen" still creates GLX contexts, but reports them as OpenGL 2.0
@@ -254,17 +255,6 @@ def preview_array(points: object) -> np.ndarray:
 def preview_tuples(array: np.ndarray) -> list[tuple[float, float, float]]:
     """The rows of a preview array as (x, y, z) tuples."""
     return [(float(x), float(y), float(z)) for x, y, z in array]
-
-
-def share_opengl_contexts() -> None:
-    """Call before the QApplication exists: lets the 3D view survive a new top-level window.
-
-    pyqtgraph caches its shader programs globally, so without shared contexts a second
-    GLViewWidget, or this one moved to another window (a floated dock), fails to draw
-    (pyqtgraph issues #1822, #3455). Here, not in position_view_3d, so that setting it imports
-    no OpenGL.
-    """
-    QCoreApplication.setAttribute(Qt.ApplicationAttribute.AA_ShareOpenGLContexts)
 
 
 def opengl_problem() -> str | None:

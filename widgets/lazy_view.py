@@ -212,7 +212,7 @@ class DeferredViews(QObject):
     `window.view2d` are the real ones and `ready` is emitted.
 
     More building can be added (`add`), such as the window's `LazyPart`s (the traffic console
-    and its timeline, the parameter and device docks). `build_now()`
+    and its timeline, the parameter and device docks) and its serial worker. `build_now()`
     builds everything at once (for a screenshot, or a window that is never shown).
     """
 
@@ -233,9 +233,13 @@ class DeferredViews(QObject):
         """A view is built: it is the window's `name` from now on."""
         setattr(self.parent(), name, view)
 
-    def add(self, step: Callable[[], object]) -> None:
-        """Run `step` too when building (it must be harmless to run twice)."""
-        self._steps.append(step)
+    def add(self, step: Callable[[], object], first: bool = False) -> None:
+        """Run `step` too when building (it must be harmless to run twice); `first`: before
+        the steps added so far, the views included (what the operator waits for)."""
+        if first:
+            self._steps.insert(0, step)
+        else:
+            self._steps.append(step)
 
     def is_ready(self) -> bool:
         """Whether everything has been built."""
