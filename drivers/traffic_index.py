@@ -247,7 +247,7 @@ class _Scripts:
     MAX_DEPTH = 64  # frames a script follows a request for; the tracker then goes on live
 
     def __init__(self) -> None:
-        self.starts: dict[bytes, int | None] = {}  # request → first state (None: no tracker)
+        self.starts: dict[bytes, int | None] = {}  # request (raw) → first state (None: none)
         self.steps: dict[tuple[int, bytes], tuple[bool, bool, int]] = {}  # → taken, done, next
         self.depth: dict[int, int] = {}  # state → frames since its start
         self.states = 0
@@ -423,15 +423,17 @@ class TrafficIndex:
         if not expects:
             return
         scripts = self._scripts
-        if data in scripts.starts:  # followed before: replayed (see _Waiting)
-            state = scripts.starts[data]
+        # Scripts are keyed by the frame's bytes as sent, ends included: two frames with the
+        # same text can end differently, and a tracker is built from the whole frame.
+        if frame.raw in scripts.starts:  # followed before: replayed (see _Waiting)
+            state = scripts.starts[frame.raw]
             if state is None:
                 waiting.append(_Waiting(line, time, data, frame.raw, code, False))
             else:
                 waiting.append(_Waiting(line, time, data, frame.raw, code, True, None, state, []))
             return
         exchange = self._tracker(frame.raw)
-        state = scripts.start(data, exchange is not None)
+        state = scripts.start(frame.raw, exchange is not None)
         tracked = exchange is not None
         waiting.append(
             _Waiting(
@@ -475,7 +477,7 @@ class TrafficIndex:
             if not waiting.tracked:
                 continue
             if waiting.exchange is None:  # replaying its script
-                step = steps.get((waiting.state, frame.data))
+                step = steps.get((waiting.state, frame.raw))
                 if step is not None:
                     taken, done, waiting.state = step
                     waiting.offered.append(frame)  # type: ignore[union-attr]
@@ -526,7 +528,7 @@ class TrafficIndex:
             taken = False
         done = taken and exchange.finished and not exchange.wants_more  # type: ignore[union-attr]
         if waiting.state >= 0:
-            waiting.state = self._scripts.learn(waiting.state, frame.data, taken, done)
+            waiting.state = self._scripts.learn(waiting.state, frame.raw, taken, done)
         return taken, done
 
     def _append_frame(self, frame: Frame, time: float, code: int) -> int:

@@ -499,6 +499,28 @@ def test_replayed_reply_trackers_pair_as_live_ones(name, variant, data) -> None:
         live.close()
 
 
+def test_replayed_scripts_tell_apart_frames_that_end_differently() -> None:
+    """Found by the test above: `\x00\n` and `\x00\r` are the same text, not the same frame
+    (their trackers differ), so a script learnt from one must not be replayed for the other."""
+    traffic = [("rx", b"\r\x80"), ("tx", b"\x00\n\x00\r")] * 3
+    replayed, live = (
+        TrafficIndex(create_protocol("coxiris")),
+        TrafficIndex(create_protocol("coxiris")),
+    )
+    live._scripts.MAX_DEPTH = 0
+    try:
+        for step, (direction, chunk) in enumerate(traffic):
+            for index in (replayed, live):
+                index.add(direction, chunk, step * 0.5)
+        assert [repr(replayed.line(n)) for n in range(len(replayed))] == [
+            repr(live.line(n)) for n in range(len(live))
+        ]
+        assert live.line(4).pair == 5
+    finally:
+        replayed.close()
+        live.close()
+
+
 def _spool_text(index: TrafficIndex, line: int) -> bytes:
     """A line's text in the spool, without its newline (what a filter is matched against)."""
     import os
