@@ -9,7 +9,7 @@ from PySide6.QtCore import QEvent, QObject
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QApplication, QWidget
 
-from widgets.jog_panel import KEY_MAP, JogPanel
+from widgets.jog_panel import JogPanel
 
 
 @cache
@@ -112,7 +112,7 @@ class KeyboardJog(QObject):
         """Jog on a jog key's press where allowed; end the held jog on its release."""
         kind = event.type()
         if kind in (QEvent.Type.KeyPress, QEvent.Type.KeyRelease) and isinstance(event, QKeyEvent):
-            if event.key() not in KEY_MAP:
+            if not self.panel.is_jog_key(event.key()):
                 return False
             if kind == QEvent.Type.KeyRelease:
                 self.panel.handle_key_release(event.key(), auto_repeat=event.isAutoRepeat())

@@ -35,6 +35,7 @@ from app.settings import (
     settings_problem,
     write_travel,
 )
+from app.window_tools import WindowTools, poll_rates
 from drivers.errors import BadInput, MotionError
 from drivers.registry import create_protocol, get_protocol_class, has_variants, protocol_names
 from widgets import status_line as status
@@ -100,6 +101,13 @@ NO_STOP_TIP = (
     "a move already under way on the device finishes (Esc)"
 )
 STOP_TIP = "Stop the stage now: halts the move under way and drops what is queued (Esc)"
+
+
+def _is_macro(job: object) -> bool:
+    """Whether `job` is a macro (the worker is built: app.jobs is imported)."""
+    from app import jobs
+
+    return isinstance(job, jobs.MacroJob)
 
 
 def sim_ports() -> list[tuple[str, str]]:
@@ -217,6 +225,10 @@ class MainWindow(QMainWindow):
         else:
             self._serial_calls.append(call)
 
+    def to_worker(self, call: Callable[[WorkerThread], object]) -> None:
+        """`call(worker_thread)` now, or once the worker is built (for the window's tools)."""
+        self._to_worker(call)
+
     def _start_session_log(self) -> Path | None:
         """Every byte of this session to a file in the log folder (on unless turned off)."""
         if str(self.settings.value("session_log", "true")).lower() == "false":
@@ -269,8 +281,7 @@ class MainWindow(QMainWindow):
 
     def _make_worker(self) -> SerialWorker:
         """A worker with the saved polling rates (5-10 Hz while a move is confirmed, 1 s idle)."""
-        moving_hz = min(max(read_number(self.settings, "poll_moving_hz", 10.0), 5.0), 10.0)
-        idle_s = min(max(read_number(self.settings, "poll_idle_s", 1.0), 0.2), 10.0)
+        moving_hz, idle_s = poll_rates(self.settings)
         from app.worker import SerialWorker
 
         return SerialWorker(poll_moving_hz=moving_hz, poll_idle_s=idle_s)
@@ -332,6 +343,10 @@ class MainWindow(QMainWindow):
         self.console_dock = docks[4]
         for part in (self.buffer, self.console, self.parameters, self.devices):
             self.views.add(part.build)
+        self.tools = WindowTools(self)  # macros, work coordinates, control lines, settings
+        self.tabifyDockWidget(docks[3], self.tools.macro_dock)  # Macros beside Speed
+        docks[3].raise_()
+        docks.append(self.tools.macro_dock)
         self._build_menus(docks)
         # The left panels run the full height; the console sits under the views only.
         self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
@@ -354,7 +369,7 @@ class MainWindow(QMainWindow):
         folder = file_menu.addAction("Open the session &log folder", self.open_log_folder)
         folder.setToolTip("Every byte of every session is kept there, one file a session")
         file_menu.addSeparator()
-        file_menu.addAction("&Quit", QKeySequence.StandardKey.Quit, self.close)
+        quit_action = file_menu.addAction("&Quit", QKeySequence.StandardKey.Quit, self.close)
         motion_menu = self.menuBar().addMenu("&Motion")
         self.stop_action = motion_menu.addAction("&Stop", self.stop)
         self.stop_action.setShortcut(QKeySequence(Qt.Key.Key_Escape))
@@ -370,6 +385,8 @@ class MainWindow(QMainWindow):
         view_menu.addSeparator()
         for dock in docks:
             view_menu.addAction(dock.toggleViewAction())
+        view_menu.addSeparator()
+        self.tools.add_menus(file_menu, quit_action, view_menu)
 
     def reset_views(self) -> None:
         """Fit the 2D and 3D views to the trail again."""
@@ -452,6 +469,8 @@ class MainWindow(QMainWindow):
         w.device_error.connect(self._on_device_error)
         w.device_note.connect(self._on_device_note)
         w.capabilities_changed.connect(self._on_capabilities_changed)
+        w.control_lines_changed.connect(self.tools.show_lines)
+        w.control_note.connect(self._on_control_note)
 
     def _wire(self) -> None:
         bar = self.connection_bar
@@ -510,14 +529,22 @@ class MainWindow(QMainWindow):
                 self.console.set_protocol(create_protocol(protocol, variant or None))
             except (LookupError, BadInput):
                 self.console.set_protocol(None)  # the worker reports it; shown undecoded
-            self._apply_travel(read_travel(self.settings, protocol, port))
+            clamp = self.tools.prefs.clamp_to_limits
+            self._apply_travel(read_travel(self.settings, protocol, port, clamp_default=clamp))
             # The built-in simulated device speaks the variant chosen for the protocol.
             try:
                 default = next((v.name for v in get_protocol_class(protocol).variants), "")
             except LookupError:
                 default = ""  # the worker reports the unknown protocol
             sim_variant = variant if variant != default else ""
-            options = ConnectOptions(variant, parameters, protocol_settings)
+            dtr, rts = self.tools.saved_lines(protocol, port)
+            options = ConnectOptions(
+                variant=variant,
+                settings=protocol_settings,
+                parameters=parameters,
+                dtr=dtr,
+                rts=rts,
+            )
             thread.open(with_sim_variant(port, sim_variant), protocol, baud, options)
 
         self._to_worker(open_port)
@@ -597,6 +624,7 @@ class MainWindow(QMainWindow):
     def _on_state(self, state: str, detail: str) -> None:
         self.connection_bar.set_state(state)
         was_connected, self.connected = self.connected, state == "connected"
+        self.tools.connection_state(self.connected)
         if state == "error":
             self._failed = self._link_failed = True
             self._say(f"connection error: {detail}", status.FAILURE)
@@ -648,6 +676,9 @@ class MainWindow(QMainWindow):
         self._adapt(info.capabilities)
         self.parameters.device_ready(info)
         self.devices.device_ready(info)
+        self.tools.device_ready(info.protocol, info.variant, info.port)
+        if self._last_position is not None and not self._position_lost:
+            self.tools.position(self._last_position)
         self._set_controls_enabled(True)
         self.travel_action.setEnabled(True)
         self._show_machine_state()
@@ -694,6 +725,7 @@ class MainWindow(QMainWindow):
         except LookupError as exc:
             self._say(str(exc), status.WARNING, note=False)
             return
+        self.tools.protocol_chosen(name)
         self._show_variants(name, read_str(self.settings, f"variant/{name}", ""))
         self.connection_bar.set_baud(cls.default_baud(self.connection_bar.variant() or None))
 
@@ -848,7 +880,11 @@ class MainWindow(QMainWindow):
         dropped = serial.worker.cancel_pending() if serial is not None else []
         self._report_dropped(dropped)
         can_stop = self.info is not None and self.info.capabilities.stop
-        if serial is not None and can_stop and (self._busy_job is not None or self._moving):
+        macro = serial is not None and _is_macro(self._busy_job)
+        if serial is not None and macro:
+            serial.worker.stop_now()  # every device: the macro ends between steps
+            self._say("stopping the macro under way", status.WARNING, note=False)
+        elif serial is not None and can_stop and (self._busy_job is not None or self._moving):
             serial.worker.stop_now()
             self._say("stopping the move under way", status.WARNING, note=False)
         elif not dropped:
@@ -868,6 +904,7 @@ class MainWindow(QMainWindow):
             widget.setEnabled(enabled)
         self.keyboard_jog.refresh()  # the hint follows: "keys off: not connected", or not
         self.console.set_send_enabled(enabled)
+        self.tools.controls_enabled(enabled)
 
     # -- worker results ----------------------------------------------------------------------
     def _on_traffic(self, records: list[Traffic]) -> None:
@@ -884,6 +921,7 @@ class MainWindow(QMainWindow):
             self.console.append_note(
                 f"new home: the trail is shifted by ({-x:g}, {-y:g}, {-z:g}) mm"
             )
+            self.tools.home_moved((x, y, z))
         if self.estimate is not None and self.estimate.active():
             self._end_move_estimate()
         devices = self.devices
@@ -895,6 +933,8 @@ class MainWindow(QMainWindow):
 
     def _show_position(self, x: float, y: float, z: float) -> None:
         self._last_position = (x, y, z)
+        if self.connected and not self._position_lost:
+            self.tools.position((x, y, z))
         self.readout.set_position(x, y, z)
         self.coordinates.set_known_position(x, y, z)
         self.buffer.append(time.monotonic() - self.t0, x, y, z)
@@ -943,6 +983,10 @@ class MainWindow(QMainWindow):
 
     def _on_notice(self, text: str) -> None:
         self._say(text, status.WARNING)
+
+    def _on_control_note(self, text: str) -> None:
+        """A control line changed, or a break was sent: in the console, among the traffic."""
+        self.console.append_note(text)
 
     def _on_device_error(self, message: str) -> None:
         self._failed = True

@@ -276,6 +276,15 @@ class SerialWorker(QObject):
         self._next_poll = time.monotonic() + self.poll_idle_s
         self._report_lines(force=True)  # again: the window enables the lines once connected
 
+    @Slot(float, float)
+    def set_poll_rates(self, moving_hz: float, idle_s: float) -> None:
+        """Read the position `moving_hz` times a second while a move is waited on, and every
+        `idle_s` seconds otherwise (from the next poll on)."""
+        self.poll_moving_hz, self.poll_idle_s = moving_hz, idle_s
+        if self._motion is not None:
+            self._motion.poll_interval = 1.0 / moving_hz
+        self._next_poll = min(self._next_poll, time.monotonic() + idle_s)
+
     @Slot(str, bool)
     def set_control_line(self, name: str, on: bool) -> None:
         """Drive DTR or RTS (`name`: "dtr" or "rts"); then report the lines as they are (a port

@@ -15,6 +15,9 @@ class WorkerThread(QObject):
     shutdown_requested = Signal()
     travel_requested = Signal(object)
     session_log_requested = Signal(object)
+    control_line_requested = Signal(str, bool)
+    break_requested = Signal()
+    poll_rates_requested = Signal(float, float)
 
     def __init__(self, worker: SerialWorker | None = None, parent: QObject | None = None) -> None:
         super().__init__(parent)
@@ -28,6 +31,9 @@ class WorkerThread(QObject):
         self.shutdown_requested.connect(self.worker.shutdown)
         self.travel_requested.connect(self.worker.set_travel)
         self.session_log_requested.connect(self.worker.set_session_log)
+        self.control_line_requested.connect(self.worker.set_control_line)
+        self.break_requested.connect(self.worker.send_break)
+        self.poll_rates_requested.connect(self.worker.set_poll_rates)
         self.thread.start()
 
     def open(self, url: str, protocol: str, baud: int, options: object = None) -> None:
@@ -42,6 +48,18 @@ class WorkerThread(QObject):
     def set_travel(self, limits: object) -> None:
         """Ask the worker to use these travel limits (a TravelLimits, or None)."""
         self.travel_requested.emit(limits)
+
+    def set_control_line(self, name: str, on: bool) -> None:
+        """Ask the worker to drive DTR or RTS (between jobs)."""
+        self.control_line_requested.emit(name, on)
+
+    def send_break(self) -> None:
+        """Ask the worker to send a 250 ms break (between jobs)."""
+        self.break_requested.emit()
+
+    def set_poll_rates(self, moving_hz: float, idle_s: float) -> None:
+        """Ask the worker to poll at these rates from now on."""
+        self.poll_rates_requested.emit(moving_hz, idle_s)
 
     def stream_pause(self, paused: bool) -> None:
         """Pause or resume the program under way."""

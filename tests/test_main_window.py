@@ -180,7 +180,7 @@ def test_polling_rates_come_from_the_settings(qtbot, tmp_path: Path, monkeypatch
 
 def test_menus_reset_views_and_toggle_panels(qtbot, window: MainWindow) -> None:
     titles = [action.text() for action in window.menuBar().actions()]
-    assert titles == ["&File", "&Motion", "&View"]
+    assert titles == ["&File", "&Motion", "&View", "&Help"]
     view_menu = window.menuBar().actions()[2].menu()
     names = [action.text() for action in view_menu.actions()]
     assert "&Reset views" in names and "Console" in names

@@ -75,6 +75,9 @@ class JogPanel(QWidget):
             f"{KEY_HINT} (see the hint below for where the keys work)."
         )
         self._axes = frozenset(AXES)
+        self.key_map: dict[int, tuple[str, float]] = dict(KEY_MAP)  # key -> (axis, direction)
+        self.step_keys: dict[int, int] = {}  # key -> -1 (a smaller step) or +1 (larger)
+        self.key_hint = KEY_HINT
         self._held: tuple[str, float] | None = None
         self._held_key: int | None = None
         self.buttons: dict[tuple[str, float], QPushButton] = {}
@@ -143,8 +146,9 @@ class JogPanel(QWidget):
 
     def set_keyboard_state(self, active: bool, reason: str) -> None:
         """Say whether the jog keys act now, and if not, why (e.g. "the focus is in a field")."""
+        self._keyboard_state = (active, reason)
         state = "keys active" if active else f"keys off: {reason}"
-        self.hint_label.setText(f"{KEY_HINT} · {state}")
+        self.hint_label.setText(f"{self.key_hint} · {state}")
         self.hint_label.setToolTip(
             "The jog keys work while this window is active and no menu, list, dialog or popup\n"
             "is open, except when the focus is in a field that uses the arrow keys itself\n"
@@ -152,6 +156,33 @@ class JogPanel(QWidget):
             "Click the views or this panel to give the keys back to jogging.\n"
             "Hold a key to keep stepping; Shift for a step ten times bigger."
         )
+
+    def set_key_map(
+        self, key_map: dict[int, tuple[str, float]], step_keys: dict[int, int], hint: str
+    ) -> None:
+        """The jog keys (key code -> (axis, direction)), the step keys (key code -> -1 for the
+        next smaller preset step, +1 for the next larger) and the hint naming them."""
+        self.release()
+        self.key_map, self.step_keys, self.key_hint = dict(key_map), dict(step_keys), hint
+        self.set_keyboard_state(*self._keyboard_state)
+
+    def is_jog_key(self, key: int) -> bool:
+        """Whether `key` (a key code) jogs or changes the step."""
+        key = int(getattr(key, "value", key))
+        return key in self.key_map or key in self.step_keys
+
+    def change_step(self, direction: int) -> float:
+        """The next preset step below (-1) or above (+1) the current one; returns it."""
+        step = self.step()
+        usable = [v for v, b in self.preset_buttons.items() if b.isEnabled()]
+        if direction < 0:
+            smaller = [v for v in usable if v < step - 1e-12]
+            chosen = max(smaller) if smaller else step
+        else:
+            larger = [v for v in usable if v > step + 1e-12]
+            chosen = min(larger) if larger else step
+        self.set_step(chosen)
+        return chosen
 
     def set_resolution(self, resolution: float | None) -> None:
         """Step sizes are typed to the device's resolution in mm (None: 0.001 mm)."""
@@ -205,8 +236,12 @@ class JogPanel(QWidget):
         Keys with Ctrl, Alt or Meta are left alone, and so is everything while disabled.
         """
         key = int(getattr(key, "value", key))
-        target = KEY_MAP.get(key)
         bits = modifier_bits(modifiers)
+        if key in self.step_keys and not bits & ~_KEYPAD and self.isEnabled():
+            if not auto_repeat:
+                self.change_step(self.step_keys[key])
+            return True
+        target = self.key_map.get(key)
         if target is None or bits & ~(_SHIFT | _KEYPAD) or not self.isEnabled():
             return False
         axis, direction = target
@@ -220,7 +255,9 @@ class JogPanel(QWidget):
     def handle_key_release(self, key: int, *, auto_repeat: bool = False) -> bool:
         """End a held jog when its key is released; True if the key is a jog key."""
         key = int(getattr(key, "value", key))
-        if key not in KEY_MAP:
+        if key in self.step_keys:
+            return True
+        if key not in self.key_map:
             return False
         if not auto_repeat and key == self._held_key:
             self.release()

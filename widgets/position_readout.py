@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QLocale, Qt, Signal
@@ -17,8 +18,11 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._axes import AXES, decimals_for, normalize_axes
+from widgets._i18n import fill
 
 UNKNOWN = "—"
+MM, INCH = "mm", "in"
+MM_PER_INCH = 25.4
 # Translated at use, in the PositionReadout context.
 NOT_MEASURED_TEXT = QT_TRANSLATE_NOOP("PositionReadout", "commanded, not measured")
 CONFIRMED_TEXT = QT_TRANSLATE_NOOP("PositionReadout", "commanded, move confirmed")
@@ -75,6 +79,9 @@ class PositionReadout(QWidget):
         self._axes = frozenset(AXES)
         self._position: tuple[float, float, float] | None = None
         self._zero: tuple[float, float, float] = (0.0, 0.0, 0.0)
+        self._units = MM
+        self._fixed_decimals = -1
+        self._resolution: float | None = None
         self._status = LIVE
 
         font = QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)
@@ -189,6 +196,8 @@ class PositionReadout(QWidget):
         thousands separator."""
         locale = QLocale()
         locale.setNumberOptions(QLocale.NumberOption.OmitGroupSeparator)
+        if self._units == INCH:
+            value = value / MM_PER_INCH
         return locale.toString(round(float(value), self._decimals) + 0.0, "f", self._decimals)
 
     def set_work_zero(self, zero: tuple[float, float, float]) -> None:
@@ -262,7 +271,32 @@ class PositionReadout(QWidget):
 
     def set_resolution(self, resolution: float | None) -> None:
         """Show as many decimals as the device resolves (0.01 mm: 2; 1 µm: 3; 1 mm: 0)."""
-        decimals = 2 if resolution is None else decimals_for(resolution)
+        self._resolution = resolution
+        self._set_decimals()
+
+    def set_display(self, units: str, decimals: int = -1) -> None:
+        """Show positions in "mm" or "in" (the device is always sent mm), with `decimals`
+        decimals (-1: as many as the device resolves, in those units)."""
+        if units not in (MM, INCH):
+            raise ValueError(f"units must be {MM!r} or {INCH!r}, not {units!r}")
+        self._units, self._fixed_decimals = units, decimals
+        self._set_decimals()
+        self._render()
+
+    def units(self) -> str:
+        """The units positions are shown in: "mm" or "in"."""
+        return self._units
+
+    def _set_decimals(self) -> None:
+        if self._fixed_decimals >= 0:
+            decimals = self._fixed_decimals
+        elif self._resolution is None:
+            decimals = 2 if self._units == MM else 3
+        else:
+            decimals = decimals_for(self._resolution)
+            if self._units == INCH:  # enough to tell one device step from the next
+                inches = self._resolution / MM_PER_INCH
+                decimals = max(0, min(5, math.ceil(-math.log10(inches) - 1e-9)))
         if decimals != self._decimals:
             self._decimals = decimals
             self._render()
@@ -293,16 +327,17 @@ class PositionReadout(QWidget):
                 widget.setVisible(enabled)  # a device without the axis: its row is not shown
             label.setEnabled(enabled)
             if not enabled:
-                label.setText(f"{UNKNOWN} mm")
-                work.setText(f"{UNKNOWN} mm")
+                label.setText(f"{UNKNOWN} {self._units}")
+                work.setText(f"{UNKNOWN} {self._units}")
                 label.setToolTip(self.tr("This device has no %1 axis").replace("%1", axis.upper()))
             elif self._position is None:
-                label.setText(f"{UNKNOWN} mm")
-                work.setText(f"{UNKNOWN} mm")
+                label.setText(f"{UNKNOWN} {self._units}")
+                work.setText(f"{UNKNOWN} {self._units}")
                 label.setToolTip(self.tr("Position unknown"))
             else:
-                label.setText(f"{self._number(self._position[index])} mm")
-                work.setText(f"{self._number(self._position[index] - self._zero[index])} mm")
+                machine = self._position[index]
+                label.setText(f"{self._number(machine)} {self._units}")
+                work.setText(f"{self._number(machine - self._zero[index])} {self._units}")
                 label.setToolTip(
                     self.tr("%1 position in mm from the device's home").replace("%1", axis.upper())
                 )
@@ -315,6 +350,6 @@ class PositionReadout(QWidget):
         self.zero_label.setText(
             self.tr("work zero: home")
             if at_home
-            else self.tr("work zero at %1 mm (machine)").replace("%1", f"({shown})")
+            else fill(self.tr("work zero at (%1) %2 (machine)"), shown, self._units)
         )
         self.clear_zero_button.setEnabled(not at_home)

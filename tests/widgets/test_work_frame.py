@@ -140,3 +140,24 @@ def test_numbers_follow_the_interface_locale(readout: PositionReadout) -> None:
         assert readout.zero_label.text() == "work zero at (1,00; 0,00; 0,00) mm (machine)"
     finally:
         QLocale.setDefault(before)
+
+
+def test_inches_shown_with_the_device_resolution_or_fixed_decimals(
+    readout: PositionReadout,
+) -> None:
+    readout.set_resolution(0.01)
+    readout.set_position(25.4, -12.7, 0.0)
+    readout.set_work_zero((25.4, 0.0, 0.0))
+    assert readout.text("x") == "25.40 mm"
+    readout.set_display("in")
+    assert readout.units() == "in"
+    assert readout.text("x") == "1.0000 in"  # 0.01 mm is 0.0004 in: four decimals
+    assert readout.work_text("x") == "0.0000 in"
+    assert readout.text("y") == "-0.5000 in"
+    assert readout.zero_label.text() == "work zero at (1.0000, 0.0000, 0.0000) in (machine)"
+    readout.set_display("in", 2)
+    assert readout.text("y") == "-0.50 in"
+    readout.set_display("mm", -1)
+    assert readout.text("y") == "-12.70 mm"
+    with pytest.raises(ValueError, match="units must be"):
+        readout.set_display("furlong")
