@@ -3,15 +3,16 @@ paint, so that the saved layout places them) and the device docks (which fill th
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QT_TRANSLATE_NOOP, Qt
 
 LEFT, BOTTOM = Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
 
 DEVICE_DOCKS: dict[str, tuple[str, Qt.DockWidgetArea]] = {
-    # object name: (title, area); in tab order, the bottom ones first
-    "firmataPanelDock": ("Stepper setup", BOTTOM),
-    "piFramePanelDock": ("Frame setup", BOTTOM),
-    "programPanelDock": ("Program", BOTTOM),
-    "arcEntryDock": ("Arc", LEFT),
-    "dwellEntryDock": ("Dwell", LEFT),
+    # object name: (title, area); in tab order, the bottom ones first. The titles are marked
+    # here and translated where the docks are made, context "DockLayout".
+    "firmataPanelDock": (QT_TRANSLATE_NOOP("DockLayout", "Stepper setup"), BOTTOM),
+    "piFramePanelDock": (QT_TRANSLATE_NOOP("DockLayout", "Frame setup"), BOTTOM),
+    "programPanelDock": (QT_TRANSLATE_NOOP("DockLayout", "Program"), BOTTOM),
+    "arcEntryDock": (QT_TRANSLATE_NOOP("DockLayout", "Arc"), LEFT),
+    "dwellEntryDock": (QT_TRANSLATE_NOOP("DockLayout", "Dwell"), LEFT),
 }

@@ -5,17 +5,19 @@ from __future__ import annotations
 import sys
 from functools import cache
 
-from PySide6.QtCore import QEvent, QObject
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QEvent, QObject
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QApplication, QWidget
 
+from widgets._i18n import fill
 from widgets.jog_panel import JogPanel
 
 
 @cache
 def arrow_key_widgets() -> tuple[tuple[type[QWidget], str], ...]:
     """Widgets that use the arrow or page keys themselves (a jog key there is theirs), as the
-    hint names them; the first match describes the widget.
+    hint names them (marked for translation, context "KeyboardJog"); the first match describes
+    the widget.
 
     Looked up when first needed: a PySide class makes all its enums when first imported, which
     the window's first paint need not wait for.
@@ -33,15 +35,16 @@ def arrow_key_widgets() -> tuple[tuple[type[QWidget], str], ...]:
     )
 
     return (
-        (QLineEdit, "a text field"),
-        (QAbstractSpinBox, "a number field"),
-        (QComboBox, "a drop-down list"),
-        (QAbstractSlider, "a slider"),
-        (QAbstractScrollArea, "a list or text view"),  # lists, tables, text views, the console
-        (QRadioButton, "a choice"),
-        (QMenuBar, "the menu bar"),
-        (QMenu, "a menu"),
-        (QTabBar, "tabs"),
+        (QLineEdit, QT_TRANSLATE_NOOP("KeyboardJog", "a text field")),
+        (QAbstractSpinBox, QT_TRANSLATE_NOOP("KeyboardJog", "a number field")),
+        (QComboBox, QT_TRANSLATE_NOOP("KeyboardJog", "a drop-down list")),
+        (QAbstractSlider, QT_TRANSLATE_NOOP("KeyboardJog", "a slider")),
+        # lists, tables, text views, the console
+        (QAbstractScrollArea, QT_TRANSLATE_NOOP("KeyboardJog", "a list or text view")),
+        (QRadioButton, QT_TRANSLATE_NOOP("KeyboardJog", "a choice")),
+        (QMenuBar, QT_TRANSLATE_NOOP("KeyboardJog", "the menu bar")),
+        (QMenu, QT_TRANSLATE_NOOP("KeyboardJog", "a menu")),
+        (QTabBar, QT_TRANSLATE_NOOP("KeyboardJog", "tabs")),
     )
 
 
@@ -98,15 +101,15 @@ class KeyboardJog(QObject):
     def blocker(self) -> str:
         """Why the jog keys do not act now ("" when they do)."""
         if not self.panel.isEnabled():
-            return "not connected"
+            return self.tr("not connected")
         if QApplication.activePopupWidget() is not None:
-            return "a menu or list is open"
+            return self.tr("a menu or list is open")
         if QApplication.activeModalWidget() is not None:
-            return "a dialog is open"
+            return self.tr("a dialog is open")
         if not self.window.isActiveWindow():
-            return "another window is active"
+            return self.tr("another window is active")
         kind = arrow_key_user(QApplication.focusWidget())
-        return f"the focus is in {kind}" if kind else ""
+        return fill(self.tr("the focus is in %1"), self.tr(kind)) if kind else ""
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """Jog on a jog key's press where allowed; end the held jog on its release."""

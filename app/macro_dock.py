@@ -188,7 +188,8 @@ class MacroDock(QObject):
                 macros.check_macro(macro, self.protocol)
             merged = macros.merge(self.macros, incoming)
             if len(merged) > macros.MAX_MACROS:
-                raise macros.BadMacro(f"{len(merged)} macros; at most {macros.MAX_MACROS}")
+                too_many = self.tr("%1 macros; at most %2")
+                raise macros.BadMacro(fill(too_many, len(merged), macros.MAX_MACROS))
         except BadInput as exc:
             self.window.say(fill(self.tr("macros not imported: %1"), exc))
             return False

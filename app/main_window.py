@@ -9,7 +9,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import Qt, QTimer, QUrl, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Qt, QTimer, QUrl, Signal
 from PySide6.QtGui import QCloseEvent, QDesktopServices, QKeySequence
 from PySide6.QtWidgets import (
     QDockWidget,
@@ -39,6 +39,7 @@ from app.window_tools import WindowTools, poll_rates
 from drivers.errors import BadInput, MotionError
 from drivers.registry import create_protocol, get_protocol_class, has_variants, protocol_names
 from widgets import status_line as status
+from widgets._i18n import fill
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
 from widgets.jog_panel import JogPanel
@@ -96,11 +97,15 @@ def _stamp_note(name: str, args: tuple, kwargs: dict) -> tuple[tuple, dict]:
     return args, kwargs
 
 
-NO_STOP_TIP = (
-    "{name} has no stop command: this drops the commands not yet sent; "
-    "a move already under way on the device finishes (Esc)"
+# Marked here, translated at use (context "MainWindow"); %1: the device's protocol.
+NO_STOP_TIP = QT_TRANSLATE_NOOP(
+    "MainWindow",
+    "%1 has no stop command: this drops the commands not yet sent; "
+    "a move already under way on the device finishes (Esc)",
 )
-STOP_TIP = "Stop the stage now: halts the move under way and drops what is queued (Esc)"
+STOP_TIP = QT_TRANSLATE_NOOP(
+    "MainWindow", "Stop the stage now: halts the move under way and drops what is queued (Esc)"
+)
 
 
 def _is_macro(job: object) -> bool:
@@ -114,7 +119,8 @@ def sim_ports() -> list[tuple[str, str]]:
     """Every built-in simulated device as a (port, description) pair."""
     from drivers.sim.registry import simulator_names  # (listed after the first paint)
 
-    return [(f"sim://{name}", f"simulated {name} device") for name in simulator_names()]
+    description = QCoreApplication.translate("MainWindow", "simulated %1 device")
+    return [(f"sim://{name}", fill(description, name)) for name in simulator_names()]
 
 
 class MainWindow(QMainWindow):
@@ -131,7 +137,7 @@ class MainWindow(QMainWindow):
     def __init__(self, worker_thread: WorkerThread | None = None) -> None:
         super().__init__()
         self.setObjectName("mainWindow")
-        self.setWindowTitle("Motion Panel")
+        self.setWindowTitle(self.tr("Motion Panel"))
         self.settings = open_settings()
         self._serial: WorkerThread | None = None  # built by `_build_serial`
         self._given_serial = worker_thread
@@ -236,7 +242,7 @@ class MainWindow(QMainWindow):
         try:
             path, stream = open_session_log()
         except OSError as exc:
-            self._say(f"no session log: {exc}", status.WARNING)
+            self._say(fill(self.tr("no session log: %1"), exc), status.WARNING)
             return None
         self._log_start = time.monotonic()
         self._pending_log = stream  # closed here should the window close before the worker is
@@ -246,7 +252,7 @@ class MainWindow(QMainWindow):
             thread.set_session_log(stream)
 
         self._to_worker(hand_over)
-        self.console.append_note(f"session log: {path}")
+        self.console.append_note(fill(self.tr("session log: %1"), path))
         return path
 
     def _ask_log_path(self) -> str:
@@ -290,7 +296,7 @@ class MainWindow(QMainWindow):
     def _build(self) -> None:
         self.connection_bar = ConnectionBar(self)
         self.connection_bar.set_protocols(protocol_names())
-        toolbar = QToolBar("Connection", self)
+        toolbar = QToolBar(self.tr("Connection"), self)
         toolbar.setObjectName("connectionToolBar")
         toolbar.setMovable(False)
         toolbar.addWidget(self.connection_bar)
@@ -319,24 +325,28 @@ class MainWindow(QMainWindow):
         self.timeline: TrafficTimeline | None = None
         left, bottom = LEFT, BOTTOM
         docks = [
-            self._dock("Position", self.readout, left),
-            self._dock("Jog", self.jog_panel, left),
-            self._dock("Go to", self.coordinates, left),
-            self._dock("Speed", self.speed, left),
-            self._empty_dock("Console", "rawConsoleDock", bottom),
+            self._dock(self.tr("Position"), self.readout, left),
+            self._dock(self.tr("Jog"), self.jog_panel, left),
+            self._dock(self.tr("Go to"), self.coordinates, left),
+            self._dock(self.tr("Speed"), self.speed, left),
+            self._empty_dock(self.tr("Console"), "rawConsoleDock", bottom),
         ]
         self.coordinates_dock = docks[2]
-        parameter_dock = self._empty_dock("Parameters", "parameterEditor", bottom, hidden=True)
+        parameter_dock = self._empty_dock(
+            self.tr("Parameters"), "parameterEditor", bottom, hidden=True
+        )
         self.tabifyDockWidget(docks[-1], parameter_dock)
         docks.append(parameter_dock)
         device_docks = [
-            self._empty_dock(title, name, area, hidden=True)
+            self._empty_dock(QCoreApplication.translate("DockLayout", title), name, area, True)
             for name, (title, area) in DEVICE_DOCKS.items()
         ]
         for dock in device_docks[:3]:
             self.tabifyDockWidget(docks[-2], dock)
         docks.extend(device_docks)
-        self.timeline_dock = self._empty_dock("Traffic timeline", "trafficTimelineDock", bottom)
+        self.timeline_dock = self._empty_dock(
+            self.tr("Traffic timeline"), "trafficTimelineDock", bottom
+        )
         self.tabifyDockWidget(docks[4], self.timeline_dock)
         docks.append(self.timeline_dock)
         docks[4].raise_()  # the console is the tab shown first
@@ -357,31 +367,39 @@ class MainWindow(QMainWindow):
         self.resize(1400, 900)
 
     def _build_menus(self, docks: list[QDockWidget]) -> None:
-        file_menu = self.menuBar().addMenu("&File")
+        file_menu = self.menuBar().addMenu(self.tr("&File"))
         export = file_menu.addAction(
-            "&Export traffic log…", lambda: self.console.export_interactively()
+            self.tr("&Export traffic log…"), lambda: self.console.export_interactively()
         )
         export.setShortcut(QKeySequence("Ctrl+E"))
-        export.setToolTip("Save every byte sent and received, with timestamps, to a text file")
-        opener = file_menu.addAction("&Open log…", self.open_log)
+        export.setToolTip(
+            self.tr("Save every byte sent and received, with timestamps, to a text file")
+        )
+        opener = file_menu.addAction(self.tr("&Open log…"), self.open_log)
         opener.setShortcut(QKeySequence.StandardKey.Open)
-        opener.setToolTip("Browse a traffic log (ours or a pyserial spy:// capture) decoded")
-        folder = file_menu.addAction("Open the session &log folder", self.open_log_folder)
-        folder.setToolTip("Every byte of every session is kept there, one file a session")
+        opener.setToolTip(
+            self.tr("Browse a traffic log (ours or a pyserial spy:// capture) decoded")
+        )
+        folder = file_menu.addAction(self.tr("Open the session &log folder"), self.open_log_folder)
+        folder.setToolTip(self.tr("Every byte of every session is kept there, one file a session"))
         file_menu.addSeparator()
-        quit_action = file_menu.addAction("&Quit", QKeySequence.StandardKey.Quit, self.close)
-        motion_menu = self.menuBar().addMenu("&Motion")
-        self.stop_action = motion_menu.addAction("&Stop", self.stop)
+        quit_action = file_menu.addAction(
+            self.tr("&Quit"), QKeySequence.StandardKey.Quit, self.close
+        )
+        motion_menu = self.menuBar().addMenu(self.tr("&Motion"))
+        self.stop_action = motion_menu.addAction(self.tr("&Stop"), self.stop)
         self.stop_action.setShortcut(QKeySequence(Qt.Key.Key_Escape))
         self.stop_action.setShortcutContext(Qt.ShortcutContext.ApplicationShortcut)
         motion_menu.addSeparator()
-        self.travel_action = motion_menu.addAction("&Travel limits…", self.edit_travel_limits)
-        self.travel_action.setToolTip("The box the stage may move in, for this device")
+        self.travel_action = motion_menu.addAction(
+            self.tr("&Travel limits…"), self.edit_travel_limits
+        )
+        self.travel_action.setToolTip(self.tr("The box the stage may move in, for this device"))
         self.travel_action.setEnabled(False)
-        view_menu = self.menuBar().addMenu("&View")
-        reset = view_menu.addAction("&Reset views", self.reset_views)
+        view_menu = self.menuBar().addMenu(self.tr("&View"))
+        reset = view_menu.addAction(self.tr("&Reset views"), self.reset_views)
         reset.setShortcut(QKeySequence("Ctrl+R"))
-        view_menu.addAction("&Clear trail", self.view2d.clear_trail)
+        view_menu.addAction(self.tr("&Clear trail"), self.view2d.clear_trail)
         view_menu.addSeparator()
         for dock in docks:
             view_menu.addAction(dock.toggleViewAction())
@@ -515,7 +533,7 @@ class MainWindow(QMainWindow):
         if variant:
             self.settings.setValue(f"variant/{protocol}", variant)
         shown = f"{protocol} {variant}" if variant else protocol
-        self.console.append_note(f"connecting to {port} ({shown}, {baud} baud)")
+        self.console.append_note(fill(self.tr("connecting to %1 (%2, %3 baud)"), port, shown, baud))
         parameters = read_parameters(self.settings, protocol, port)
         protocol_settings = read_protocol_settings(self.settings, protocol, port)
 
@@ -585,16 +603,18 @@ class MainWindow(QMainWindow):
         except MotionError as exc:
             session.deleteLater()
             self.connection_bar.set_state("error", str(exc))
-            self._say(f"bridge refused: {exc}", status.FAILURE)
+            self._say(fill(self.tr("bridge refused: %1"), exc), status.FAILURE)
             return None
         self.bridge = session
         session.traffic.connect(self._on_traffic)
         session.ended.connect(self._on_bridge_ended)
-        self.connection_bar.set_state("connected", f"bridge: {path}")
+        self.connection_bar.set_state("connected", fill(self.tr("bridge: %1"), path))
         self._set_controls_enabled(False)
         self.console.set_send_enabled(False)
-        self.status_line.set_state(status.BUSY, f"bridging {port} to {path}")
-        self._say(f"bridge: another program can open {path}; every byte goes to {port}")
+        self.status_line.set_state(status.BUSY, fill(self.tr("bridging %1 to %2"), port, path))
+        self._say(
+            fill(self.tr("bridge: another program can open %1; every byte goes to %2"), path, port)
+        )
         return path
 
     def stop_bridge(self) -> None:
@@ -608,10 +628,10 @@ class MainWindow(QMainWindow):
             session.deleteLater()
         if error:
             self.connection_bar.set_state("error", error)
-            self._say(f"bridge ended: {error}", status.FAILURE)
+            self._say(fill(self.tr("bridge ended: %1"), error), status.FAILURE)
         else:
             self.connection_bar.set_state("disconnected")
-            self._say("bridge closed")
+            self._say(self.tr("bridge closed"))
         self._show_machine_state()
 
     def disconnect_device(self) -> None:
@@ -627,9 +647,9 @@ class MainWindow(QMainWindow):
         self.tools.connection_state(self.connected)
         if state == "error":
             self._failed = self._link_failed = True
-            self._say(f"connection error: {detail}", status.FAILURE)
+            self._say(fill(self.tr("connection error: %1"), detail), status.FAILURE)
         elif state == "disconnected":
-            self.console.append_note("disconnected")
+            self.console.append_note(self.tr("disconnected"))
         elif state == "connected" and detail.startswith("device: "):
             self._failed = True
             self._say(detail, status.FAILURE, note=False)
@@ -661,14 +681,19 @@ class MainWindow(QMainWindow):
 
     def _on_device_ready(self, info: DeviceInfo) -> None:
         self.info = info
-        self.console.append_note(f"connected to {info.identity} on {info.port}")
-        self._say(f"connected to {info.identity} on {info.port}", note=False)
+        connected = fill(self.tr("connected to %1 on %2"), info.identity, info.port)
+        self.console.append_note(connected)
+        self._say(connected, note=False)
         if self._link_failed:  # after a lost link or a restart: what is the position now?
             self._position_lost = not info.capabilities.position_feedback
             self._say(
-                "the position is unknown: this device cannot report it; home it or set home"
+                self.tr(
+                    "the position is unknown: this device cannot report it; home it or set home"
+                )
                 if self._position_lost
-                else f"connected again to {info.identity}: the position was read again",
+                else fill(
+                    self.tr("connected again to %1: the position was read again"), info.identity
+                ),
                 status.WARNING if self._position_lost else status.INFO,
             )
         self._link_failed = False
@@ -686,18 +711,23 @@ class MainWindow(QMainWindow):
 
     def _adapt(self, caps: Capabilities) -> None:
         """Fit the controls to what the device can do (on connection, and after new settings)."""
-        name = self.info.protocol.upper() if self.info is not None else "the device"
+        name = self.info.protocol.upper() if self.info is not None else self.tr("the device")
         for widget in (self.jog_panel, self.coordinates, self.readout):
             widget.set_axes_enabled(caps.axes)
         self.readout.set_measured(caps.position_feedback)
         self.speed.set_note(caps.speed_note)
         self.speed.set_decimals(caps.speed_decimals)
         self.coordinates.set_home_tips(
-            caps.home_note or "Go to the home position (0, 0, 0)",
-            "Make the current position the origin (asks first)"
+            caps.home_note or self.tr("Go to the home position (0, 0, 0)"),
+            self.tr("Make the current position the origin (asks first)")
             if caps.set_home or caps.position_feedback
-            else f"Restart the panel's count of the position here (asks first); {name} has no "
-            "set-home command, so nothing is sent",
+            else fill(
+                self.tr(
+                    "Restart the panel's count of the position here (asks first); %1 has no "
+                    "set-home command, so nothing is sent"
+                ),
+                name,
+            ),
         )
         self.console.set_line_ending(caps.raw_line_end.encode("ascii"))
         mode = "text" if caps.raw_text else "hex"  # a binary protocol's bytes read as hex
@@ -705,9 +735,11 @@ class MainWindow(QMainWindow):
         self.console.set_send_mode(mode)
         for widget in (self.jog_panel, self.coordinates, self.readout):
             widget.set_resolution(caps.resolution)
-        tip = STOP_TIP if caps.stop else NO_STOP_TIP.format(name=name)
+        tip = self.tr(STOP_TIP) if caps.stop else fill(self.tr(NO_STOP_TIP), name)
         self.coordinates.set_stop_mode(caps.stop, tip)
-        self.stop_action.setText("&Stop" if caps.stop else "&Drop queued commands")
+        self.stop_action.setText(
+            self.tr("&Stop") if caps.stop else self.tr("&Drop queued commands")
+        )
         self.stop_action.setToolTip(tip)
         self.speed.setEnabled(caps.speed)
         if caps.speed_range is not None:
@@ -748,14 +780,14 @@ class MainWindow(QMainWindow):
 
     def _on_port_added(self, port: str) -> None:
         """A port appeared; if it is the one that was lost, connect again (position re-read)."""
-        self._say(f"port {port} appeared")
+        self._say(fill(self.tr("port %1 appeared"), port))
         last = self._last_connection
         if self.connection_bar.state() == "error" and last is not None and last[0] == port:
-            self._say(f"reconnecting to {port}")
+            self._say(fill(self.tr("reconnecting to %1"), port))
             self.connect_device(*last)
 
     def _on_port_removed(self, port: str) -> None:
-        self._say(f"port {port} disappeared")
+        self._say(fill(self.tr("port %1 disappeared"), port))
 
     def say(self, text: str) -> None:
         """Tell the operator something (status line and console log)."""
@@ -792,7 +824,7 @@ class MainWindow(QMainWindow):
 
         current = self.travel
         dialog = TravelLimitsDialog(
-            f"{protocol} on {port}",
+            fill(self.tr("%1 on %2"), protocol, port),
             current.box if current is not None else None,
             current.clamp if current is not None else False,
             self,
@@ -805,12 +837,17 @@ class MainWindow(QMainWindow):
         limits = TravelLimits(box, clamp) if box is not None else None
         write_travel(self.settings, protocol, port, limits)
         self._apply_travel(limits)
-        self._say(f"travel limits: {limits.describe() if limits else 'none'}")
+        described = limits.describe() if limits else self.tr("none")
+        self._say(fill(self.tr("travel limits: %1"), described))
 
     # -- operator actions --------------------------------------------------------------------
     def _submit(self, job: jobs.Job) -> bool:
         if not self.connected:
-            self._say(f"not connected: {job.describe()} not sent", status.WARNING, note=False)
+            self._say(
+                fill(self.tr("not connected: %1 not sent"), job.describe()),
+                status.WARNING,
+                note=False,
+            )
             return False
         self._busy_job = job
         self.worker.submit(job)
@@ -883,19 +920,22 @@ class MainWindow(QMainWindow):
         macro = serial is not None and _is_macro(self._busy_job)
         if serial is not None and macro:
             serial.worker.stop_now()  # every device: the macro ends between steps
-            self._say("stopping the macro under way", status.WARNING, note=False)
+            self._say(self.tr("stopping the macro under way"), status.WARNING, note=False)
         elif serial is not None and can_stop and (self._busy_job is not None or self._moving):
             serial.worker.stop_now()
-            self._say("stopping the move under way", status.WARNING, note=False)
+            self._say(self.tr("stopping the move under way"), status.WARNING, note=False)
         elif not dropped:
-            self._say("nothing queued; the move under way finishes", note=False)
+            self._say(self.tr("nothing queued; the move under way finishes"), note=False)
 
     def _report_dropped(self, dropped: list[jobs.Job]) -> None:
         if not dropped:
             return
         self.parameters.forget(dropped)
         names = ", ".join(job.describe() for job in dropped)
-        self._say(f"stopped: {len(dropped)} command(s) not sent: {names}", status.WARNING)
+        self._say(
+            fill(self.tr("stopped: %1 command(s) not sent: %2"), len(dropped), names),
+            status.WARNING,
+        )
         if any(job is self._jog_job for job in dropped):
             self._jog_job = None
 
@@ -919,7 +959,12 @@ class MainWindow(QMainWindow):
             self.buffer.shift(-x, -y, -z)
             self._on_target(None)
             self.console.append_note(
-                f"new home: the trail is shifted by ({-x:g}, {-y:g}, {-z:g}) mm"
+                fill(
+                    self.tr("new home: the trail is shifted by (%1, %2, %3) mm"),
+                    f"{-x:g}",
+                    f"{-y:g}",
+                    f"{-z:g}",
+                )
             )
             self.tools.home_moved((x, y, z))
         if self.estimate is not None and self.estimate.active():
@@ -990,11 +1035,11 @@ class MainWindow(QMainWindow):
 
     def _on_device_error(self, message: str) -> None:
         self._failed = True
-        self._say(f"the device reported an error: {message}", status.FAILURE)
+        self._say(fill(self.tr("the device reported an error: %1"), message), status.FAILURE)
         self._show_machine_state()
 
     def _on_device_note(self, text: str) -> None:
-        self.console.append_note(f"device: {text}")
+        self.console.append_note(fill(self.tr("device: %1"), text))
 
     def _job_ended(self, job: jobs.Job) -> None:
         from app import jobs
@@ -1012,7 +1057,7 @@ class MainWindow(QMainWindow):
             self.jog_panel.release()  # e.g. refused at the travel limits: stop stepping
             self._jog_next = None
         self._failed = True
-        self._say(f"{job.describe()} failed: {message}", status.FAILURE)
+        self._say(fill(self.tr("%1 failed: %2"), job.describe(), message), status.FAILURE)
         self._job_ended(job)
         self._show_machine_state()
 
@@ -1032,7 +1077,11 @@ class MainWindow(QMainWindow):
                 self.readout.set_status("live")
         if isinstance(job, jobs.SetSpeedJob) and isinstance(result, float) and result != job.speed:
             self._say(
-                f"speed {job.speed:g} mm/s reads back as {result:g} mm/s (the device rounds)",
+                fill(
+                    self.tr("speed %1 mm/s reads back as %2 mm/s (the device rounds)"),
+                    f"{job.speed:g}",
+                    f"{result:g}",
+                ),
                 note=False,
             )
         self._job_ended(job)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import logging
 
-from PySide6.QtCore import QObject, QTimer, Signal
+from PySide6.QtCore import QCoreApplication, QObject, QTimer, Signal
 
 log = logging.getLogger(__name__)
 
@@ -17,7 +17,9 @@ def list_serial_ports() -> list[tuple[str, str]]:
 
     ports = []
     for info in sorted(list_ports.comports(), key=lambda p: p.device):
-        description = info.description if info.description not in ("", "n/a") else "serial port"
+        description = info.description
+        if description in ("", "n/a"):
+            description = QCoreApplication.translate("PortWatcher", "serial port")
         ports.append((info.device, description))
     return ports
 

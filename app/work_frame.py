@@ -12,6 +12,7 @@ from PySide6.QtCore import QObject
 from app.settings import device_key
 from drivers.errors import BadInput
 from drivers.work_zero import WorkZero, format_work_zero, parse_work_zero
+from widgets._i18n import fill
 from widgets.coordinate_entry import CoordinateEntry
 from widgets.position_readout import PositionReadout
 
@@ -54,7 +55,7 @@ class WorkFrame(QObject):
                 log.warning("the kept work zero is unreadable and was left out: %s", exc)
         self._set(zero, save=False)
         if not zero.is_machine():
-            self.say(self.tr("work coordinates: %1").replace("%1", zero.describe()))
+            self.say(fill(self.tr("work coordinates: %1"), zero.describe()))
 
     def set_position(self, position: Point | None) -> None:
         """The stage's machine position as last known (None: unknown); Zero needs one."""
@@ -68,7 +69,7 @@ class WorkFrame(QObject):
             return
         self._set(self.zero.zeroed(axes, self.position))
         shown = ", ".join(f"{a.upper()} {self.position['xyz'.index(a)]:g}" for a in axes)
-        self.say(self.tr("work zero set at %1 mm (machine)").replace("%1", shown))
+        self.say(fill(self.tr("work zero set at %1 mm (machine)"), shown))
 
     def clear(self) -> None:
         """Put the work zero back at the device's home."""
@@ -80,7 +81,7 @@ class WorkFrame(QObject):
         if self.zero.is_machine():
             return
         self._set(self.zero.after_set_home(old_home_at))
-        self.say(self.tr("work zero kept in place: %1").replace("%1", self.zero.describe()))
+        self.say(fill(self.tr("work zero kept in place: %1"), self.zero.describe()))
 
     def disconnected(self) -> None:
         """No device: Zero is off until one is connected."""

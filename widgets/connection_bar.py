@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import logging
 
-from PySide6.QtCore import QEvent, QObject, Qt, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QEvent, QObject, Qt, Signal
 from PySide6.QtGui import QIntValidator, QKeyEvent
 from PySide6.QtWidgets import (
     QCheckBox,
@@ -18,6 +18,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from widgets._i18n import fill
 from widgets.control_lines_bar import ControlLinesBar
 
 log = logging.getLogger(__name__)
@@ -27,10 +28,11 @@ COMMON_BAUDS = (
 )  # fmt: skip
 DISCONNECTED, CONNECTING, CONNECTED, ERROR = "disconnected", "connecting", "connected", "error"
 _STATE_STYLE = {
-    DISCONNECTED: ("Disconnected", "#616161"),
-    CONNECTING: ("Connecting…", "#ef6c00"),
-    CONNECTED: ("Connected", "#2e7d32"),
-    ERROR: ("Error", "#c62828"),
+    # the texts are marked here and translated at use
+    DISCONNECTED: (QT_TRANSLATE_NOOP("ConnectionBar", "Disconnected"), "#616161"),
+    CONNECTING: (QT_TRANSLATE_NOOP("ConnectionBar", "Connecting…"), "#ef6c00"),
+    CONNECTED: (QT_TRANSLATE_NOOP("ConnectionBar", "Connected"), "#2e7d32"),
+    ERROR: (QT_TRANSLATE_NOOP("ConnectionBar", "Error"), "#c62828"),
 }
 DESCRIPTION_WIDTH = 120  # px, fixed: a longer description is elided (whole in the tooltip)
 STATE_MAX_WIDTH = 360  # px: a longer state text is elided (whole in the tooltip)
@@ -72,9 +74,11 @@ class ConnectionBar(QWidget):
         self.port_combo.setEditable(True)
         self.port_combo.setInsertPolicy(QComboBox.InsertPolicy.NoInsert)
         self.port_combo.setMinimumContentsLength(13)
-        self.port_combo.lineEdit().setPlaceholderText("/dev/ttyUSB0, COM3 or a URL")
+        self.port_combo.lineEdit().setPlaceholderText(self.tr("/dev/ttyUSB0, COM3 or a URL"))
         self.port_combo.setToolTip(
-            "Serial port, or any pyserial URL (e.g. sim://coxiris, socket://host:port, loop://)"
+            self.tr(
+                "Serial port, or any pyserial URL (e.g. sim://coxiris, socket://host:port, loop://)"
+            )
         )
         self.port_combo.currentTextChanged.connect(self._port_text_changed)
         # Enter connects; an event filter, as the combo box hands an ignored Return back to its
@@ -86,20 +90,22 @@ class ConnectionBar(QWidget):
         self.description_label.setFixedWidth(DESCRIPTION_WIDTH)  # the widgets after it stay put
         self.refresh_button = QPushButton("⟳")
         self.refresh_button.setObjectName("refreshPortsButton")
-        self.refresh_button.setToolTip("Look for serial ports again")
+        self.refresh_button.setToolTip(self.tr("Look for serial ports again"))
         self.refresh_button.setMaximumWidth(36)
         self.refresh_button.clicked.connect(self.refresh_requested)
 
         self.protocol_combo = QComboBox()
         self.protocol_combo.setObjectName("protocolCombo")
-        self.protocol_combo.setToolTip("The language the device speaks")
+        self.protocol_combo.setToolTip(self.tr("The language the device speaks"))
         self.protocol_combo.currentIndexChanged.connect(self._protocol_index_changed)
         self._quiet = False
 
-        self.variant_label = QLabel("Variant:")
+        self.variant_label = QLabel(self.tr("Variant:"))
         self.variant_combo = QComboBox()
         self.variant_combo.setObjectName("variantCombo")
-        self.variant_combo.setToolTip("The wire variant of this protocol (packet format and rate)")
+        self.variant_combo.setToolTip(
+            self.tr("The wire variant of this protocol (packet format and rate)")
+        )
         self.variant_combo.currentIndexChanged.connect(self._variant_index_changed)
         self.variant_label.setBuddy(self.variant_combo)
 
@@ -109,22 +115,27 @@ class ConnectionBar(QWidget):
         self.baud_combo.setInsertPolicy(QComboBox.InsertPolicy.NoInsert)
         self.baud_combo.addItems([str(b) for b in COMMON_BAUDS])
         self.baud_combo.setValidator(QIntValidator(1, 100_000_000, self))
-        self.baud_combo.setToolTip("Baud rate in bit/s (type any rate the device uses)")
+        self.baud_combo.setToolTip(self.tr("Baud rate in bit/s (type any rate the device uses)"))
         self.baud_combo.setCurrentText("115200")
 
-        self.bridge_check = QCheckBox("Bridge")
+        self.bridge_check = QCheckBox(self.tr("Bridge"))
         self.bridge_check.setObjectName("bridgeCheck")
         self.bridge_check.setToolTip(
-            "Bridge (snoop) mode: open the device's port and offer another program a "
-            "pseudo-terminal; every byte is forwarded both ways unchanged and shown decoded here "
-            "(motion controls are off while bridging)"
+            self.tr(
+                "Bridge (snoop) mode: open the device's port and offer another program a "
+                "pseudo-terminal; every byte is forwarded both ways unchanged and shown decoded "
+                "here (motion controls are off while bridging)"
+            )
         )
 
-        self.connect_button = QPushButton("Connect")
+        self.connect_button = QPushButton(self.tr("Connect"))
         self.connect_button.setObjectName("connectButton")
         self.connect_button.setAutoDefault(False)  # Enter in the port field is handled here
         metrics = self.connect_button.fontMetrics()
-        widest = max(metrics.horizontalAdvance(t) for t in ("Connect", "Cancel", "Disconnect"))
+        widest = max(
+            metrics.horizontalAdvance(t)
+            for t in (self.tr("Connect"), self.tr("Cancel"), self.tr("Disconnect"))
+        )
         self.connect_button.setMinimumWidth(max(96, widest + 24))
         self.connect_button.clicked.connect(self._connect_clicked)
         self.state_label = QLabel()
@@ -146,12 +157,12 @@ class ConnectionBar(QWidget):
         lines_row.addStretch(1)
         rows.addLayout(lines_row)
         for text, widget in (
-            ("Port:", self.port_combo),
+            (self.tr("Port:"), self.port_combo),
             (None, self.description_label),
             (None, self.refresh_button),
-            ("Protocol:", self.protocol_combo),
+            (self.tr("Protocol:"), self.protocol_combo),
             (self.variant_label, self.variant_combo),
-            ("Baud:", self.baud_combo),
+            (self.tr("Baud:"), self.baud_combo),
             (None, self.bridge_check),
             (None, self.connect_button),
         ):
@@ -219,7 +230,7 @@ class ConnectionBar(QWidget):
         width = DESCRIPTION_WIDTH - 4  # fixed: also right before the first layout
         elided = label.fontMetrics().elidedText(description, Qt.TextElideMode.ElideRight, width)
         label.setText(elided)
-        label.setToolTip(description or "No description for this port")
+        label.setToolTip(description or self.tr("No description for this port"))
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """Enter (Return) in the port field connects, as the Connect button does, when idle."""
@@ -328,8 +339,9 @@ class ConnectionBar(QWidget):
         if state not in _STATE_STYLE:
             raise ValueError(f"unknown state {state!r}: one of {sorted(_STATE_STYLE)}")
         self._state = state
-        text, colour = _STATE_STYLE[state]
-        full = f"● {text}" + (f": {detail}" if detail else "")
+        name, colour = _STATE_STYLE[state]
+        text = self.tr(name)
+        full = fill(self.tr("● %1: %2"), text, detail) if detail else f"● {text}"
         metrics = self.state_label.fontMetrics()
         width = STATE_MAX_WIDTH - 4  # the label's text is elided, never clipped
         self.state_label.setText(metrics.elidedText(full, Qt.TextElideMode.ElideRight, width))
@@ -345,10 +357,14 @@ class ConnectionBar(QWidget):
             self.bridge_check,
         ):
             widget.setEnabled(idle)
-        button_text = {CONNECTING: "Cancel", CONNECTED: "Disconnect"}.get(state, "Connect")
+        button_text = {CONNECTING: self.tr("Cancel"), CONNECTED: self.tr("Disconnect")}.get(
+            state, self.tr("Connect")
+        )
         self.connect_button.setText(button_text)
         self.connect_button.setToolTip(
-            "Open the port and talk to the device" if idle else "Close the connection"
+            self.tr("Open the port and talk to the device")
+            if idle
+            else self.tr("Close the connection")
         )
 
     def _connect_clicked(self) -> None:
@@ -357,9 +373,9 @@ class ConnectionBar(QWidget):
             return
         port, protocol, baud = self.port(), self.protocol(), self.baud()
         problem = (
-            "choose or type a port" if not port
-            else "choose a protocol" if not protocol
-            else "the baud rate must be a positive whole number" if baud is None
+            self.tr("choose or type a port") if not port
+            else self.tr("choose a protocol") if not protocol
+            else self.tr("the baud rate must be a positive whole number") if baud is None
             else ""
         )  # fmt: skip
         if problem:

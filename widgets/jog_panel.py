@@ -5,7 +5,7 @@ from __future__ import annotations
 import logging
 from collections.abc import Iterable
 
-from PySide6.QtCore import Qt, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, Qt, Signal
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import (
     QApplication,
@@ -21,12 +21,13 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._axes import AXES, decimals_for, modifier_bits, normalize_axes
+from widgets._i18n import fill
 
 log = logging.getLogger(__name__)
 
 STEP_PRESETS: tuple[float, ...] = (0.01, 0.1, 1.0, 10.0, 100.0)
 SHIFT_FACTOR = 10.0
-KEY_HINT = "Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10"
+KEY_HINT = QT_TRANSLATE_NOOP("JogPanel", "Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10")
 
 _SHIFT = Qt.KeyboardModifier.ShiftModifier.value
 _KEYPAD = Qt.KeyboardModifier.KeypadModifier.value
@@ -71,13 +72,18 @@ class JogPanel(QWidget):
         self.setObjectName("jogPanel")
         self.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
         self.setToolTip(
-            "Move the stage by one step; hold a button or key to keep stepping.\n"
-            f"{KEY_HINT} (see the hint below for where the keys work)."
+            fill(
+                self.tr(
+                    "Move the stage by one step; hold a button or key to keep stepping.\n"
+                    "%1 (see the hint below for where the keys work)."
+                ),
+                self.tr(KEY_HINT),
+            )
         )
         self._axes = frozenset(AXES)
         self.key_map: dict[int, tuple[str, float]] = dict(KEY_MAP)  # key -> (axis, direction)
         self.step_keys: dict[int, int] = {}  # key -> -1 (a smaller step) or +1 (larger)
-        self.key_hint = KEY_HINT
+        self.key_hint = self.tr(KEY_HINT)
         self._held: tuple[str, float] | None = None
         self._held_key: int | None = None
         self.buttons: dict[tuple[str, float], QPushButton] = {}
@@ -101,15 +107,15 @@ class JogPanel(QWidget):
         self._preset_group.setExclusive(True)
         presets = QHBoxLayout()
         presets.setSpacing(2)
-        step_label = QLabel("Step:")
-        step_label.setToolTip("Distance of one jog")
+        step_label = QLabel(self.tr("Step:"))
+        step_label.setToolTip(self.tr("Distance of one jog"))
         self.preset_buttons: dict[float, QPushButton] = {}
         for value in STEP_PRESETS:
             button = QPushButton(_fmt_mm(value))
             button.setObjectName(f"jogStep{value:g}".replace(".", "_"))
             button.setCheckable(True)
             button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-            button.setToolTip(f"Jog by {_fmt_mm(value)} per press")
+            button.setToolTip(fill(self.tr("Jog by %1 per press"), _fmt_mm(value)))
             button.clicked.connect(lambda _=False, v=value: self.set_step(v))
             self._preset_group.addButton(button)
             presets.addWidget(button)
@@ -120,7 +126,7 @@ class JogPanel(QWidget):
         self.step_spin.setDecimals(3)
         self.step_spin.setRange(0.001, 1000.0)
         self.step_spin.setSuffix(" mm")
-        self.step_spin.setToolTip("Any step size (0.001 to 1000 mm)")
+        self.step_spin.setToolTip(self.tr("Any step size (0.001 to 1000 mm)"))
         self.step_spin.valueChanged.connect(self._step_edited)
         presets.addStretch(1)
         step_row = QHBoxLayout()
@@ -128,7 +134,7 @@ class JogPanel(QWidget):
         step_row.addWidget(self.step_spin)
         step_row.addStretch(1)
 
-        self.hint_label = QLabel(KEY_HINT)
+        self.hint_label = QLabel(self.key_hint)
         self.hint_label.setObjectName("jogHint")
         self.hint_label.setWordWrap(True)
         self.hint_label.setStyleSheet("color: #616161;")
@@ -147,14 +153,16 @@ class JogPanel(QWidget):
     def set_keyboard_state(self, active: bool, reason: str) -> None:
         """Say whether the jog keys act now, and if not, why (e.g. "the focus is in a field")."""
         self._keyboard_state = (active, reason)
-        state = "keys active" if active else f"keys off: {reason}"
+        state = self.tr("keys active") if active else fill(self.tr("keys off: %1"), reason)
         self.hint_label.setText(f"{self.key_hint} · {state}")
         self.hint_label.setToolTip(
-            "The jog keys work while this window is active and no menu, list, dialog or popup\n"
-            "is open, except when the focus is in a field that uses the arrow keys itself\n"
-            "(text and number fields, drop-down lists, the speed slider, the console).\n"
-            "Click the views or this panel to give the keys back to jogging.\n"
-            "Hold a key to keep stepping; Shift for a step ten times bigger."
+            self.tr(
+                "The jog keys work while this window is active and no menu, list, dialog or "
+                "popup\nis open, except when the focus is in a field that uses the arrow keys "
+                "itself\n(text and number fields, drop-down lists, the speed slider, the "
+                "console).\nClick the views or this panel to give the keys back to jogging.\n"
+                "Hold a key to keep stepping; Shift for a step ten times bigger."
+            )
         )
 
     def set_key_map(
@@ -213,7 +221,14 @@ class JogPanel(QWidget):
         self._preset_group.setExclusive(True)
         for (axis, direction), button in self.buttons.items():
             normal, big = direction * step, direction * step * SHIFT_FACTOR
-            button.setToolTip(f"Jog {axis.upper()} by {normal:+g} mm (Shift: {big:+g} mm)")
+            button.setToolTip(
+                fill(
+                    self.tr("Jog %1 by %2 mm (Shift: %3 mm)"),
+                    axis.upper(),
+                    f"{normal:+g}",
+                    f"{big:+g}",
+                )
+            )
 
     # -- axes ------------------------------------------------------------------------------
 

@@ -36,7 +36,7 @@
     <message>
         <location line="+2"/>
         <source>Licence: %1</source>
-        <translation>Licence : %1</translation>
+        <translation>Licence&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -51,7 +51,7 @@
     <message>
         <location line="+3"/>
         <source>%1:</source>
-        <translation>%1 :</translation>
+        <translation>%1&#xa0;:</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -90,45 +90,45 @@
         <location line="+9"/>
         <source>Angle of the end point, 0 to 360°, counter-clockwise from +X seen from above;
 the same as the start angle: a full circle</source>
-        <translation>Angle du point d&apos;arrivée, de 0 à 360°, dans le sens antihoraire depuis +X, vu de dessus ;
-identique à l&apos;angle de départ : un cercle complet</translation>
+        <translation>Angle du point d&apos;arrivée, de 0 à 360°, dans le sens antihoraire depuis +X, vu de dessus&#xa0;;
+identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
-        <translation>Z à la fin de l&apos;arc, en mm ; Z varie uniformément depuis le Z actuel le long de l&apos;arc
+        <translation>Z à la fin de l&apos;arc, en mm&#xa0;; Z varie uniformément depuis le Z actuel le long de l&apos;arc
 (une hélice s&apos;il diffère)</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Centre X:</source>
-        <translation>Centre X :</translation>
+        <translation>Centre X&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Centre Y:</source>
-        <translation>Centre Y :</translation>
+        <translation>Centre Y&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Radius:</source>
-        <translation>Rayon :</translation>
+        <translation>Rayon&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Start:</source>
-        <translation>Départ :</translation>
+        <translation>Départ&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>End:</source>
-        <translation>Arrivée :</translation>
+        <translation>Arrivée&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Final Z:</source>
-        <translation>Z final :</translation>
+        <translation>Z final&#xa0;:</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -138,7 +138,7 @@ identique à l&apos;angle de départ : un cercle complet</translation>
     <message>
         <location line="+2"/>
         <source>Clockwise seen from above: the angle decreases</source>
-        <translation>Sens horaire vu de dessus : l&apos;angle diminue</translation>
+        <translation>Sens horaire vu de dessus&#xa0;: l&apos;angle diminue</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -148,7 +148,7 @@ identique à l&apos;angle de départ : un cercle complet</translation>
     <message>
         <location line="+2"/>
         <source>Counter-clockwise seen from above: the angle increases</source>
-        <translation>Sens antihoraire vu de dessus : l&apos;angle augmente</translation>
+        <translation>Sens antihoraire vu de dessus&#xa0;: l&apos;angle augmente</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -194,7 +194,7 @@ identique à l&apos;angle de départ : un cercle complet</translation>
     <message>
         <location line="+11"/>
         <source>The arc leaves the travel limits: %1.</source>
-        <translation>L&apos;arc sort des limites de course : %1.</translation>
+        <translation>L&apos;arc sort des limites de course&#xa0;: %1.</translation>
     </message>
 </context>
 <context>
@@ -202,7 +202,7 @@ identique à l&apos;angle de départ : un cercle complet</translation>
     <message>
         <location filename="../../app/bridge_session.py" line="+82"/>
         <source>the bridge failed: %1</source>
-        <translation>la passerelle a échoué : %1</translation>
+        <translation>la passerelle a échoué&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+27"/>
@@ -213,9 +213,143 @@ identique à l&apos;angle de départ : un cercle complet</translation>
 <context>
     <name>ConnectionBar</name>
     <message>
-        <location filename="../../widgets/connection_bar.py" line="+136"/>
+        <location filename="../../widgets/connection_bar.py" line="+32"/>
+        <source>Disconnected</source>
+        <translation type="unfinished">Déconnecté</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connecting…</source>
+        <translation type="unfinished">Connexion…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Error</source>
+        <translation type="unfinished">Erreur</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>/dev/ttyUSB0, COM3 or a URL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Serial port, or any pyserial URL (e.g. sim://coxiris, socket://host:port, loop://)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Look for serial ports again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The language the device speaks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Variant:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The wire variant of this protocol (packet format and rate)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Baud rate in bit/s (type any rate the device uses)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Bridge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bridge (snoop) mode: open the device&apos;s port and offer another program a pseudo-terminal; every byte is forwarded both ways unchanged and shown decoded here (motion controls are off while bridging)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+6"/>
+        <location line="+224"/>
+        <source>Connect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-224"/>
+        <location line="+223"/>
+        <source>Cancel</source>
+        <translation type="unfinished">Annuler</translation>
+    </message>
+    <message>
+        <location line="-223"/>
+        <location line="+223"/>
+        <source>Disconnect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-213"/>
         <source>Lines:</source>
-        <translation>Lignes :</translation>
+        <translation>Lignes&#xa0;:</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Port:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Protocol:</source>
+        <translation type="unfinished">Protocole&#xa0;:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Baud:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>No description for this port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+111"/>
+        <source>● %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Open the port and talk to the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Close the connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>choose or type a port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>choose a protocol</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the baud rate must be a positive whole number</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -288,7 +422,7 @@ identique à l&apos;angle de départ : un cercle complet</translation>
     <message>
         <location line="+7"/>
         <source>Send a break: hold the transmit line low for %1 ms (the device sees a framing error; some boards take it as a reset or attention signal)</source>
-        <translation>Envoyer un break : maintenir la ligne d&apos;émission à l&apos;état bas pendant %1 ms (l&apos;appareil voit une erreur de trame ; certaines cartes le prennent pour une réinitialisation ou un signal d&apos;attention)</translation>
+        <translation>Envoyer un break&#xa0;: maintenir la ligne d&apos;émission à l&apos;état bas pendant %1 ms (l&apos;appareil voit une erreur de trame&#xa0;; certaines cartes le prennent pour une réinitialisation ou un signal d&apos;attention)</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -299,17 +433,17 @@ identique à l&apos;angle de départ : un cercle complet</translation>
         <location line="+49"/>
         <location line="+16"/>
         <source>%1 (%2): not connected</source>
-        <translation>%1 (%2) : non connecté</translation>
+        <translation>%1 (%2)&#xa0;: non connecté</translation>
     </message>
     <message>
         <location line="-14"/>
         <source>%1 (%2): this port cannot set %1</source>
-        <translation>%1 (%2) : ce port ne peut pas piloter %1</translation>
+        <translation>%1 (%2)&#xa0;: ce port ne peut pas piloter %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 (%2), driven by this computer: tick to assert it, untick to release it</source>
-        <translation>%1 (%2), piloté par cet ordinateur : cocher pour l&apos;activer, décocher pour le relâcher</translation>
+        <translation>%1 (%2), piloté par cet ordinateur&#xa0;: cocher pour l&apos;activer, décocher pour le relâcher</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -319,12 +453,12 @@ identique à l&apos;angle de départ : un cercle complet</translation>
     <message>
         <location line="+2"/>
         <source>%1 (%2), driven by the device: on</source>
-        <translation>%1 (%2), piloté par l&apos;appareil : actif</translation>
+        <translation>%1 (%2), piloté par l&apos;appareil&#xa0;: actif</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (%2), driven by the device: off</source>
-        <translation>%1 (%2), piloté par l&apos;appareil : inactif</translation>
+        <translation>%1 (%2), piloté par l&apos;appareil&#xa0;: inactif</translation>
     </message>
 </context>
 <context>
@@ -333,7 +467,7 @@ identique à l&apos;angle de départ : un cercle complet</translation>
         <location filename="../../widgets/coordinate_entry.py" line="+33"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
-        <translation>Faire de la position actuelle la nouvelle origine (0, 0, 0) ?
+        <translation>Faire de la position actuelle la nouvelle origine (0, 0, 0)&#xa0;?
 Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</translation>
     </message>
     <message>
@@ -345,7 +479,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <location line="+41"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation>%1 :</translation>
+        <translation>%1&#xa0;:</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -380,7 +514,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+3"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
-        <translation>Repère des coordonnées saisies : Machine (mm depuis l&apos;origine de l&apos;appareil) ou Pièce (mm depuis le zéro pièce) ; l&apos;appareil reçoit toujours des coordonnées machine</translation>
+        <translation>Repère des coordonnées saisies&#xa0;: Machine (mm depuis l&apos;origine de l&apos;appareil) ou Pièce (mm depuis le zéro pièce)&#xa0;; l&apos;appareil reçoit toujours des coordonnées machine</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -507,7 +641,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+47"/>
         <source>program %1: %2 points, nothing sent yet</source>
-        <translation>programme %1 : %2 points, rien n&apos;a encore été envoyé</translation>
+        <translation>programme %1&#xa0;: %2 points, rien n&apos;a encore été envoyé</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -517,17 +651,45 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+34"/>
         <source>the program stopped: %1</source>
-        <translation>le programme s&apos;est arrêté : %1</translation>
+        <translation>le programme s&apos;est arrêté&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation>programme %1 terminé : %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
+        <translation>programme %1 terminé&#xa0;: %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>program %1 stopped, the device&apos;s queue flushed: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation>programme %1 arrêté, file de l&apos;appareil vidée : %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
+        <translation>programme %1 arrêté, file de l&apos;appareil vidée&#xa0;: %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
+    </message>
+</context>
+<context>
+    <name>DockLayout</name>
+    <message>
+        <location filename="../../app/dock_layout.py" line="+13"/>
+        <source>Stepper setup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Frame setup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Arc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dwell</source>
+        <translation type="unfinished">Temporiser</translation>
     </message>
 </context>
 <context>
@@ -535,12 +697,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location filename="../../widgets/dwell_entry.py" line="+26"/>
         <source>Dwell:</source>
-        <translation>Temporisation :</translation>
+        <translation>Temporisation&#xa0;:</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>How long the device waits, 0 to %1 ms; press Enter or Dwell to send</source>
-        <translation>Durée d&apos;attente de l&apos;appareil, de 0 à %1 ms ; appuyer sur Entrée ou Temporiser pour envoyer</translation>
+        <translation>Durée d&apos;attente de l&apos;appareil, de 0 à %1 ms&#xa0;; appuyer sur Entrée ou Temporiser pour envoyer</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -573,7 +735,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+4"/>
         <source>2 pins: a driver with step and direction inputs; 4 pins: the motor&apos;s four wires</source>
-        <translation>2 broches : un driver avec entrées pas et direction ; 4 broches : les quatre fils du moteur</translation>
+        <translation>2 broches&#xa0;: un driver avec entrées pas et direction&#xa0;; 4 broches&#xa0;: les quatre fils du moteur</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -583,7 +745,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+19"/>
         <source>Motor steps per mm of travel (more than 0): converts mm and mm/s to steps</source>
-        <translation>Pas moteur par mm de course (supérieur à 0) : convertit les mm et mm/s en pas</translation>
+        <translation>Pas moteur par mm de course (supérieur à 0)&#xa0;: convertit les mm et mm/s en pas</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -618,17 +780,17 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+4"/>
         <source>Steps/rev:</source>
-        <translation>Pas/tour :</translation>
+        <translation>Pas/tour&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Steps per mm:</source>
-        <translation>Pas par mm :</translation>
+        <translation>Pas par mm&#xa0;:</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Pins:</source>
-        <translation>Broches :</translation>
+        <translation>Broches&#xa0;:</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -664,7 +826,138 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <location line="+6"/>
         <location line="+2"/>
         <source>speed: %1 mm/s = %2 rpm</source>
-        <translation>vitesse : %1 mm/s = %2 rpm</translation>
+        <translation>vitesse&#xa0;: %1 mm/s = %2 rpm</translation>
+    </message>
+</context>
+<context>
+    <name>JogPanel</name>
+    <message>
+        <location filename="../../widgets/jog_panel.py" line="+30"/>
+        <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Move the stage by one step; hold a button or key to keep stepping.
+%1 (see the hint below for where the keys work).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Step:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Distance of one jog</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Jog by %1 per press</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Any step size (0.001 to 1000 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>keys active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>keys off: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The jog keys work while this window is active and no menu, list, dialog or popup
+is open, except when the focus is in a field that uses the arrow keys itself
+(text and number fields, drop-down lists, the speed slider, the console).
+Click the views or this panel to give the keys back to jogging.
+Hold a key to keep stepping; Shift for a step ten times bigger.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <source>Jog %1 by %2 mm (Shift: %3 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>KeyboardJog</name>
+    <message>
+        <location filename="../../app/keyboard_jog.py" line="+38"/>
+        <source>a text field</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a number field</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a drop-down list</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a slider</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a list or text view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a choice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the menu bar</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a menu</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>tabs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+57"/>
+        <source>not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a menu or list is open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a dialog is open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>another window is active</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the focus is in %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -712,7 +1005,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+4"/>
         <source>Protocol:</source>
-        <translation>Protocole :</translation>
+        <translation>Protocole&#xa0;:</translation>
     </message>
     <message>
         <location line="+30"/>
@@ -727,7 +1020,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+2"/>
         <source>%1 (%2): %3 lines, decoded as %4</source>
-        <translation>%1 (%2) : %3 lignes, décodées en %4</translation>
+        <translation>%1 (%2)&#xa0;: %3 lignes, décodées en %4</translation>
     </message>
 </context>
 <context>
@@ -746,7 +1039,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <location line="+8"/>
         <source>Steps (one per line, each waits for the device): home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXT (sent as typed, its reply awaited) · wait S (s, the panel pauses) · check · id · limits; and where the device has them: dwell MS (ms) · arc CX CY R START END --cw|--ccw · step RPM STEPS · status · stop · version.</source>
         <comment>the command words (home, move, --cw …) are typed as they are: keep them in English</comment>
-        <translation>Étapes (une par ligne, chacune attend l&apos;appareil) : home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXTE (envoyé tel que saisi, sa réponse attendue) · wait S (s, le panneau fait une pause) · check · id · limits ; et si l&apos;appareil les possède : dwell MS (ms) · arc CX CY R DÉBUT FIN --cw|--ccw · step RPM PAS · status · stop · version.</translation>
+        <translation>Étapes (une par ligne, chacune attend l&apos;appareil)&#xa0;: home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXTE (envoyé tel que saisi, sa réponse attendue) · wait S (s, le panneau fait une pause) · check · id · limits&#xa0;; et si l&apos;appareil les possède&#xa0;: dwell MS (ms) · arc CX CY R DÉBUT FIN --cw|--ccw · step RPM PAS · status · stop · version.</translation>
     </message>
     <message>
         <location line="+45"/>
@@ -756,12 +1049,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+23"/>
         <source>%1; nothing sent</source>
-        <translation>%1 ; rien n&apos;a été envoyé</translation>
+        <translation>%1&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>macro %1: step %2/%3: %4</source>
-        <translation>macro %1 : étape %2/%3 : %4</translation>
+        <translation>macro %1&#xa0;: étape %2/%3&#xa0;: %4</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -784,9 +1077,14 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>macro %1 supprimée</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+19"/>
+        <source>%1 macros; at most %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>macros not imported: %1</source>
-        <translation>macros non importées : %1</translation>
+        <translation>macros non importées&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -801,7 +1099,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+9"/>
         <source>macros not exported: cannot write %1: %2</source>
-        <translation>macros non exportées : impossible d&apos;écrire %1 : %2</translation>
+        <translation>macros non exportées&#xa0;: impossible d&apos;écrire %1&#xa0;: %2</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -834,12 +1132,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+4"/>
         <source>The button&apos;s label: 1 to 40 characters</source>
-        <translation>Le libellé du bouton : 1 à 40 caractères</translation>
+        <translation>Le libellé du bouton&#xa0;: 1 à 40 caractères</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>One step per line, as motionctl takes it: distances in mm, speeds in mm/s, waits in s. Each step waits for the device&apos;s reply before the next.</source>
-        <translation>Une étape par ligne, comme motionctl les accepte : distances en mm, vitesses en mm/s, attentes en s. Chaque étape attend la réponse de l&apos;appareil avant la suivante.</translation>
+        <translation>Une étape par ligne, comme motionctl les accepte&#xa0;: distances en mm, vitesses en mm/s, attentes en s. Chaque étape attend la réponse de l&apos;appareil avant la suivante.</translation>
     </message>
     <message>
         <location line="+21"/>
@@ -854,12 +1152,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+3"/>
         <source>&amp;Name:</source>
-        <translation>&amp;Nom :</translation>
+        <translation>&amp;Nom&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Steps:</source>
-        <translation>É&amp;tapes :</translation>
+        <translation>É&amp;tapes&#xa0;:</translation>
     </message>
 </context>
 <context>
@@ -867,7 +1165,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location filename="../../widgets/macro_panel.py" line="+37"/>
         <source>No macros yet: New… writes one, Import… reads a file.</source>
-        <translation>Aucune macro pour l&apos;instant : Nouvelle… en crée une, Importer… lit un fichier.</translation>
+        <translation>Aucune macro pour l&apos;instant&#xa0;: Nouvelle… en crée une, Importer… lit un fichier.</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -897,7 +1195,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+2"/>
         <source>Add the macros of a file (JSON; data only, checked before any is kept)</source>
-        <translation>Ajouter les macros d&apos;un fichier (JSON ; données uniquement, vérifiées avant tout enregistrement)</translation>
+        <translation>Ajouter les macros d&apos;un fichier (JSON&#xa0;; données uniquement, vérifiées avant tout enregistrement)</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -913,8 +1211,322 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <location line="+33"/>
         <source>Run %1:
 %2</source>
-        <translation>Exécuter %1 :
+        <translation>Exécuter %1&#xa0;:
 %2</translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <location filename="../../app/main_window.py" line="+101"/>
+        <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Stop the stage now: halts the move under way and drops what is queued (Esc)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>simulated %1 device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Motion Panel</source>
+        <translation type="unfinished">Motion Panel</translation>
+    </message>
+    <message>
+        <location line="+105"/>
+        <source>no session log: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>session log: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>Connection</source>
+        <translation type="unfinished">Connexion</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jog</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Go to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Console</source>
+        <translation type="unfinished">Console</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Parameters</source>
+        <translation type="unfinished">Paramètres</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Traffic timeline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>&amp;File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Export traffic log…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Save every byte sent and received, with timestamps, to a text file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Open log…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Browse a traffic log (ours or a pyserial spy:// capture) decoded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Open the session &amp;log folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Every byte of every session is kept there, one file a session</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Motion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+351"/>
+        <source>&amp;Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="-346"/>
+        <source>&amp;Travel limits…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The box the stage may move in, for this device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;View</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Reset views</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Clear trail</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+134"/>
+        <source>connecting to %1 (%2, %3 baud)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>bridge refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>bridge: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>bridging %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bridge: another program can open %1; every byte goes to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>bridge ended: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>bridge closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>connection error: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>disconnected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>connected to %1 on %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the position is unknown: this device cannot report it; home it or set home</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>connected again to %1: the position was read again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Go to the home position (0, 0, 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Make the current position the origin (asks first)</source>
+        <translation type="unfinished">Faire de la position actuelle l&apos;origine (avec confirmation)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Restart the panel&apos;s count of the position here (asks first); %1 has no set-home command, so nothing is sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>&amp;Drop queued commands</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>port %1 appeared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>reconnecting to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>port %1 disappeared</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>%1 on %2</source>
+        <translation type="unfinished">%1 sur %2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>none</source>
+        <translation type="unfinished">aucune</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not connected: %1 not sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>stopping the macro under way</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>stopping the move under way</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>nothing queued; the move under way finishes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>stopped: %1 command(s) not sent: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+75"/>
+        <source>the device reported an error: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>device: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1 failed: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -922,7 +1534,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location filename="../../app/parameter_dock.py" line="+29"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
-        <translation>l&apos;appareil contient maintenant %1 : le firmware l&apos;impose après chaque écriture</translation>
+        <translation>l&apos;appareil contient maintenant %1&#xa0;: le firmware l&apos;impose après chaque écriture</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -942,7 +1554,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+35"/>
         <source>parameter writing cancelled: %1 not sent</source>
-        <translation>écriture des paramètres annulée : %1 non envoyé(s)</translation>
+        <translation>écriture des paramètres annulée&#xa0;: %1 non envoyé(s)</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -962,7 +1574,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+11"/>
         <source>loaded %1 values from %2; nothing sent (Write changed sends them)</source>
-        <translation>%1 valeurs chargées depuis %2 ; rien n&apos;a été envoyé (le bouton « Écrire les modifications » les envoie)</translation>
+        <translation>%1 valeurs chargées depuis %2&#xa0;; rien n&apos;a été envoyé (le bouton «&#xa0;Écrire les modifications&#xa0;» les envoie)</translation>
     </message>
     <message>
         <location line="+15"/>
@@ -980,12 +1592,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+40"/>
         <source>The device cannot be read back: this compares with what this panel last wrote</source>
-        <translation>L&apos;appareil ne peut pas être relu : la comparaison porte sur ce que ce panneau a écrit en dernier</translation>
+        <translation>L&apos;appareil ne peut pas être relu&#xa0;: la comparaison porte sur ce que ce panneau a écrit en dernier</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Packets written so far; each is confirmed before the next</source>
-        <translation>Paquets écrits jusqu&apos;ici ; chacun est confirmé avant le suivant</translation>
+        <translation>Paquets écrits jusqu&apos;ici&#xa0;; chacun est confirmé avant le suivant</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -1050,7 +1662,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+54"/>
         <source>Not loaded: %1</source>
-        <translation>Non chargé : %1</translation>
+        <translation>Non chargé&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+120"/>
@@ -1060,7 +1672,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+1"/>
         <source>Write finished: %1</source>
-        <translation>Écriture terminée : %1</translation>
+        <translation>Écriture terminée&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -1085,7 +1697,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+6"/>
         <source>Nothing to write: %1</source>
-        <translation>Rien à écrire : %1</translation>
+        <translation>Rien à écrire&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1100,17 +1712,17 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+2"/>
         <source>no value, not written: %1</source>
-        <translation>sans valeur, non écrit(s) : %1</translation>
+        <translation>sans valeur, non écrit(s)&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>computed by the firmware, which may replace them: %1</source>
-        <translation>calculé(s) par le firmware, qui peut les remplacer : %1</translation>
+        <translation>calculé(s) par le firmware, qui peut les remplacer&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Cancelling: the packet under way finishes, the rest are not sent</source>
-        <translation>Annulation : le paquet en cours se termine, les suivants ne sont pas envoyés</translation>
+        <translation>Annulation&#xa0;: le paquet en cours se termine, les suivants ne sont pas envoyés</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -1130,7 +1742,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+2"/>
         <source>No values yet: load a profile or type them into the Value column</source>
-        <translation>Aucune valeur pour l&apos;instant : charger un profil ou les saisir dans la colonne Valeur</translation>
+        <translation>Aucune valeur pour l&apos;instant&#xa0;: charger un profil ou les saisir dans la colonne Valeur</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1203,7 +1815,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+4"/>
         <source>input: set by you; output: computed by the firmware</source>
-        <translation>entrée : définie par vous ; sortie : calculée par le firmware</translation>
+        <translation>entrée&#xa0;: définie par vous&#xa0;; sortie&#xa0;: calculée par le firmware</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1223,27 +1835,27 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+9"/>
         <source>Input: set by you and written to the device</source>
-        <translation>Entrée : définie par vous et écrite sur l&apos;appareil</translation>
+        <translation>Entrée&#xa0;: définie par vous et écrite sur l&apos;appareil</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: never written to this device from this panel</source>
-        <translation>%1 : jamais écrit sur cet appareil depuis ce panneau</translation>
+        <translation>%1&#xa0;: jamais écrit sur cet appareil depuis ce panneau</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1: last written %2</source>
-        <translation>%1 : dernière valeur écrite : %2</translation>
+        <translation>%1&#xa0;: dernière valeur écrite&#xa0;: %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Allowed: %1</source>
-        <translation>Valeurs autorisées : %1</translation>
+        <translation>Valeurs autorisées&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Value: %1</source>
-        <translation>Valeur : %1</translation>
+        <translation>Valeur&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1253,7 +1865,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+57"/>
         <source>%1: no such parameter</source>
-        <translation>%1 : paramètre inexistant</translation>
+        <translation>%1&#xa0;: paramètre inexistant</translation>
     </message>
 </context>
 <context>
@@ -1261,7 +1873,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+157"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
-        <translation>Pour modifier : double-cliquer sur une valeur, ou sélectionner une ligne puis appuyer sur Entrée ou saisir</translation>
+        <translation>Pour modifier&#xa0;: double-cliquer sur une valeur, ou sélectionner une ligne puis appuyer sur Entrée ou saisir</translation>
     </message>
 </context>
 <context>
@@ -1299,7 +1911,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+10"/>
         <source>Output: computed by the firmware. Writing it is allowed, but the firmware may replace what is written.</source>
-        <translation>Sortie : calculée par le firmware. L&apos;écrire est permis, mais le firmware peut remplacer la valeur écrite.</translation>
+        <translation>Sortie&#xa0;: calculée par le firmware. L&apos;écrire est permis, mais le firmware peut remplacer la valeur écrite.</translation>
     </message>
     <message>
         <location line="+28"/>
@@ -1314,7 +1926,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+14"/>
         <source>%1: %2 refused (%3): %4</source>
-        <translation>%1 : %2 refusé (%3) : %4</translation>
+        <translation>%1&#xa0;: %2 refusé (%3)&#xa0;: %4</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -1372,7 +1984,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+25"/>
         <source>Encoder ticks per mm of travel (more than 0): converts the frame&apos;s ticks to mm</source>
-        <translation>Impulsions codeur par mm de course (supérieur à 0) : convertit les impulsions du cadre en mm</translation>
+        <translation>Impulsions codeur par mm de course (supérieur à 0)&#xa0;: convertit les impulsions du cadre en mm</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -1392,23 +2004,31 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+3"/>
         <source>Ticks per mm:</source>
-        <translation>Impulsions par mm :</translation>
+        <translation>Impulsions par mm&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>DTR:</source>
-        <translation>DTR :</translation>
+        <translation>DTR&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reachable:</source>
-        <translation>Atteignable :</translation>
+        <translation>Atteignable&#xa0;:</translation>
+    </message>
+</context>
+<context>
+    <name>PortWatcher</name>
+    <message>
+        <location filename="../../app/ports.py" line="+22"/>
+        <source>serial port</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>PositionReadout</name>
     <message>
-        <location filename="../../widgets/position_readout.py" line="+23"/>
+        <location filename="../../widgets/position_readout.py" line="+27"/>
         <source>commanded, not measured</source>
         <translation>commandée, non mesurée</translation>
     </message>
@@ -1420,35 +2040,35 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+1"/>
         <source>This device does not report its position: the numbers are where it was told to go.</source>
-        <translation>Cet appareil n&apos;indique pas sa position : les valeurs affichées sont celles de la consigne envoyée.</translation>
+        <translation>Cet appareil n&apos;indique pas sa position&#xa0;: les valeurs affichées sont celles de la consigne envoyée.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Where the device was told to go, and its reply said the move ended there; not read back (a device that can report its position is asked again when idle).</source>
-        <translation>Position de consigne, et la réponse de l&apos;appareil indique que le mouvement s&apos;y est terminé ; non relue (un appareil capable d&apos;indiquer sa position est réinterrogé au repos).</translation>
+        <translation>Position de consigne, et la réponse de l&apos;appareil indique que le mouvement s&apos;y est terminé&#xa0;; non relue (un appareil capable d&apos;indiquer sa position est réinterrogé au repos).</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>position unknown: the link failed or the device restarted, and it cannot report where it is; home it or set home</source>
-        <translation>position inconnue : la liaison a échoué ou l&apos;appareil a redémarré, et il ne peut pas indiquer où il se trouve ; faire une prise d&apos;origine ou définir l&apos;origine</translation>
+        <translation>position inconnue&#xa0;: la liaison a échoué ou l&apos;appareil a redémarré, et il ne peut pas indiquer où il se trouve&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>estimated from the speed: the device cannot be asked while it moves</source>
-        <translation>estimée d&apos;après la vitesse : l&apos;appareil ne peut pas être interrogé pendant un mouvement</translation>
+        <translation>estimée d&apos;après la vitesse&#xa0;: l&apos;appareil ne peut pas être interrogé pendant un mouvement</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>last known position: not connected</source>
-        <translation>dernière position connue : non connecté</translation>
+        <translation>dernière position connue&#xa0;: non connecté</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Stage position in mm: from the device&apos;s home, and from the work zero</source>
-        <translation>Position de la platine en mm : depuis l&apos;origine de l&apos;appareil et depuis le zéro pièce</translation>
+        <translation>Position de la platine en mm&#xa0;: depuis l&apos;origine de l&apos;appareil et depuis le zéro pièce</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>Machine</source>
         <translation>Machine</translation>
     </message>
@@ -1475,7 +2095,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+4"/>
         <source>Make the current %1 the work zero (0 mm in the work frame); the device is not told, and its home stays where it is</source>
-        <translation>Prendre la position %1 actuelle comme zéro pièce (0 mm dans le repère pièce) ; l&apos;appareil n&apos;en est pas informé et son origine reste inchangée</translation>
+        <translation>Prendre la position %1 actuelle comme zéro pièce (0 mm dans le repère pièce)&#xa0;; l&apos;appareil n&apos;en est pas informé et son origine reste inchangée</translation>
     </message>
     <message>
         <location line="+17"/>
@@ -1498,7 +2118,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Ramener le zéro pièce à l&apos;origine de l&apos;appareil (pièce = machine)</translation>
     </message>
     <message>
-        <location line="+150"/>
+        <location line="+184"/>
         <source>This device has no %1 axis</source>
         <translation>Cet appareil n&apos;a pas d&apos;axe %1</translation>
     </message>
@@ -1508,7 +2128,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Position inconnue</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 position in mm from the device&apos;s home</source>
         <translation>Position %1 en mm depuis l&apos;origine de l&apos;appareil</translation>
     </message>
@@ -1518,20 +2138,24 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Position %1 en mm depuis le zéro pièce</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>work zero: home</source>
-        <translation>zéro pièce : origine</translation>
+        <translation>zéro pièce&#xa0;: origine</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>work zero at (%1) %2 (machine)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>work zero at %1 mm (machine)</source>
-        <translation>zéro pièce à %1 mm (machine)</translation>
+        <translation type="vanished">zéro pièce à %1 mm (machine)</translation>
     </message>
 </context>
 <context>
     <name>Preferences</name>
     <message>
-        <location filename="../../app/preferences.py" line="+65"/>
+        <location filename="../../app/preferences.py" line="+67"/>
         <source>Stop (Motion menu)</source>
         <translation>Arrêt (menu Mouvement)</translation>
     </message>
@@ -1558,7 +2182,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>appuyer sur le bouton actif</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+52"/>
         <source>Poll while moving</source>
         <translation>Interrogation en mouvement</translation>
     </message>
@@ -1627,6 +2251,96 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <source>Language</source>
         <translation>Langue</translation>
     </message>
+    <message>
+        <location line="+31"/>
+        <source>Jog key %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 to %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: %2 lines is out of range: 0 (keep every line) or %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 is out of range: -1 (as the device resolves) or %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2 %3 is out of range (%4)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>it must be an absolute path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>it does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>it is not a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>it is not writable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>it must be a single key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>it is not a key the panel can use</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no Shift, Ctrl, Alt or Meta: Shift makes the step ten times bigger</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the window uses it for %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1: choose a key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: %2 cannot be used: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: %2 is already %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1: %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2 is not one of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ProgramPanel</name>
@@ -1648,7 +2362,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+2"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
-        <translation>Charger un programme : CSV avec x,y,z,speed (mm, mm/s) ou JSON</translation>
+        <translation>Charger un programme&#xa0;: CSV avec x,y,z,speed (mm, mm/s) ou JSON</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1705,7 +2419,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="-50"/>
         <source>Program:</source>
-        <translation>Programme :</translation>
+        <translation>Programme&#xa0;:</translation>
     </message>
     <message>
         <location line="+15"/>
@@ -1745,7 +2459,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+7"/>
         <source>sent %1, acknowledged %2, executed %3; %4 instructions/s%5; %6 retransmission(s)</source>
-        <translation>%1 envoyées, %2 acquittées, %3 exécutées ; %4 instructions/s%5 ; %6 retransmission(s)</translation>
+        <translation>%1 envoyées, %2 acquittées, %3 exécutées&#xa0;; %4 instructions/s%5&#xa0;; %6 retransmission(s)</translation>
     </message>
 </context>
 <context>
@@ -1769,8 +2483,8 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <location line="+53"/>
         <source>text: UTF-8 with \r \n \t \0 \\ \xNN escapes, plus the line ending;
 hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
-        <translation>texte : UTF-8 avec les échappements \r \n \t \0 \\ \xNN, plus la fin de ligne ;
-hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
+        <translation>texte&#xa0;: UTF-8 avec les échappements \r \n \t \0 \\ \xNN, plus la fin de ligne&#xa0;;
+hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -1790,12 +2504,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+42"/>
         <source>hex bytes, e.g. 48 45 4C 4C 4F (Up/Down: history)</source>
-        <translation>octets hex, par ex. 48 45 4C 4C 4F (Haut/Bas : historique)</translation>
+        <translation>octets hex, par ex. 48 45 4C 4C 4F (Haut/Bas&#xa0;: historique)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>text to send (Up/Down: history)</source>
-        <translation>texte à envoyer (Haut/Bas : historique)</translation>
+        <translation>texte à envoyer (Haut/Bas&#xa0;: historique)</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -1868,12 +2582,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+3"/>
         <source>How often the position is read while a move is being confirmed, in hertz (%1 to %2 Hz). Faster confirms the end of each jog step sooner; above 20 Hz nothing is seen sooner.</source>
-        <translation>Fréquence de lecture de la position pendant la confirmation d&apos;un mouvement, en hertz (%1 à %2 Hz). Plus elle est élevée, plus la fin de chaque pas de déplacement est confirmée tôt ; au-delà de 20 Hz, rien n&apos;est vu plus tôt.</translation>
+        <translation>Fréquence de lecture de la position pendant la confirmation d&apos;un mouvement, en hertz (%1 à %2 Hz). Plus elle est élevée, plus la fin de chaque pas de déplacement est confirmée tôt&#xa0;; au-delà de 20 Hz, rien n&apos;est vu plus tôt.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Poll while moving:</source>
-        <translation>Interrogation en mouvement :</translation>
+        <translation>Interrogation en mouvement&#xa0;:</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -1888,7 +2602,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+7"/>
         <source>Poll when idle:</source>
-        <translation>Interrogation au repos :</translation>
+        <translation>Interrogation au repos&#xa0;:</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -1908,12 +2622,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+4"/>
         <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines. The session log keeps every byte either way.</source>
-        <translation>Nombre maximal de lignes conservées par la console : 0 les conserve toutes (un fichier tampon sur disque et environ 33 octets par ligne en mémoire), sinon de %1 à %2 lignes. Le journal de session conserve chaque octet dans tous les cas.</translation>
+        <translation>Nombre maximal de lignes conservées par la console&#xa0;: 0 les conserve toutes (un fichier tampon sur disque et environ 33 octets par ligne en mémoire), sinon de %1 à %2 lignes. Le journal de session conserve chaque octet dans tous les cas.</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Console lines kept:</source>
-        <translation>Lignes de console conservées :</translation>
+        <translation>Lignes de console conservées&#xa0;:</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -1928,7 +2642,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+4"/>
         <source>One file a session in the log folder; the oldest go beyond 200 MiB</source>
-        <translation>Un fichier par session dans le dossier des journaux ; les plus anciens sont supprimés au-delà de 200 MiB</translation>
+        <translation>Un fichier par session dans le dossier des journaux&#xa0;; les plus anciens sont supprimés au-delà de 200 MiB</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -1938,12 +2652,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>Default: %1</source>
-        <translation>Par défaut : %1</translation>
+        <translation>Par défaut&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>An absolute path to a folder you can write to; empty: the default folder</source>
-        <translation>Chemin absolu d&apos;un dossier accessible en écriture ; vide : le dossier par défaut</translation>
+        <translation>Chemin absolu d&apos;un dossier accessible en écriture&#xa0;; vide&#xa0;: le dossier par défaut</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1958,7 +2672,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+5"/>
         <source>Session log folder:</source>
-        <translation>Dossier du journal de session :</translation>
+        <translation>Dossier du journal de session&#xa0;:</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -1978,12 +2692,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>The unit positions are shown in; the device is always sent millimetres</source>
-        <translation>L&apos;unité d&apos;affichage des positions ; l&apos;appareil reçoit toujours des millimètres</translation>
+        <translation>L&apos;unité d&apos;affichage des positions&#xa0;; l&apos;appareil reçoit toujours des millimètres</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Units shown:</source>
-        <translation>Unités affichées :</translation>
+        <translation>Unités affichées&#xa0;:</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -1998,12 +2712,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+4"/>
         <source>Decimals of the positions shown (%1 to %2), or as many as the device resolves (0.01 mm: 2)</source>
-        <translation>Décimales des positions affichées (%1 à %2), ou autant que la résolution de l&apos;appareil (0.01 mm : 2)</translation>
+        <translation>Décimales des positions affichées (%1 à %2), ou autant que la résolution de l&apos;appareil (0.01 mm&#xa0;: 2)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Decimals shown:</source>
-        <translation>Décimales affichées :</translation>
+        <translation>Décimales affichées&#xa0;:</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2033,7 +2747,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+2"/>
         <source>X-:</source>
-        <translation>X- :</translation>
+        <translation>X-&#xa0;:</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -2043,7 +2757,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>X+:</source>
-        <translation>X+ :</translation>
+        <translation>X+&#xa0;:</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -2053,7 +2767,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>Y-:</source>
-        <translation>Y- :</translation>
+        <translation>Y-&#xa0;:</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -2063,7 +2777,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>Y+:</source>
-        <translation>Y+ :</translation>
+        <translation>Y+&#xa0;:</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -2073,7 +2787,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>Z-:</source>
-        <translation>Z- :</translation>
+        <translation>Z-&#xa0;:</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -2083,7 +2797,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>Z+:</source>
-        <translation>Z+ :</translation>
+        <translation>Z+&#xa0;:</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -2093,7 +2807,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>Smaller step:</source>
-        <translation>Pas plus petit :</translation>
+        <translation>Pas plus petit&#xa0;:</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -2103,7 +2817,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>Larger step:</source>
-        <translation>Pas plus grand :</translation>
+        <translation>Pas plus grand&#xa0;:</translation>
     </message>
     <message>
         <location line="+0"/>
@@ -2149,7 +2863,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+2"/>
         <source>Theme:</source>
-        <translation>Thème :</translation>
+        <translation>Thème&#xa0;:</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -2174,12 +2888,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+2"/>
         <source>The interface&apos;s language; --lang and $MOTIONPANEL_LANG come first</source>
-        <translation>La langue de l&apos;interface ; --lang et $MOTIONPANEL_LANG sont prioritaires</translation>
+        <translation>La langue de l&apos;interface&#xa0;; --lang et $MOTIONPANEL_LANG sont prioritaires</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Language:</source>
-        <translation>Langue :</translation>
+        <translation>Langue&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2189,12 +2903,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+60"/>
         <source>%1: %2 is not a number from %3 to %4 %5</source>
-        <translation>%1 : %2 n&apos;est pas un nombre de %3 à %4 %5</translation>
+        <translation>%1&#xa0;: %2 n&apos;est pas un nombre de %3 à %4 %5</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>Memory grows with the session: about 33 MB a million lines.</source>
-        <translation>La mémoire croît avec la session : environ 33 MB par million de lignes.</translation>
+        <translation>La mémoire croît avec la session&#xa0;: environ 33 MB par million de lignes.</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2237,7 +2951,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+77"/>
         <source>No shortcut matches “%1”.</source>
-        <translation>Aucun raccourci ne correspond à « %1 ».</translation>
+        <translation>Aucun raccourci ne correspond à «&#xa0;%1&#xa0;».</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2250,7 +2964,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location filename="../../widgets/speed_control.py" line="+35"/>
         <source>Speed:</source>
-        <translation>Vitesse :</translation>
+        <translation>Vitesse&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2276,7 +2990,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+59"/>
         <source>Speed, %1 to %2 mm/s; press Enter or Apply to send</source>
-        <translation>Vitesse, de %1 à %2 mm/s ; appuyer sur Entrée ou Appliquer pour envoyer</translation>
+        <translation>Vitesse, de %1 à %2 mm/s&#xa0;; appuyer sur Entrée ou Appliquer pour envoyer</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2286,7 +3000,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+10"/>
         <source>device: %1 mm/s</source>
-        <translation>appareil : %1 mm/s</translation>
+        <translation>appareil&#xa0;: %1 mm/s</translation>
     </message>
 </context>
 <context>
@@ -2386,7 +3100,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+4"/>
         <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
-        <translation>Zone où la platine peut se déplacer sur %1. Un déplacement pas à pas, un « Aller à » ou un mouvement en ligne de commande qui sortirait de la zone est refusé avant tout envoi, ou borné à sa limite.</translation>
+        <translation>Zone où la platine peut se déplacer sur %1. Un déplacement pas à pas, un «&#xa0;Aller à&#xa0;» ou un mouvement en ligne de commande qui sortirait de la zone est refusé avant tout envoi, ou borné à sa limite.</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -2407,7 +3121,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+5"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation>%1 :</translation>
+        <translation>%1&#xa0;:</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -2417,12 +3131,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+2"/>
         <source>Clamp it: go as far as the edge, and say so</source>
-        <translation>Le borner : aller jusqu&apos;à la limite, et le signaler</translation>
+        <translation>Le borner&#xa0;: aller jusqu&apos;à la limite, et le signaler</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>%1: the minimum must be below the maximum</source>
-        <translation>%1 : le minimum doit être inférieur au maximum</translation>
+        <translation>%1&#xa0;: le minimum doit être inférieur au maximum</translation>
     </message>
 </context>
 <context>
@@ -2430,7 +3144,7 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-95"/>
         <source>%1: edit cancelled, value unchanged</source>
-        <translation>%1 : modification annulée, valeur inchangée</translation>
+        <translation>%1&#xa0;: modification annulée, valeur inchangée</translation>
     </message>
     <message>
         <location line="+16"/>
@@ -2445,20 +3159,118 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+25"/>
         <source>%1: %2 (Enter keeps it, Escape cancels)</source>
-        <translation>%1 : %2 (Entrée pour valider, Échap pour annuler)</translation>
+        <translation>%1&#xa0;: %2 (Entrée pour valider, Échap pour annuler)</translation>
+    </message>
+</context>
+<context>
+    <name>WindowTools</name>
+    <message>
+        <location filename="../../app/window_tools.py" line="+58"/>
+        <source>Macros</source>
+        <translation type="unfinished">Macros</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>&amp;Settings…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Poll rates, console, log folder, units, jog keys, theme</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Help</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;About Motion Panel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>Jog X - / +</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jog Y - / +</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Jog Z - / +</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Shift + a jog key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Jog ten times the step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hold a jog key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Keep jogging until it is released</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Keys: %1/%2 X, %3/%4 Y, %5/%6 Z, Shift ×10</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>, %1/%2 step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>the session log from the next start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the language from the next start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>settings saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>settings saved; %1</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
     <name>WorkFrame</name>
     <message>
-        <location filename="../../app/work_frame.py" line="+57"/>
+        <location filename="../../app/work_frame.py" line="+58"/>
         <source>work coordinates: %1</source>
-        <translation>coordonnées pièce : %1</translation>
+        <translation>coordonnées pièce&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>work zero not set: the position is unknown</source>
-        <translation>zéro pièce non défini : la position est inconnue</translation>
+        <translation>zéro pièce non défini&#xa0;: la position est inconnue</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2468,12 +3280,12 @@ hex : octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+5"/>
         <source>work zero cleared: work coordinates are machine coordinates</source>
-        <translation>zéro pièce effacé : les coordonnées pièce sont les coordonnées machine</translation>
+        <translation>zéro pièce effacé&#xa0;: les coordonnées pièce sont les coordonnées machine</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>work zero kept in place: %1</source>
-        <translation>zéro pièce maintenu en place : %1</translation>
+        <translation>zéro pièce maintenu en place&#xa0;: %1</translation>
     </message>
 </context>
 </TS>

@@ -26,9 +26,11 @@ from PySide6.QtWidgets import (
 )
 
 from widgets.arc_entry import ArcEntry
+from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
 from widgets.dwell_entry import DwellEntry
 from widgets.firmata_panel import FirmataPanel
+from widgets.jog_panel import JogPanel
 from widgets.macro_editor import MacroEditor
 from widgets.macro_panel import MacroPanel
 from widgets.parameter_editor import ParameterEditor, ParameterRow
@@ -67,6 +69,21 @@ WRAPPED = [
     "app/log_viewer.py",
     "app/bridge_session.py",
     "app/macro_dock.py",
+    "app/main_window.py",
+    "app/keyboard_jog.py",
+    "app/dock_layout.py",
+    "app/window_tools.py",
+    "app/work_frame.py",
+    "app/ports.py",
+    "app/traffic_feed.py",
+    "app/session_log.py",
+    "widgets/connection_bar.py",
+    "widgets/jog_panel.py",
+    "widgets/lazy_view.py",
+    "widgets/settings_dialog.py",
+    "widgets/about_dialog.py",
+    "widgets/shortcuts_dialog.py",
+    "widgets/control_lines_bar.py",
 ]
 OPEN, CLOSE = "⟦", "⟧"
 # What is not a word to translate: numbers, units, axis letters, line endings, signs.
@@ -201,6 +218,13 @@ def build_panels(qtbot) -> list[tuple[QWidget, tuple[str, ...]]]:
     macros = MacroPanel()
     macros.set_macros([("Park", ("home", "move 1 2 3"))])
     macro_editor = MacroEditor(lambda name, steps: "", "", "Park", ("home",))
+    connection = ConnectionBar()
+    connection.set_protocols(["coxiris"])
+    connection.set_ports([("sim://coxiris", "simulated coxiris device")])
+    connection.set_variants([("v2", "packet format 2")], "v2")
+    connection.set_state("error", "")
+    jog = JogPanel()
+    jog.set_keyboard_state(False, "")
     panels: list[tuple[QWidget, tuple[str, ...]]] = [
         (speed, ()),
         (status, ()),
@@ -216,6 +240,8 @@ def build_panels(qtbot) -> list[tuple[QWidget, tuple[str, ...]]]:
         (readout, ()),
         (macros, ("Park", "home", "move")),
         (macro_editor, ("Park", "home", "move", "jog", "wait", "position")),
+        (connection, ("sim://coxiris", "simulated coxiris device", "coxiris", "packet format 2")),
+        (jog, ()),
     ]
     for panel, _ in panels:
         qtbot.addWidget(panel)
