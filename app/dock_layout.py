@@ -3,7 +3,10 @@ paint, so that the saved layout places them) and the device docks (which fill th
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from PySide6.QtCore import QT_TRANSLATE_NOOP, Qt
+from PySide6.QtWidgets import QDockWidget, QMainWindow
 
 LEFT, BOTTOM = Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.BottomDockWidgetArea
 
@@ -16,3 +19,14 @@ DEVICE_DOCKS: dict[str, tuple[str, Qt.DockWidgetArea]] = {
     "arcEntryDock": (QT_TRANSLATE_NOOP("DockLayout", "Arc"), LEFT),
     "dwellEntryDock": (QT_TRANSLATE_NOOP("DockLayout", "Dwell"), LEFT),
 }
+
+
+def empty_dock(
+    window: QMainWindow, name: str, make: Callable[[QMainWindow], QDockWidget]
+) -> QDockWidget:
+    """The window's empty dock `name` if it made one before its first paint (placed and
+    restored already), else `make(window)`."""
+    dock = window.findChild(QDockWidget, name, Qt.FindChildOption.FindDirectChildrenOnly)
+    if dock is None or dock.widget() is not None:
+        dock = make(window)
+    return dock

@@ -10,6 +10,7 @@ from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QFileDialog, QMainWindow
 
 from app import jobs, macros
+from app.dock_layout import empty_dock
 from drivers.errors import BadInput
 from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
@@ -57,10 +58,7 @@ class MacroDock(QObject):
         super().__init__(window)
         self.window = window
         self.panel = MacroPanel(window)
-        dock = window.findChild(QDockWidget, DOCK_NAME, Qt.FindChildOption.FindDirectChildrenOnly)
-        if dock is None or dock.widget() is not None:
-            dock = make_dock(window)
-        self.dock = dock
+        self.dock = empty_dock(window, DOCK_NAME, make_dock)
         self.dock.setWidget(PanelScrollArea(self.panel, self.dock))
         self.protocol: Protocol | None = None
         self.macros: list[macros.Macro] = []

@@ -9,6 +9,7 @@ from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow
 
 from app import jobs
+from app.dock_layout import empty_dock
 from app.settings import read_parameters, write_parameters
 from app.worker import DeviceInfo
 from drivers.errors import BadInput
@@ -63,12 +64,7 @@ class ParameterDock(QObject):
         super().__init__(window)
         self.window = window
         self.editor = ParameterEditor(window)
-        # The window's empty dock of that name if it made one before its first paint (placed
-        # and restored already), else a new, hidden one.
-        dock = window.findChild(QDockWidget, DOCK_NAME, Qt.FindChildOption.FindDirectChildrenOnly)
-        if dock is None or dock.widget() is not None:
-            dock = make_dock(window)
-        self.dock = dock
+        self.dock = empty_dock(window, DOCK_NAME, make_dock)
         self.dock.setWidget(self.editor)
         self.protocol: Protocol | None = None
         self.info: DeviceInfo | None = None

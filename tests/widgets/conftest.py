@@ -16,6 +16,9 @@ from widgets.position_view_3d import share_opengl_contexts
 
 share_opengl_contexts()  # as the application does: several GL views over the session
 
+from widgets.coordinate_entry import CoordinateEntry  # noqa: E402
+from widgets.position_readout import PositionReadout  # noqa: E402
+
 
 @pytest.fixture
 def record() -> Callable[[Any], list[tuple[Any, ...]]]:
@@ -27,3 +30,21 @@ def record() -> Callable[[Any], list[tuple[Any, ...]]]:
         return calls
 
     return _record
+
+
+@pytest.fixture
+def readout(qtbot) -> PositionReadout:
+    """A shown PositionReadout."""
+    widget = PositionReadout()
+    qtbot.addWidget(widget)
+    widget.show()
+    return widget
+
+
+@pytest.fixture
+def entry(qtbot) -> CoordinateEntry:
+    """A shown CoordinateEntry."""
+    widget = CoordinateEntry()
+    qtbot.addWidget(widget)
+    widget.show()
+    return widget

@@ -11,14 +11,6 @@ from widgets.coordinate_entry import SET_HOME_QUESTION, CoordinateEntry
 LEFT = Qt.MouseButton.LeftButton
 
 
-@pytest.fixture
-def entry(qtbot) -> CoordinateEntry:
-    widget = CoordinateEntry()
-    qtbot.addWidget(widget)
-    widget.show()
-    return widget
-
-
 def test_object_names_units_and_tooltips(entry: CoordinateEntry) -> None:
     assert entry.objectName() == "coordinateEntry"
     for axis in "xyz":

@@ -7,14 +7,6 @@ import pytest
 from widgets.position_readout import NOT_MEASURED_TEXT, PositionReadout
 
 
-@pytest.fixture
-def readout(qtbot) -> PositionReadout:
-    widget = PositionReadout()
-    qtbot.addWidget(widget)
-    widget.show()
-    return widget
-
-
 def test_object_name_and_unknown_position(readout: PositionReadout) -> None:
     assert readout.objectName() == "positionReadout"
     assert readout.text("x") == "— mm"

@@ -38,14 +38,6 @@ def test_a_saved_zero_round_trips() -> None:
     assert parse_work_zero(format_work_zero(zero)) == zero
 
 
-@pytest.fixture
-def readout(qtbot) -> PositionReadout:
-    widget = PositionReadout()
-    qtbot.addWidget(widget)
-    widget.show()
-    return widget
-
-
 def test_the_readout_shows_both_frames_and_says_which(readout: PositionReadout) -> None:
     readout.set_position(12.0, 5.0, 0.0)
     assert readout.text("x") == "12.00 mm"
@@ -81,14 +73,6 @@ def test_zero_buttons_ask_for_their_axis(qtbot, readout: PositionReadout) -> Non
     for axis in "xyz":
         assert readout.zero_buttons[axis].objectName() == f"zero{axis.upper()}"
         assert "work zero" in readout.zero_buttons[axis].toolTip()
-
-
-@pytest.fixture
-def entry(qtbot) -> CoordinateEntry:
-    widget = CoordinateEntry()
-    qtbot.addWidget(widget)
-    widget.show()
-    return widget
 
 
 def test_work_coordinates_are_sent_as_machine_ones(qtbot, entry: CoordinateEntry) -> None:
