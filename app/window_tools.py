@@ -184,13 +184,13 @@ class WindowTools(QObject):
             self.tr("Keys: %1/%2 X, %3/%4 Y, %5/%6 Z, Shift ×10"),
             *(
                 name(t)
-                for t in (
+                for t in (  # in the order of the panel's own hint: ←/→ X, ↑/↓ Y, PgUp/PgDn Z
                     p.jog_key_x_minus,
                     p.jog_key_x_plus,
-                    p.jog_key_y_minus,
                     p.jog_key_y_plus,
-                    p.jog_key_z_minus,
+                    p.jog_key_y_minus,
                     p.jog_key_z_plus,
+                    p.jog_key_z_minus,
                 )
             ),
         )

@@ -129,7 +129,6 @@ class PositionReadout(QWidget):
             grid.addWidget(name, row, 0)
             grid.addWidget(value, row, 1)
             grid.addWidget(work, row, 2)
-            grid.addWidget(zero, row, 3)
             self.labels[axis] = value
             self.work_labels[axis] = work
             self.names[axis] = name
@@ -150,10 +149,13 @@ class PositionReadout(QWidget):
         self.clear_zero_button.clicked.connect(self.clear_zero_requested)
         self.zero_label = QLabel()
         self.zero_label.setObjectName("workZeroText")
+        # Under the numbers, so the panel is no wider for them: Zero X, Y, Z, all, clear.
         zeros = QHBoxLayout()
-        zeros.addWidget(self.zero_label, 1)
+        for axis in AXES:
+            zeros.addWidget(self.zero_buttons[axis])
         zeros.addWidget(self.zero_all_button)
         zeros.addWidget(self.clear_zero_button)
+        zeros.addStretch(1)
         self.set_zero_enabled(False)
 
         self.measured_label = QLabel(self.tr(NOT_MEASURED_TEXT))
@@ -176,6 +178,7 @@ class PositionReadout(QWidget):
 
         layout = QVBoxLayout(self)
         layout.addLayout(grid)
+        layout.addWidget(self.zero_label)
         layout.addLayout(zeros)
         layout.addWidget(self.measured_label)
         layout.addWidget(self.status_label)
