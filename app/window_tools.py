@@ -24,7 +24,7 @@ if TYPE_CHECKING:
 
 log = logging.getLogger(__name__)
 
-ARROWS = {"Left": "←", "Right": "→", "Up": "↑", "Down": "↓", "PgDown": "PgDn"}
+ARROWS = {"Left": "←", "Right": "→", "Up": "↑", "Down": "↓"}  # others: as Qt names them
 NATIVE = QKeySequence.SequenceFormat.NativeText
 MACRO_CALLS = frozenset({"set_protocol", "set_runnable"})
 MACRO_DOCK = "macroPanelDock"

@@ -165,7 +165,7 @@ def test_jog_keys_and_units_from_the_preferences(qtbot, window: MainWindow) -> N
 
     _connect(qtbot, window, "sim://coxiris?instant=1")
     panel = window.jog_panel
-    assert panel.key_hint.startswith("Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10, [/] step")
+    assert panel.key_hint.startswith("Keys: ←/→ X, ↑/↓ Y, PgUp/PgDown Z, Shift ×10, [/] step")
     prefs = dataclasses.replace(
         window.tools.prefs, jog_key_x_minus="A", jog_key_x_plus="D", units="in"
     )

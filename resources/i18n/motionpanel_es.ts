@@ -215,86 +215,86 @@ igual al ángulo inicial: una circunferencia completa</translation>
     <message>
         <location filename="../../widgets/connection_bar.py" line="+32"/>
         <source>Disconnected</source>
-        <translation type="unfinished">Desconectado</translation>
+        <translation>Desconectado</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Connecting…</source>
-        <translation type="unfinished">Conectando…</translation>
+        <translation>Conectando…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Connected</source>
-        <translation type="unfinished"></translation>
+        <translation>Conectado</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Error</source>
-        <translation type="unfinished">Error</translation>
+        <translation>Error</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>/dev/ttyUSB0, COM3 or a URL</source>
-        <translation type="unfinished"></translation>
+        <translation>/dev/ttyUSB0, COM3 o una URL</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Serial port, or any pyserial URL (e.g. sim://coxiris, socket://host:port, loop://)</source>
-        <translation type="unfinished"></translation>
+        <translation>Puerto serie, o cualquier URL de pyserial (p. ej. sim://coxiris, socket://host:port, loop://)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Look for serial ports again</source>
-        <translation type="unfinished"></translation>
+        <translation>Volver a buscar puertos serie</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>The language the device speaks</source>
-        <translation type="unfinished"></translation>
+        <translation>El lenguaje que habla el dispositivo</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Variant:</source>
-        <translation type="unfinished"></translation>
+        <translation>Variante:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The wire variant of this protocol (packet format and rate)</source>
-        <translation type="unfinished"></translation>
+        <translation>La variante de transmisión de este protocolo (formato de paquete y velocidad)</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Baud rate in bit/s (type any rate the device uses)</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad en baudios, en bit/s (se puede escribir cualquier velocidad que use el dispositivo)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Bridge</source>
-        <translation type="unfinished"></translation>
+        <translation>Puente</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Bridge (snoop) mode: open the device&apos;s port and offer another program a pseudo-terminal; every byte is forwarded both ways unchanged and shown decoded here (motion controls are off while bridging)</source>
-        <translation type="unfinished"></translation>
+        <translation>Modo puente (espía): abrir el puerto del dispositivo y ofrecer a otro programa un pseudoterminal; cada byte se reenvía sin cambios en ambos sentidos y se muestra aquí decodificado (los controles de movimiento se desactivan mientras dura el puente)</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+6"/>
         <location line="+224"/>
         <source>Connect</source>
-        <translation type="unfinished"></translation>
+        <translation>Conectar</translation>
     </message>
     <message>
         <location line="-224"/>
         <location line="+223"/>
         <source>Cancel</source>
-        <translation type="unfinished">Cancelar</translation>
+        <translation>Cancelar</translation>
     </message>
     <message>
         <location line="-223"/>
         <location line="+223"/>
         <source>Disconnect</source>
-        <translation type="unfinished"></translation>
+        <translation>Desconectar</translation>
     </message>
     <message>
         <location line="-213"/>
@@ -304,52 +304,52 @@ igual al ángulo inicial: una circunferencia completa</translation>
     <message>
         <location line="+13"/>
         <source>Port:</source>
-        <translation type="unfinished"></translation>
+        <translation>Puerto:</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Protocol:</source>
-        <translation type="unfinished">Protocolo:</translation>
+        <translation>Protocolo:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Baud:</source>
-        <translation type="unfinished"></translation>
+        <translation>Baudios:</translation>
     </message>
     <message>
         <location line="+68"/>
         <source>No description for this port</source>
-        <translation type="unfinished"></translation>
+        <translation>Sin descripción para este puerto</translation>
     </message>
     <message>
         <location line="+111"/>
         <source>● %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>● %1: %2</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Open the port and talk to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir el puerto y comunicarse con el dispositivo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Close the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>Cerrar la conexión</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>choose or type a port</source>
-        <translation type="unfinished"></translation>
+        <translation>elegir o escribir un puerto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>choose a protocol</source>
-        <translation type="unfinished"></translation>
+        <translation>elegir un protocolo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the baud rate must be a positive whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>la velocidad en baudios debe ser un número entero positivo</translation>
     </message>
 </context>
 <context>
@@ -669,27 +669,27 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
     <message>
         <location filename="../../app/dock_layout.py" line="+13"/>
         <source>Stepper setup</source>
-        <translation type="unfinished"></translation>
+        <translation>Configuración del motor</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Frame setup</source>
-        <translation type="unfinished"></translation>
+        <translation>Configuración del bastidor</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Program</source>
-        <translation type="unfinished"></translation>
+        <translation>Programa</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Arco</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dwell</source>
-        <translation type="unfinished">Esperar</translation>
+        <translation>Espera</translation>
     </message>
 </context>
 <context>
@@ -834,43 +834,44 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
     <message>
         <location filename="../../widgets/jog_panel.py" line="+30"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
-        <translation type="unfinished"></translation>
+        <translation>Teclas: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
-        <translation type="unfinished"></translation>
+        <translation>Mover la platina un paso; mantener pulsado un botón o una tecla para seguir avanzando.
+%1 (la indicación de abajo dice dónde funcionan las teclas).</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>Step:</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Distance of one jog</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia de un desplazamiento</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Jog by %1 per press</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar %1 por pulsación</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Any step size (0.001 to 1000 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Cualquier tamaño de paso (de 0.001 a 1000 mm)</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>keys active</source>
-        <translation type="unfinished"></translation>
+        <translation>teclas activas</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>keys off: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>teclas inactivas: %1</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -879,12 +880,16 @@ is open, except when the focus is in a field that uses the arrow keys itself
 (text and number fields, drop-down lists, the speed slider, the console).
 Click the views or this panel to give the keys back to jogging.
 Hold a key to keep stepping; Shift for a step ten times bigger.</source>
-        <translation type="unfinished"></translation>
+        <translation>Las teclas de desplazamiento funcionan mientras esta ventana está activa y no hay ningún menú,
+lista, diálogo o ventana emergente abierto, salvo si el foco está en un campo que usa las flechas
+(campos de texto y numéricos, listas desplegables, el control deslizante de velocidad, la consola).
+Hacer clic en las vistas o en este panel para devolver las teclas al desplazamiento.
+Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</translation>
     </message>
     <message>
         <location line="+66"/>
         <source>Jog %1 by %2 mm (Shift: %3 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar %1 %2 mm (Shift: %3 mm)</translation>
     </message>
 </context>
 <context>
@@ -892,72 +897,72 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../app/keyboard_jog.py" line="+38"/>
         <source>a text field</source>
-        <translation type="unfinished"></translation>
+        <translation>un campo de texto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a number field</source>
-        <translation type="unfinished"></translation>
+        <translation>un campo numérico</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a drop-down list</source>
-        <translation type="unfinished"></translation>
+        <translation>una lista desplegable</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a slider</source>
-        <translation type="unfinished"></translation>
+        <translation>un control deslizante</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a list or text view</source>
-        <translation type="unfinished"></translation>
+        <translation>una lista o vista de texto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a choice</source>
-        <translation type="unfinished"></translation>
+        <translation>una opción</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the menu bar</source>
-        <translation type="unfinished"></translation>
+        <translation>la barra de menús</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a menu</source>
-        <translation type="unfinished"></translation>
+        <translation>un menú</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>tabs</source>
-        <translation type="unfinished"></translation>
+        <translation>las pestañas</translation>
     </message>
     <message>
         <location line="+57"/>
         <source>not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>no conectado</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a menu or list is open</source>
-        <translation type="unfinished"></translation>
+        <translation>hay un menú o una lista abiertos</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a dialog is open</source>
-        <translation type="unfinished"></translation>
+        <translation>hay un diálogo abierto</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>another window is active</source>
-        <translation type="unfinished"></translation>
+        <translation>otra ventana está activa</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>the focus is in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el foco está en %1</translation>
     </message>
 </context>
 <context>
@@ -1079,7 +1084,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location line="+19"/>
         <source>%1 macros; at most %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 macros; como máximo %2</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1220,313 +1225,313 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../app/main_window.py" line="+101"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no tiene comando de parada: esto descarta los comandos aún no enviados; un movimiento ya en curso en el dispositivo termina (Esc)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Stop the stage now: halts the move under way and drops what is queued (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>Detener la platina ahora: interrumpe el movimiento en curso y descarta lo que está en cola (Esc)</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>simulated %1 device</source>
-        <translation type="unfinished"></translation>
+        <translation>dispositivo %1 simulado</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Motion Panel</source>
-        <translation type="unfinished">Motion Panel</translation>
+        <translation>Motion Panel</translation>
     </message>
     <message>
         <location line="+105"/>
         <source>no session log: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>sin registro de sesión: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>session log: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>registro de sesión: %1</translation>
     </message>
     <message>
         <location line="+44"/>
         <source>Connection</source>
-        <translation type="unfinished">Conexión</translation>
+        <translation>Conexión</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Position</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Jog</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazamiento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Go to</source>
-        <translation type="unfinished"></translation>
+        <translation>Ir a</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Console</source>
-        <translation type="unfinished">Consola</translation>
+        <translation>Consola</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Parameters</source>
-        <translation type="unfinished">Parámetros</translation>
+        <translation>Parámetros</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Traffic timeline</source>
-        <translation type="unfinished"></translation>
+        <translation>Línea de tiempo del tráfico</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Archivo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Export traffic log…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Exportar registro de tráfico…</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Save every byte sent and received, with timestamps, to a text file</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar cada byte enviado y recibido, con marcas de tiempo, en un archivo de texto</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Open log…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Abrir registro…</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Browse a traffic log (ours or a pyserial spy:// capture) decoded</source>
-        <translation type="unfinished"></translation>
+        <translation>Ver decodificado un registro de tráfico (de este panel o una captura spy:// de pyserial)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Open the session &amp;log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Abrir la carpeta del &amp;registro de sesión</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Every byte of every session is kept there, one file a session</source>
-        <translation type="unfinished"></translation>
+        <translation>Allí se guarda cada byte de cada sesión, un archivo por sesión</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Salir</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Motion</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Movimiento</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+351"/>
         <source>&amp;Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Detener</translation>
     </message>
     <message>
         <location line="-346"/>
         <source>&amp;Travel limits…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Límites de recorrido…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The box the stage may move in, for this device</source>
-        <translation type="unfinished"></translation>
+        <translation>La caja en la que puede moverse la platina, para este dispositivo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ver</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Reset views</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Restablecer vistas</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Clear trail</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Borrar trayectoria</translation>
     </message>
     <message>
         <location line="+134"/>
         <source>connecting to %1 (%2, %3 baud)</source>
-        <translation type="unfinished"></translation>
+        <translation>conectando con %1 (%2, %3 baudios)</translation>
     </message>
     <message>
         <location line="+70"/>
         <source>bridge refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>puente rechazado: %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>bridge: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>puente: %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>bridging %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>puente de %1 a %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>bridge: another program can open %1; every byte goes to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>puente: otro programa puede abrir %1; cada byte va a %2</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>bridge ended: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>puente terminado: %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>bridge closed</source>
-        <translation type="unfinished"></translation>
+        <translation>puente cerrado</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>connection error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>error de conexión: %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>disconnected</source>
-        <translation type="unfinished"></translation>
+        <translation>desconectado</translation>
     </message>
     <message>
         <location line="+32"/>
         <source>connected to %1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>conectado a %1 en %2</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
-        <translation type="unfinished"></translation>
+        <translation>la posición es desconocida: este dispositivo no puede informar de ella; buscar el origen o fijar el origen</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>connected again to %1: the position was read again</source>
-        <translation type="unfinished"></translation>
+        <translation>reconectado a %1: se ha vuelto a leer la posición</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>the device</source>
-        <translation type="unfinished"></translation>
+        <translation>el dispositivo</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Go to the home position (0, 0, 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ir a la posición de origen (0, 0, 0)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Make the current position the origin (asks first)</source>
-        <translation type="unfinished">Convertir la posición actual en el origen (pide confirmación)</translation>
+        <translation>Convertir la posición actual en el origen (pide confirmación)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Restart the panel&apos;s count of the position here (asks first); %1 has no set-home command, so nothing is sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Reiniciar aquí el conteo de posición del panel (pide confirmación); %1 no tiene comando para fijar el origen, así que no se envía nada</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>&amp;Drop queued commands</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Descartar comandos en cola</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>port %1 appeared</source>
-        <translation type="unfinished"></translation>
+        <translation>apareció el puerto %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>reconnecting to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>reconectando con %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>port %1 disappeared</source>
-        <translation type="unfinished"></translation>
+        <translation>desapareció el puerto %1</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>%1 on %2</source>
-        <translation type="unfinished">%1 en %2</translation>
+        <translation>%1 en %2</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>none</source>
-        <translation type="unfinished">ninguno</translation>
+        <translation>ninguno</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>travel limits: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>límites de recorrido: %1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>not connected: %1 not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>no conectado: %1 sin enviar</translation>
     </message>
     <message>
         <location line="+76"/>
         <source>stopping the macro under way</source>
-        <translation type="unfinished"></translation>
+        <translation>deteniendo la macro en curso</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>stopping the move under way</source>
-        <translation type="unfinished"></translation>
+        <translation>deteniendo el movimiento en curso</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>nothing queued; the move under way finishes</source>
-        <translation type="unfinished"></translation>
+        <translation>nada en cola; el movimiento en curso termina</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>stopped: %1 command(s) not sent: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>detenido: %1 comando(s) sin enviar: %2</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
-        <translation type="unfinished"></translation>
+        <translation>nuevo origen: la trayectoria se desplaza (%1, %2, %3) mm</translation>
     </message>
     <message>
         <location line="+75"/>
         <source>the device reported an error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>device: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>dispositivo: %1</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>%1 failed: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 falló: %2</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
-        <translation type="unfinished"></translation>
+        <translation>la velocidad %1 mm/s se relee como %2 mm/s (el dispositivo redondea)</translation>
     </message>
 </context>
 <context>
@@ -2022,7 +2027,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../app/ports.py" line="+22"/>
         <source>serial port</source>
-        <translation type="unfinished"></translation>
+        <translation>puerto serie</translation>
     </message>
 </context>
 <context>
@@ -2145,7 +2150,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location line="+2"/>
         <source>work zero at (%1) %2 (machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>cero de pieza en (%1) %2 (máquina)</translation>
     </message>
     <message>
         <source>work zero at %1 mm (machine)</source>
@@ -2254,92 +2259,92 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location line="+31"/>
         <source>Jog key %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Tecla de desplazamiento %1</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 to %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>de %1 a %2 %3</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: %2 lines is out of range: 0 (keep every line) or %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 líneas está fuera de rango: 0 (conservar todas las líneas) o %3</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: %2 is out of range: -1 (as the device resolves) or %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 está fuera de rango: -1 (según la resolución del dispositivo) o %3</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1: %2 %3 is out of range (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 %3 está fuera de rango (%4)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>it must be an absolute path</source>
-        <translation type="unfinished"></translation>
+        <translation>debe ser una ruta absoluta</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>it does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>no existe</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>it is not a folder</source>
-        <translation type="unfinished"></translation>
+        <translation>no es una carpeta</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>it is not writable</source>
-        <translation type="unfinished"></translation>
+        <translation>no tiene permiso de escritura</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>it must be a single key</source>
-        <translation type="unfinished"></translation>
+        <translation>debe ser una sola tecla</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>it is not a key the panel can use</source>
-        <translation type="unfinished"></translation>
+        <translation>no es una tecla que el panel pueda usar</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no Shift, Ctrl, Alt or Meta: Shift makes the step ten times bigger</source>
-        <translation type="unfinished"></translation>
+        <translation>sin Shift, Ctrl, Alt ni Meta: Shift multiplica el paso por diez</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>the window uses it for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>la ventana la usa para %1</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>%1: choose a key</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: elegir una tecla</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1: %2 cannot be used: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: no se puede usar %2: %3</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1: %2 is already %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 ya se usa como %3</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>%1: %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2: %3</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>%1: %2 is not one of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 no es ninguno de %3</translation>
     </message>
 </context>
 <context>
@@ -3167,97 +3172,97 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     <message>
         <location filename="../../app/window_tools.py" line="+58"/>
         <source>Macros</source>
-        <translation type="unfinished">Macros</translation>
+        <translation>Macros</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>&amp;Settings…</source>
-        <translation type="unfinished"></translation>
+        <translation>A&amp;justes…</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Poll rates, console, log folder, units, jog keys, theme</source>
-        <translation type="unfinished"></translation>
+        <translation>Frecuencias de consulta, consola, carpeta de registros, unidades, teclas de desplazamiento, tema</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>A&amp;yuda</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Keyboard shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>Atajos de &amp;teclado</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;About Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Acerca de Motion Panel</translation>
     </message>
     <message>
         <location line="+45"/>
         <source>Jog X - / +</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar X - / +</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Jog Y - / +</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar Y - / +</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Jog Z - / +</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar Z - / +</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Shift + a jog key</source>
-        <translation type="unfinished"></translation>
+        <translation>Shift + una tecla de desplazamiento</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog ten times the step</source>
-        <translation type="unfinished"></translation>
+        <translation>Desplazar diez veces el paso</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>hold a jog key</source>
-        <translation type="unfinished"></translation>
+        <translation>mantener una tecla de desplazamiento</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Keep jogging until it is released</source>
-        <translation type="unfinished"></translation>
+        <translation>Seguir desplazando hasta soltarla</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>Keys: %1/%2 X, %3/%4 Y, %5/%6 Z, Shift ×10</source>
-        <translation type="unfinished"></translation>
+        <translation>Teclas: %1/%2 X, %3/%4 Y, %5/%6 Z, Shift ×10</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>, %1/%2 step</source>
-        <translation type="unfinished"></translation>
+        <translation>, %1/%2 paso</translation>
     </message>
     <message>
         <location line="+40"/>
         <source>the session log from the next start</source>
-        <translation type="unfinished"></translation>
+        <translation>el registro de sesión se aplica en el próximo inicio</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>the language from the next start</source>
-        <translation type="unfinished"></translation>
+        <translation>el idioma se aplica en el próximo inicio</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>settings saved</source>
-        <translation type="unfinished"></translation>
+        <translation>ajustes guardados</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>settings saved; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ajustes guardados; %1</translation>
     </message>
 </context>
 <context>

@@ -215,86 +215,86 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     <message>
         <location filename="../../widgets/connection_bar.py" line="+32"/>
         <source>Disconnected</source>
-        <translation type="unfinished">Déconnecté</translation>
+        <translation>Déconnecté</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Connecting…</source>
-        <translation type="unfinished">Connexion…</translation>
+        <translation>Connexion…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Connected</source>
-        <translation type="unfinished"></translation>
+        <translation>Connecté</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Error</source>
-        <translation type="unfinished">Erreur</translation>
+        <translation>Erreur</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>/dev/ttyUSB0, COM3 or a URL</source>
-        <translation type="unfinished"></translation>
+        <translation>/dev/ttyUSB0, COM3 ou une URL</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Serial port, or any pyserial URL (e.g. sim://coxiris, socket://host:port, loop://)</source>
-        <translation type="unfinished"></translation>
+        <translation>Port série, ou toute URL pyserial (par ex. sim://coxiris, socket://host:port, loop://)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Look for serial ports again</source>
-        <translation type="unfinished"></translation>
+        <translation>Rechercher à nouveau les ports série</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>The language the device speaks</source>
-        <translation type="unfinished"></translation>
+        <translation>Le langage que parle l&apos;appareil</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Variant:</source>
-        <translation type="unfinished"></translation>
+        <translation>Variante :</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The wire variant of this protocol (packet format and rate)</source>
-        <translation type="unfinished"></translation>
+        <translation>La variante de ce protocole sur la ligne (format des paquets et débit)</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Baud rate in bit/s (type any rate the device uses)</source>
-        <translation type="unfinished"></translation>
+        <translation>Débit en bauds, en bit/s (saisir tout débit utilisé par l&apos;appareil)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Bridge</source>
-        <translation type="unfinished"></translation>
+        <translation>Passerelle</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Bridge (snoop) mode: open the device&apos;s port and offer another program a pseudo-terminal; every byte is forwarded both ways unchanged and shown decoded here (motion controls are off while bridging)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mode passerelle (espion) : ouvrir le port de l&apos;appareil et proposer un pseudo-terminal à un autre programme ; chaque octet est transmis tel quel dans les deux sens et affiché ici décodé (les commandes de mouvement sont désactivées en mode passerelle)</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+6"/>
         <location line="+224"/>
         <source>Connect</source>
-        <translation type="unfinished"></translation>
+        <translation>Connecter</translation>
     </message>
     <message>
         <location line="-224"/>
         <location line="+223"/>
         <source>Cancel</source>
-        <translation type="unfinished">Annuler</translation>
+        <translation>Annuler</translation>
     </message>
     <message>
         <location line="-223"/>
         <location line="+223"/>
         <source>Disconnect</source>
-        <translation type="unfinished"></translation>
+        <translation>Déconnecter</translation>
     </message>
     <message>
         <location line="-213"/>
@@ -304,52 +304,52 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     <message>
         <location line="+13"/>
         <source>Port:</source>
-        <translation type="unfinished"></translation>
+        <translation>Port :</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Protocol:</source>
-        <translation type="unfinished">Protocole&#xa0;:</translation>
+        <translation>Protocole :</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Baud:</source>
-        <translation type="unfinished"></translation>
+        <translation>Bauds :</translation>
     </message>
     <message>
         <location line="+68"/>
         <source>No description for this port</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucune description pour ce port</translation>
     </message>
     <message>
         <location line="+111"/>
         <source>● %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>● %1 : %2</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Open the port and talk to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Ouvrir le port et dialoguer avec l&apos;appareil</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Close the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>Fermer la connexion</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>choose or type a port</source>
-        <translation type="unfinished"></translation>
+        <translation>choisir ou saisir un port</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>choose a protocol</source>
-        <translation type="unfinished"></translation>
+        <translation>choisir un protocole</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the baud rate must be a positive whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>le débit en bauds doit être un nombre entier positif</translation>
     </message>
 </context>
 <context>
@@ -669,27 +669,27 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location filename="../../app/dock_layout.py" line="+13"/>
         <source>Stepper setup</source>
-        <translation type="unfinished"></translation>
+        <translation>Configuration du moteur</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Frame setup</source>
-        <translation type="unfinished"></translation>
+        <translation>Configuration du cadre</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Program</source>
-        <translation type="unfinished"></translation>
+        <translation>Programme</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>Arc</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dwell</source>
-        <translation type="unfinished">Temporiser</translation>
+        <translation>Temporisation</translation>
     </message>
 </context>
 <context>
@@ -834,43 +834,44 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location filename="../../widgets/jog_panel.py" line="+30"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
-        <translation type="unfinished"></translation>
+        <translation>Touches : ←/→ X, ↑/↓ Y, Page préc/Page suiv Z, Maj ×10</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer la platine d&apos;un pas ; maintenir un bouton ou une touche enfoncé pour continuer.
+%1 (voir l&apos;indication ci-dessous pour savoir où les touches fonctionnent).</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>Step:</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas :</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Distance of one jog</source>
-        <translation type="unfinished"></translation>
+        <translation>Distance d&apos;un déplacement</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Jog by %1 per press</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer de %1 par appui</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Any step size (0.001 to 1000 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pas quelconque (de 0,001 à 1000 mm)</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>keys active</source>
-        <translation type="unfinished"></translation>
+        <translation>touches actives</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>keys off: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>touches inactives : %1</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -879,12 +880,16 @@ is open, except when the focus is in a field that uses the arrow keys itself
 (text and number fields, drop-down lists, the speed slider, the console).
 Click the views or this panel to give the keys back to jogging.
 Hold a key to keep stepping; Shift for a step ten times bigger.</source>
-        <translation type="unfinished"></translation>
+        <translation>Les touches de déplacement fonctionnent tant que cette fenêtre est active et qu&apos;aucun menu, liste, dialogue
+ou fenêtre contextuelle n&apos;est ouvert, sauf si le focus est dans un champ qui utilise lui-même les flèches
+(champs de texte et numériques, listes déroulantes, curseur de vitesse, console).
+Cliquer sur les vues ou sur ce panneau pour rendre les touches au déplacement.
+Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</translation>
     </message>
     <message>
         <location line="+66"/>
         <source>Jog %1 by %2 mm (Shift: %3 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer %1 de %2 mm (Maj : %3 mm)</translation>
     </message>
 </context>
 <context>
@@ -892,72 +897,72 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../app/keyboard_jog.py" line="+38"/>
         <source>a text field</source>
-        <translation type="unfinished"></translation>
+        <translation>un champ de texte</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a number field</source>
-        <translation type="unfinished"></translation>
+        <translation>un champ numérique</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a drop-down list</source>
-        <translation type="unfinished"></translation>
+        <translation>une liste déroulante</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a slider</source>
-        <translation type="unfinished"></translation>
+        <translation>un curseur</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a list or text view</source>
-        <translation type="unfinished"></translation>
+        <translation>une liste ou une zone de texte</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a choice</source>
-        <translation type="unfinished"></translation>
+        <translation>un choix</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the menu bar</source>
-        <translation type="unfinished"></translation>
+        <translation>la barre de menus</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a menu</source>
-        <translation type="unfinished"></translation>
+        <translation>un menu</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>tabs</source>
-        <translation type="unfinished"></translation>
+        <translation>une barre d&apos;onglets</translation>
     </message>
     <message>
         <location line="+57"/>
         <source>not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>non connecté</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a menu or list is open</source>
-        <translation type="unfinished"></translation>
+        <translation>un menu ou une liste est ouvert</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a dialog is open</source>
-        <translation type="unfinished"></translation>
+        <translation>une boîte de dialogue est ouverte</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>another window is active</source>
-        <translation type="unfinished"></translation>
+        <translation>une autre fenêtre est active</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>the focus is in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>le focus est dans %1</translation>
     </message>
 </context>
 <context>
@@ -1079,7 +1084,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location line="+19"/>
         <source>%1 macros; at most %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 macros ; %2 au maximum</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1220,313 +1225,313 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../app/main_window.py" line="+101"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aucune commande d&apos;arrêt sur %1 : ceci vide les commandes pas encore envoyées ; un mouvement déjà en cours sur l&apos;appareil se termine (Échap)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Stop the stage now: halts the move under way and drops what is queued (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrêter la platine immédiatement : interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>simulated %1 device</source>
-        <translation type="unfinished"></translation>
+        <translation>appareil %1 simulé</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Motion Panel</source>
-        <translation type="unfinished">Motion Panel</translation>
+        <translation>Motion Panel</translation>
     </message>
     <message>
         <location line="+105"/>
         <source>no session log: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>pas de journal de session : %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>session log: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>journal de session : %1</translation>
     </message>
     <message>
         <location line="+44"/>
         <source>Connection</source>
-        <translation type="unfinished">Connexion</translation>
+        <translation>Connexion</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Position</source>
-        <translation type="unfinished"></translation>
+        <translation>Position</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Jog</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacement</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Go to</source>
-        <translation type="unfinished"></translation>
+        <translation>Aller à</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Vitesse</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Console</source>
-        <translation type="unfinished">Console</translation>
+        <translation>Console</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Parameters</source>
-        <translation type="unfinished">Paramètres</translation>
+        <translation>Paramètres</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Traffic timeline</source>
-        <translation type="unfinished"></translation>
+        <translation>Chronologie du trafic</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Fichier</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Export traffic log…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Exporter le journal de trafic…</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Save every byte sent and received, with timestamps, to a text file</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer chaque octet envoyé et reçu, horodaté, dans un fichier texte</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Open log…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ouvrir un journal…</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Browse a traffic log (ours or a pyserial spy:// capture) decoded</source>
-        <translation type="unfinished"></translation>
+        <translation>Parcourir un journal de trafic décodé (un des nôtres ou une capture pyserial spy://)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Open the session &amp;log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>Ouvrir le &amp;dossier des journaux de session</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Every byte of every session is kept there, one file a session</source>
-        <translation type="unfinished"></translation>
+        <translation>Chaque octet de chaque session y est conservé, un fichier par session</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Quitter</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Motion</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Mouvement</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+351"/>
         <source>&amp;Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Arrêt</translation>
     </message>
     <message>
         <location line="-346"/>
         <source>&amp;Travel limits…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Limites de course…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The box the stage may move in, for this device</source>
-        <translation type="unfinished"></translation>
+        <translation>La zone où la platine peut se déplacer, pour cet appareil</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Affichage</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Reset views</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Réinitialiser les vues</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Clear trail</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Effacer la trace</translation>
     </message>
     <message>
         <location line="+134"/>
         <source>connecting to %1 (%2, %3 baud)</source>
-        <translation type="unfinished"></translation>
+        <translation>connexion à %1 (%2, %3 bauds)</translation>
     </message>
     <message>
         <location line="+70"/>
         <source>bridge refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>passerelle refusée : %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>bridge: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>passerelle : %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>bridging %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>passerelle de %1 vers %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>bridge: another program can open %1; every byte goes to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>passerelle : un autre programme peut ouvrir %1 ; chaque octet est transmis à %2</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>bridge ended: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>passerelle terminée : %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>bridge closed</source>
-        <translation type="unfinished"></translation>
+        <translation>passerelle fermée</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>connection error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>erreur de connexion : %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>disconnected</source>
-        <translation type="unfinished"></translation>
+        <translation>déconnecté</translation>
     </message>
     <message>
         <location line="+32"/>
         <source>connected to %1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>connecté à %1 sur %2</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
-        <translation type="unfinished"></translation>
+        <translation>la position est inconnue : cet appareil ne peut pas l&apos;indiquer ; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>connected again to %1: the position was read again</source>
-        <translation type="unfinished"></translation>
+        <translation>reconnecté à %1 : la position a été relue</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>the device</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;appareil</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Go to the home position (0, 0, 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aller à la position d&apos;origine (0, 0, 0)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Make the current position the origin (asks first)</source>
-        <translation type="unfinished">Faire de la position actuelle l&apos;origine (avec confirmation)</translation>
+        <translation>Faire de la position actuelle l&apos;origine (avec confirmation)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Restart the panel&apos;s count of the position here (asks first); %1 has no set-home command, so nothing is sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Faire repartir d&apos;ici le décompte de position du panneau (avec confirmation) ; %1 n&apos;a pas de commande pour définir l&apos;origine, rien n&apos;est donc envoyé</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>&amp;Drop queued commands</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Vider la file d&apos;attente</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>port %1 appeared</source>
-        <translation type="unfinished"></translation>
+        <translation>port %1 apparu</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>reconnecting to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>reconnexion à %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>port %1 disappeared</source>
-        <translation type="unfinished"></translation>
+        <translation>port %1 disparu</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>%1 on %2</source>
-        <translation type="unfinished">%1 sur %2</translation>
+        <translation>%1 sur %2</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>none</source>
-        <translation type="unfinished">aucune</translation>
+        <translation>aucune</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>travel limits: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>limites de course : %1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>not connected: %1 not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>non connecté : %1 non envoyé</translation>
     </message>
     <message>
         <location line="+76"/>
         <source>stopping the macro under way</source>
-        <translation type="unfinished"></translation>
+        <translation>arrêt de la macro en cours</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>stopping the move under way</source>
-        <translation type="unfinished"></translation>
+        <translation>arrêt du mouvement en cours</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>nothing queued; the move under way finishes</source>
-        <translation type="unfinished"></translation>
+        <translation>rien en file d&apos;attente ; le mouvement en cours se termine</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>stopped: %1 command(s) not sent: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>arrêté : %1 commande(s) non envoyée(s) : %2</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
-        <translation type="unfinished"></translation>
+        <translation>nouvelle origine : la trace est décalée de (%1, %2, %3) mm</translation>
     </message>
     <message>
         <location line="+75"/>
         <source>the device reported an error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;appareil a signalé une erreur : %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>device: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>appareil : %1</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>%1 failed: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>échec de %1 : %2</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
-        <translation type="unfinished"></translation>
+        <translation>vitesse %1 mm/s relue comme %2 mm/s (l&apos;appareil arrondit)</translation>
     </message>
 </context>
 <context>
@@ -2022,7 +2027,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../app/ports.py" line="+22"/>
         <source>serial port</source>
-        <translation type="unfinished"></translation>
+        <translation>port série</translation>
     </message>
 </context>
 <context>
@@ -2145,7 +2150,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location line="+2"/>
         <source>work zero at (%1) %2 (machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>zéro pièce à (%1) %2 (machine)</translation>
     </message>
     <message>
         <source>work zero at %1 mm (machine)</source>
@@ -2254,92 +2259,92 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location line="+31"/>
         <source>Jog key %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Touche %1</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 to %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>de %1 à %2 %3</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: %2 lines is out of range: 0 (keep every line) or %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 lignes, hors plage : 0 (conserver toutes les lignes) ou %3</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: %2 is out of range: -1 (as the device resolves) or %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 est hors plage : -1 (selon la résolution de l&apos;appareil) ou %3</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1: %2 %3 is out of range (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 %3 est hors plage (%4)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>it must be an absolute path</source>
-        <translation type="unfinished"></translation>
+        <translation>ce doit être un chemin absolu</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>it does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>il n&apos;existe pas</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>it is not a folder</source>
-        <translation type="unfinished"></translation>
+        <translation>ce n&apos;est pas un dossier</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>it is not writable</source>
-        <translation type="unfinished"></translation>
+        <translation>il n&apos;est pas accessible en écriture</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>it must be a single key</source>
-        <translation type="unfinished"></translation>
+        <translation>ce doit être une seule touche</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>it is not a key the panel can use</source>
-        <translation type="unfinished"></translation>
+        <translation>ce n&apos;est pas une touche utilisable par le panneau</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no Shift, Ctrl, Alt or Meta: Shift makes the step ten times bigger</source>
-        <translation type="unfinished"></translation>
+        <translation>sans Maj, Ctrl, Alt ni Méta : Maj multiplie le pas par dix</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>the window uses it for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>la fenêtre l&apos;utilise pour %1</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>%1: choose a key</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : choisir une touche</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1: %2 cannot be used: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 est inutilisable : %3</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1: %2 is already %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 est déjà affectée à %3</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>%1: %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 : %3</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>%1: %2 is not one of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 : %2 n&apos;est pas parmi %3</translation>
     </message>
 </context>
 <context>
@@ -3167,97 +3172,97 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location filename="../../app/window_tools.py" line="+58"/>
         <source>Macros</source>
-        <translation type="unfinished">Macros</translation>
+        <translation>Macros</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>&amp;Settings…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Réglages…</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Poll rates, console, log folder, units, jog keys, theme</source>
-        <translation type="unfinished"></translation>
+        <translation>Fréquences d&apos;interrogation, console, dossier des journaux, unités, touches de déplacement, thème</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>Aid&amp;e</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Keyboard shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Raccourcis clavier</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;About Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>À &amp;propos de Motion Panel</translation>
     </message>
     <message>
         <location line="+45"/>
         <source>Jog X - / +</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer X - / +</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Jog Y - / +</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer Y - / +</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Jog Z - / +</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer Z - / +</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Shift + a jog key</source>
-        <translation type="unfinished"></translation>
+        <translation>Maj + une touche de déplacement</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog ten times the step</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer de dix fois le pas</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>hold a jog key</source>
-        <translation type="unfinished"></translation>
+        <translation>maintenir une touche de déplacement</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Keep jogging until it is released</source>
-        <translation type="unfinished"></translation>
+        <translation>Déplacer en continu jusqu&apos;au relâchement</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>Keys: %1/%2 X, %3/%4 Y, %5/%6 Z, Shift ×10</source>
-        <translation type="unfinished"></translation>
+        <translation>Touches : %1/%2 X, %3/%4 Y, %5/%6 Z, Maj ×10</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>, %1/%2 step</source>
-        <translation type="unfinished"></translation>
+        <translation>, %1/%2 pas</translation>
     </message>
     <message>
         <location line="+40"/>
         <source>the session log from the next start</source>
-        <translation type="unfinished"></translation>
+        <translation>le journal de session change au prochain démarrage</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>the language from the next start</source>
-        <translation type="unfinished"></translation>
+        <translation>la langue change au prochain démarrage</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>settings saved</source>
-        <translation type="unfinished"></translation>
+        <translation>réglages enregistrés</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>settings saved; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>réglages enregistrés ; %1</translation>
     </message>
 </context>
 <context>

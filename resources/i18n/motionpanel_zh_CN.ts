@@ -215,86 +215,86 @@ the same as the start angle: a full circle</source>
     <message>
         <location filename="../../widgets/connection_bar.py" line="+32"/>
         <source>Disconnected</source>
-        <translation type="unfinished">未连接</translation>
+        <translation>未连接</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Connecting…</source>
-        <translation type="unfinished">正在连接…</translation>
+        <translation>正在连接…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Connected</source>
-        <translation type="unfinished"></translation>
+        <translation>已连接</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Error</source>
-        <translation type="unfinished">错误</translation>
+        <translation>错误</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>/dev/ttyUSB0, COM3 or a URL</source>
-        <translation type="unfinished"></translation>
+        <translation>/dev/ttyUSB0、COM3 或 URL</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Serial port, or any pyserial URL (e.g. sim://coxiris, socket://host:port, loop://)</source>
-        <translation type="unfinished"></translation>
+        <translation>串口，或任意 pyserial URL（例如 sim://coxiris、socket://host:port、loop://）</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Look for serial ports again</source>
-        <translation type="unfinished"></translation>
+        <translation>重新查找串口</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>The language the device speaks</source>
-        <translation type="unfinished"></translation>
+        <translation>设备使用的通信协议</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Variant:</source>
-        <translation type="unfinished"></translation>
+        <translation>变体：</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The wire variant of this protocol (packet format and rate)</source>
-        <translation type="unfinished"></translation>
+        <translation>此协议的线路变体（数据包格式和速率）</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Baud rate in bit/s (type any rate the device uses)</source>
-        <translation type="unfinished"></translation>
+        <translation>波特率，单位 bit/s（可输入设备使用的任意速率）</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Bridge</source>
-        <translation type="unfinished"></translation>
+        <translation>桥接</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Bridge (snoop) mode: open the device&apos;s port and offer another program a pseudo-terminal; every byte is forwarded both ways unchanged and shown decoded here (motion controls are off while bridging)</source>
-        <translation type="unfinished"></translation>
+        <translation>桥接（监听）模式：打开设备的端口，并为另一个程序提供一个伪终端；每个字节都原样双向转发，并在此处解码显示（桥接期间运动控制不可用）</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+6"/>
         <location line="+224"/>
         <source>Connect</source>
-        <translation type="unfinished"></translation>
+        <translation>连接</translation>
     </message>
     <message>
         <location line="-224"/>
         <location line="+223"/>
         <source>Cancel</source>
-        <translation type="unfinished">取消</translation>
+        <translation>取消</translation>
     </message>
     <message>
         <location line="-223"/>
         <location line="+223"/>
         <source>Disconnect</source>
-        <translation type="unfinished"></translation>
+        <translation>断开</translation>
     </message>
     <message>
         <location line="-213"/>
@@ -304,52 +304,52 @@ the same as the start angle: a full circle</source>
     <message>
         <location line="+13"/>
         <source>Port:</source>
-        <translation type="unfinished"></translation>
+        <translation>端口：</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Protocol:</source>
-        <translation type="unfinished">协议：</translation>
+        <translation>协议：</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Baud:</source>
-        <translation type="unfinished"></translation>
+        <translation>波特率：</translation>
     </message>
     <message>
         <location line="+68"/>
         <source>No description for this port</source>
-        <translation type="unfinished"></translation>
+        <translation>此端口没有描述</translation>
     </message>
     <message>
         <location line="+111"/>
         <source>● %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>● %1：%2</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Open the port and talk to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>打开端口并与设备通信</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Close the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>关闭连接</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>choose or type a port</source>
-        <translation type="unfinished"></translation>
+        <translation>请选择或输入端口</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>choose a protocol</source>
-        <translation type="unfinished"></translation>
+        <translation>请选择协议</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the baud rate must be a positive whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>波特率必须是正整数</translation>
     </message>
 </context>
 <context>
@@ -669,27 +669,27 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/dock_layout.py" line="+13"/>
         <source>Stepper setup</source>
-        <translation type="unfinished"></translation>
+        <translation>步进电机设置</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Frame setup</source>
-        <translation type="unfinished"></translation>
+        <translation>机架设置</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Program</source>
-        <translation type="unfinished"></translation>
+        <translation>程序</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Arc</source>
-        <translation type="unfinished"></translation>
+        <translation>圆弧</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dwell</source>
-        <translation type="unfinished">延时</translation>
+        <translation>延时</translation>
     </message>
 </context>
 <context>
@@ -834,43 +834,44 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../widgets/jog_panel.py" line="+30"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
-        <translation type="unfinished"></translation>
+        <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift ×10</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
-        <translation type="unfinished"></translation>
+        <translation>将平台移动一步；按住按钮或按键可持续步进。
+%1（按键在何处有效，见下方提示）。</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>Step:</source>
-        <translation type="unfinished"></translation>
+        <translation>步长：</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Distance of one jog</source>
-        <translation type="unfinished"></translation>
+        <translation>每次点动的距离</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Jog by %1 per press</source>
-        <translation type="unfinished"></translation>
+        <translation>每按一次点动 %1</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Any step size (0.001 to 1000 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>任意步长（0.001 至 1000 mm）</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>keys active</source>
-        <translation type="unfinished"></translation>
+        <translation>按键已启用</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>keys off: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>按键已停用：%1</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -879,12 +880,16 @@ is open, except when the focus is in a field that uses the arrow keys itself
 (text and number fields, drop-down lists, the speed slider, the console).
 Click the views or this panel to give the keys back to jogging.
 Hold a key to keep stepping; Shift for a step ten times bigger.</source>
-        <translation type="unfinished"></translation>
+        <translation>当此窗口处于活动状态，且未打开任何菜单、列表、对话框或弹出窗口时，点动键有效；
+但焦点位于自身使用方向键的控件中时除外
+（文本框和数字框、下拉列表、速度滑块、控制台）。
+点击视图或此面板，即可让按键恢复点动。
+按住按键可持续步进；按住 Shift 则步长放大十倍。</translation>
     </message>
     <message>
         <location line="+66"/>
         <source>Jog %1 by %2 mm (Shift: %3 mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 轴点动 %2 mm（Shift：%3 mm）</translation>
     </message>
 </context>
 <context>
@@ -892,72 +897,72 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../app/keyboard_jog.py" line="+38"/>
         <source>a text field</source>
-        <translation type="unfinished"></translation>
+        <translation>文本框</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a number field</source>
-        <translation type="unfinished"></translation>
+        <translation>数字框</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a drop-down list</source>
-        <translation type="unfinished"></translation>
+        <translation>下拉列表</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a slider</source>
-        <translation type="unfinished"></translation>
+        <translation>滑块</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a list or text view</source>
-        <translation type="unfinished"></translation>
+        <translation>列表或文本视图</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a choice</source>
-        <translation type="unfinished"></translation>
+        <translation>单选项</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>the menu bar</source>
-        <translation type="unfinished"></translation>
+        <translation>菜单栏</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>a menu</source>
-        <translation type="unfinished"></translation>
+        <translation>菜单</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>tabs</source>
-        <translation type="unfinished"></translation>
+        <translation>标签页</translation>
     </message>
     <message>
         <location line="+57"/>
         <source>not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>未连接</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a menu or list is open</source>
-        <translation type="unfinished"></translation>
+        <translation>菜单或列表已打开</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a dialog is open</source>
-        <translation type="unfinished"></translation>
+        <translation>对话框已打开</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>another window is active</source>
-        <translation type="unfinished"></translation>
+        <translation>其他窗口处于活动状态</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>the focus is in %1</source>
-        <translation type="unfinished"></translation>
+        <translation>焦点在%1中</translation>
     </message>
 </context>
 <context>
@@ -1079,7 +1084,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location line="+19"/>
         <source>%1 macros; at most %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 个宏；最多 %2 个</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1220,313 +1225,313 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../app/main_window.py" line="+101"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 没有停止命令：此操作会丢弃尚未发送的命令；设备上已在进行的移动会继续完成（Esc）</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Stop the stage now: halts the move under way and drops what is queued (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>立即停止平台：中止正在进行的移动，并清空队列（Esc）</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>simulated %1 device</source>
-        <translation type="unfinished"></translation>
+        <translation>模拟的 %1 设备</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Motion Panel</source>
-        <translation type="unfinished">Motion Panel</translation>
+        <translation>Motion Panel</translation>
     </message>
     <message>
         <location line="+105"/>
         <source>no session log: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无会话日志：%1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>session log: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>会话日志：%1</translation>
     </message>
     <message>
         <location line="+44"/>
         <source>Connection</source>
-        <translation type="unfinished">连接</translation>
+        <translation>连接</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Position</source>
-        <translation type="unfinished"></translation>
+        <translation>位置</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Jog</source>
-        <translation type="unfinished"></translation>
+        <translation>点动</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Go to</source>
-        <translation type="unfinished"></translation>
+        <translation>定位</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>速度</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Console</source>
-        <translation type="unfinished">控制台</translation>
+        <translation>控制台</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Parameters</source>
-        <translation type="unfinished">参数</translation>
+        <translation>参数</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Traffic timeline</source>
-        <translation type="unfinished"></translation>
+        <translation>通信时间线</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>文件(&amp;F)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Export traffic log…</source>
-        <translation type="unfinished"></translation>
+        <translation>导出通信日志(&amp;E)…</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Save every byte sent and received, with timestamps, to a text file</source>
-        <translation type="unfinished"></translation>
+        <translation>将收发的每个字节连同时间戳保存到文本文件</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Open log…</source>
-        <translation type="unfinished"></translation>
+        <translation>打开日志(&amp;O)…</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Browse a traffic log (ours or a pyserial spy:// capture) decoded</source>
-        <translation type="unfinished"></translation>
+        <translation>浏览解码后的通信日志（本程序的日志或 pyserial spy:// 捕获文件）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Open the session &amp;log folder</source>
-        <translation type="unfinished"></translation>
+        <translation>打开会话日志文件夹(&amp;L)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Every byte of every session is kept there, one file a session</source>
-        <translation type="unfinished"></translation>
+        <translation>每次会话的每个字节都保存在那里，每次会话一个文件</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>退出(&amp;Q)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Motion</source>
-        <translation type="unfinished"></translation>
+        <translation>运动(&amp;M)</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+351"/>
         <source>&amp;Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>停止(&amp;S)</translation>
     </message>
     <message>
         <location line="-346"/>
         <source>&amp;Travel limits…</source>
-        <translation type="unfinished"></translation>
+        <translation>行程限位(&amp;T)…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The box the stage may move in, for this device</source>
-        <translation type="unfinished"></translation>
+        <translation>此设备上平台允许移动的范围</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>视图(&amp;V)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Reset views</source>
-        <translation type="unfinished"></translation>
+        <translation>重置视图(&amp;R)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Clear trail</source>
-        <translation type="unfinished"></translation>
+        <translation>清除轨迹(&amp;C)</translation>
     </message>
     <message>
         <location line="+134"/>
         <source>connecting to %1 (%2, %3 baud)</source>
-        <translation type="unfinished"></translation>
+        <translation>正在连接 %1（%2，%3 波特）</translation>
     </message>
     <message>
         <location line="+70"/>
         <source>bridge refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>桥接被拒绝：%1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>bridge: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>桥接：%1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>bridging %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>正在将 %1 桥接到 %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>bridge: another program can open %1; every byte goes to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>桥接：其他程序可打开 %1；每个字节都会转发到 %2</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>bridge ended: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>桥接已结束：%1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>bridge closed</source>
-        <translation type="unfinished"></translation>
+        <translation>桥接已关闭</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>connection error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>连接错误：%1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>disconnected</source>
-        <translation type="unfinished"></translation>
+        <translation>已断开连接</translation>
     </message>
     <message>
         <location line="+32"/>
         <source>connected to %1 on %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已通过 %2 连接到 %1</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
-        <translation type="unfinished"></translation>
+        <translation>位置未知：此设备无法报告其位置；请回原点或设为原点</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>connected again to %1: the position was read again</source>
-        <translation type="unfinished"></translation>
+        <translation>已重新连接到 %1：已重新读取位置</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>the device</source>
-        <translation type="unfinished"></translation>
+        <translation>该设备</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Go to the home position (0, 0, 0)</source>
-        <translation type="unfinished"></translation>
+        <translation>移动到原点位置 (0, 0, 0)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Make the current position the origin (asks first)</source>
-        <translation type="unfinished">将当前位置设为原点（会先询问）</translation>
+        <translation>将当前位置设为原点（会先询问）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Restart the panel&apos;s count of the position here (asks first); %1 has no set-home command, so nothing is sent</source>
-        <translation type="unfinished"></translation>
+        <translation>在此处重新开始面板的位置计数（会先询问）；%1 没有设置原点命令，因此不会发送任何内容</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>&amp;Drop queued commands</source>
-        <translation type="unfinished"></translation>
+        <translation>清空命令队列(&amp;D)</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>port %1 appeared</source>
-        <translation type="unfinished"></translation>
+        <translation>端口 %1 已出现</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>reconnecting to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>正在重新连接到 %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>port %1 disappeared</source>
-        <translation type="unfinished"></translation>
+        <translation>端口 %1 已消失</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>%1 on %2</source>
-        <translation type="unfinished">%2 上的 %1</translation>
+        <translation>%2 上的 %1</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>none</source>
-        <translation type="unfinished">无</translation>
+        <translation>无</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>travel limits: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>行程限位：%1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>not connected: %1 not sent</source>
-        <translation type="unfinished"></translation>
+        <translation>未连接：%1 未发送</translation>
     </message>
     <message>
         <location line="+76"/>
         <source>stopping the macro under way</source>
-        <translation type="unfinished"></translation>
+        <translation>正在停止执行中的宏</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>stopping the move under way</source>
-        <translation type="unfinished"></translation>
+        <translation>正在停止进行中的移动</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>nothing queued; the move under way finishes</source>
-        <translation type="unfinished"></translation>
+        <translation>队列为空；进行中的移动会继续完成</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>stopped: %1 command(s) not sent: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已停止：%1 条命令未发送：%2</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
-        <translation type="unfinished"></translation>
+        <translation>新原点：轨迹已平移 (%1, %2, %3) mm</translation>
     </message>
     <message>
         <location line="+75"/>
         <source>the device reported an error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>设备报告错误：%1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>device: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>设备：%1</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>%1 failed: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 失败：%2</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
-        <translation type="unfinished"></translation>
+        <translation>速度 %1 mm/s 回读为 %2 mm/s（设备会取整）</translation>
     </message>
 </context>
 <context>
@@ -2022,7 +2027,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../app/ports.py" line="+22"/>
         <source>serial port</source>
-        <translation type="unfinished"></translation>
+        <translation>串口</translation>
     </message>
 </context>
 <context>
@@ -2145,7 +2150,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location line="+2"/>
         <source>work zero at (%1) %2 (machine)</source>
-        <translation type="unfinished"></translation>
+        <translation>工件零点位于 (%1) %2（机床坐标）</translation>
     </message>
     <message>
         <source>work zero at %1 mm (machine)</source>
@@ -2254,92 +2259,92 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location line="+31"/>
         <source>Jog key %1</source>
-        <translation type="unfinished"></translation>
+        <translation>点动键 %1</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 to %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 至 %2 %3</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: %2 lines is out of range: 0 (keep every line) or %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 行超出范围：应为 0（保留所有行）或 %3</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: %2 is out of range: -1 (as the device resolves) or %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 超出范围：应为 -1（按设备分辨率）或 %3</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1: %2 %3 is out of range (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 %3 超出范围（%4）</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>it must be an absolute path</source>
-        <translation type="unfinished"></translation>
+        <translation>必须是绝对路径</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>it does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>该路径不存在</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>it is not a folder</source>
-        <translation type="unfinished"></translation>
+        <translation>不是文件夹</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>it is not writable</source>
-        <translation type="unfinished"></translation>
+        <translation>不可写入</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>it must be a single key</source>
-        <translation type="unfinished"></translation>
+        <translation>必须是单个按键</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>it is not a key the panel can use</source>
-        <translation type="unfinished"></translation>
+        <translation>面板无法使用此按键</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>no Shift, Ctrl, Alt or Meta: Shift makes the step ten times bigger</source>
-        <translation type="unfinished"></translation>
+        <translation>不能含 Shift、Ctrl、Alt 或 Meta：Shift 用于将步长放大十倍</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>the window uses it for %1</source>
-        <translation type="unfinished"></translation>
+        <translation>窗口已将其用于%1</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>%1: choose a key</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：请选择一个按键</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1: %2 cannot be used: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 无法使用：%3</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1: %2 is already %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 已用作%3</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>%1: %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2：%3</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>%1: %2 is not one of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1：%2 不是以下之一：%3</translation>
     </message>
 </context>
 <context>
@@ -3167,97 +3172,97 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../app/window_tools.py" line="+58"/>
         <source>Macros</source>
-        <translation type="unfinished">宏</translation>
+        <translation>宏</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>&amp;Settings…</source>
-        <translation type="unfinished"></translation>
+        <translation>设置(&amp;S)…</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Poll rates, console, log folder, units, jog keys, theme</source>
-        <translation type="unfinished"></translation>
+        <translation>轮询频率、控制台、日志文件夹、单位、点动按键、主题</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>帮助(&amp;H)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Keyboard shortcuts</source>
-        <translation type="unfinished"></translation>
+        <translation>键盘快捷键(&amp;K)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;About Motion Panel</source>
-        <translation type="unfinished"></translation>
+        <translation>关于 Motion Panel(&amp;A)</translation>
     </message>
     <message>
         <location line="+45"/>
         <source>Jog X - / +</source>
-        <translation type="unfinished"></translation>
+        <translation>X 轴点动 - / +</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Jog Y - / +</source>
-        <translation type="unfinished"></translation>
+        <translation>Y 轴点动 - / +</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Jog Z - / +</source>
-        <translation type="unfinished"></translation>
+        <translation>Z 轴点动 - / +</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Shift + a jog key</source>
-        <translation type="unfinished"></translation>
+        <translation>Shift + 点动键</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Jog ten times the step</source>
-        <translation type="unfinished"></translation>
+        <translation>以十倍步长点动</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>hold a jog key</source>
-        <translation type="unfinished"></translation>
+        <translation>按住点动键</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Keep jogging until it is released</source>
-        <translation type="unfinished"></translation>
+        <translation>持续点动，直到松开按键</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>Keys: %1/%2 X, %3/%4 Y, %5/%6 Z, Shift ×10</source>
-        <translation type="unfinished"></translation>
+        <translation>按键：%1/%2 X，%3/%4 Y，%5/%6 Z，Shift ×10</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>, %1/%2 step</source>
-        <translation type="unfinished"></translation>
+        <translation>，%1/%2 步长</translation>
     </message>
     <message>
         <location line="+40"/>
         <source>the session log from the next start</source>
-        <translation type="unfinished"></translation>
+        <translation>会话日志设置将在下次启动时生效</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>the language from the next start</source>
-        <translation type="unfinished"></translation>
+        <translation>语言将在下次启动时生效</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>settings saved</source>
-        <translation type="unfinished"></translation>
+        <translation>设置已保存</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>settings saved; %1</source>
-        <translation type="unfinished"></translation>
+        <translation>设置已保存；%1</translation>
     </message>
 </context>
 <context>
