@@ -18,14 +18,18 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
 import os
 import sys
 import tempfile
+import threading
 import time
+from collections import Counter
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
+log = logging.getLogger("console_flood")
 
 BATCH = 100  # records a worker batch carries at 5,000 lines/s (one batch per 20 ms)
 EXCHANGE = [
@@ -118,7 +122,248 @@ def memory(lines: int) -> dict[str, float]:
     }
 
 
-def flood(seconds: float) -> dict[str, float]:
+class GapSampler:
+    """Diagnostics (`--profile-gaps MS`): the GUI thread's Python stack sampled every
+    millisecond from another thread, and for each event-loop gap of at least MS what it was
+    doing, logged to stderr (the samples cost the GUI thread some interpreter-lock waits)."""
+
+    def __init__(self, threshold_ms: float, interval_s: float = 0.001) -> None:
+        self.threshold_ms = threshold_ms
+        self.interval_s = interval_s
+        self.samples: list[tuple[int, tuple[str, ...]]] = []  # (perf_counter_ns, stack)
+        self.gaps: list[tuple[int, int, float]] = []  # (start ns, end ns, busy ms)
+        self._main = threading.main_thread().ident
+        self._stop = threading.Event()
+        self._thread = threading.Thread(target=self._run, name="gap-sampler", daemon=True)
+
+    def start(self) -> None:
+        """Start sampling."""
+        self._thread.start()
+
+    def stop(self) -> None:
+        """Stop sampling."""
+        self._stop.set()
+        self._thread.join()
+
+    def _run(self) -> None:
+        main = self._main
+        while not self._stop.wait(self.interval_s):
+            frame = sys._current_frames().get(main)
+            stack = []
+            while frame is not None:
+                code = frame.f_code
+                name = code.co_filename
+                short = name.rsplit("/site-packages/", 1)[-1].replace(str(ROOT) + "/", "")
+                stack.append(f"{short}:{code.co_name}:{frame.f_lineno}")
+                frame = frame.f_back
+            self.samples.append((time.perf_counter_ns(), tuple(reversed(stack))))
+
+    def gap(self, start_ns: int, end_ns: int, busy_ms: float) -> None:
+        """Note a gap of the event loop (perf_counter_ns at its start and end)."""
+        if (end_ns - start_ns) / 1e6 >= self.threshold_ms:
+            self.gaps.append((start_ns, end_ns, busy_ms))
+
+    def report(self) -> None:
+        """Log each long gap's samples (the stacks below the event loop, innermost last) and
+        a summary over all of them by the first frame under the event loop."""
+        total: Counter[str] = Counter()
+        leaves: Counter[str] = Counter()
+        for start, end, busy in self.gaps:
+            inside = [stack for when, stack in self.samples if start <= when <= end]
+            counts: Counter[str] = Counter()
+            for stack in inside:
+                below = _below_loop(stack)
+                counts[
+                    " > ".join(below[:2] + (["..."] if len(below) > 4 else []) + below[-2:])
+                    if len(below) > 4
+                    else " > ".join(below)
+                ] += 1
+                total[below[0] if below else "(in Qt, no Python)"] += 1
+                leaves[below[-1] if below else "(in Qt, no Python)"] += 1
+            log.info(
+                "gap %.1f ms (busy %.1f ms), %d samples:\n  %s",
+                (end - start) / 1e6,
+                busy,
+                len(inside),
+                "\n  ".join(f"{n:3d} {text}" for text, n in counts.most_common(8)),
+            )
+        log.info(
+            "by entry point:\n  %s", "\n  ".join(f"{n:4d} {t}" for t, n in total.most_common(25))
+        )
+        log.info("by leaf:\n  %s", "\n  ".join(f"{n:4d} {t}" for t, n in leaves.most_common(25)))
+
+
+class EventTracer:
+    """Diagnostics (`--trace-gaps MS`): every event Qt hands to an object timed (an
+    application whose `notify` is wrapped), and for each event-loop gap of at least MS the
+    events that took 0.3 ms or more in it, nested ones (a widget's paint in a window's repaint)
+    indented, logged to stderr with their wall and GUI-thread CPU times."""
+
+    def __init__(self, threshold_ms: float) -> None:
+        self.threshold_ms = threshold_ms
+        self.events: list[tuple[int, int, float, int, str]] = []  # start, end ns, cpu ms, depth
+        self.gaps: list[tuple[int, int, float]] = []
+        self.calls: Counter[str] = Counter()  # calls of the TRACED functions
+        self.depth = 0
+
+    def application(self) -> object:
+        """A QApplication whose events are timed."""
+        from PySide6.QtCore import QEvent
+        from PySide6.QtWidgets import QApplication
+
+        tracer = self
+        main = threading.main_thread().ident
+
+        class TracedApplication(QApplication):
+            def notify(self, receiver: object, event: object) -> bool:
+                if threading.get_ident() != main:  # the worker's own events
+                    return super().notify(receiver, event)
+                tracer.depth += 1
+                deleted = event.type() == QEvent.Type.DeferredDelete  # named while it lives
+                what = _describe(receiver, event) if deleted else ""
+                start, cpu = time.perf_counter_ns(), time.thread_time()
+                try:
+                    return super().notify(receiver, event)
+                finally:
+                    end = time.perf_counter_ns()
+                    tracer.depth -= 1
+                    if end - start >= 300_000:
+                        tracer.events.append(
+                            (
+                                start,
+                                end,
+                                (time.thread_time() - cpu) * 1e3,
+                                tracer.depth,
+                                what or _describe(receiver, event),
+                            )
+                        )
+
+        return TracedApplication([])
+
+    def gap(self, start_ns: int, end_ns: int, busy_ms: float) -> None:
+        """Note a gap of the event loop (perf_counter_ns at its start and end)."""
+        if (end_ns - start_ns) / 1e6 >= self.threshold_ms:
+            self.gaps.append((start_ns, end_ns, busy_ms))
+
+    def report(self) -> None:
+        """Log each long gap's events, and the events' totals over all long gaps."""
+        totals: Counter[str] = Counter()
+        counts: Counter[str] = Counter()
+        for start, end, busy in self.gaps:
+            inside = sorted(
+                (e for e in self.events if e[0] < end and e[1] > start), key=lambda e: e[0]
+            )
+            lines = [
+                f"{'  ' * depth}{(e_end - e_start) / 1e6:6.1f} ms (cpu {cpu:5.1f}) "
+                f"@{(e_start - start) / 1e6:5.1f} {what}"
+                for e_start, e_end, cpu, depth, what in inside
+            ]
+            for e_start, e_end, _, depth, what in inside:
+                if depth == 0:
+                    totals[what] += (e_end - e_start) // 1000
+                    counts[what] += 1
+            log.info(
+                "gap %.1f ms (busy %.1f ms):\n  %s",
+                (end - start) / 1e6,
+                busy,
+                "\n  ".join(lines),
+            )
+        origin = self.gaps[0][0] if self.gaps else 0
+        log.info(
+            "calls of the traced functions (the whole run):\n  %s",
+            "\n  ".join(f"{n:6d} {t}" for t, n in self.calls.most_common()),
+        )
+        log.info(
+            "events of 10 ms or more (from the first long gap on):\n  %s",
+            "\n  ".join(
+                f"{(e[1] - e[0]) / 1e6:6.1f} ms (cpu {e[2]:5.1f}) @{(e[0] - origin) / 1e9:6.2f} s "
+                f"{'  ' * e[3]}{e[4]}"
+                for e in self.events
+                if e[1] - e[0] >= 10_000_000 and e[0] >= origin
+            ),
+        )
+        log.info(
+            "top-level events in long gaps (total ms, count):\n  %s",
+            "\n  ".join(f"{n / 1000:7.1f} {counts[t]:4d} {t}" for t, n in totals.most_common(30)),
+        )
+
+
+def _describe(receiver: object, event: object) -> str:
+    """An event and its receiver in words: type, class, objectName, and a timer's parent."""
+    kind = getattr(event.type(), "name", str(event.type()))  # type: ignore[attr-defined]
+    name = receiver.objectName() if hasattr(receiver, "objectName") else ""  # type: ignore[attr-defined]
+    meta = receiver.metaObject().className() if hasattr(receiver, "metaObject") else "?"  # type: ignore[attr-defined]
+    text = f"{kind} {type(receiver).__name__}/{meta}({name})"
+    parent = receiver.parent() if hasattr(receiver, "parent") else None  # type: ignore[attr-defined]
+    if (kind == "Timer" or not name) and parent is not None:
+        text += f" of {type(parent).__name__}({parent.objectName()})"
+    return text
+
+
+TRACED = (  # Python functions the tracer times too: (module, class, method)
+    ("widgets.position_view_2d", "PositionView2D", "refresh"),
+    ("widgets.position_view_2d", "PositionView2D", "_follow_xy"),
+    ("widgets.position_view_2d", "PositionView2D", "_follow_time"),
+    ("widgets.position_view_3d", "PositionView3D", "refresh"),
+    ("widgets.position_view_3d", "PositionView3D", "render_scene"),
+    ("app.traffic_console", "RawConsole", "_take_pending"),
+    ("app.traffic_console", "RawConsole", "_show_new"),
+    ("widgets.traffic_timeline", "TrafficTimeline", "refresh"),
+    ("pyqtgraph.graphicsItems.ViewBox.ViewBox", "ViewBox", "setRange"),
+    ("pyqtgraph.graphicsItems.GridItem", "GridItem", "generatePicture"),
+    ("pyqtgraph.graphicsItems.AxisItem", "AxisItem", "paint"),
+    ("pyqtgraph.graphicsItems.AxisItem", "AxisItem", "generateDrawSpecs"),
+    ("pyqtgraph.graphicsItems.PlotCurveItem", "PlotCurveItem", "paint"),
+    ("pyqtgraph.graphicsItems.ScatterPlotItem", "ScatterPlotItem", "paint"),
+    ("gc", None, "collect"),
+)
+
+
+def _trace_functions(tracer: EventTracer) -> None:
+    """Wrap the TRACED functions so that their calls of 0.3 ms or more are events too."""
+    import importlib
+    from functools import wraps
+
+    main = threading.main_thread().ident
+    for module_name, class_name, name in TRACED:
+        try:
+            module = importlib.import_module(module_name)
+        except ImportError:
+            continue
+        owner = getattr(module, class_name) if class_name else module
+        original = getattr(owner, name)
+        label = f"{class_name or module_name}.{name}()"
+
+        def wrapper(*args: object, _f: object = original, _l: str = label, **kw: object) -> object:
+            if threading.get_ident() != main:
+                return _f(*args, **kw)  # type: ignore[operator]
+            tracer.depth += 1
+            tracer.calls[_l] += 1
+            start, cpu = time.perf_counter_ns(), time.thread_time()
+            try:
+                return _f(*args, **kw)  # type: ignore[operator]
+            finally:
+                end = time.perf_counter_ns()
+                tracer.depth -= 1
+                if end - start >= 300_000:
+                    tracer.events.append(
+                        (start, end, (time.thread_time() - cpu) * 1e3, tracer.depth, _l)
+                    )
+
+        setattr(owner, name, wraps(original)(wrapper))  # type: ignore[arg-type]
+
+
+def _below_loop(stack: tuple[str, ...]) -> list[str]:
+    """The frames under the benchmark's `app.exec()` (Qt calling into Python)."""
+    for i, frame in enumerate(stack):
+        if ":flood:" in frame:
+            return list(stack[i + 1 :])
+    return list(stack)
+
+
+def flood(
+    seconds: float, profile_gaps_ms: float | None = None, trace_gaps_ms: float | None = None
+) -> dict[str, float]:
     """The window's longest event-loop gap while the device floods 5,000 lines/s."""
     from PySide6.QtCore import QElapsedTimer, Qt, QTimer
     from PySide6.QtTest import QTest
@@ -127,7 +372,10 @@ def flood(seconds: float) -> dict[str, float]:
     from app.gc_main_thread import collect_for
     from app.main_window import MainWindow
 
-    app = QApplication.instance() or QApplication([])
+    tracer = EventTracer(trace_gaps_ms) if trace_gaps_ms is not None else None
+    app = QApplication.instance() or (tracer.application() if tracer else QApplication([]))
+    if tracer is not None:
+        _trace_functions(tracer)
     window = MainWindow()
     collect_for(app, window.views.ready)  # garbage collected as the application does
     window.resize(1600, 1000)
@@ -147,14 +395,21 @@ def flood(seconds: float) -> dict[str, float]:
     keys = [Qt.Key.Key_Right, Qt.Key.Key_Up, Qt.Key.Key_Left, Qt.Key.Key_Down]
     jogs = [0]
 
+    sampler = GapSampler(profile_gaps_ms) if profile_gaps_ms is not None else None
+    last_ns = [time.perf_counter_ns()]
+
     def tick() -> None:
         now, cpu = clock.nsecsElapsed(), time.thread_time()
+        now_ns = time.perf_counter_ns()
         if time.monotonic() >= started[0]:
             gaps.append((now - last[0]) / 1e6)
             busy.append((cpu - last_cpu[0]) * 1e3)
+            for diagnostics in (sampler, tracer):
+                if diagnostics is not None:
+                    diagnostics.gap(last_ns[0], now_ns, busy[-1])
             if time.monotonic() >= started[0] + seconds:
                 app.quit()
-        last[0], last_cpu[0] = now, cpu
+        last[0], last_cpu[0], last_ns[0] = now, cpu, now_ns
 
     def jog() -> None:
         if time.monotonic() >= started[0] and window.jog_panel.isEnabled():
@@ -172,7 +427,14 @@ def flood(seconds: float) -> dict[str, float]:
     jogger.timeout.connect(jog)
     jogger.start()
     QTimer.singleShot(int((seconds + 60) * 1000), app.quit)  # never hang
+    if sampler is not None:
+        sampler.start()
     app.exec()
+    if sampler is not None:
+        sampler.stop()
+        sampler.report()
+    if tracer is not None:
+        tracer.report()
     timer.stop()
     jogger.stop()
     backlog = window.console.backlog()  # traffic received but not yet decoded and shown
@@ -203,7 +465,32 @@ def main() -> int:
     parser.add_argument("--lines", type=int, default=200_000)
     parser.add_argument("--seconds", type=float, default=10.0)
     parser.add_argument("--display", action="store_true", help="use $DISPLAY instead of offscreen")
+    parser.add_argument(
+        "--profile-gaps",
+        type=float,
+        metavar="MS",
+        help="flood: sample the GUI thread's stack and log what it did in each gap of MS or more",
+    )
+    parser.add_argument(
+        "--trace-gaps",
+        type=float,
+        metavar="MS",
+        help="flood: time every Qt event and log those in each gap of MS or more",
+    )
+    parser.add_argument(
+        "--switch-interval",
+        type=float,
+        metavar="S",
+        help="sys.setswitchinterval(S) first (an experiment: Python's default is 0.005)",
+    )
     options = parser.parse_args()
+    if options.switch_interval is not None:
+        sys.setswitchinterval(options.switch_interval)
+    if (
+        options.profile_gaps is not None or options.trace_gaps is not None
+    ):  # the report only: the app's own logging as it was
+        log.addHandler(logging.StreamHandler())
+        log.setLevel(logging.INFO)
     if not options.display:
         os.environ["QT_QPA_PLATFORM"] = "offscreen"
     os.environ.setdefault("MOTIONPANEL_SETTINGS", os.path.join(tempfile.mkdtemp(), "bench.ini"))
@@ -213,7 +500,7 @@ def main() -> int:
     elif options.mode == "memory":
         result = memory(options.lines)
     else:
-        result = flood(options.seconds)
+        result = flood(options.seconds, options.profile_gaps, options.trace_gaps)
     print(json.dumps(result))
     return 0
 

@@ -2,19 +2,26 @@
 
 from __future__ import annotations
 
+import logging
+
 import numpy as np
 import pyqtgraph as pg
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtGui import QBrush, QResizeEvent
 from PySide6.QtWidgets import QHBoxLayout, QPushButton, QSplitter, QVBoxLayout, QWidget
 
 from widgets._axes import AXES, Box, target_point
+from widgets._fast_grid import FastGrid
 from widgets._gl_scene import preview_array, preview_tuples
-from widgets._view_common import BufferedViewMixin
+from widgets._pacer import run_paced
+from widgets._view_common import REFRESH_INTERVAL_MS, BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
+
+log = logging.getLogger(__name__)
 
 GRID_COLOUR = (60, 60, 60)
 TIME_WINDOWS_S = (10.0, 30.0, 60.0)  # the time plot's span grows in these steps
+TIME_PLOT_DELAY_MS = REFRESH_INTERVAL_MS // 3  # the timer draws the time plot this much later
 FOLLOW_PADDING = 0.25  # room added on each side when a view is widened
 MIN_MARGIN_MM = 1.0
 XY_MARGIN = 0.08  # the XY view widens when a point comes closer to its edge than this share
@@ -41,10 +48,7 @@ def _fit(low: float, high: float, min_margin: float) -> tuple[float, float]:
 def _grid() -> pg.GridItem:
     """A background grid; unlike the axes' own grid (showGrid), it does not repaint the axes'
     cached pictures on every frame, which cost 30 ms a frame under a software rasteriser."""
-    grid = pg.GridItem()
-    grid.setPen(pg.mkPen(GRID_COLOUR))
-    grid.setTextPen(None)
-    return grid
+    return FastGrid(GRID_COLOUR)
 
 
 def _steady_axes(plot: pg.PlotItem) -> None:
@@ -157,6 +161,19 @@ class PositionView2D(BufferedViewMixin, QWidget):
             plot.getPlotItem().getViewBox().sigRangeChangedManually.connect(self._stop_following)
         self._following = True
         self.start_refresh_timer()
+        self.timer.timeout.disconnect(self.refresh)
+        self.timer.timeout.connect(self._timed_refresh)
+        # The timer's refresh draws the XY plot at once and the time plot TIME_PLOT_DELAY_MS
+        # later: each plot's change makes Qt repaint the window there and then, and the two
+        # repaints with the refresh were one of the window's longest stalls.
+        self._time_timer = QTimer(self)
+        self._time_timer.setObjectName("timePlotRefreshTimer")
+        self._time_timer.setSingleShot(True)
+        self._time_timer.setInterval(TIME_PLOT_DELAY_MS)
+        self._time_timer.timeout.connect(self._timed_time_plot)
+        self._xy_retry = QTimer(self)  # the XY plot's turn, when the pacer refused it one
+        self._xy_retry.setSingleShot(True)
+        self._xy_retry.timeout.connect(self._timed_refresh)
         self.reset_view()
 
     def _legend_row(self, tp: pg.PlotItem) -> pg.LegendItem:
@@ -176,29 +193,56 @@ class PositionView2D(BufferedViewMixin, QWidget):
         return legend
 
     def refresh(self) -> None:
-        """Redraw from the buffer if it changed since the last refresh.
+        """Redraw both plots from the buffer if it changed since the last refresh.
 
         What is drawn is the buffer's decimated trail (`buffer.lod`): every recent point, and
         the first, last and extreme points of each block of older ones, so a long trail keeps its
         shape and extent at the cost of a few thousand points.
         """
-        if self.changed_rows() is None:
+        if self._refresh_xy():
+            self._refresh_time_plot()
+
+    def _timed_refresh(self) -> None:
+        """The timer's refresh: the XY plot now, the time plot TIME_PLOT_DELAY_MS later; each
+        paced (not in the same turn of the event loop as other heavy work)."""
+        if self.buffer.version == self._seen_version or not run_paced(self._xy_retry):
             return
+        if self._refresh_xy() and not self._time_timer.isActive():
+            self._time_timer.start(TIME_PLOT_DELAY_MS)
+
+    def _timed_time_plot(self) -> None:
+        """The time plot's delayed turn, paced."""
+        if run_paced(self._time_timer):
+            self._refresh_time_plot()
+
+    def _refresh_xy(self) -> bool:
+        """Redraw the XY plot if the buffer changed; whether it did (the time plot is due)."""
+        if self.changed_rows() is None:
+            return False
         rows = self._drawn()
         if not len(rows):
             self.trail.setData([], [])
             self.current_marker.setData([], [])
+        else:
+            self.trail.setData(rows[:, 1], rows[:, 2])
+            self.current_marker.setData([rows[-1, 1]], [rows[-1, 2]])
+            if self._following:
+                self._follow_xy(rows)
+        return True
+
+    def _refresh_time_plot(self) -> None:
+        """Redraw the time plot from the buffer."""
+        self._time_timer.stop()
+        if not len(self.buffer.view()):
             for curve in self.curves.values():
                 curve.setData([], [])
             return
-        self.trail.setData(rows[:, 1], rows[:, 2])
-        self.current_marker.setData([rows[-1, 1]], [rows[-1, 2]])
         rows = self._time_rows()
         t = rows[:, 0] - rows[-1, 0]
         for index, axis in enumerate(AXES, start=1):
             self.curves[axis].setData(t, rows[:, index])
         if self._following:
-            self._follow(rows, t)
+            self._follow_time(rows, t)
 
     def _drawn(self) -> np.ndarray:
         """The trail as drawn: (n, 4) rows (t, x, y, z), every recent one and the first, last
@@ -217,21 +261,18 @@ class PositionView2D(BufferedViewMixin, QWidget):
             start = int(np.searchsorted(rows[:start, 0], since, side="left"))
         return lod.rows_since(start)
 
-    def _follow(self, rows: np.ndarray, t: np.ndarray) -> None:
-        """Widen the views only when the data leaves them, with room to spare.
-
-        pyqtgraph's auto-range moved the range on almost every frame while jogging, and every
-        move rebuilt the axes' and grid's pictures: most of the GUI thread's time.
-        """
-        self._follow_xy(rows)
-        self._follow_time(rows, t)
-
     def _follow_time(self, rows: np.ndarray, t: np.ndarray, force: bool = False) -> None:
-        """Step the time window through 10, 30, 60 s; widen Y when the recent data leaves it."""
+        """Step the time window through 10, 30, 60 s; widen Y when the recent data leaves it.
+
+        The views are widened only when the data leaves them, with room to spare: pyqtgraph's
+        auto-range moved the range on almost every frame while jogging, and every move rebuilt
+        the axes' and grid's pictures, most of the GUI thread's time.
+        """
         span = -float(t[0])
         window = next((w for w in TIME_WINDOWS_S if w >= span), TIME_WINDOWS_S[-1])
         tp = self.time_plot.getPlotItem()
         if window != self._time_window:
+            log.debug("time window %s s", window)
             self._time_window = window
             tp.setXRange(-window, 0, padding=0.02)
         recent = rows[t >= -window, 1:4]
@@ -240,6 +281,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
             return
         low, high = tp.viewRange()[1]
         if force or recent.min() < low or recent.max() > high:
+            log.debug("time plot Y fitted to %s..%s", recent.min(), recent.max())
             tp.setYRange(*_padded(recent), padding=0)
 
     def _follow_xy(self, rows: np.ndarray, force: bool = False) -> None:
@@ -287,6 +329,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
             lows.append(np.array([bx0, by0]))
             highs.append(np.array([bx1, by1]))
         low, high = np.min(lows, axis=0), np.max(highs, axis=0)
+        log.debug("XY view fitted to x %s..%s, y %s..%s", low[0], high[0], low[1], high[1])
         xy.setRange(
             xRange=_fit(low[0], high[0], XY_FIT_MIN_MARGIN_MM),
             yRange=_fit(low[1], high[1], XY_FIT_MIN_MARGIN_MM),
@@ -392,8 +435,9 @@ class PositionView2D(BufferedViewMixin, QWidget):
         fit = self._target is not None or self._workspace is not None or len(self._preview)
         if len(rows) or fit:
             self._follow_xy(rows, force=True)
-        else:
-            self.xy_plot.getPlotItem().setRange(xRange=(-1, 1), yRange=(-1, 1), padding=0)
+        else:  # what a fit of the origin gives: a first point there is not on the margin
+            around = _fit(0.0, 0.0, XY_FIT_MIN_MARGIN_MM)
+            self.xy_plot.getPlotItem().setRange(xRange=around, yRange=around, padding=0)
         if len(rows):
             self._follow_time(rows, rows[:, 0] - rows[-1, 0], force=True)
         else:

@@ -9,7 +9,7 @@ from functools import cache, partial
 from types import ModuleType
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication, QSize, Qt
+from PySide6.QtCore import QCoreApplication, QSize, Qt, QTimer
 from PySide6.QtGui import (
     QColor,
     QFont,
@@ -46,7 +46,8 @@ from widgets._gl_scene import (
 from widgets._gl_scene import (  # here for its callers of before; it imports no OpenGL
     share_opengl_contexts as share_opengl_contexts,
 )
-from widgets._view_common import BufferedViewMixin
+from widgets._pacer import run_paced
+from widgets._view_common import REFRESH_INTERVAL_MS, BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
 log = logging.getLogger(__name__)
@@ -56,6 +57,7 @@ log = logging.getLogger(__name__)
 gl: ModuleType | None = None
 _IMPORT_ERROR: str | None = None
 TRAIL_CHUNK = 16_384  # the trail's vertex buffer grows by at least this many vertices
+RENDER_DELAY_MS = 2 * REFRESH_INTERVAL_MS // 3  # a change is rendered this long after (below)
 
 TRAIL_COLOUR = (0.36, 0.42, 0.75, 1.0)
 CURRENT_COLOUR = (1.0, 0.70, 0.0, 1.0)
@@ -250,6 +252,16 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._framebuffer_key: tuple[int, int, float] | None = None
         self._image = QImage()
         self._stale = True
+        # The scene is rendered in a turn of the event loop of its own, 2/3 of a refresh after
+        # the change, not in the window's repaint: Qt paints every dirty widget in one go (a
+        # 2D plot's repaint paints this view too), and a render (3-12 ms with software OpenGL)
+        # on top of the 2D view's refresh and painting, which come at the same moment (the
+        # same buffer, the same refresh rate), made the window's longest stalls.
+        self._render_timer = QTimer(self)
+        self._render_timer.setObjectName("view3dRenderTimer")
+        self._render_timer.setSingleShot(True)
+        self._render_timer.setInterval(RENDER_DELAY_MS)
+        self._render_timer.timeout.connect(self._render_pending)
         self.failure: str | None = None
         self.scene = _scene_class()()  # no parent: it must stay out of this window
         self.scene.setBackgroundColor(BACKGROUND)
@@ -498,9 +510,20 @@ class PositionView3D(BufferedViewMixin, QWidget):
 
     # -- drawing -----------------------------------------------------------------------------
     def _redraw(self) -> None:
-        """Mark the image out of date; it is rendered at the next paint."""
+        """Mark the image out of date; it is rendered RENDER_DELAY_MS later (or at the next
+        paint, if that comes first with no render waiting: hidden, resized)."""
         self._stale = True
-        self.update()
+        if not self._render_timer.isActive():  # changes meanwhile go into the same render
+            self._render_timer.start(RENDER_DELAY_MS)
+
+    def _render_pending(self) -> None:
+        """Render the out-of-date image, then have it painted (a copy of it, no rendering);
+        paced: not in the same turn of the event loop as other heavy work."""
+        if self._stale and self.failure is None and self.isVisible():
+            if not run_paced(self._render_timer):
+                return
+            self.render_scene()
+            self.update()
 
     def render_scene(self) -> QImage:
         """Render the scene at the widget's size now, and keep the image (null once failed)."""
@@ -541,6 +564,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._stale = False
         log.warning("3D view disabled: %s", reason)
         self.timer.stop()
+        self._render_timer.stop()
         for button in self.findChildren(QToolButton):
             button.hide()
         self.setToolTip(NOTICE_TOOLTIP)
@@ -562,9 +586,11 @@ class PositionView3D(BufferedViewMixin, QWidget):
         return self.render_scene()
 
     def paintEvent(self, event: QPaintEvent) -> None:
-        """Paint the rendered scene, rendering it first if it is out of date, and the scale."""
+        """Paint the rendered scene and the scale; the scene is rendered first when the image
+        does not fit the widget, or is out of date with no render on its way."""
         if self.failure is None and (
-            self._stale or self._image.deviceIndependentSize().toSize() != self.size()
+            (self._stale and not self._render_timer.isActive())
+            or self._image.deviceIndependentSize().toSize() != self.size()
         ):
             self.render_scene()
         if self.failure is not None:

@@ -455,3 +455,63 @@ def test_the_xy_layout_settles_at_every_size(qtbot) -> None:
         if len(widths) > 1:
             swinging.append((width, height, sorted(widths)))
     assert not swinging
+
+
+@pytest.mark.timeout(30)
+@pytest.mark.parametrize(
+    ("x_range", "y_range"),
+    [((-10, 0), (-1, 1)), ((-30, 0), (-2.5, 3.7)), ((-4.3, 5.1), (-2, 3)), ((-1e3, 2e3), (-5, 5))],
+)
+def test_the_fast_grid_draws_what_pyqtgraphs_grid_draws(qtbot, x_range, y_range) -> None:
+    import pyqtgraph as pg
+
+    from widgets._fast_grid import FastGrid
+    from widgets.position_view_2d import GRID_COLOUR
+
+    images = []
+    for grid in (pg.GridItem(), FastGrid(GRID_COLOUR)):
+        if not isinstance(grid, FastGrid):
+            grid.setPen(pg.mkPen(GRID_COLOUR))
+            grid.setTextPen(None)
+        plot = pg.PlotWidget()
+        qtbot.addWidget(plot)
+        plot.resize(600, 400)
+        plot.getPlotItem().addItem(grid, ignoreBounds=True)
+        plot.getPlotItem().setRange(xRange=x_range, yRange=y_range, padding=0)
+        images.append(plot.grab().toImage())
+    assert images[0] == images[1]  # the same pixels
+
+
+@pytest.mark.timeout(30)
+def test_a_first_position_at_the_origin_and_a_small_jog_keep_the_empty_views_range(
+    qtbot,
+) -> None:
+    buffer = PositionBuffer(capacity=10)
+    view = PositionView2D(buffer)
+    qtbot.addWidget(view)
+    plot = view.xy_plot.getPlotItem()
+    empty = plot.viewRange()
+    buffer.append(0.0, 0.0, 0.0, 0.0)
+    view.refresh()
+    buffer.append(0.5, 1.0, 0.0, 0.0)  # a 1 mm jog: inside the margin, no refit
+    view.refresh()
+    assert plot.viewRange() == empty
+
+
+@pytest.mark.timeout(30)
+def test_the_timer_draws_the_time_plot_a_moment_after_the_xy_plot(view, buffer, qtbot) -> None:
+    from widgets.position_view_2d import TIME_PLOT_DELAY_MS
+
+    view.show()
+    qtbot.waitExposed(view)
+    view.refresh()
+    buffer.append(200.0, 50.0, 60.0, 70.0)
+    view._timed_refresh()  # as the refresh timer does
+    assert view.trail.getData()[0][-1] == 50.0  # the XY plot at once
+    assert view.curves["x"].getData()[1][-1] != 50.0  # the time plot waits its turn
+    assert view._time_timer.isActive() and view._time_timer.interval() == TIME_PLOT_DELAY_MS
+    qtbot.waitUntil(lambda: view.curves["x"].getData()[1][-1] == 50.0, timeout=5000)
+    view.refresh()  # a direct refresh draws both at once
+    buffer.append(201.0, 51.0, 60.0, 70.0)
+    view.refresh()
+    assert view.curves["x"].getData()[1][-1] == 51.0

@@ -390,3 +390,25 @@ def test_estimated_position_is_drawn_faded(gl_view) -> None:
     gl_view.set_estimated(False)
     assert not gl_view.is_estimated()
     assert marker_pixel() == measured
+
+
+@pytest.mark.gl
+@needs_display
+@pytest.mark.timeout(30)
+def test_a_change_is_rendered_in_a_turn_of_its_own_not_in_the_paint(
+    gl_view, qtbot, monkeypatch
+) -> None:
+    gl_view.refresh()
+    gl_view.grabFramebuffer()
+    rendered = []
+    original = gl_view.render_scene
+    monkeypatch.setattr(gl_view, "render_scene", lambda: rendered.append(1) or original())
+    gl_view.set_target(3.0, 4.0, 5.0)
+    assert gl_view._render_timer.isActive()
+    gl_view.repaint()  # the window's repaint paints the image it has, renders nothing
+    assert rendered == []
+    qtbot.waitUntil(lambda: bool(rendered), timeout=5000)  # then the render timer's turn
+    assert not gl_view._stale
+    gl_view.resize(400, 300)  # an image of the wrong size is rendered at the paint
+    gl_view.repaint()
+    assert len(rendered) == 2

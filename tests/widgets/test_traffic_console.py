@@ -413,3 +413,33 @@ def test_the_table_paints_rows_itself_with_their_colours(console: RawConsole, qt
     groups = (palette.ColorGroup.Active, palette.ColorGroup.Inactive)
     highlights = [palette.color(group, palette.ColorRole.Highlight) for group in groups]
     assert background(5) in highlights  # the selected row (active or not)
+
+
+@pytest.mark.timeout(30)
+def test_traffic_is_decoded_and_shown_in_turns_of_their_own(qtbot, monkeypatch) -> None:
+    from PySide6.QtCore import QCoreApplication
+
+    from widgets._pacer import pacer
+
+    monkeypatch.setattr(pacer(), "spacing", 0.0)  # turns, not time, in this test
+    console = RawConsole()
+    qtbot.addWidget(console)
+    console.set_protocol(create_protocol("coxiris"))
+    for i in range(20):  # few enough to be decoded in one turn
+        console.append_traffic("rx", b"dbg 1234 loop ok\r\n", i * 0.0002)
+    QCoreApplication.sendPostedEvents()  # the pacer's turn is free
+    console._shown_at = 0.0  # the table was last updated long ago: its update is due
+    console._flush_timer.stop()  # as when its (single-shot) timer calls it
+    console._timed_flush()  # a decoding turn (at most FLUSH_BUDGET), the table not yet
+    assert console._show_due and console._flush_timer.isActive()
+    assert console.shown_lines() == []
+    console.append_traffic("rx", b"dbg late\r\n", 1.0)  # arrives between the turns
+    QCoreApplication.sendPostedEvents()
+    console._flush_timer.stop()
+    console._timed_flush()  # the table's turn
+    assert not console._show_due
+    assert console.shown_lines()
+    assert console._flush_timer.isActive()  # what came meanwhile gets its turn too
+    qtbot.waitUntil(lambda: console.backlog() == 0 and not console._show_due, timeout=10000)
+    assert len(console.index) == 21
+    assert console.shown_lines()[-1] == 20  # every line kept and shown
