@@ -164,6 +164,7 @@ class MainWindow(QMainWindow):
         self._jog_job: jobs.MoveByJob | None = None
         self._jog_next: tuple[str, float] | None = None  # a tap during a step: the next step
         self._home_from: tuple[float, float, float] | None = None
+        self._saved_step: float | None = None  # the jog step as last saved
         self.estimate: MoveEstimate | None = None  # built with the worker
         self._build()
         self.keyboard_jog = KeyboardJog(self, self.jog_panel)
@@ -857,7 +858,10 @@ class MainWindow(QMainWindow):
     def _on_jog(self, axis: str, distance: float) -> None:
         """A jog key or button was pressed: one step now (or after the step under way, never
         more than one step ahead of the stage); more while it is held."""
-        self.settings.setValue("jog_step", self.jog_panel.step())
+        step = self.jog_panel.step()
+        if step != self._saved_step:  # written when it changes, not at every jog (a disk write)
+            self._saved_step = step
+            self.settings.setValue("jog_step", step)
         if self._jog_job is None:
             self._jog_step(axis, distance)
         else:
