@@ -80,6 +80,7 @@ CONSOLE_CALLS = frozenset(
         "set_protocol",
         "set_line_ending",
         "set_display_mode",
+        "set_max_lines",
         "set_send_mode",
         "set_send_enabled",
     }

@@ -105,6 +105,7 @@ class RawConsole(QWidget):
         self._show_due = False  # the table's update waits for the next turn (see _timed_flush)
         self._status_at = 0.0  # and of the status line
         self.index = TrafficIndex()
+        self.max_lines = 0  # 0: keep every line (see set_max_lines)
         self._model = TrafficModel(self.index, self)  # goes with the console, never before it
         self._origin_set = False
         self._shown_until = 0  # lines up to here have been through the filter
@@ -421,8 +422,29 @@ class RawConsole(QWidget):
         self._take_pending(None)
         self._show_new()
 
+    def set_max_lines(self, lines: int) -> None:
+        """Keep at most `lines` lines (0: every line): past it the console starts afresh with
+        a note, as if Clear were pressed (the session log on disk keeps every byte)."""
+        self.max_lines = max(0, int(lines))
+
+    def _over_limit(self) -> bool:
+        """Past the line limit: cleared, with a note saying so; True then."""
+        if not self.max_lines or len(self.index) <= self.max_lines:
+            return False
+        dropped = len(self.index)
+        self.clear()
+        note = self.tr(
+            "%1 lines reached the console's limit and were cleared; the session log keeps them"
+        )
+        self.append_note(note.replace("%1", f"{dropped:,}"))
+        self._take_pending(None)
+        return True
+
     def _show_new(self) -> None:
         """Put the lines decoded since the last time in the table (through the filters)."""
+        if self._over_limit():
+            self._show_new()
+            return
         self._show_due = False
         self._flush_timer.setInterval(FLUSH_INTERVAL_MS)
         self._shown_at = time.perf_counter()

@@ -67,6 +67,7 @@ class WindowTools(QObject):
         lines.break_requested.connect(self._on_break_requested)
         self.apply_jog_keys()
         window.readout.set_display(self.prefs.units, self.prefs.decimals)
+        window.console.set_max_lines(self.prefs.console_max_lines)
         self.apply_theme()
 
     # -- built after the first paint -----------------------------------------------------------
@@ -231,6 +232,8 @@ class WindowTools(QObject):
             if self.theme_menu is not None:
                 self.theme_menu.set_choice(prefs.theme)  # type: ignore[attr-defined]
             self.apply_theme()
+        if "console_max_lines" in changed:
+            self.window.console.set_max_lines(prefs.console_max_lines)
         if any(name.startswith("jog_key_") for name in changed):
             self.apply_jog_keys()
         if {"units", "decimals"} & set(changed):

@@ -443,3 +443,20 @@ def test_traffic_is_decoded_and_shown_in_turns_of_their_own(qtbot, monkeypatch) 
     qtbot.waitUntil(lambda: console.backlog() == 0 and not console._show_due, timeout=10000)
     assert len(console.index) == 21
     assert console.shown_lines()[-1] == 20  # every line kept and shown
+
+
+def test_past_its_line_limit_the_console_starts_afresh_with_a_note(console: RawConsole) -> None:
+    console.set_max_lines(5)
+    for n in range(8):
+        console.append_traffic("tx", f"DELTA_MOVE {n} 0 0\n".encode(), float(n))
+    console.flush()
+    assert len(console.index) == 1
+    assert "8 lines reached the console's limit and were cleared" in console.text()
+    console.append_traffic("tx", b"GET_SPEED\n", 9.0)
+    console.flush()
+    assert len(console.index) == 2  # under the limit again: kept
+    console.set_max_lines(0)
+    for n in range(20):
+        console.append_traffic("tx", b"GET_SPEED\n", 10.0 + n)
+    console.flush()
+    assert len(console.index) == 22  # 0: every line
