@@ -68,7 +68,10 @@ class WindowTools(QObject):
         self.apply_jog_keys()
         window.readout.set_display(self.prefs.units, self.prefs.decimals)
         window.console.set_max_lines(self.prefs.console_max_lines)
-        self.apply_theme()
+        if self.prefs.theme == "system":  # nothing to change before the first paint (asking
+            window.views.add(self.apply_theme)  # for the style costs some 40 ms): after it
+        else:
+            self.apply_theme()
 
     # -- built after the first paint -----------------------------------------------------------
     def _build_macros(self) -> MacroDock:
@@ -89,18 +92,21 @@ class WindowTools(QObject):
         if settings.shortcut().isEmpty():
             settings.setShortcut(QKeySequence("Ctrl+,"))
         settings.setToolTip(self.tr("Poll rates, console, log folder, units, jog keys, theme"))
-        from app.theme import THEME_SETTING, ThemeMenu
-
-        self.theme_menu = ThemeMenu(view_menu, self.prefs.theme)
-        self.theme_menu.chosen.connect(self._on_theme_chosen)
-        view_menu.addMenu(self.theme_menu)
-        self._theme_key = THEME_SETTING
+        self.window.views.add(lambda: self._add_theme_menu(view_menu))  # after the first paint
         help_menu = self.window.menuBar().addMenu(self.tr("&Help"))
         keys = help_menu.addAction(self.tr("&Keyboard shortcuts"), self.show_shortcuts)
         keys.setObjectName("shortcutsAction")
         keys.setShortcut(QKeySequence(QKeySequence.StandardKey.HelpContents))
         about = help_menu.addAction(self.tr("&About Motion Panel"), self.show_about)
         about.setObjectName("aboutAction")
+
+    def _add_theme_menu(self, view_menu: QMenu) -> None:
+        """View → Theme (its module is imported after the first paint)."""
+        from app.theme import ThemeMenu
+
+        self.theme_menu = ThemeMenu(view_menu, self.prefs.theme)
+        self.theme_menu.chosen.connect(self._on_theme_chosen)
+        view_menu.addMenu(self.theme_menu)
 
     def apply_theme(self) -> None:
         """The theme the preferences choose, and the plots in its colours."""
