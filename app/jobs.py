@@ -5,11 +5,39 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
+
 from drivers.commands import Arc
 from drivers.program import ProgramPoint
+from widgets._i18n import fill
 
 if TYPE_CHECKING:
     from app.macros import Macro
+
+
+def _t(template: str, *values: object) -> str:
+    """A job's description in the interface's language (the templates are marked below)."""
+    return fill(QCoreApplication.translate("Jobs", template), *values)
+
+
+# The templates, for lupdate (translated at use by `_t`).
+_TEMPLATES = (
+    QT_TRANSLATE_NOOP("Jobs", "move to (%1, %2, %3) mm"),
+    QT_TRANSLATE_NOOP("Jobs", "jog by (%1, %2, %3) %4"),
+    QT_TRANSLATE_NOOP("Jobs", "go home"),
+    QT_TRANSLATE_NOOP("Jobs", "set home here"),
+    QT_TRANSLATE_NOOP("Jobs", "set speed %1 mm/s"),
+    QT_TRANSLATE_NOOP("Jobs", "set %1 = %2 %3"),
+    QT_TRANSLATE_NOOP("Jobs", "arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CCW"),
+    QT_TRANSLATE_NOOP("Jobs", "arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CW"),
+    QT_TRANSLATE_NOOP("Jobs", "dwell %1 ms"),
+    QT_TRANSLATE_NOOP("Jobs", "set %1"),
+    QT_TRANSLATE_NOOP("Jobs", "configure the stepper: %1 steps/rev on pins %2"),
+    QT_TRANSLATE_NOOP("Jobs", "ask the stepper library version"),
+    QT_TRANSLATE_NOOP("Jobs", "run %1 (%2 points)"),
+    QT_TRANSLATE_NOOP("Jobs", 'send "%1"'),
+    QT_TRANSLATE_NOOP("Jobs", "refresh position and speed"),
+)
 
 
 @dataclass(frozen=True)
@@ -31,7 +59,7 @@ class MoveToJob(Job):
 
     def describe(self) -> str:
         """E.g. `move to (10, -5, 2.5) mm`."""
-        return f"move to ({self.x:g}, {self.y:g}, {self.z:g}) mm"
+        return _t("move to (%1, %2, %3) mm", f"{self.x:g}", f"{self.y:g}", f"{self.z:g}")
 
 
 @dataclass(frozen=True)
@@ -46,7 +74,7 @@ class MoveByJob(Job):
     def describe(self) -> str:
         """E.g. `jog by (1, 0, 0) mm`."""
         unit = "mm" if self.kind == "linear" else self.kind
-        return f"jog by ({self.dx:g}, {self.dy:g}, {self.dz:g}) {unit}"
+        return _t("jog by (%1, %2, %3) %4", f"{self.dx:g}", f"{self.dy:g}", f"{self.dz:g}", unit)
 
 
 @dataclass(frozen=True)
@@ -55,7 +83,7 @@ class HomeJob(Job):
 
     def describe(self) -> str:
         """`go home`."""
-        return "go home"
+        return _t("go home")
 
 
 @dataclass(frozen=True)
@@ -64,7 +92,7 @@ class SetHomeJob(Job):
 
     def describe(self) -> str:
         """`set home`."""
-        return "set home here"
+        return _t("set home here")
 
 
 @dataclass(frozen=True)
@@ -75,7 +103,7 @@ class SetSpeedJob(Job):
 
     def describe(self) -> str:
         """E.g. `set speed 20 mm/s`."""
-        return f"set speed {self.speed:g} mm/s"
+        return _t("set speed %1 mm/s", f"{self.speed:g}")
 
 
 @dataclass(frozen=True, eq=False)
@@ -89,7 +117,9 @@ class SetParameterJob(Job):
 
     def describe(self) -> str:
         """E.g. `set pulley_diameter_x = 38.2 mm`."""
-        return f"set {self.name or self.param_id} = {self.value:g} {self.unit}".rstrip()
+        return _t(
+            "set %1 = %2 %3", self.name or self.param_id, f"{self.value:g}", self.unit
+        ).rstrip()
 
 
 @dataclass(frozen=True, eq=False)
@@ -101,9 +131,13 @@ class ArcJob(Job):
     def describe(self) -> str:
         """E.g. `arc around (0, 0) r 10 mm from 0° to 90° CCW`."""
         a = self.arc
-        turn = "CCW" if a.ccw else "CW"
-        angles = f"from {a.start:g}° to {a.end:g}° {turn}"
-        return f"arc around ({a.cx:g}, {a.cy:g}) mm, radius {a.radius:g} mm, {angles}"
+        template = (
+            "arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CCW"
+            if a.ccw
+            else "arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CW"
+        )
+        values = (a.cx, a.cy, a.radius, a.start, a.end)
+        return _t(template, *(f"{v:g}" for v in values))
 
 
 @dataclass(frozen=True, eq=False)
@@ -114,7 +148,7 @@ class DwellJob(Job):
 
     def describe(self) -> str:
         """E.g. `dwell 500 ms`."""
-        return f"dwell {self.ms} ms"
+        return _t("dwell %1 ms", self.ms)
 
 
 @dataclass(frozen=True, eq=False)
@@ -125,7 +159,7 @@ class SettingsJob(Job):
 
     def describe(self) -> str:
         """E.g. `set ticks_per_mm = 100`."""
-        return "set " + ", ".join(f"{k} = {v:g}" for k, v in self.values.items())
+        return _t("set %1", ", ".join(f"{k} = {v:g}" for k, v in self.values.items()))
 
 
 @dataclass(frozen=True, eq=False)
@@ -138,7 +172,7 @@ class StepperConfigJob(Job):
     def describe(self) -> str:
         """E.g. `configure the stepper: 200 steps/rev on pins 8 9`."""
         pins = " ".join(str(p) for p in self.pins)
-        return f"configure the stepper: {self.steps_per_rev} steps/rev on pins {pins}"
+        return _t("configure the stepper: %1 steps/rev on pins %2", self.steps_per_rev, pins)
 
 
 @dataclass(frozen=True, eq=False)
@@ -147,7 +181,7 @@ class StepperVersionJob(Job):
 
     def describe(self) -> str:
         """`ask the stepper library version`."""
-        return "ask the stepper library version"
+        return _t("ask the stepper library version")
 
 
 @dataclass(frozen=True, eq=False)
@@ -159,7 +193,7 @@ class StreamJob(Job):
 
     def describe(self) -> str:
         """E.g. `run square.csv (1000 points)`."""
-        return f"run {self.name} ({len(self.points)} points)"
+        return _t("run %1 (%2 points)", self.name, len(self.points))
 
 
 @dataclass(frozen=True)
@@ -172,7 +206,7 @@ class RawJob(Job):
         """E.g. `send "GET_ID\\n"`, with the console's escapes."""
         from drivers.traffic_index import escape  # imports numpy: not before the first paint
 
-        return f'send "{escape(self.data)}"'
+        return _t('send "%1"', escape(self.data))
 
 
 @dataclass(frozen=True)
@@ -181,7 +215,7 @@ class RefreshJob(Job):
 
     def describe(self) -> str:
         """`refresh`."""
-        return "refresh position and speed"
+        return _t("refresh position and speed")
 
 
 @dataclass(frozen=True)
