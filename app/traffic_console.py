@@ -15,7 +15,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
-from PySide6.QtCore import QModelIndex, Qt, QTimer, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QModelIndex, Qt, QTimer, Signal
 from PySide6.QtGui import QKeySequence, QShortcut
 from PySide6.QtWidgets import (
     QAbstractItemView,
@@ -40,6 +40,7 @@ from app.traffic_table import (
     CSV_COLUMNS,
     DISPLAY_MODES,
     HEX,
+    KIND_NAMES,
     LINE,
     MEANING,
     REPLY,
@@ -52,6 +53,7 @@ from app.traffic_table import (
 )
 from drivers.protocols.base import Protocol
 from drivers.traffic_index import KINDS, FilterError, TrafficIndex, compile_filter
+from widgets._i18n import fill
 from widgets._pacer import run_paced
 from widgets.send_line import SendLine
 
@@ -65,6 +67,16 @@ RECENT_RECORDS = 20_000  # raw records kept for `records()`; the index keeps eve
 HIDDEN_BY_DEFAULT = ("poll",)
 STATUS_INTERVAL_S = 0.25  # the status line's counts follow a flood at most 4 times a second
 
+# the names shown for the keys (marked here, translated at use); the keys stay as they are
+MODE_NAMES = {
+    "text": QT_TRANSLATE_NOOP("RawConsole", "text"),
+    "hex": QT_TRANSLATE_NOOP("RawConsole", "hex"),
+    "mixed": QT_TRANSLATE_NOOP("RawConsole", "mixed"),
+    "relative": QT_TRANSLATE_NOOP("RawConsole", "relative"),
+    "absolute": QT_TRANSLATE_NOOP("RawConsole", "absolute"),
+    "delta": QT_TRANSLATE_NOOP("RawConsole", "delta"),
+}
+
 Record = tuple[str, bytes, float]  # (direction or "note", data, timestamp in seconds)
 Incoming = tuple[float, str, bytes, float | None]  # (timestamp, direction or "", data, wall)
 
@@ -75,10 +87,18 @@ def _when(item: Incoming) -> float:
 
 def ask_save_path(parent: QWidget) -> str:
     """Ask where to export the view (.txt or .csv); "" when cancelled."""
-    path, chosen = QFileDialog.getSaveFileName(
-        parent, "Export traffic", "traffic.txt", "Text (*.txt);;CSV (*.csv);;All files (*)"
+    csv_filter = QCoreApplication.translate("RawConsole", "CSV (*.csv)")
+    filters = ";;".join(
+        (
+            QCoreApplication.translate("RawConsole", "Text (*.txt)"),
+            csv_filter,
+            QCoreApplication.translate("RawConsole", "All files (*)"),
+        )
     )
-    if path and "CSV" in chosen and not path.lower().endswith(".csv"):
+    path, chosen = QFileDialog.getSaveFileName(
+        parent, QCoreApplication.translate("RawConsole", "Export traffic"), "traffic.txt", filters
+    )
+    if path and chosen == csv_filter and not path.lower().endswith(".csv"):
         path += ".csv"
     return path
 
@@ -133,9 +153,11 @@ class RawConsole(QWidget):
     def _combo(self, name: str, items: tuple[str, ...], tip: str, slot: Callable) -> QComboBox:
         combo = QComboBox()
         combo.setObjectName(name)
-        combo.addItems(list(items))
+        for key in items:  # the key as item data: the shown name may be translated
+            name = MODE_NAMES.get(key, key)
+            combo.addItem(QCoreApplication.translate("RawConsole", name), key)
         combo.setToolTip(tip)
-        combo.currentTextChanged.connect(slot)
+        combo.currentIndexChanged.connect(lambda index: slot(combo.itemData(index)))
         return combo
 
     def _check(self, text: str, name: str, tip: str, checked: bool = True) -> QCheckBox:
@@ -162,59 +184,73 @@ class RawConsole(QWidget):
         self.mode_combo = self._combo(
             "consoleDisplayMode",
             DISPLAY_MODES,
-            "Bytes as text (\\r \\n \\xNN escapes), hex (47 45 54), or mixed (text, <0A> for "
-            "the rest)",
+            self.tr(
+                "Bytes as text (\\r \\n \\xNN escapes), hex (47 45 54), or mixed (text, <0A> for "
+                "the rest)"
+            ),
             self.set_display_mode,
         )
         self.time_combo = self._combo(
             "consoleTimeMode",
             TIME_MODES,
-            "Times: seconds since the session start, wall-clock time, or the gap since the line "
-            "above",
+            self.tr(
+                "Times: seconds since the session start, wall-clock time, or the gap since the"
+                " line above"
+            ),
             self.set_time_mode,
         )
-        self.timestamps_check = QCheckBox("Time")
+        self.timestamps_check = QCheckBox(self.tr("Time"))
         self.timestamps_check.setObjectName("consoleTimestamps")
         self.timestamps_check.setChecked(True)
-        self.timestamps_check.setToolTip("Show the time column")
+        self.timestamps_check.setToolTip(self.tr("Show the time column"))
         self.timestamps_check.toggled.connect(self.set_timestamps)
-        self.tx_check = self._check("TX", "consoleShowTx", "Show what was sent to the device")
-        self.rx_check = self._check("RX", "consoleShowRx", "Show what the device sent")
+        self.tx_check = self._check(
+            self.tr("TX"), "consoleShowTx", self.tr("Show what was sent to the device")
+        )
+        self.rx_check = self._check(
+            self.tr("RX"), "consoleShowRx", self.tr("Show what the device sent")
+        )
         self.kind_button = QToolButton()
         self.kind_button.setObjectName("consoleKinds")
-        self.kind_button.setText("Kinds")
-        self.kind_button.setToolTip("Which kinds of lines to show")
+        self.kind_button.setText(self.tr("Kinds"))
+        self.kind_button.setToolTip(self.tr("Which kinds of lines to show"))
         self.kind_button.setPopupMode(QToolButton.ToolButtonPopupMode.InstantPopup)
         menu = QMenu(self.kind_button)
         self.kind_actions = {}
         for kind in KINDS:
-            action = menu.addAction(kind)
+            name = KIND_NAMES.get(kind, kind)
+            action = menu.addAction(self.tr(name))
             action.setCheckable(True)
             action.setChecked(kind in self._kinds)
             action.setObjectName(f"consoleKind_{kind}")
             action.toggled.connect(self._kinds_changed)
             self.kind_actions[kind] = action
         self.kind_button.setMenu(menu)
-        self.poll_check = QCheckBox("Poll")
+        self.poll_check = QCheckBox(self.tr("Poll"))
         self.poll_check.setObjectName("consoleShowPoll")
         self.poll_check.setToolTip(
-            "Show the idle position queries and their replies (hidden by default; counted below)"
+            self.tr(
+                "Show the idle position queries and their replies"
+                " (hidden by default; counted below)"
+            )
         )
         self.poll_check.toggled.connect(self.kind_actions["poll"].setChecked)
         self.filter_edit = QLineEdit()
         self.filter_edit.setObjectName("consoleFilter")
-        self.filter_edit.setPlaceholderText("filter (regex)")
+        self.filter_edit.setPlaceholderText(self.tr("filter (regex)"))
         self.filter_edit.setClearButtonEnabled(True)
         self.filter_edit.setMinimumWidth(80)
         self.filter_edit.setToolTip(
-            "Show only lines matching this regular expression (case-insensitive) in their "
-            "direction, kind, hex, text or meaning, e.g. error|FA00"
+            self.tr(
+                "Show only lines matching this regular expression (case-insensitive) in their "
+                "direction, kind, hex, text or meaning, e.g. error|FA00"
+            )
         )
         self.filter_edit.textChanged.connect(self._typing.start)  # applied when typing pauses
-        self.paused_label = QLabel("paused")
+        self.paused_label = QLabel(self.tr("paused"))
         self.paused_label.setObjectName("consolePaused")
         self.paused_label.setToolTip(
-            "New lines do not scroll the view: scroll to the bottom to follow"
+            self.tr("New lines do not scroll the view: scroll to the bottom to follow")
         )
         self.paused_label.setStyleSheet("color: #8a4b00;")
         self.paused_label.setVisible(False)
@@ -232,18 +268,20 @@ class RawConsole(QWidget):
 
         self.search_edit = QLineEdit()
         self.search_edit.setObjectName("consoleSearch")
-        self.search_edit.setPlaceholderText("search (regex)")
+        self.search_edit.setPlaceholderText(self.tr("search (regex)"))
         self.search_edit.setClearButtonEnabled(True)
         self.search_edit.setMinimumWidth(80)
         self.search_edit.setToolTip(
-            "Highlight matching lines; Enter or F3: next, Shift+F3: previous"
+            self.tr("Highlight matching lines; Enter or F3: next, Shift+F3: previous")
         )
         self.search_edit.textChanged.connect(self._typing.start)
         self.search_edit.returnPressed.connect(self.find_next)
         previous = self._button(
-            "◀", "consoleSearchPrevious", "Previous match (Shift+F3)", self.find_previous
+            "◀", "consoleSearchPrevious", self.tr("Previous match (Shift+F3)"), self.find_previous
         )
-        following = self._button("▶", "consoleSearchNext", "Next match (F3)", self.find_next)
+        following = self._button(
+            "▶", "consoleSearchNext", self.tr("Next match (F3)"), self.find_next
+        )
         for button in (previous, following):
             button.setMaximumWidth(32)
         QShortcut(
@@ -262,15 +300,20 @@ class RawConsole(QWidget):
         self.status_label.setObjectName("consoleStatus")
         self.status_label.setSizePolicy(QSizePolicy.Policy.Ignored, QSizePolicy.Policy.Preferred)
         self.status_label.setMinimumWidth(0)
-        self.status_label.setToolTip("Lines in the session, shown, hidden polls, errors, matches")
+        self.status_label.setToolTip(
+            self.tr("Lines in the session, shown, hidden polls, errors, matches")
+        )
         export_button = self._button(
-            "Export…",
+            self.tr("Export…"),
             "consoleExport",
-            "Save the lines shown (filtered) as text or CSV",
+            self.tr("Save the lines shown (filtered) as text or CSV"),
             self.export_interactively,
         )
         clear_button = self._button(
-            "Clear", "consoleClear", "Forget the lines (the session log keeps them)", self.clear
+            self.tr("Clear"),
+            "consoleClear",
+            self.tr("Forget the lines (the session log keeps them)"),
+            self.clear,
         )
         top.addWidget(self.status_label, 1)  # shrinks first: its tooltip has it all
         top.addWidget(self.paused_label)
@@ -292,8 +335,11 @@ class RawConsole(QWidget):
             header.resizeSection(column, width * chars + 12)
         header.setStretchLastSection(True)
         self.view.setToolTip(
-            "TX (blue): sent to the device; RX (green): received; grey: notes and the device's "
-            "own text; red: errors. Double-click a line to go to its request, reply or first copy."
+            self.tr(
+                "TX (blue): sent to the device; RX (green): received; grey: notes and the"
+                " device's own text; red: errors. Double-click a line to go to its request,"
+                " reply or first copy."
+            )
         )
         self.view.doubleClicked.connect(self._double_clicked)
         self.view.verticalScrollBar().valueChanged.connect(self._scrolled)
@@ -436,7 +482,7 @@ class RawConsole(QWidget):
         note = self.tr(
             "%1 lines reached the console's limit and were cleared; the session log keeps them"
         )
-        self.append_note(note.replace("%1", f"{dropped:,}"))
+        self.append_note(fill(note, f"{dropped:,}"))
         self._take_pending(None)
         return True
 
@@ -537,7 +583,7 @@ class RawConsole(QWidget):
             raise ValueError(f"display mode must be one of {DISPLAY_MODES}, not {mode!r}")
         if mode != self._model.mode:
             self._model.mode = mode
-            self.mode_combo.setCurrentText(mode)
+            self.mode_combo.setCurrentIndex(self.mode_combo.findData(mode))
             self._model.refresh()
 
     def time_mode(self) -> str:
@@ -550,7 +596,7 @@ class RawConsole(QWidget):
             raise ValueError(f"time mode must be one of {TIME_MODES}, not {mode!r}")
         if mode != self._model.time_mode:
             self._model.time_mode = mode
-            self.time_combo.setCurrentText(mode)
+            self.time_combo.setCurrentIndex(self.time_combo.findData(mode))
             self._model.refresh()
 
     def timestamps(self) -> bool:
@@ -693,13 +739,16 @@ class RawConsole(QWidget):
         self._status_timer.stop()
         self._status_at = time.perf_counter()
         counts = self.index.counts
-        parts = [f"{len(self.index):,} lines", f"{len(self._model.rows):,} shown"]
+        parts = [
+            fill(self.tr("%1 lines"), f"{len(self.index):,}"),
+            fill(self.tr("%1 shown"), f"{len(self._model.rows):,}"),
+        ]
         if "poll" not in self._kinds and counts["poll"]:
-            parts.append(f"{counts['poll']:,} poll hidden")
+            parts.append(fill(self.tr("%1 poll hidden"), f"{counts['poll']:,}"))
         if counts["error"]:
-            parts.append(f"{counts['error']:,} errors")
+            parts.append(fill(self.tr("%1 errors"), f"{counts['error']:,}"))
         if self._search is not None:
-            parts.append(f"{len(self._model.matches):,} matches")
+            parts.append(fill(self.tr("%1 matches"), f"{len(self._model.matches):,}"))
         self.status_label.setText(" · ".join(parts))
         self.status_label.setToolTip("\n".join(parts))
 
@@ -784,10 +833,10 @@ class RawConsole(QWidget):
             count = self.export(path)
         except OSError as exc:
             log.warning("export to %s failed: %s", path, exc)
-            self.show_error(f"export failed: {exc}")
+            self.show_error(fill(self.tr("export failed: %1"), exc))
         else:
             self.show_error("")
-            self.append_note(f"exported {count} lines to {path}")
+            self.append_note(fill(self.tr("exported %1 lines to %2"), count, path))
 
     # -- sending (the SendLine does the work) ----------------------------------------------
 

@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import math
 import time
+from operator import methodcaller
 
 import numpy as np
 from PySide6.QtCore import (
+    QT_TRANSLATE_NOOP,
     QAbstractTableModel,
+    QCoreApplication,
     QModelIndex,
     QObject,
     QPersistentModelIndex,
@@ -18,22 +21,41 @@ from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QPainter, QPaint
 from PySide6.QtWidgets import QHeaderView, QStyle, QTableView
 
 from drivers.traffic_index import TrafficIndex, TrafficLine, escape
+from widgets._i18n import fill
 
 TEXT, HEX, MIXED = "text", "hex", "mixed"
 DISPLAY_MODES = (TEXT, HEX, MIXED)
 RELATIVE, ABSOLUTE, DELTA = "relative", "absolute", "delta"
 TIME_MODES = (RELATIVE, ABSOLUTE, DELTA)
-COLUMNS = ("Line", "Time", "Dir", "Bytes", "Meaning", "Reply")
+COLUMNS = (  # the headers, translated at use (TrafficModel context)
+    QT_TRANSLATE_NOOP("TrafficModel", "Line"),
+    QT_TRANSLATE_NOOP("TrafficModel", "Time"),
+    QT_TRANSLATE_NOOP("TrafficModel", "Dir"),
+    QT_TRANSLATE_NOOP("TrafficModel", "Bytes"),
+    QT_TRANSLATE_NOOP("TrafficModel", "Meaning"),
+    QT_TRANSLATE_NOOP("TrafficModel", "Reply"),
+)
 CSV_COLUMNS = (
     "line", "time_s", "direction", "kind", "hex", "text", "meaning", "pair", "latency_ms",
     "first_copy",
 )  # fmt: skip
 LINE, TIME, DIRECTION, BYTES, MEANING, REPLY = range(len(COLUMNS))
+KIND_NAMES = {  # the kinds' names shown (RawConsole context); the keys stay as they are
+    "motion": QT_TRANSLATE_NOOP("RawConsole", "motion"),
+    "query": QT_TRANSLATE_NOOP("RawConsole", "query"),
+    "poll": QT_TRANSLATE_NOOP("RawConsole", "poll"),
+    "setting": QT_TRANSLATE_NOOP("RawConsole", "setting"),
+    "error": QT_TRANSLATE_NOOP("RawConsole", "error"),
+    "debug": QT_TRANSLATE_NOOP("RawConsole", "debug"),
+    "note": QT_TRANSLATE_NOOP("RawConsole", "note"),
+}
 SHOWN_BYTES = 96  # bytes shown in a cell; the tooltip and the export have them all
 COLOURS = {"tx": "#1565c0", "rx": "#2e7d32", "": "#757575"}
 ERROR_BACKGROUND = QColor("#ffd7d7")
 MATCH_BACKGROUND = QColor("#fff59d")
 _MIXED_TABLE = {b: chr(b) if 0x20 <= b < 0x7F else f"<{b:02X}>" for b in range(256)}
+# str.translate by another name: the translation checks take .translate() for Qt's
+_to_mixed = methodcaller("translate", _MIXED_TABLE)
 Index = QModelIndex | QPersistentModelIndex
 _DISPLAY = Qt.ItemDataRole.DisplayRole.value
 _TOOLTIP = Qt.ItemDataRole.ToolTipRole.value
@@ -47,7 +69,7 @@ def shown_bytes(data: bytes, mode: str) -> str:
     if mode == HEX:
         return data.hex(" ").upper()
     if mode == MIXED:
-        return data.decode("latin-1").translate(_MIXED_TABLE)
+        return _to_mixed(data.decode("latin-1"))
     return escape(data)
 
 
@@ -184,7 +206,7 @@ class TrafficModel(QAbstractTableModel):
     def headerData(self, section: int, orientation: Qt.Orientation, role: int = 0) -> object:
         """Column titles."""
         if orientation == Qt.Orientation.Horizontal and role == Qt.ItemDataRole.DisplayRole:
-            return COLUMNS[section]
+            return self.tr(COLUMNS[section])
         return None
 
     def row_view(self, row: int) -> RowView:
@@ -258,13 +280,18 @@ class TrafficModel(QAbstractTableModel):
     def tooltip(self, row: int) -> str:
         """Everything about a line: kind, hex, text, meaning, pairing."""
         line = self.line_at(row)
-        lines = [f"line {line.number}: {line.kind}"]
+        name = KIND_NAMES.get(line.kind, line.kind)
+        kind = QCoreApplication.translate("RawConsole", name)
+        lines = [fill(self.tr("line %1: %2"), line.number, kind)]
         if line.data:
-            lines += [f"hex: {line.data.hex(' ').upper()}", f"text: {escape(line.data)}"]
+            lines += [
+                fill(self.tr("hex: %1"), line.data.hex(" ").upper()),
+                fill(self.tr("text: %1"), escape(line.data)),
+            ]
         if line.meaning:
             lines.append(line.meaning)
         if reply_text(line):
-            lines.append(reply_text(line) + " (double-click to go there)")
+            lines.append(fill(self.tr("%1 (double-click to go there)"), reply_text(line)))
         return "\n".join(lines)
 
     def data(self, index: Index, role: int = _DISPLAY) -> object:

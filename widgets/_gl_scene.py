@@ -6,7 +6,7 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication, Qt
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Qt
 from PySide6.QtGui import QGuiApplication, QOffscreenSurface, QOpenGLContext
 from PySide6.QtWidgets import QToolButton, QWidget
 
@@ -38,12 +38,36 @@ VIEW_ANGLES: dict[str, tuple[float, float]] = {
 VIEW_PRESETS = (*VIEW_ANGLES, "fit")
 
 BUTTONS = (
-    ("view3dTop", "Top", "View from above (X right, Y up)"),
-    ("view3dFront", "Front", "View from the front (X right, Z up)"),
-    ("view3dSide", "Side", "View from the side (Y right, Z up)"),
-    ("view3dIso", "Iso", "View from above at an angle"),
-    ("view3dFit", "Fit", "Zoom to the trail, the target and the workspace"),
-    ("view3dFollow", "Follow", "Keep the camera on the current position"),
+    (
+        "view3dTop",
+        QT_TRANSLATE_NOOP("PositionView3D", "Top"),
+        QT_TRANSLATE_NOOP("PositionView3D", "View from above (X right, Y up)"),
+    ),
+    (
+        "view3dFront",
+        QT_TRANSLATE_NOOP("PositionView3D", "Front"),
+        QT_TRANSLATE_NOOP("PositionView3D", "View from the front (X right, Z up)"),
+    ),
+    (
+        "view3dSide",
+        QT_TRANSLATE_NOOP("PositionView3D", "Side"),
+        QT_TRANSLATE_NOOP("PositionView3D", "View from the side (Y right, Z up)"),
+    ),
+    (
+        "view3dIso",
+        QT_TRANSLATE_NOOP("PositionView3D", "Iso"),
+        QT_TRANSLATE_NOOP("PositionView3D", "View from above at an angle"),
+    ),
+    (
+        "view3dFit",
+        QT_TRANSLATE_NOOP("PositionView3D", "Fit"),
+        QT_TRANSLATE_NOOP("PositionView3D", "Zoom to the trail, the target and the workspace"),
+    ),
+    (
+        "view3dFollow",
+        QT_TRANSLATE_NOOP("PositionView3D", "Follow"),
+        QT_TRANSLATE_NOOP("PositionView3D", "Keep the camera on the current position"),
+    ),
 )
 BUTTON_STYLE = (
     "QToolButton { color: #ddd; background: rgba(255, 255, 255, 24); border: none;"
@@ -220,8 +244,8 @@ def overlay_buttons(parent: QWidget) -> list[QToolButton]:
     for name, text, tip in BUTTONS:
         button = QToolButton(parent)
         button.setObjectName(name)
-        button.setText(text)
-        button.setToolTip(tip)
+        button.setText(QCoreApplication.translate("PositionView3D", text))
+        button.setToolTip(QCoreApplication.translate("PositionView3D", tip))
         button.setAutoRaise(True)
         button.setCheckable(name == "view3dFollow")
         button.setFocusPolicy(Qt.FocusPolicy.NoFocus)

@@ -81,13 +81,15 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.xy_plot = pg.PlotWidget()
         self.xy_plot.setObjectName("positionXYPlot")
         self.xy_plot.setToolTip(
-            "Stage seen from above: trail, current position (dot; hollow when estimated),"
-            " target (+), travel limits (dashed)"
+            self.tr(
+                "Stage seen from above: trail, current position (dot; hollow when estimated),"
+                " target (+), travel limits (dashed)"
+            )
         )
         xy = self.xy_plot.getPlotItem()
-        xy.setTitle("XY (from above)")
-        xy.setLabel("bottom", "X (mm)")
-        xy.setLabel("left", "Y (mm)")
+        xy.setTitle(self.tr("XY (from above)"))
+        xy.setLabel("bottom", self.tr("X (mm)"))
+        xy.setLabel("left", self.tr("Y (mm)"))
         xy.addItem(_grid(), ignoreBounds=True)
         xy.setAspectLocked(True)
         self.workspace_outline = pg.PlotCurveItem(
@@ -112,11 +114,11 @@ class PositionView2D(BufferedViewMixin, QWidget):
 
         self.time_plot = pg.PlotWidget()
         self.time_plot.setObjectName("positionTimePlot")
-        self.time_plot.setToolTip("X, Y and Z against time; dashed lines: target")
+        self.time_plot.setToolTip(self.tr("X, Y and Z against time; dashed lines: target"))
         tp = self.time_plot.getPlotItem()
-        tp.setTitle("Position against time")
-        tp.setLabel("bottom", "time (s, 0 = latest sample)")
-        tp.setLabel("left", "position (mm)")
+        tp.setTitle(self.tr("Position against time"))
+        tp.setLabel("bottom", self.tr("time (s, 0 = latest sample)"))
+        tp.setLabel("left", self.tr("position (mm)"))
         tp.addItem(_grid(), ignoreBounds=True)
         tp.setClipToView(True)
         tp.setDownsampling(auto=True, mode="peak")
@@ -134,13 +136,13 @@ class PositionView2D(BufferedViewMixin, QWidget):
             tp.addItem(line, ignoreBounds=True)
             self.target_lines[axis] = line
 
-        clear_button = QPushButton("Clear trail")
+        clear_button = QPushButton(self.tr("Clear trail"))
         clear_button.setObjectName("clearTrailButton")
-        clear_button.setToolTip("Forget the path so far (the current position stays)")
+        clear_button.setToolTip(self.tr("Forget the path so far (the current position stays)"))
         clear_button.clicked.connect(self.clear_trail)
-        reset_button = QPushButton("Reset view")
+        reset_button = QPushButton(self.tr("Reset view"))
         reset_button.setObjectName("resetViewButton")
-        reset_button.setToolTip("Zoom both plots to fit the data again")
+        reset_button.setToolTip(self.tr("Zoom both plots to fit the data again"))
         reset_button.clicked.connect(self.reset_view)
         buttons = QHBoxLayout()
         buttons.addStretch(1)

@@ -9,7 +9,7 @@ from functools import cache, partial
 from types import ModuleType
 
 import numpy as np
-from PySide6.QtCore import QCoreApplication, QSize, Qt, QTimer
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QSize, Qt, QTimer
 from PySide6.QtGui import (
     QColor,
     QFont,
@@ -46,6 +46,7 @@ from widgets._gl_scene import (
 from widgets._gl_scene import (  # here for its callers of before; it imports no OpenGL
     share_opengl_contexts as share_opengl_contexts,
 )
+from widgets._i18n import fill
 from widgets._pacer import run_paced
 from widgets._view_common import REFRESH_INTERVAL_MS, BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
@@ -71,15 +72,19 @@ BACKGROUND = (24, 24, 28, 255)
 SCALE_COLOUR = (200, 200, 200)
 NOTICE_COLOUR = (97, 97, 97)
 NOTICE_STYLE = "color: #616161; border: 1px dashed #9e9e9e;"
-NOTICE_TOOLTIP = "Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README."
+NOTICE_TOOLTIP = QT_TRANSLATE_NOOP(
+    "PositionView3D", "Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README."
+)
 
 
 def notice_text(reason: str) -> str:
     """The words shown where the 3D view would be, for `reason`."""
-    return (
-        "3D view unavailable: OpenGL could not be initialised.\n"
-        f"({reason})\nThe 2D view shows the same positions."
+    template = QCoreApplication.translate(
+        "PositionView3D",
+        "3D view unavailable: OpenGL could not be initialised.\n(%1)\n"
+        "The 2D view shows the same positions.",
     )
+    return fill(template, reason)
 
 
 def load_gl() -> ModuleType | None:
@@ -238,7 +243,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
             raise RuntimeError(f"pyqtgraph.opengl is unavailable ({_IMPORT_ERROR})")
         super().__init__(parent)
         self.setObjectName("positionView3d")
-        self.setToolTip("Drag to rotate, wheel to zoom, middle-drag to pan")
+        self.setToolTip(self.tr("Drag to rotate, wheel to zoom, middle-drag to pan"))
         self.setMinimumSize(160, 120)
         self.buffer = buffer
         self._target: tuple[float, float, float] | None = None
@@ -502,7 +507,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
     def _make_buttons(self) -> None:
         """The view-preset and follow buttons over the top-left corner."""
         for button in overlay_buttons(self):
-            preset = button.text().lower()
+            preset = button.objectName().removeprefix("view3d").lower()
             if preset in VIEW_PRESETS:
                 button.clicked.connect(partial(self.set_view_preset, preset))
         self.follow_button = self.findChild(QToolButton, "view3dFollow")
@@ -567,7 +572,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._render_timer.stop()
         for button in self.findChildren(QToolButton):
             button.hide()
-        self.setToolTip(NOTICE_TOOLTIP)
+        self.setToolTip(QCoreApplication.translate("PositionView3D", NOTICE_TOOLTIP))
         self.update()
 
     def _paint_notice(self) -> None:
@@ -602,7 +607,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
         painter.drawText(
             self.rect().adjusted(6, 0, 0, -4),
             Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignBottom,
-            f"grid {self.grid_spacing():g} mm",
+            fill(self.tr("grid %1 mm"), f"{self.grid_spacing():g}"),
         )
 
     # -- camera: the mouse handlers of pyqtgraph's view, then a new image ----------------------
@@ -665,7 +670,7 @@ class PositionView3DPlaceholder(QLabel):
         self.setObjectName("positionView3d")
         self.reason = reason
         self.setText(notice_text(reason))
-        self.setToolTip(NOTICE_TOOLTIP)
+        self.setToolTip(QCoreApplication.translate("PositionView3D", NOTICE_TOOLTIP))
         self.setAlignment(Qt.AlignmentFlag.AlignCenter)
         self.setWordWrap(True)
         self.setStyleSheet(NOTICE_STYLE)

@@ -17,10 +17,11 @@ import math
 from typing import TYPE_CHECKING, Protocol
 
 import numpy as np
-from PySide6.QtCore import QPointF, Qt, QTimer, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QPointF, Qt, QTimer, Signal
 from PySide6.QtGui import QHideEvent, QShowEvent
 from PySide6.QtWidgets import QCheckBox, QHBoxLayout, QVBoxLayout, QWidget
 
+from widgets._i18n import fill
 from widgets._pacer import run_paced
 
 if TYPE_CHECKING:  # imported where the plots are built: pyqtgraph takes a third of a second
@@ -33,6 +34,10 @@ RX_COLOUR = "#2e7d32"  # as the traffic console draws received bytes
 LATENCY_COLOUR = "#ef6c00"
 GRID_COLOUR = (60, 60, 60)
 DIRECTIONS = ("tx", "rx")
+LEGEND = {  # the directions' names in the legend, translated at use (TrafficTimeline)
+    "tx": QT_TRANSLATE_NOOP("TrafficTimeline", "TX"),
+    "rx": QT_TRANSLATE_NOOP("TrafficTimeline", "RX"),
+}
 _DIRECTION_INDEX = {direction: index for index, direction in enumerate(DIRECTIONS)}
 REDRAW_INTERVAL_MS = 125  # 8 Hz, and only when something changed
 FOLLOW_WINDOW_S = 60.0  # while following, the X range shows the latest minute
@@ -237,10 +242,13 @@ class TrafficTimeline(QWidget):
         self._drawn: tuple[int, int, int, int] | None = None  # the stores' (id, version) drawn
         self._following = True
 
-        self.follow_box = QCheckBox("Follow")
+        self.follow_box = QCheckBox(self.tr("Follow"))
         self.follow_box.setObjectName("timelineFollow")
         self.follow_box.setToolTip(
-            f"Keep the latest {FOLLOW_WINDOW_S:.0f} s in view; zooming or panning stops it"
+            fill(
+                self.tr("Keep the latest %1 s in view; zooming or panning stops it"),
+                f"{FOLLOW_WINDOW_S:.0f}",
+            )
         )
         self.follow_box.setChecked(True)
         self.follow_box.toggled.connect(self.set_following)
@@ -274,10 +282,12 @@ class TrafficTimeline(QWidget):
 
         bp = self.bytes_plot
         bp.setToolTip(
-            "Bytes per second each way, in one-second bins: TX (blue) sent to the device,"
-            " RX (green) received. Click a bin to show its first line in the console."
+            self.tr(
+                "Bytes per second each way, in one-second bins: TX (blue) sent to the device,"
+                " RX (green) received. Click a bin to show its first line in the console."
+            )
         )
-        bp.setLabel("left", "rate", units="B/s")  # SI prefixes welcome: kB/s, MB/s
+        bp.setLabel("left", self.tr("rate"), units="B/s")  # SI prefixes welcome: kB/s, MB/s
         bp.addItem(_grid(), ignoreBounds=True)
         bp.setClipToView(True)
         bp.setDownsampling(auto=True, mode="peak")
@@ -285,16 +295,19 @@ class TrafficTimeline(QWidget):
             "tx": bp.plot(pen=pg.mkPen(TX_COLOUR, width=1.5), name="TX"),
             "rx": bp.plot(pen=pg.mkPen(RX_COLOUR, width=1.5), name="RX"),
         }
-        self.legend = self._header_row("Bytes per second")
+        self.legend = self._header_row(self.tr("Bytes per second"))
 
         lp = self.latency_plot
-        lp.setTitle("Command latency")
+        lp.setTitle(self.tr("Command latency"))
         lp.setToolTip(
-            "Time from a request to its reply, in ms: one point per answered request"
-            " (drawn as dots when few are in view). Click a point to show its line in the console."
+            self.tr(
+                "Time from a request to its reply, in ms: one point per answered request"
+                " (drawn as dots when few are in view). Click a point to show its line in the"
+                " console."
+            )
         )
-        lp.setLabel("left", "latency", units="ms")
-        lp.setLabel("bottom", "time since the session started", units="s")
+        lp.setLabel("left", self.tr("latency"), units="ms")
+        lp.setLabel("bottom", self.tr("time since the session started"), units="s")
         lp.addItem(_grid(), ignoreBounds=True)
         lp.setClipToView(True)
         lp.setDownsampling(auto=True, mode="peak")
@@ -331,7 +344,7 @@ class TrafficTimeline(QWidget):
         legend = pg.LegendItem(colCount=len(DIRECTIONS), horSpacing=4)
         legend.layout.setContentsMargins(4, 2, 4, 2)
         for direction in DIRECTIONS:
-            legend.addItem(self.curves[direction], direction.upper())
+            legend.addItem(self.curves[direction], self.tr(LEGEND[direction]))
         header = pg.GraphicsLayout()
         header.setContentsMargins(0, 0, 0, 0)
         self.bytes_title = pg.LabelItem(title, size="11pt")  # as PlotItem.setTitle draws it

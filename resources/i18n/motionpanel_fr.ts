@@ -255,7 +255,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     <message>
         <location line="+4"/>
         <source>Variant:</source>
-        <translation>Variante :</translation>
+        <translation>Variante&#xa0;:</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -275,7 +275,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     <message>
         <location line="+4"/>
         <source>Bridge (snoop) mode: open the device&apos;s port and offer another program a pseudo-terminal; every byte is forwarded both ways unchanged and shown decoded here (motion controls are off while bridging)</source>
-        <translation>Mode passerelle (espion) : ouvrir le port de l&apos;appareil et proposer un pseudo-terminal à un autre programme ; chaque octet est transmis tel quel dans les deux sens et affiché ici décodé (les commandes de mouvement sont désactivées en mode passerelle)</translation>
+        <translation>Mode passerelle (espion)&#xa0;: ouvrir le port de l&apos;appareil et proposer un pseudo-terminal à un autre programme&#xa0;; chaque octet est transmis tel quel dans les deux sens et affiché ici décodé (les commandes de mouvement sont désactivées en mode passerelle)</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -304,17 +304,17 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     <message>
         <location line="+13"/>
         <source>Port:</source>
-        <translation>Port :</translation>
+        <translation>Port&#xa0;:</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Protocol:</source>
-        <translation>Protocole :</translation>
+        <translation>Protocole&#xa0;:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Baud:</source>
-        <translation>Bauds :</translation>
+        <translation>Bauds&#xa0;:</translation>
     </message>
     <message>
         <location line="+68"/>
@@ -324,7 +324,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     <message>
         <location line="+111"/>
         <source>● %1: %2</source>
-        <translation>● %1 : %2</translation>
+        <translation>● %1&#xa0;: %2</translation>
     </message>
     <message>
         <location line="+21"/>
@@ -667,7 +667,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DockLayout</name>
     <message>
-        <location filename="../../app/dock_layout.py" line="+13"/>
+        <location filename="../../app/dock_layout.py" line="+16"/>
         <source>Stepper setup</source>
         <translation>Configuration du moteur</translation>
     </message>
@@ -830,23 +830,101 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     </message>
 </context>
 <context>
+    <name>Jobs</name>
+    <message>
+        <location filename="../../app/jobs.py" line="+25"/>
+        <source>move to (%1, %2, %3) mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jog by (%1, %2, %3) %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>go home</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set home here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set speed %1 mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set %1 = %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CCW</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CW</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dwell %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>configure the stepper: %1 steps/rev on pins %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>ask the stepper library version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 points)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>send &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>refresh position and speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>JogPanel</name>
     <message>
         <location filename="../../widgets/jog_panel.py" line="+30"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
-        <translation>Touches : ←/→ X, ↑/↓ Y, Page préc/Page suiv Z, Maj ×10</translation>
+        <translation>Touches&#xa0;: ←/→ X, ↑/↓ Y, Page préc/Page suiv Z, Maj ×10</translation>
     </message>
     <message>
         <location line="+47"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
-        <translation>Déplacer la platine d&apos;un pas ; maintenir un bouton ou une touche enfoncé pour continuer.
+        <translation>Déplacer la platine d&apos;un pas&#xa0;; maintenir un bouton ou une touche enfoncé pour continuer.
 %1 (voir l&apos;indication ci-dessous pour savoir où les touches fonctionnent).</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>Step:</source>
-        <translation>Pas :</translation>
+        <translation>Pas&#xa0;:</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -871,7 +949,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+0"/>
         <source>keys off: %1</source>
-        <translation>touches inactives : %1</translation>
+        <translation>touches inactives&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -884,12 +962,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 ou fenêtre contextuelle n&apos;est ouvert, sauf si le focus est dans un champ qui utilise lui-même les flèches
 (champs de texte et numériques, listes déroulantes, curseur de vitesse, console).
 Cliquer sur les vues ou sur ce panneau pour rendre les touches au déplacement.
-Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</translation>
+Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.</translation>
     </message>
     <message>
         <location line="+66"/>
         <source>Jog %1 by %2 mm (Shift: %3 mm)</source>
-        <translation>Déplacer %1 de %2 mm (Maj : %3 mm)</translation>
+        <translation>Déplacer %1 de %2 mm (Maj&#xa0;: %3 mm)</translation>
     </message>
 </context>
 <context>
@@ -1031,7 +1109,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
 <context>
     <name>MacroDock</name>
     <message>
-        <location filename="../../app/macro_dock.py" line="+27"/>
+        <location filename="../../app/macro_dock.py" line="+28"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
         <translation>Macros Motion Panel (*.json);;Tous les fichiers (*)</translation>
     </message>
@@ -1047,7 +1125,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
         <translation>Étapes (une par ligne, chacune attend l&apos;appareil)&#xa0;: home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXTE (envoyé tel que saisi, sa réponse attendue) · wait S (s, le panneau fait une pause) · check · id · limits&#xa0;; et si l&apos;appareil les possède&#xa0;: dwell MS (ms) · arc CX CY R DÉBUT FIN --cw|--ccw · step RPM PAS · status · stop · version.</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+42"/>
         <source>Macros (%1)</source>
         <translation>Macros (%1)</translation>
     </message>
@@ -1084,7 +1162,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+19"/>
         <source>%1 macros; at most %2</source>
-        <translation>%1 macros ; %2 au maximum</translation>
+        <translation>%1 macros&#xa0;; %2 au maximum</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1223,14 +1301,14 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+101"/>
+        <location filename="../../app/main_window.py" line="+102"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
-        <translation>Aucune commande d&apos;arrêt sur %1 : ceci vide les commandes pas encore envoyées ; un mouvement déjà en cours sur l&apos;appareil se termine (Échap)</translation>
+        <translation>Aucune commande d&apos;arrêt sur %1&#xa0;: ceci vide les commandes pas encore envoyées&#xa0;; un mouvement déjà en cours sur l&apos;appareil se termine (Échap)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Stop the stage now: halts the move under way and drops what is queued (Esc)</source>
-        <translation>Arrêter la platine immédiatement : interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
+        <translation>Arrêter la platine immédiatement&#xa0;: interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
     </message>
     <message>
         <location line="+16"/>
@@ -1243,14 +1321,14 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+106"/>
         <source>no session log: %1</source>
-        <translation>pas de journal de session : %1</translation>
+        <translation>pas de journal de session&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>session log: %1</source>
-        <translation>journal de session : %1</translation>
+        <translation>journal de session&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+44"/>
@@ -1376,12 +1454,12 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+70"/>
         <source>bridge refused: %1</source>
-        <translation>passerelle refusée : %1</translation>
+        <translation>passerelle refusée&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>bridge: %1</source>
-        <translation>passerelle : %1</translation>
+        <translation>passerelle&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1391,12 +1469,12 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+2"/>
         <source>bridge: another program can open %1; every byte goes to %2</source>
-        <translation>passerelle : un autre programme peut ouvrir %1 ; chaque octet est transmis à %2</translation>
+        <translation>passerelle&#xa0;: un autre programme peut ouvrir %1&#xa0;; chaque octet est transmis à %2</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>bridge ended: %1</source>
-        <translation>passerelle terminée : %1</translation>
+        <translation>passerelle terminée&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -1406,7 +1484,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+16"/>
         <source>connection error: %1</source>
-        <translation>erreur de connexion : %1</translation>
+        <translation>erreur de connexion&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -1421,12 +1499,12 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+7"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
-        <translation>la position est inconnue : cet appareil ne peut pas l&apos;indiquer ; faire une prise d&apos;origine ou définir l&apos;origine</translation>
+        <translation>la position est inconnue&#xa0;: cet appareil ne peut pas l&apos;indiquer&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>connected again to %1: the position was read again</source>
-        <translation>reconnecté à %1 : la position a été relue</translation>
+        <translation>reconnecté à %1&#xa0;: la position a été relue</translation>
     </message>
     <message>
         <location line="+19"/>
@@ -1446,7 +1524,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+4"/>
         <source>Restart the panel&apos;s count of the position here (asks first); %1 has no set-home command, so nothing is sent</source>
-        <translation>Faire repartir d&apos;ici le décompte de position du panneau (avec confirmation) ; %1 n&apos;a pas de commande pour définir l&apos;origine, rien n&apos;est donc envoyé</translation>
+        <translation>Faire repartir d&apos;ici le décompte de position du panneau (avec confirmation)&#xa0;; %1 n&apos;a pas de commande pour définir l&apos;origine, rien n&apos;est donc envoyé</translation>
     </message>
     <message>
         <location line="+15"/>
@@ -1481,15 +1559,15 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+1"/>
         <source>travel limits: %1</source>
-        <translation>limites de course : %1</translation>
+        <translation>limites de course&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>not connected: %1 not sent</source>
-        <translation>non connecté : %1 non envoyé</translation>
+        <translation>non connecté&#xa0;: %1 non envoyé</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+79"/>
         <source>stopping the macro under way</source>
         <translation>arrêt de la macro en cours</translation>
     </message>
@@ -1501,32 +1579,32 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+2"/>
         <source>nothing queued; the move under way finishes</source>
-        <translation>rien en file d&apos;attente ; le mouvement en cours se termine</translation>
+        <translation>rien en file d&apos;attente&#xa0;; le mouvement en cours se termine</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>stopped: %1 command(s) not sent: %2</source>
-        <translation>arrêté : %1 commande(s) non envoyée(s) : %2</translation>
+        <translation>arrêté&#xa0;: %1 commande(s) non envoyée(s)&#xa0;: %2</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
-        <translation>nouvelle origine : la trace est décalée de (%1, %2, %3) mm</translation>
+        <translation>nouvelle origine&#xa0;: la trace est décalée de (%1, %2, %3) mm</translation>
     </message>
     <message>
         <location line="+75"/>
         <source>the device reported an error: %1</source>
-        <translation>l&apos;appareil a signalé une erreur : %1</translation>
+        <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>device: %1</source>
-        <translation>appareil : %1</translation>
+        <translation>appareil&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>%1 failed: %2</source>
-        <translation>échec de %1 : %2</translation>
+        <translation>échec de %1&#xa0;: %2</translation>
     </message>
     <message>
         <location line="+21"/>
@@ -1537,7 +1615,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/parameter_dock.py" line="+29"/>
+        <location filename="../../app/parameter_dock.py" line="+30"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>l&apos;appareil contient maintenant %1&#xa0;: le firmware l&apos;impose après chaque écriture</translation>
     </message>
@@ -1547,7 +1625,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
         <translation>Paramètres</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+51"/>
         <source>Parameters (%1)</source>
         <translation>Paramètres (%1)</translation>
     </message>
@@ -2103,7 +2181,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
         <translation>Prendre la position %1 actuelle comme zéro pièce (0 mm dans le repère pièce)&#xa0;; l&apos;appareil n&apos;en est pas informé et son origine reste inchangée</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>Zero all</source>
         <translation>Tout à zéro</translation>
     </message>
@@ -2123,7 +2201,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
         <translation>Ramener le zéro pièce à l&apos;origine de l&apos;appareil (pièce = machine)</translation>
     </message>
     <message>
-        <location line="+184"/>
+        <location line="+188"/>
         <source>This device has no %1 axis</source>
         <translation>Cet appareil n&apos;a pas d&apos;axe %1</translation>
     </message>
@@ -2155,6 +2233,154 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <source>work zero at %1 mm (machine)</source>
         <translation type="vanished">zéro pièce à %1 mm (machine)</translation>
+    </message>
+</context>
+<context>
+    <name>PositionView2D</name>
+    <message>
+        <location filename="../../widgets/position_view_2d.py" line="+85"/>
+        <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>XY (from above)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>X (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>X, Y and Z against time; dashed lines: target</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Position against time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time (s, 0 = latest sample)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Clear trail</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Forget the path so far (the current position stays)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reset view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zoom both plots to fit the data again</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>PositionView3D</name>
+    <message>
+        <location filename="../../widgets/_gl_scene.py" line="+43"/>
+        <source>Top</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>View from above (X right, Y up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Front</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>View from the front (X right, Z up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>View from the side (Y right, Z up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Iso</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>View from above at an angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zoom to the trail, the target and the workspace</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Follow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the camera on the current position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../widgets/position_view_3d.py" line="+75"/>
+        <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>3D view unavailable: OpenGL could not be initialised.
+(%1)
+The 2D view shows the same positions.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+164"/>
+        <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+364"/>
+        <source>grid %1 mm</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2269,17 +2495,17 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+6"/>
         <source>%1: %2 lines is out of range: 0 (keep every line) or %3</source>
-        <translation>%1 : %2 lignes, hors plage : 0 (conserver toutes les lignes) ou %3</translation>
+        <translation>%1&#xa0;: %2 lignes, hors plage&#xa0;: 0 (conserver toutes les lignes) ou %3</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: %2 is out of range: -1 (as the device resolves) or %3</source>
-        <translation>%1 : %2 est hors plage : -1 (selon la résolution de l&apos;appareil) ou %3</translation>
+        <translation>%1&#xa0;: %2 est hors plage&#xa0;: -1 (selon la résolution de l&apos;appareil) ou %3</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1: %2 %3 is out of range (%4)</source>
-        <translation>%1 : %2 %3 est hors plage (%4)</translation>
+        <translation>%1&#xa0;: %2 %3 est hors plage (%4)</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -2314,7 +2540,7 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+2"/>
         <source>no Shift, Ctrl, Alt or Meta: Shift makes the step ten times bigger</source>
-        <translation>sans Maj, Ctrl, Alt ni Méta : Maj multiplie le pas par dix</translation>
+        <translation>sans Maj, Ctrl, Alt ni Méta&#xa0;: Maj multiplie le pas par dix</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2324,27 +2550,27 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
     <message>
         <location line="+29"/>
         <source>%1: choose a key</source>
-        <translation>%1 : choisir une touche</translation>
+        <translation>%1&#xa0;: choisir une touche</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1: %2 cannot be used: %3</source>
-        <translation>%1 : %2 est inutilisable : %3</translation>
+        <translation>%1&#xa0;: %2 est inutilisable&#xa0;: %3</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1: %2 is already %3</source>
-        <translation>%1 : %2 est déjà affectée à %3</translation>
+        <translation>%1&#xa0;: %2 est déjà affectée à %3</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>%1: %2: %3</source>
-        <translation>%1 : %2 : %3</translation>
+        <translation>%1&#xa0;: %2&#xa0;: %3</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>%1: %2 is not one of %3</source>
-        <translation>%1 : %2 n&apos;est pas parmi %3</translation>
+        <translation>%1&#xa0;: %2 n&apos;est pas parmi %3</translation>
     </message>
 </context>
 <context>
@@ -2465,6 +2691,264 @@ Maintenir une touche pour continuer ; Maj pour un pas dix fois plus grand.</tra
         <location line="+7"/>
         <source>sent %1, acknowledged %2, executed %3; %4 instructions/s%5; %6 retransmission(s)</source>
         <translation>%1 envoyées, %2 acquittées, %3 exécutées&#xa0;; %4 instructions/s%5&#xa0;; %6 retransmission(s)</translation>
+    </message>
+</context>
+<context>
+    <name>RawConsole</name>
+    <message>
+        <location filename="../../app/traffic_console.py" line="+72"/>
+        <source>text</source>
+        <translation type="unfinished">texte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>hex</source>
+        <translation type="unfinished">hex</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>mixed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>relative</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>absolute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>delta</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>CSV (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Text (*.txt)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Export traffic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+89"/>
+        <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Times: seconds since the session start, wall-clock time, or the gap since the line above</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Show the time column</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>TX</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Show what was sent to the device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>RX</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Show what the device sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Kinds</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Which kinds of lines to show</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Poll</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Show the idle position queries and their replies (hidden by default; counted below)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>filter (regex)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Show only lines matching this regular expression (case-insensitive) in their direction, kind, hex, text or meaning, e.g. error|FA00</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>paused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>New lines do not scroll the view: scroll to the bottom to follow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>search (regex)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Highlight matching lines; Enter or F3: next, Shift+F3: previous</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Previous match (Shift+F3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Next match (F3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Lines in the session, shown, hidden polls, errors, matches</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Export…</source>
+        <translation type="unfinished">Exporter…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the lines shown (filtered) as text or CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Clear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Forget the lines (the session log keeps them)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+144"/>
+        <source>%1 lines reached the console&apos;s limit and were cleared; the session log keeps them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+260"/>
+        <source>%1 lines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 poll hidden</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 errors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 matches</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+85"/>
+        <source>export failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>exported %1 lines to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location filename="../../app/traffic_table.py" line="+44"/>
+        <source>motion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>query</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>poll</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>setting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error</source>
+        <translation type="unfinished">erreur</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>debug</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>note</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -3096,6 +3580,117 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
 </context>
 <context>
+    <name>TrafficModel</name>
+    <message>
+        <location filename="../../app/traffic_table.py" line="-19"/>
+        <source>Line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dir</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Meaning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+249"/>
+        <source>line %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>hex: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>text: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (double-click to go there)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>TrafficTimeline</name>
+    <message>
+        <location filename="../../widgets/traffic_timeline.py" line="+38"/>
+        <source>TX</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>RX</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+206"/>
+        <source>Follow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Keep the latest %1 s in view; zooming or panning stops it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Bytes per second each way, in one-second bins: TX (blue) sent to the device, RX (green) received. Click a bin to show its first line in the console.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Bytes per second</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Command latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Time from a request to its reply, in ms: one point per answered request (drawn as dots when few are in view). Click a point to show its line in the console.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>latency</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>time since the session started</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>TravelLimitsDialog</name>
     <message>
         <location filename="../../widgets/travel_limits_dialog.py" line="+32"/>
@@ -3175,7 +3770,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Macros</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+28"/>
         <source>&amp;Settings…</source>
         <translation>&amp;Réglages…</translation>
     </message>
@@ -3185,7 +3780,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Fréquences d&apos;interrogation, console, dossier des journaux, unités, touches de déplacement, thème</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+2"/>
         <source>&amp;Help</source>
         <translation>Aid&amp;e</translation>
     </message>
@@ -3200,7 +3795,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>À &amp;propos de Motion Panel</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+53"/>
         <source>Jog X - / +</source>
         <translation>Déplacer X - / +</translation>
     </message>
@@ -3237,7 +3832,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+34"/>
         <source>Keys: %1/%2 X, %3/%4 Y, %5/%6 Z, Shift ×10</source>
-        <translation>Touches : %1/%2 X, %3/%4 Y, %5/%6 Z, Maj ×10</translation>
+        <translation>Touches&#xa0;: %1/%2 X, %3/%4 Y, %5/%6 Z, Maj ×10</translation>
     </message>
     <message>
         <location line="+16"/>
@@ -3245,7 +3840,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>, %1/%2 pas</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+42"/>
         <source>the session log from the next start</source>
         <translation>le journal de session change au prochain démarrage</translation>
     </message>
@@ -3262,7 +3857,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+2"/>
         <source>settings saved; %1</source>
-        <translation>réglages enregistrés ; %1</translation>
+        <translation>réglages enregistrés&#xa0;; %1</translation>
     </message>
 </context>
 <context>

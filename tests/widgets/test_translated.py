@@ -25,6 +25,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.traffic_console import RawConsole
 from widgets.arc_entry import ArcEntry
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
@@ -35,11 +36,15 @@ from widgets.macro_editor import MacroEditor
 from widgets.macro_panel import MacroPanel
 from widgets.parameter_editor import ParameterEditor, ParameterRow
 from widgets.piframe_panel import PiFramePanel
+from widgets.position_buffer import PositionBuffer
 from widgets.position_readout import ESTIMATED, PositionReadout
+from widgets.position_view_2d import PositionView2D
+from widgets.position_view_3d import PositionView3DPlaceholder
 from widgets.program_panel import ProgramPanel
 from widgets.send_line import SendLine
 from widgets.speed_control import SpeedControl
 from widgets.status_line import StatusLine
+from widgets.traffic_timeline import TrafficTimeline
 from widgets.travel_limits_dialog import TravelLimitsDialog
 
 pytestmark = pytest.mark.timeout(60)
@@ -84,6 +89,14 @@ WRAPPED = [
     "widgets/about_dialog.py",
     "widgets/shortcuts_dialog.py",
     "widgets/control_lines_bar.py",
+    "widgets/position_view_2d.py",
+    "widgets/position_view_3d.py",
+    "widgets/_gl_scene.py",
+    "widgets/_view_common.py",
+    "widgets/traffic_timeline.py",
+    "widgets/traffic_format.py",
+    "app/traffic_console.py",
+    "app/traffic_table.py",
 ]
 OPEN, CLOSE = "⟦", "⟧"
 # What is not a word to translate: numbers, units, axis letters, line endings, signs.
@@ -225,6 +238,10 @@ def build_panels(qtbot) -> list[tuple[QWidget, tuple[str, ...]]]:
     connection.set_state("error", "")
     jog = JogPanel()
     jog.set_keyboard_state(False, "")
+    console = RawConsole()
+    console.set_display_mode("hex")
+    console.set_time_mode("delta")
+    no_gl = PositionView3DPlaceholder("no OpenGL context here")
     panels: list[tuple[QWidget, tuple[str, ...]]] = [
         (speed, ()),
         (status, ()),
@@ -242,6 +259,10 @@ def build_panels(qtbot) -> list[tuple[QWidget, tuple[str, ...]]]:
         (macro_editor, ("Park", "home", "move", "jog", "wait", "position")),
         (connection, ("sim://coxiris", "simulated coxiris device", "coxiris", "packet format 2")),
         (jog, ()),
+        (console, ()),
+        (TrafficTimeline(), ()),
+        (PositionView2D(PositionBuffer()), ()),
+        (no_gl, ("no OpenGL context here",)),
     ]
     for panel, _ in panels:
         qtbot.addWidget(panel)
