@@ -834,77 +834,77 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
     <message>
         <location filename="../../app/jobs.py" line="+25"/>
         <source>move to (%1, %2, %3) mm</source>
-        <translation type="unfinished"></translation>
+        <translation>mover a (%1, %2, %3) mm</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>jog by (%1, %2, %3) %4</source>
-        <translation type="unfinished"></translation>
+        <translation>desplazar (%1, %2, %3) %4</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>go home</source>
-        <translation type="unfinished"></translation>
+        <translation>ir al origen</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set home here</source>
-        <translation type="unfinished"></translation>
+        <translation>fijar el origen aquí</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set speed %1 mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation>fijar velocidad %1 mm/s</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set %1 = %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>fijar %1 = %2 %3</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CCW</source>
-        <translation type="unfinished"></translation>
+        <translation>arco alrededor de (%1, %2) mm, radio %3 mm, de %4° a %5° en sentido antihorario</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CW</source>
-        <translation type="unfinished"></translation>
+        <translation>arco alrededor de (%1, %2) mm, radio %3 mm, de %4° a %5° en sentido horario</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>dwell %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>esperar %1 ms</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set %1</source>
-        <translation type="unfinished"></translation>
+        <translation>fijar %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>configure the stepper: %1 steps/rev on pins %2</source>
-        <translation type="unfinished"></translation>
+        <translation>configurar el motor paso a paso: %1 pasos/rev en los pines %2</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>ask the stepper library version</source>
-        <translation type="unfinished"></translation>
+        <translation>pedir la versión de la biblioteca de motores paso a paso</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>run %1 (%2 points)</source>
-        <translation type="unfinished"></translation>
+        <translation>ejecutar %1 (%2 puntos)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>send &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>enviar &quot;%1&quot;</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>refresh position and speed</source>
-        <translation type="unfinished"></translation>
+        <translation>actualizar posición y velocidad</translation>
     </message>
 </context>
 <context>
@@ -2240,62 +2240,62 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     <message>
         <location filename="../../widgets/position_view_2d.py" line="+85"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Platina vista desde arriba: trayectoria, posición actual (punto; hueco si es estimada), destino (+), límites de recorrido (discontinuos)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>XY (from above)</source>
-        <translation type="unfinished"></translation>
+        <translation>XY (desde arriba)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>X (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>X (mm)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Y (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Y (mm)</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>X, Y and Z against time; dashed lines: target</source>
-        <translation type="unfinished"></translation>
+        <translation>X, Y y Z en función del tiempo; líneas discontinuas: destino</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Position against time</source>
-        <translation type="unfinished"></translation>
+        <translation>Posición en función del tiempo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>time (s, 0 = latest sample)</source>
-        <translation type="unfinished"></translation>
+        <translation>tiempo (s, 0 = última muestra)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>position (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>posición (mm)</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Clear trail</source>
-        <translation type="unfinished"></translation>
+        <translation>Borrar trayectoria</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Forget the path so far (the current position stays)</source>
-        <translation type="unfinished"></translation>
+        <translation>Olvidar la trayectoria recorrida hasta ahora (la posición actual se mantiene)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reset view</source>
-        <translation type="unfinished"></translation>
+        <translation>Restablecer vista</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Zoom both plots to fit the data again</source>
-        <translation type="unfinished"></translation>
+        <translation>Volver a ajustar el zoom de ambos gráficos a los datos</translation>
     </message>
 </context>
 <context>
@@ -2303,84 +2303,86 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     <message>
         <location filename="../../widgets/_gl_scene.py" line="+43"/>
         <source>Top</source>
-        <translation type="unfinished"></translation>
+        <translation>Superior</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from above (X right, Y up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vista desde arriba (X a la derecha, Y hacia arriba)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Front</source>
-        <translation type="unfinished"></translation>
+        <translation>Frontal</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from the front (X right, Z up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vista frontal (X a la derecha, Z hacia arriba)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Side</source>
-        <translation type="unfinished"></translation>
+        <translation>Lateral</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from the side (Y right, Z up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vista lateral (Y a la derecha, Z hacia arriba)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Iso</source>
-        <translation type="unfinished"></translation>
+        <translation>Iso</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from above at an angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Vista oblicua desde arriba</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Fit</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajustar</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Zoom to the trail, the target and the workspace</source>
-        <translation type="unfinished"></translation>
+        <translation>Encuadrar la trayectoria, el destino y el espacio de trabajo</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>Seguir</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Keep the camera on the current position</source>
-        <translation type="unfinished"></translation>
+        <translation>Mantener la cámara sobre la posición actual</translation>
     </message>
     <message>
         <location filename="../../widgets/position_view_3d.py" line="+75"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
-        <translation type="unfinished"></translation>
+        <translation>Requiere OpenGL 2.1 o posterior (p. ej. Mesa) en una pantalla; ver el README.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>3D view unavailable: OpenGL could not be initialised.
 (%1)
 The 2D view shows the same positions.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vista 3D no disponible: no se pudo inicializar OpenGL.
+(%1)
+La vista 2D muestra las mismas posiciones.</translation>
     </message>
     <message>
         <location line="+164"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
-        <translation type="unfinished"></translation>
+        <translation>Arrastrar para girar, rueda para hacer zoom, arrastrar con el botón central para mover la vista</translation>
     </message>
     <message>
         <location line="+364"/>
         <source>grid %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>cuadrícula %1 mm</translation>
     </message>
 </context>
 <context>
@@ -2698,257 +2700,257 @@ The 2D view shows the same positions.</source>
     <message>
         <location filename="../../app/traffic_console.py" line="+72"/>
         <source>text</source>
-        <translation type="unfinished">texto</translation>
+        <translation>texto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>hex</source>
-        <translation type="unfinished">hex</translation>
+        <translation>hex</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>mixed</source>
-        <translation type="unfinished"></translation>
+        <translation>mixto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>relative</source>
-        <translation type="unfinished"></translation>
+        <translation>relativo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>absolute</source>
-        <translation type="unfinished"></translation>
+        <translation>absoluto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>delta</source>
-        <translation type="unfinished"></translation>
+        <translation>delta</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV (*.csv)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Text (*.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>Texto (*.txt)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Todos los archivos (*)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export traffic</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportar tráfico</translation>
     </message>
     <message>
         <location line="+89"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bytes como texto (escapes \r \n \xNN), hex (47 45 54) o mixto (texto, &lt;0A&gt; para el resto)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Times: seconds since the session start, wall-clock time, or the gap since the line above</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempos: segundos desde el inicio de la sesión, hora del reloj o intervalo desde la línea anterior</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Show the time column</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar la columna de tiempo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>TX</source>
-        <translation type="unfinished"></translation>
+        <translation>TX</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Show what was sent to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar lo enviado al dispositivo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>RX</source>
-        <translation type="unfinished"></translation>
+        <translation>RX</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Show what the device sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar lo que envió el dispositivo</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Kinds</source>
-        <translation type="unfinished"></translation>
+        <translation>Tipos</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Which kinds of lines to show</source>
-        <translation type="unfinished"></translation>
+        <translation>Qué tipos de líneas mostrar</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Poll</source>
-        <translation type="unfinished"></translation>
+        <translation>Consulta</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Show the idle position queries and their replies (hidden by default; counted below)</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar las consultas de posición en reposo y sus respuestas (ocultas por defecto; se cuentan abajo)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>filter (regex)</source>
-        <translation type="unfinished"></translation>
+        <translation>filtro (regex)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Show only lines matching this regular expression (case-insensitive) in their direction, kind, hex, text or meaning, e.g. error|FA00</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostrar solo las líneas que coinciden con esta expresión regular (sin distinguir mayúsculas) en su dirección, tipo, hex, texto o significado, p. ej. error|FA00</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>paused</source>
-        <translation type="unfinished"></translation>
+        <translation>en pausa</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>New lines do not scroll the view: scroll to the bottom to follow</source>
-        <translation type="unfinished"></translation>
+        <translation>Las líneas nuevas no desplazan la vista: bajar hasta el final para seguirlas</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>search (regex)</source>
-        <translation type="unfinished"></translation>
+        <translation>buscar (regex)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Highlight matching lines; Enter or F3: next, Shift+F3: previous</source>
-        <translation type="unfinished"></translation>
+        <translation>Resaltar las líneas coincidentes; Enter o F3: siguiente, Shift+F3: anterior</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Previous match (Shift+F3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Coincidencia anterior (Shift+F3)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Next match (F3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Coincidencia siguiente (F3)</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
-        <translation type="unfinished"></translation>
+        <translation>Líneas de la sesión, mostradas, consultas ocultas, errores, coincidencias</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Export…</source>
-        <translation type="unfinished">Exportar…</translation>
+        <translation>Exportar…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save the lines shown (filtered) as text or CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar las líneas mostradas (filtradas) como texto o CSV</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>Borrar</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Forget the lines (the session log keeps them)</source>
-        <translation type="unfinished"></translation>
+        <translation>Olvidar las líneas (el registro de sesión las conserva)</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
-        <translation type="unfinished"></translation>
+        <translation>TX (azul): enviado al dispositivo; RX (verde): recibido; gris: notas y texto propio del dispositivo; rojo: errores. Doble clic en una línea para ir a su petición, su respuesta o su primera copia.</translation>
     </message>
     <message>
         <location line="+144"/>
         <source>%1 lines reached the console&apos;s limit and were cleared; the session log keeps them</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 líneas alcanzaron el límite de la consola y se borraron; el registro de sesión las conserva</translation>
     </message>
     <message>
         <location line="+260"/>
         <source>%1 lines</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 líneas</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 shown</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mostradas</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 poll hidden</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 de consulta ocultas</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 errors</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 errores</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 matches</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 coincidencias</translation>
     </message>
     <message>
         <location line="+85"/>
         <source>export failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>exportación fallida: %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>exported %1 lines to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 líneas exportadas a %2</translation>
     </message>
     <message>
         <location filename="../../app/traffic_table.py" line="+44"/>
         <source>motion</source>
-        <translation type="unfinished"></translation>
+        <translation>movimiento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>query</source>
-        <translation type="unfinished"></translation>
+        <translation>petición</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>poll</source>
-        <translation type="unfinished"></translation>
+        <translation>consulta</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>setting</source>
-        <translation type="unfinished"></translation>
+        <translation>ajuste</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>error</source>
-        <translation type="unfinished">error</translation>
+        <translation>error</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>debug</source>
-        <translation type="unfinished"></translation>
+        <translation>depuración</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>note</source>
-        <translation type="unfinished"></translation>
+        <translation>nota</translation>
     </message>
 </context>
 <context>
@@ -3584,52 +3586,52 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     <message>
         <location filename="../../app/traffic_table.py" line="-19"/>
         <source>Line</source>
-        <translation type="unfinished"></translation>
+        <translation>Línea</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dir</source>
-        <translation type="unfinished"></translation>
+        <translation>Dir</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>Bytes</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Meaning</source>
-        <translation type="unfinished"></translation>
+        <translation>Significado</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reply</source>
-        <translation type="unfinished"></translation>
+        <translation>Respuesta</translation>
     </message>
     <message>
         <location line="+249"/>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>línea %1: %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>hex: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>hex: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>text: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>texto: %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 (double-click to go there)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (doble clic para ir allí)</translation>
     </message>
 </context>
 <context>
@@ -3637,57 +3639,57 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     <message>
         <location filename="../../widgets/traffic_timeline.py" line="+38"/>
         <source>TX</source>
-        <translation type="unfinished"></translation>
+        <translation>TX</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>RX</source>
-        <translation type="unfinished"></translation>
+        <translation>RX</translation>
     </message>
     <message>
         <location line="+206"/>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>Seguir</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Keep the latest %1 s in view; zooming or panning stops it</source>
-        <translation type="unfinished"></translation>
+        <translation>Mantener a la vista los últimos %1 s; hacer zoom o mover la vista lo desactiva</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>Bytes per second each way, in one-second bins: TX (blue) sent to the device, RX (green) received. Click a bin to show its first line in the console.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bytes por segundo en cada sentido, en intervalos de un segundo: TX (azul) enviado al dispositivo, RX (verde) recibido. Hacer clic en un intervalo para mostrar su primera línea en la consola.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>rate</source>
-        <translation type="unfinished"></translation>
+        <translation>tasa</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Bytes per second</source>
-        <translation type="unfinished"></translation>
+        <translation>Bytes por segundo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Command latency</source>
-        <translation type="unfinished"></translation>
+        <translation>Latencia de comandos</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Time from a request to its reply, in ms: one point per answered request (drawn as dots when few are in view). Click a point to show its line in the console.</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo entre una petición y su respuesta, en ms: un punto por petición respondida (dibujados como marcadores cuando hay pocos a la vista). Hacer clic en un punto para mostrar su línea en la consola.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>latency</source>
-        <translation type="unfinished"></translation>
+        <translation>latencia</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>time since the session started</source>
-        <translation type="unfinished"></translation>
+        <translation>tiempo desde el inicio de la sesión</translation>
     </message>
 </context>
 <context>

@@ -834,77 +834,77 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location filename="../../app/jobs.py" line="+25"/>
         <source>move to (%1, %2, %3) mm</source>
-        <translation type="unfinished"></translation>
+        <translation>déplacement vers (%1, %2, %3) mm</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>jog by (%1, %2, %3) %4</source>
-        <translation type="unfinished"></translation>
+        <translation>déplacement relatif de (%1, %2, %3) %4</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>go home</source>
-        <translation type="unfinished"></translation>
+        <translation>retour à l&apos;origine</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set home here</source>
-        <translation type="unfinished"></translation>
+        <translation>définition de l&apos;origine ici</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set speed %1 mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation>réglage de la vitesse à %1 mm/s</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set %1 = %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>réglage de %1 = %2 %3</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CCW</source>
-        <translation type="unfinished"></translation>
+        <translation>déplacement en arc autour de (%1, %2) mm, rayon %3 mm, de %4° à %5°, sens antihoraire</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CW</source>
-        <translation type="unfinished"></translation>
+        <translation>déplacement en arc autour de (%1, %2) mm, rayon %3 mm, de %4° à %5°, sens horaire</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>dwell %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>temporisation de %1 ms</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set %1</source>
-        <translation type="unfinished"></translation>
+        <translation>réglage de %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>configure the stepper: %1 steps/rev on pins %2</source>
-        <translation type="unfinished"></translation>
+        <translation>configuration du moteur pas à pas : %1 pas/tour sur les broches %2</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>ask the stepper library version</source>
-        <translation type="unfinished"></translation>
+        <translation>demande de la version de la bibliothèque pas à pas</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>run %1 (%2 points)</source>
-        <translation type="unfinished"></translation>
+        <translation>lancement de %1 (%2 points)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>send &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>transmission de « %1 »</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>refresh position and speed</source>
-        <translation type="unfinished"></translation>
+        <translation>relecture de la position et de la vitesse</translation>
     </message>
 </context>
 <context>
@@ -2240,62 +2240,62 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     <message>
         <location filename="../../widgets/position_view_2d.py" line="+85"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Platine vue de dessus : trace, position actuelle (point ; creux si estimée), cible (+), limites de course (pointillés)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>XY (from above)</source>
-        <translation type="unfinished"></translation>
+        <translation>XY (vue de dessus)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>X (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>X (mm)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Y (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Y (mm)</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>X, Y and Z against time; dashed lines: target</source>
-        <translation type="unfinished"></translation>
+        <translation>X, Y et Z en fonction du temps ; pointillés : cible</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Position against time</source>
-        <translation type="unfinished"></translation>
+        <translation>Position en fonction du temps</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>time (s, 0 = latest sample)</source>
-        <translation type="unfinished"></translation>
+        <translation>temps (s, 0 = dernier échantillon)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>position (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>position (mm)</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Clear trail</source>
-        <translation type="unfinished"></translation>
+        <translation>Effacer la trace</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Forget the path so far (the current position stays)</source>
-        <translation type="unfinished"></translation>
+        <translation>Oublier le chemin parcouru (la position actuelle reste)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reset view</source>
-        <translation type="unfinished"></translation>
+        <translation>Réinitialiser la vue</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Zoom both plots to fit the data again</source>
-        <translation type="unfinished"></translation>
+        <translation>Recadrer les deux graphiques sur les données</translation>
     </message>
 </context>
 <context>
@@ -2303,84 +2303,86 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     <message>
         <location filename="../../widgets/_gl_scene.py" line="+43"/>
         <source>Top</source>
-        <translation type="unfinished"></translation>
+        <translation>Dessus</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from above (X right, Y up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vue de dessus (X vers la droite, Y vers le haut)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Front</source>
-        <translation type="unfinished"></translation>
+        <translation>Face</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from the front (X right, Z up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vue de face (X vers la droite, Z vers le haut)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Side</source>
-        <translation type="unfinished"></translation>
+        <translation>Côté</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from the side (Y right, Z up)</source>
-        <translation type="unfinished"></translation>
+        <translation>Vue de côté (Y vers la droite, Z vers le haut)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Iso</source>
-        <translation type="unfinished"></translation>
+        <translation>Iso</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from above at an angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Vue de dessus en biais</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Fit</source>
-        <translation type="unfinished"></translation>
+        <translation>Ajuster</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Zoom to the trail, the target and the workspace</source>
-        <translation type="unfinished"></translation>
+        <translation>Cadrer la trace, la cible et l&apos;espace de travail</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>Suivre</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Keep the camera on the current position</source>
-        <translation type="unfinished"></translation>
+        <translation>Garder la caméra sur la position actuelle</translation>
     </message>
     <message>
         <location filename="../../widgets/position_view_3d.py" line="+75"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nécessite OpenGL 2.1 ou plus récent (par ex. Mesa) sur un affichage ; voir le README.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>3D view unavailable: OpenGL could not be initialised.
 (%1)
 The 2D view shows the same positions.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vue 3D indisponible : OpenGL n&apos;a pas pu être initialisé.
+(%1)
+La vue 2D montre les mêmes positions.</translation>
     </message>
     <message>
         <location line="+164"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
-        <translation type="unfinished"></translation>
+        <translation>Glisser pour pivoter, molette pour zoomer, glisser avec le bouton du milieu pour déplacer la vue</translation>
     </message>
     <message>
         <location line="+364"/>
         <source>grid %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>grille %1 mm</translation>
     </message>
 </context>
 <context>
@@ -2698,257 +2700,257 @@ The 2D view shows the same positions.</source>
     <message>
         <location filename="../../app/traffic_console.py" line="+72"/>
         <source>text</source>
-        <translation type="unfinished">texte</translation>
+        <translation>texte</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>hex</source>
-        <translation type="unfinished">hex</translation>
+        <translation>hex</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>mixed</source>
-        <translation type="unfinished"></translation>
+        <translation>mixte</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>relative</source>
-        <translation type="unfinished"></translation>
+        <translation>relatif</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>absolute</source>
-        <translation type="unfinished"></translation>
+        <translation>absolu</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>delta</source>
-        <translation type="unfinished"></translation>
+        <translation>delta</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV (*.csv)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Text (*.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>Texte (*.txt)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tous les fichiers (*)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export traffic</source>
-        <translation type="unfinished"></translation>
+        <translation>Exporter le trafic</translation>
     </message>
     <message>
         <location line="+89"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
-        <translation type="unfinished"></translation>
+        <translation>Octets en texte (échappements \r \n \xNN), en hex (47 45 54) ou en mixte (texte, &lt;0A&gt; pour le reste)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Times: seconds since the session start, wall-clock time, or the gap since the line above</source>
-        <translation type="unfinished"></translation>
+        <translation>Temps : secondes depuis le début de la session, heure de l&apos;horloge, ou écart avec la ligne précédente</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>Temps</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Show the time column</source>
-        <translation type="unfinished"></translation>
+        <translation>Afficher la colonne du temps</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>TX</source>
-        <translation type="unfinished"></translation>
+        <translation>TX</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Show what was sent to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>Afficher ce qui a été envoyé à l&apos;appareil</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>RX</source>
-        <translation type="unfinished"></translation>
+        <translation>RX</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Show what the device sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Afficher ce que l&apos;appareil a envoyé</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Kinds</source>
-        <translation type="unfinished"></translation>
+        <translation>Types</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Which kinds of lines to show</source>
-        <translation type="unfinished"></translation>
+        <translation>Types de lignes à afficher</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Poll</source>
-        <translation type="unfinished"></translation>
+        <translation>Interrogation</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Show the idle position queries and their replies (hidden by default; counted below)</source>
-        <translation type="unfinished"></translation>
+        <translation>Afficher les interrogations de position au repos et leurs réponses (masquées par défaut ; comptées ci-dessous)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>filter (regex)</source>
-        <translation type="unfinished"></translation>
+        <translation>filtre (regex)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Show only lines matching this regular expression (case-insensitive) in their direction, kind, hex, text or meaning, e.g. error|FA00</source>
-        <translation type="unfinished"></translation>
+        <translation>N&apos;afficher que les lignes dont le sens, le type, l&apos;hex, le texte ou la signification correspondent à cette expression régulière (sans tenir compte de la casse), par ex. error|FA00</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>paused</source>
-        <translation type="unfinished"></translation>
+        <translation>en pause</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>New lines do not scroll the view: scroll to the bottom to follow</source>
-        <translation type="unfinished"></translation>
+        <translation>Les nouvelles lignes ne font pas défiler la vue : faire défiler jusqu&apos;en bas pour suivre</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>search (regex)</source>
-        <translation type="unfinished"></translation>
+        <translation>rechercher (regex)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Highlight matching lines; Enter or F3: next, Shift+F3: previous</source>
-        <translation type="unfinished"></translation>
+        <translation>Surligner les lignes correspondantes ; Entrée ou F3 : suivante, Maj+F3 : précédente</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Previous match (Shift+F3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Correspondance précédente (Maj+F3)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Next match (F3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Correspondance suivante (F3)</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
-        <translation type="unfinished"></translation>
+        <translation>Lignes de la session, affichées, interrogations masquées, erreurs, correspondances</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Export…</source>
-        <translation type="unfinished">Exporter…</translation>
+        <translation>Exporter…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save the lines shown (filtered) as text or CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Enregistrer les lignes affichées (filtrées) en texte ou en CSV</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>Effacer</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Forget the lines (the session log keeps them)</source>
-        <translation type="unfinished"></translation>
+        <translation>Oublier les lignes (le journal de session les conserve)</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
-        <translation type="unfinished"></translation>
+        <translation>TX (bleu) : envoyé à l&apos;appareil ; RX (vert) : reçu ; gris : notes et texte propre à l&apos;appareil ; rouge : erreurs. Double-cliquer sur une ligne pour aller à sa requête, à sa réponse ou à sa première copie.</translation>
     </message>
     <message>
         <location line="+144"/>
         <source>%1 lines reached the console&apos;s limit and were cleared; the session log keeps them</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 lignes ont atteint la limite de la console et ont été effacées ; le journal de session les conserve</translation>
     </message>
     <message>
         <location line="+260"/>
         <source>%1 lines</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 lignes</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 shown</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 affichées</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 poll hidden</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 interrogations masquées</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 errors</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 erreurs</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 matches</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 correspondances</translation>
     </message>
     <message>
         <location line="+85"/>
         <source>export failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>échec de l&apos;export : %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>exported %1 lines to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 lignes exportées vers %2</translation>
     </message>
     <message>
         <location filename="../../app/traffic_table.py" line="+44"/>
         <source>motion</source>
-        <translation type="unfinished"></translation>
+        <translation>mouvement</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>query</source>
-        <translation type="unfinished"></translation>
+        <translation>requête</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>poll</source>
-        <translation type="unfinished"></translation>
+        <translation>interrogation</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>setting</source>
-        <translation type="unfinished"></translation>
+        <translation>réglage</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>error</source>
-        <translation type="unfinished">erreur</translation>
+        <translation>erreur</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>debug</source>
-        <translation type="unfinished"></translation>
+        <translation>débogage</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>note</source>
-        <translation type="unfinished"></translation>
+        <translation>note</translation>
     </message>
 </context>
 <context>
@@ -3584,52 +3586,52 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location filename="../../app/traffic_table.py" line="-19"/>
         <source>Line</source>
-        <translation type="unfinished"></translation>
+        <translation>Ligne</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>Temps</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dir</source>
-        <translation type="unfinished"></translation>
+        <translation>Sens</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>Octets</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Meaning</source>
-        <translation type="unfinished"></translation>
+        <translation>Signification</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reply</source>
-        <translation type="unfinished"></translation>
+        <translation>Réponse</translation>
     </message>
     <message>
         <location line="+249"/>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>ligne %1 : %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>hex: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>hex : %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>text: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>texte : %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 (double-click to go there)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (double-cliquer pour y aller)</translation>
     </message>
 </context>
 <context>
@@ -3637,57 +3639,57 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location filename="../../widgets/traffic_timeline.py" line="+38"/>
         <source>TX</source>
-        <translation type="unfinished"></translation>
+        <translation>TX</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>RX</source>
-        <translation type="unfinished"></translation>
+        <translation>RX</translation>
     </message>
     <message>
         <location line="+206"/>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>Suivre</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Keep the latest %1 s in view; zooming or panning stops it</source>
-        <translation type="unfinished"></translation>
+        <translation>Garder à l&apos;écran les %1 s les plus récentes ; zoomer ou déplacer la vue l&apos;interrompt</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>Bytes per second each way, in one-second bins: TX (blue) sent to the device, RX (green) received. Click a bin to show its first line in the console.</source>
-        <translation type="unfinished"></translation>
+        <translation>Octets par seconde dans chaque sens, par tranches d&apos;une seconde : TX (bleu) envoyés à l&apos;appareil, RX (vert) reçus. Cliquer sur une tranche pour afficher sa première ligne dans la console.</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>rate</source>
-        <translation type="unfinished"></translation>
+        <translation>débit</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Bytes per second</source>
-        <translation type="unfinished"></translation>
+        <translation>Octets par seconde</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Command latency</source>
-        <translation type="unfinished"></translation>
+        <translation>Latence des commandes</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Time from a request to its reply, in ms: one point per answered request (drawn as dots when few are in view). Click a point to show its line in the console.</source>
-        <translation type="unfinished"></translation>
+        <translation>Temps entre une requête et sa réponse, en ms : un point par requête ayant reçu une réponse (dessinés isolément quand peu sont visibles). Cliquer sur un point pour afficher sa ligne dans la console.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>latency</source>
-        <translation type="unfinished"></translation>
+        <translation>latence</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>time since the session started</source>
-        <translation type="unfinished"></translation>
+        <translation>temps écoulé depuis le début de la session</translation>
     </message>
 </context>
 <context>

@@ -834,77 +834,77 @@ All coordinates will be measured from here from now on.</source>
     <message>
         <location filename="../../app/jobs.py" line="+25"/>
         <source>move to (%1, %2, %3) mm</source>
-        <translation type="unfinished"></translation>
+        <translation>移动到 (%1, %2, %3) mm</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>jog by (%1, %2, %3) %4</source>
-        <translation type="unfinished"></translation>
+        <translation>点动 (%1, %2, %3) %4</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>go home</source>
-        <translation type="unfinished"></translation>
+        <translation>回原点</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set home here</source>
-        <translation type="unfinished"></translation>
+        <translation>将此处设为原点</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set speed %1 mm/s</source>
-        <translation type="unfinished"></translation>
+        <translation>设置速度 %1 mm/s</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set %1 = %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>设置 %1 = %2 %3</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CCW</source>
-        <translation type="unfinished"></translation>
+        <translation>绕 (%1, %2) mm 走圆弧，半径 %3 mm，从 %4° 到 %5°，逆时针</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>arc around (%1, %2) mm, radius %3 mm, from %4° to %5° CW</source>
-        <translation type="unfinished"></translation>
+        <translation>绕 (%1, %2) mm 走圆弧，半径 %3 mm，从 %4° 到 %5°，顺时针</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>dwell %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>延时 %1 ms</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>set %1</source>
-        <translation type="unfinished"></translation>
+        <translation>设置 %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>configure the stepper: %1 steps/rev on pins %2</source>
-        <translation type="unfinished"></translation>
+        <translation>配置步进电机：每转 %1 步，引脚 %2</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>ask the stepper library version</source>
-        <translation type="unfinished"></translation>
+        <translation>查询步进电机库版本</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>run %1 (%2 points)</source>
-        <translation type="unfinished"></translation>
+        <translation>运行 %1（%2 个点）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>send &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>发送“%1”</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>refresh position and speed</source>
-        <translation type="unfinished"></translation>
+        <translation>刷新位置和速度</translation>
     </message>
 </context>
 <context>
@@ -2240,62 +2240,62 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../widgets/position_view_2d.py" line="+85"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
-        <translation type="unfinished"></translation>
+        <translation>俯视平台：轨迹、当前位置（圆点；估算时为空心）、目标（+）、行程限位（虚线）</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>XY (from above)</source>
-        <translation type="unfinished"></translation>
+        <translation>XY（俯视）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>X (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>X (mm)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Y (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Y (mm)</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>X, Y and Z against time; dashed lines: target</source>
-        <translation type="unfinished"></translation>
+        <translation>X、Y、Z 随时间的变化；虚线：目标</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Position against time</source>
-        <translation type="unfinished"></translation>
+        <translation>位置随时间的变化</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>time (s, 0 = latest sample)</source>
-        <translation type="unfinished"></translation>
+        <translation>时间（s，0 = 最新采样）</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>position (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>位置 (mm)</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Clear trail</source>
-        <translation type="unfinished"></translation>
+        <translation>清除轨迹</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Forget the path so far (the current position stays)</source>
-        <translation type="unfinished"></translation>
+        <translation>清除目前为止的路径（保留当前位置）</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reset view</source>
-        <translation type="unfinished"></translation>
+        <translation>重置视图</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Zoom both plots to fit the data again</source>
-        <translation type="unfinished"></translation>
+        <translation>重新缩放两幅图以适应数据</translation>
     </message>
 </context>
 <context>
@@ -2303,84 +2303,86 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     <message>
         <location filename="../../widgets/_gl_scene.py" line="+43"/>
         <source>Top</source>
-        <translation type="unfinished"></translation>
+        <translation>俯视</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from above (X right, Y up)</source>
-        <translation type="unfinished"></translation>
+        <translation>从上方观察（X 向右，Y 向上）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Front</source>
-        <translation type="unfinished"></translation>
+        <translation>前视</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from the front (X right, Z up)</source>
-        <translation type="unfinished"></translation>
+        <translation>从前方观察（X 向右，Z 向上）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Side</source>
-        <translation type="unfinished"></translation>
+        <translation>侧视</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from the side (Y right, Z up)</source>
-        <translation type="unfinished"></translation>
+        <translation>从侧面观察（Y 向右，Z 向上）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Iso</source>
-        <translation type="unfinished"></translation>
+        <translation>等轴</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>View from above at an angle</source>
-        <translation type="unfinished"></translation>
+        <translation>从斜上方观察</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Fit</source>
-        <translation type="unfinished"></translation>
+        <translation>适应</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Zoom to the trail, the target and the workspace</source>
-        <translation type="unfinished"></translation>
+        <translation>缩放以显示轨迹、目标和工作区</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>跟随</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Keep the camera on the current position</source>
-        <translation type="unfinished"></translation>
+        <translation>使视角始终对准当前位置</translation>
     </message>
     <message>
         <location filename="../../widgets/position_view_3d.py" line="+75"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
-        <translation type="unfinished"></translation>
+        <translation>需要在有显示器的环境中提供 OpenGL 2.1 或更高版本（例如 Mesa）；请参阅 README。</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>3D view unavailable: OpenGL could not be initialised.
 (%1)
 The 2D view shows the same positions.</source>
-        <translation type="unfinished"></translation>
+        <translation>3D 视图不可用：无法初始化 OpenGL。
+（%1）
+2D 视图显示相同的位置。</translation>
     </message>
     <message>
         <location line="+164"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
-        <translation type="unfinished"></translation>
+        <translation>拖动旋转，滚轮缩放，中键拖动平移</translation>
     </message>
     <message>
         <location line="+364"/>
         <source>grid %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>网格 %1 mm</translation>
     </message>
 </context>
 <context>
@@ -2698,257 +2700,257 @@ The 2D view shows the same positions.</source>
     <message>
         <location filename="../../app/traffic_console.py" line="+72"/>
         <source>text</source>
-        <translation type="unfinished">文本</translation>
+        <translation>文本</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>hex</source>
-        <translation type="unfinished">十六进制</translation>
+        <translation>十六进制</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>mixed</source>
-        <translation type="unfinished"></translation>
+        <translation>混合</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>relative</source>
-        <translation type="unfinished"></translation>
+        <translation>相对</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>absolute</source>
-        <translation type="unfinished"></translation>
+        <translation>绝对</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>delta</source>
-        <translation type="unfinished"></translation>
+        <translation>间隔</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV (*.csv)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Text (*.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>文本 (*.txt)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>所有文件 (*)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Export traffic</source>
-        <translation type="unfinished"></translation>
+        <translation>导出通信记录</translation>
     </message>
     <message>
         <location line="+89"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
-        <translation type="unfinished"></translation>
+        <translation>字节显示方式：文本（\r \n \xNN 转义）、十六进制（47 45 54）或混合（文本，其余字节显示为 &lt;0A&gt;）</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Times: seconds since the session start, wall-clock time, or the gap since the line above</source>
-        <translation type="unfinished"></translation>
+        <translation>时间显示方式：自会话开始起的秒数、时钟时间，或与上一行的间隔</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>时间</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Show the time column</source>
-        <translation type="unfinished"></translation>
+        <translation>显示时间列</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>TX</source>
-        <translation type="unfinished"></translation>
+        <translation>TX</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Show what was sent to the device</source>
-        <translation type="unfinished"></translation>
+        <translation>显示发送到设备的内容</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>RX</source>
-        <translation type="unfinished"></translation>
+        <translation>RX</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Show what the device sent</source>
-        <translation type="unfinished"></translation>
+        <translation>显示设备发送的内容</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Kinds</source>
-        <translation type="unfinished"></translation>
+        <translation>类型</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Which kinds of lines to show</source>
-        <translation type="unfinished"></translation>
+        <translation>要显示哪些类型的行</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Poll</source>
-        <translation type="unfinished"></translation>
+        <translation>轮询</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Show the idle position queries and their replies (hidden by default; counted below)</source>
-        <translation type="unfinished"></translation>
+        <translation>显示空闲时的位置查询及其应答（默认隐藏；数量见下方统计）</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>filter (regex)</source>
-        <translation type="unfinished"></translation>
+        <translation>过滤（正则表达式）</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Show only lines matching this regular expression (case-insensitive) in their direction, kind, hex, text or meaning, e.g. error|FA00</source>
-        <translation type="unfinished"></translation>
+        <translation>仅显示方向、类型、十六进制、文本或含义与此正则表达式匹配（不区分大小写）的行，例如 error|FA00</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>paused</source>
-        <translation type="unfinished"></translation>
+        <translation>已暂停</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>New lines do not scroll the view: scroll to the bottom to follow</source>
-        <translation type="unfinished"></translation>
+        <translation>新行不会滚动视图：滚动到底部即可继续跟随</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>search (regex)</source>
-        <translation type="unfinished"></translation>
+        <translation>搜索（正则表达式）</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Highlight matching lines; Enter or F3: next, Shift+F3: previous</source>
-        <translation type="unfinished"></translation>
+        <translation>高亮匹配的行；Enter 或 F3：下一个，Shift+F3：上一个</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Previous match (Shift+F3)</source>
-        <translation type="unfinished"></translation>
+        <translation>上一个匹配项（Shift+F3）</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Next match (F3)</source>
-        <translation type="unfinished"></translation>
+        <translation>下一个匹配项（F3）</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
-        <translation type="unfinished"></translation>
+        <translation>会话中的行数、已显示、已隐藏的轮询、错误、匹配项</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Export…</source>
-        <translation type="unfinished">导出…</translation>
+        <translation>导出…</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save the lines shown (filtered) as text or CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>将显示的行（经过过滤）保存为文本或 CSV</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>清除</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Forget the lines (the session log keeps them)</source>
-        <translation type="unfinished"></translation>
+        <translation>清除这些行（会话日志中仍保留）</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
-        <translation type="unfinished"></translation>
+        <translation>TX（蓝色）：发送到设备；RX（绿色）：已接收；灰色：说明及设备自身输出的文本；红色：错误。双击某行可跳转到其请求、应答或首次出现处。</translation>
     </message>
     <message>
         <location line="+144"/>
         <source>%1 lines reached the console&apos;s limit and were cleared; the session log keeps them</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 行因达到控制台上限而被清除；会话日志中仍保留这些行</translation>
     </message>
     <message>
         <location line="+260"/>
         <source>%1 lines</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 行</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 shown</source>
-        <translation type="unfinished"></translation>
+        <translation>显示 %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 poll hidden</source>
-        <translation type="unfinished"></translation>
+        <translation>隐藏轮询 %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 errors</source>
-        <translation type="unfinished"></translation>
+        <translation>错误 %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 matches</source>
-        <translation type="unfinished"></translation>
+        <translation>匹配 %1</translation>
     </message>
     <message>
         <location line="+85"/>
         <source>export failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>导出失败：%1</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>exported %1 lines to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>已将 %1 行导出到 %2</translation>
     </message>
     <message>
         <location filename="../../app/traffic_table.py" line="+44"/>
         <source>motion</source>
-        <translation type="unfinished"></translation>
+        <translation>运动</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>query</source>
-        <translation type="unfinished"></translation>
+        <translation>查询</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>poll</source>
-        <translation type="unfinished"></translation>
+        <translation>轮询</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>setting</source>
-        <translation type="unfinished"></translation>
+        <translation>设置</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>error</source>
-        <translation type="unfinished">错误</translation>
+        <translation>错误</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>debug</source>
-        <translation type="unfinished"></translation>
+        <translation>调试</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>note</source>
-        <translation type="unfinished"></translation>
+        <translation>说明</translation>
     </message>
 </context>
 <context>
@@ -3584,52 +3586,52 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../app/traffic_table.py" line="-19"/>
         <source>Line</source>
-        <translation type="unfinished"></translation>
+        <translation>行号</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Time</source>
-        <translation type="unfinished"></translation>
+        <translation>时间</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dir</source>
-        <translation type="unfinished"></translation>
+        <translation>方向</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>字节</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Meaning</source>
-        <translation type="unfinished"></translation>
+        <translation>含义</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Reply</source>
-        <translation type="unfinished"></translation>
+        <translation>应答</translation>
     </message>
     <message>
         <location line="+249"/>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>第 %1 行：%2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>hex: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>十六进制：%1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>text: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>文本：%1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 (double-click to go there)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1（双击跳转到该处）</translation>
     </message>
 </context>
 <context>
@@ -3637,57 +3639,57 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location filename="../../widgets/traffic_timeline.py" line="+38"/>
         <source>TX</source>
-        <translation type="unfinished"></translation>
+        <translation>TX</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>RX</source>
-        <translation type="unfinished"></translation>
+        <translation>RX</translation>
     </message>
     <message>
         <location line="+206"/>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>跟随</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Keep the latest %1 s in view; zooming or panning stops it</source>
-        <translation type="unfinished"></translation>
+        <translation>始终显示最近 %1 s；缩放或平移会停止跟随</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>Bytes per second each way, in one-second bins: TX (blue) sent to the device, RX (green) received. Click a bin to show its first line in the console.</source>
-        <translation type="unfinished"></translation>
+        <translation>每个方向每秒的字节数，按一秒分段统计：TX（蓝色）为发送到设备的数据，RX（绿色）为接收的数据。点击某一分段可在控制台中显示其第一行。</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>rate</source>
-        <translation type="unfinished"></translation>
+        <translation>速率</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Bytes per second</source>
-        <translation type="unfinished"></translation>
+        <translation>每秒字节数</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Command latency</source>
-        <translation type="unfinished"></translation>
+        <translation>命令延迟</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Time from a request to its reply, in ms: one point per answered request (drawn as dots when few are in view). Click a point to show its line in the console.</source>
-        <translation type="unfinished"></translation>
+        <translation>从请求到应答的时间，单位 ms：每个已应答的请求对应一个点（视图中点较少时绘制为圆点）。点击某个点可在控制台中显示其对应行。</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>latency</source>
-        <translation type="unfinished"></translation>
+        <translation>延迟</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>time since the session started</source>
-        <translation type="unfinished"></translation>
+        <translation>自会话开始起的时间</translation>
     </message>
 </context>
 <context>
