@@ -80,6 +80,9 @@ def _frames(view: object, size: tuple[int, int], buffer: object, rows: np.ndarra
         buffer.append(last[0] + 0.01 * (k + 1), last[1] + 0.01 * (k + 1), last[2], last[3])
         start = time.perf_counter()
         view.refresh()
+        render = getattr(view, "render_scene", None)
+        if render is not None:  # the 3D view renders in a turn of its own, then paints a copy
+            render()
         view.repaint()
         elapsed = (time.perf_counter() - start) * 1000
         if getattr(view, "_stale", False):
