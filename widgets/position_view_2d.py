@@ -21,6 +21,7 @@ log = logging.getLogger(__name__)
 
 GRID_COLOUR = (60, 60, 60)
 TIME_WINDOWS_S = (10.0, 30.0, 60.0)  # the time plot's span grows in these steps
+TIME_AXIS_WIDTH_PX = 56  # the time plot's left axis: labels and title, "-1000.0" fits
 TIME_PLOT_DELAY_MS = REFRESH_INTERVAL_MS // 3  # the timer draws the time plot this much later
 FOLLOW_PADDING = 0.25  # room added on each side when a view is widened
 MIN_MARGIN_MM = 1.0
@@ -119,6 +120,9 @@ class PositionView2D(BufferedViewMixin, QWidget):
         tp.setTitle(self.tr("Position against time"))
         tp.setLabel("bottom", self.tr("time (s, 0 = latest sample)"))
         tp.setLabel("left", self.tr("position (mm)"))
+        # Fixed axis room: a tick label of another width (the window stepping to 30 s, a range
+        # growing past 10 mm) otherwise re-lays the plot out, and the window's docks with it.
+        tp.getAxis("left").setWidth(TIME_AXIS_WIDTH_PX)
         tp.addItem(_grid(), ignoreBounds=True)
         tp.setClipToView(True)
         tp.setDownsampling(auto=True, mode="peak")

@@ -57,12 +57,16 @@ def test_estimated_and_stale_are_visible(qtbot) -> None:
     readout.set_status("estimated")
     assert not readout.status_label.isHidden()
     assert "estimated" in readout.status_label.text()
-    assert "italic" in readout.labels["x"].styleSheet()
+    assert readout.value_style("x") == ("#1565c0", True)  # blue italic
     readout.set_status("stale")
     assert "last known" in readout.status_label.text()
     assert readout.text("x") == "1.00 mm"  # kept, but greyed
-    assert "#9e9e9e" in readout.labels["x"].styleSheet()
+    assert readout.value_style("x") == ("#9e9e9e", False)
     readout.set_status("live")
-    assert readout.status_label.isHidden() and readout.labels["x"].styleSheet() == ""
+    assert readout.status_label.isHidden()
+    assert readout.value_style("x") == (
+        readout.palette().color(readout.palette().ColorRole.WindowText).name(),
+        False,
+    )
     with pytest.raises(ValueError):
         readout.set_status("bold")
