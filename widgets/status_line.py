@@ -46,7 +46,8 @@ _STATES = {  # text and tooltip translated at use, in the StatusLine context
     ),
 }
 INFO, WARNING, FAILURE = "info", "warning", "error"
-_MESSAGE_COLOURS = {INFO: "#212121", WARNING: "#8a4b00", FAILURE: "#c62828"}
+# An information message in the theme's own text colour (dark #212121 was unreadable on dark).
+_MESSAGE_COLOURS = {INFO: "palette(window-text)", WARNING: "#8a4b00", FAILURE: "#c62828"}
 
 
 class StatusLine(QWidget):
