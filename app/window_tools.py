@@ -62,6 +62,7 @@ class WindowTools(QObject):
         window.views.add(self.macros.build)
         self.port: tuple[str, str] | None = None  # (protocol, port) connected
         self.theme_menu: QMenu | None = None
+        self._following_theme = False
         lines = window.connection_bar.control_lines
         lines.line_toggled.connect(self._on_line_toggled)
         lines.break_requested.connect(self._on_break_requested)
@@ -115,7 +116,9 @@ class WindowTools(QObject):
         app = QApplication.instance()
         if isinstance(app, QApplication):
             colors = apply_theme(app, self.prefs.theme)
-            theme_notifier().changed.connect(self._recolor)
+            if not self._following_theme:  # once: the system may change its scheme later
+                theme_notifier().changed.connect(self._recolor)
+                self._following_theme = True
             self._recolor(colors)
 
     def _recolor(self, colors: Any) -> None:
