@@ -9,7 +9,6 @@ are shown as you type and OK stays disabled while there are any; OK and Apply em
 from __future__ import annotations
 
 import dataclasses
-import re
 from collections.abc import Callable
 from typing import Any
 
@@ -37,9 +36,10 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from widgets._i18n import fill
+
 CONSOLE_BYTES_PER_LINE = 33  # the console's memory per line (drivers/traffic_index.py)
 PORTABLE = QKeySequence.SequenceFormat.PortableText
-_PLACEHOLDER = re.compile(r"%(\d)")
 INVALID_STYLE = "border: 1px solid #c62828;"
 # field -> objectName of its control
 OBJECT_NAMES = {
@@ -62,16 +62,6 @@ OBJECT_NAMES = {
     "theme": "theme",
     "language": "language",
 }
-
-
-def _fill(template: str, *values: object) -> str:
-    """`template` with Qt's %1, %2 ... replaced by `values` in one pass."""
-
-    def value(match: re.Match[str]) -> str:
-        number = int(match.group(1))
-        return str(values[number - 1]) if 1 <= number <= len(values) else match.group(0)
-
-    return _PLACEHOLDER.sub(value, template)
 
 
 class SettingsDialog(QDialog):
@@ -228,7 +218,7 @@ class SettingsDialog(QDialog):
         moving = self._double(
             "poll_moving_hz",
             self.tr(" Hz"),
-            _fill(
+            fill(
                 self.tr(
                     "How often the position is read while a move is being confirmed, in hertz "
                     "(%1 to %2 Hz). Faster confirms the end of each jog step sooner; above 20 Hz "
@@ -243,7 +233,7 @@ class SettingsDialog(QDialog):
         idle = self._double(
             "poll_idle_s",
             self.tr(" s"),
-            _fill(
+            fill(
                 self.tr(
                     "Seconds between position reads while nothing moves (%1 to %2 s). This is also "
                     "how a device that restarted or stopped answering is noticed."
@@ -264,7 +254,7 @@ class SettingsDialog(QDialog):
             self.tr(" lines"),
             self.tr("Keep every line"),
             spec.low,
-            _fill(
+            fill(
                 self.tr(
                     "The most lines the console keeps: 0 keeps every line (a spool file on disk "
                     "and about 33 bytes a line in memory), else %1 to %2 lines. The session log "
@@ -292,7 +282,7 @@ class SettingsDialog(QDialog):
         folder = QLineEdit()
         folder.setClearButtonEnabled(True)
         shown = self._default_log_folder or self.tr("the app-data folder")
-        folder.setPlaceholderText(_fill(self.tr("Default: %1"), shown))
+        folder.setPlaceholderText(fill(self.tr("Default: %1"), shown))
         self._register(
             "log_folder",
             folder,
@@ -322,7 +312,7 @@ class SettingsDialog(QDialog):
             self.tr(" decimals"),
             self.tr("As the device resolves"),
             1,
-            _fill(
+            fill(
                 self.tr(
                     "Decimals of the positions shown (%1 to %2), or as many as the device "
                     "resolves (0.01 mm: 2)"
@@ -461,7 +451,7 @@ class SettingsDialog(QDialog):
                 low, high = self._range(name)
                 message = self.tr("%1: %2 is not a number from %3 to %4 %5")
                 shown = (self._label(name), widget.cleanText(), f"{low:g}", f"{high:g}")
-                typing.append((name, _fill(message, *shown, self._unit(name)).rstrip()))
+                typing.append((name, fill(message, *shown, self._unit(name)).rstrip()))
         return typing + self.preferences().field_problems()
 
     def restore_defaults(self) -> None:
@@ -488,7 +478,7 @@ class SettingsDialog(QDialog):
             text = self.tr("Memory grows with the session: about 33 MB a million lines.")
         else:
             megabytes = lines * CONSOLE_BYTES_PER_LINE / 1e6
-            text = _fill(self.tr("About %1 MB of memory at most."), f"{megabytes:,.1f}")
+            text = fill(self.tr("About %1 MB of memory at most."), f"{megabytes:,.1f}")
         self.memory_label.setText(text)
 
     # -- actions -------------------------------------------------------------------------------
