@@ -14,6 +14,7 @@ from pathlib import Path
 
 from PySide6.QtCore import QObject, QTimer, Signal, Slot
 
+from app.messages import localized
 from drivers.bridge import Bridge
 from drivers.errors import MotionError
 from drivers.traffic import Traffic, TrafficLogWriter
@@ -75,11 +76,11 @@ class BridgeSession(QObject):
         try:
             self.bridge.serve_forever()
         except MotionError as exc:
-            error = shown = str(exc)
+            error, shown = str(exc), localized(exc)  # the log keeps English
         except Exception as exc:  # the thread's last word must reach the window
             log.exception("the bridge failed")
             error = f"the bridge failed: {exc}"  # the log's words stay English
-            shown = fill(self.tr("the bridge failed: %1"), exc)
+            shown = fill(self.tr("the bridge failed: %1"), localized(exc))
         finally:
             self.bridge.close()
         self._done.emit(error, shown)

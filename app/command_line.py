@@ -12,6 +12,7 @@ from app.cli_params import check_param_offline, run_param
 from drivers import commands as cmd
 from drivers.errors import BadInput
 from drivers.events import PositionReport
+from drivers.messages import Message
 from drivers.motion import Motion
 from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
@@ -48,11 +49,17 @@ def check_arity(command: str, args: list[str]) -> None:
     """Refuse a command with the wrong number of arguments (UsageError)."""
     low, high = _ARITY[command]
     if not low <= len(args) <= high:
-        raise UsageError(f"usage: {_USAGE.get(command, command)} (got {len(args)} arguments)")
+        raise UsageError(
+            Message(
+                "usage: {usage} (got {count} arguments)",
+                usage=_USAGE.get(command, command),
+                count=len(args),
+            )
+        )
     if command == "param" and _PARAM_ARITY.get(args[0]) != len(args) - 1:
-        raise UsageError(f"usage: {_USAGE['param']}")
+        raise UsageError(Message("usage: {usage}", usage=_USAGE["param"]))
     if command == "macro" and _MACRO_ARITY.get(args[0]) != len(args) - 1:
-        raise UsageError(f"usage: {_USAGE['macro']}")
+        raise UsageError(Message("usage: {usage}", usage=_USAGE["macro"]))
 
 
 def numbers(args: list[str], names: Sequence[str]) -> list[float]:
@@ -125,10 +132,23 @@ def validate_offline(
     caps = protocol.capabilities
     if command in ("move", "jog") and len(args) < min(2, len(caps.axes)):
         axes = " ".join(a.upper() for a in caps.axes)
-        raise UsageError(f"usage: {command} {axes} ({protocol.name} has {len(caps.axes)} axes)")
+        raise UsageError(
+            Message(
+                "usage: {command} {axes} ({protocol} has {count} axes)",
+                command=command,
+                axes=axes,
+                protocol=protocol.name,
+                count=len(caps.axes),
+            )
+        )
     if kind not in caps.move_kinds and command == "jog":
         raise BadInput(
-            f"--kind {kind} refused: {protocol.name} moves are {', '.join(caps.move_kinds)}"
+            Message(
+                "--kind {kind} refused: {protocol} moves are {kinds}",
+                kind=kind,
+                protocol=protocol.name,
+                kinds=", ".join(caps.move_kinds),
+            )
         )
     if command == "move":
         x, y, z = numbers(args, ("x", "y", "z"))
@@ -136,7 +156,7 @@ def validate_offline(
         protocol.encode(cmd.MoveTo(x, y, z) if caps.absolute_moves else cmd.MoveBy(x, y, z))
         check_resolution((x, y, z), ("x", "y", "z"), caps.resolution)
         if travel is not None:
-            travel.apply((x, y, z), f"move to ({x:g}, {y:g}, {z:g}) mm")
+            travel.apply((x, y, z), Message("move to ({x:g}, {y:g}, {z:g}) mm", x=x, y=y, z=z))
     elif command == "jog":
         dx, dy, dz = numbers(args, ("dx", "dy", "dz"))
         # A device with absolute moves only is sent the target: checked here from the origin.
@@ -150,13 +170,20 @@ def validate_offline(
         if caps.speed_range is not None and not caps.speed_range[0] <= speed <= caps.speed_range[1]:
             low, high = caps.speed_range
             raise BadInput(
-                f"speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s"
+                Message(
+                    "speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s",
+                    speed=speed,
+                    low=low,
+                    high=high,
+                )
             )
         for part in protocol.expand(cmd.SetSpeed(speed)):
             try:
                 protocol.encode(part)
             except BadInput as exc:
-                raise BadInput(f"speed {speed:g} mm/s refused ({exc})") from None
+                raise BadInput(
+                    Message("speed {speed:g} mm/s refused ({error})", speed=speed, error=exc)
+                ) from None
     elif command == "raw":
         protocol.encode(cmd.Raw(args[0].encode("utf-8")))
     elif command == "param":

@@ -12,6 +12,7 @@ from PySide6.QtWidgets import QDockWidget, QWidget
 
 from app import jobs
 from app.dock_layout import DEVICE_DOCKS
+from app.messages import localized
 from app.settings import write_protocol_settings
 from app.worker import DeviceInfo
 from drivers.capabilities import Capabilities
@@ -173,7 +174,7 @@ class DeviceDocks(QObject):
         try:
             points = read_program(path)
         except BadInput as exc:
-            self.program.show_error(str(exc))
+            self.program.show_error(localized(exc))
             return
         self.points = points
         self.program_name = Path(path).name
@@ -187,7 +188,7 @@ class DeviceDocks(QObject):
         try:
             write_program(path, self.points)
         except BadInput as exc:
-            self.program.show_error(str(exc))
+            self.program.show_error(localized(exc))
             return
         self.window.say(fill(self.tr("program saved to %1 (%2 points)"), path, len(self.points)))
 

@@ -226,4 +226,6 @@ class MacroJob(Job):
 
     def describe(self) -> str:
         """E.g. `macro probe (4 steps)`."""
-        return self.macro.describe()
+        from app.messages import localized
+
+        return localized(self.macro.describe())

@@ -28,7 +28,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.traffic_console import RawConsole
+from app.messages import localized
+from app.traffic_console import RawConsole, localized_index
 from app.traffic_feed import TimelineFeed
 from drivers.errors import MotionError
 from drivers.log_reader import LogRecord, open_any_log
@@ -149,14 +150,14 @@ class LogViewer(QMainWindow):
                 (chosen, "") if chosen is not None else (found or (self._default_protocol, ""))
             )
             protocol = create_protocol(name, variant or None) if name and name != RAW else None
-            index = TrafficIndex(protocol)
+            index = localized_index(protocol)
             while batch:
                 index.add_records(batch)
                 batch = list(islice(records, BATCH))
         except (MotionError, LookupError, OSError) as exc:
             if index is not None:
                 index.close()
-            self._loaded.emit(str(exc))
+            self._loaded.emit(localized(exc))
             return
         self._loaded.emit((path, kind, name or RAW, variant, index))
 

@@ -11,6 +11,7 @@ from PySide6.QtWidgets import QDockWidget, QFileDialog, QMainWindow
 
 from app import jobs, macros
 from app.dock_layout import empty_dock
+from app.messages import localized
 from drivers.errors import BadInput
 from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
@@ -105,7 +106,7 @@ class MacroDock(QObject):
         try:
             macros.check_macro(macro, self.protocol)
         except BadInput as exc:
-            self.window.say(fill(self.tr("%1; nothing sent"), exc))
+            self.window.say(fill(self.tr("%1; nothing sent"), localized(exc)))
             return False
         return self.window.submit_job(jobs.MacroJob(macro))
 
@@ -123,7 +124,7 @@ class MacroDock(QObject):
                 return fill(self.tr("a macro named %1 exists already"), repr(stripped))
             macros.check_macro(macros.Macro(stripped, self.protocol.name, steps), self.protocol)
         except BadInput as exc:
-            return str(exc)
+            return localized(exc)
         return ""
 
     def new(self) -> MacroEditor | None:
@@ -189,7 +190,7 @@ class MacroDock(QObject):
                 too_many = self.tr("%1 macros; at most %2")
                 raise macros.BadMacro(fill(too_many, len(merged), macros.MAX_MACROS))
         except BadInput as exc:
-            self.window.say(fill(self.tr("macros not imported: %1"), exc))
+            self.window.say(fill(self.tr("macros not imported: %1"), localized(exc)))
             return False
         self.macros = merged
         self._save()

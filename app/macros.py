@@ -14,6 +14,7 @@ from app.cli_devices import DEVICE_COMMANDS
 from app.command_line import UsageError, run_command, validate_offline
 from drivers.errors import BadFile, BadInput, MotionError
 from drivers.files import MACRO_MAX_BYTES, read_text
+from drivers.messages import Message, message_of
 from drivers.motion import Motion
 from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
@@ -60,7 +61,9 @@ class Macro:
     def describe(self) -> str:
         """E.g. `macro probe (4 steps)`."""
         count = len(self.steps)
-        return f"macro {self.name} ({count} step{'s' if count != 1 else ''})"
+        if count == 1:
+            return Message("macro {name} ({count} step)", name=self.name, count=count)
+        return Message("macro {name} ({count} steps)", name=self.name, count=count)
 
 
 def split_step(text: str) -> tuple[str, list[str]]:
@@ -76,11 +79,17 @@ def check_name(name: str) -> str:
     """The name, stripped; BadMacro if it is empty, too long or holds control characters."""
     stripped = name.strip()
     if not stripped:
-        raise BadMacro("a macro needs a name")
+        raise BadMacro(Message("a macro needs a name"))
     if len(stripped) > MAX_NAME:
-        raise BadMacro(f"macro name {stripped[:MAX_NAME]!r}… is over {MAX_NAME} characters")
+        raise BadMacro(
+            Message(
+                "macro name {name!r}… is over {limit} characters",
+                name=stripped[:MAX_NAME],
+                limit=MAX_NAME,
+            )
+        )
     if any(not ch.isprintable() for ch in stripped):
-        raise BadMacro(f"macro name {stripped!r} holds a control character")
+        raise BadMacro(Message("macro name {name!r} holds a control character", name=stripped))
     return stripped
 
 
@@ -88,48 +97,82 @@ def check_macro(macro: Macro, protocol: Protocol) -> None:
     """Refuse a macro any step of which the device would refuse (BadMacro, nothing sent)."""
     name = check_name(macro.name)
     if macro.protocol != protocol.name:
-        raise BadMacro(f"macro {name} is for {macro.protocol}, not {protocol.name}")
+        raise BadMacro(
+            Message(
+                "macro {name} is for {protocol}, not {device}",
+                name=name,
+                protocol=macro.protocol,
+                device=protocol.name,
+            )
+        )
     if not macro.steps:
-        raise BadMacro(f"macro {name} has no steps")
+        raise BadMacro(Message("macro {name} has no steps", name=name))
     if len(macro.steps) > MAX_STEPS:
-        raise BadMacro(f"macro {name} has {len(macro.steps)} steps; at most {MAX_STEPS}")
+        raise BadMacro(
+            Message(
+                "macro {name} has {count} steps; at most {limit}",
+                name=name,
+                count=len(macro.steps),
+                limit=MAX_STEPS,
+            )
+        )
     for number, step in enumerate(macro.steps, 1):
         try:
             check_step(step, protocol)
         except BadInput as exc:
-            raise BadMacro(f"macro {name}, step {number} ({step.strip()[:60]!r}): {exc}") from None
+            raise BadMacro(
+                Message(
+                    "macro {name}, step {number} ({step!r}): {error}",
+                    name=name,
+                    number=number,
+                    step=step.strip()[:60],
+                    error=exc,
+                )
+            ) from None
 
 
 def check_step(step: str, protocol: Protocol) -> None:
     """Refuse one step as motionctl would refuse the same command (BadInput)."""
     if len(step) > MAX_STEP_CHARS:
-        raise BadMacro(f"the step is over {MAX_STEP_CHARS} characters")
+        raise BadMacro(Message("the step is over {limit} characters", limit=MAX_STEP_CHARS))
     if any(ch in step for ch in "\r\n\x00"):
-        raise BadMacro("a step is one line (use one step per line)")
+        raise BadMacro(Message("a step is one line (use one step per line)"))
     command, args = split_step(step)
     if not command:
-        raise BadMacro("the step is empty")
+        raise BadMacro(Message("the step is empty"))
     if command not in STEP_COMMANDS:
-        raise BadMacro(f"unknown command {command!r}; a step is one of: {', '.join(STEP_COMMANDS)}")
+        raise BadMacro(
+            Message(
+                "unknown command {command!r}; a step is one of: {commands}",
+                command=command,
+                commands=", ".join(STEP_COMMANDS),
+            )
+        )
     if command == "wait":
         wait_seconds(args)
         return
     owner = DEVICE_COMMANDS.get(command, (protocol.name,))[0]
     if owner != protocol.name:
-        raise BadMacro(f"{command} is a {owner} command")
+        raise BadMacro(Message("{command} is a {owner} command", command=command, owner=owner))
     try:
         validate_offline(command, args, protocol, None, "linear")
     except UsageError as exc:
-        raise BadMacro(str(exc)) from None
+        raise BadMacro(message_of(exc) or str(exc)) from None
 
 
 def wait_seconds(args: list[str]) -> float:
     """The seconds of `wait S`: a number from 0 to MAX_WAIT_S."""
     if len(args) != 1:
-        raise BadMacro("usage: wait SECONDS")
+        raise BadMacro(Message("usage: wait SECONDS"))
     seconds = parse_number(args[0], "wait")
     if not 0 <= seconds <= MAX_WAIT_S:
-        raise BadMacro(f"wait {seconds:g} s refused: from 0 to {MAX_WAIT_S:g} s")
+        raise BadMacro(
+            Message(
+                "wait {seconds:g} s refused: from 0 to {limit:g} s",
+                seconds=seconds,
+                limit=MAX_WAIT_S,
+            )
+        )
     return seconds
 
 
@@ -143,11 +186,19 @@ def run_macro(
     results: list[dict[str, Any]] = []
     for number, step in enumerate(macro.steps, 1):
         if motion.stop_requested.is_set():
-            raise MacroStopped(f"{macro.name} stopped before step {number} ({step})")
+            raise MacroStopped(
+                Message(
+                    "{name} stopped before step {number} ({step})",
+                    name=macro.name,
+                    number=number,
+                    step=step,
+                )
+            )
         on_step(number, step)
         command, args = split_step(step)
         if command == "wait":
-            _wait(motion, wait_seconds(args), f"{macro.name} stopped during step {number}")
+            stopped = Message("{name} stopped during step {number}", name=macro.name, number=number)
+            _wait(motion, wait_seconds(args), stopped)
             results.append({"waited": wait_seconds(args)})
         else:
             results.append(run_command(motion, command, args))
@@ -181,21 +232,48 @@ def to_data(macros: Iterable[Macro]) -> dict[str, Any]:
 def from_data(data: object, where: str) -> list[Macro]:
     """Macros from their JSON-able form; BadMacro naming `where` and the fault if malformed."""
     if not isinstance(data, dict) or data.get("format") != FORMAT:
-        raise BadMacro(f'{where}: not a Motion Panel macro file (no "format": "{FORMAT}")')
+        raise BadMacro(
+            Message(
+                '{where}: not a Motion Panel macro file (no "format": "{format}")',
+                where=where,
+                format=FORMAT,
+            )
+        )
     if data.get("version") != VERSION:
-        raise BadMacro(f"{where}: macro file version {data.get('version')!r}; this reads {VERSION}")
+        raise BadMacro(
+            Message(
+                "{where}: macro file version {version!r}; this reads {reads}",
+                where=where,
+                version=data.get("version"),
+                reads=VERSION,
+            )
+        )
     entries = data.get("macros")
     if not isinstance(entries, list):
-        raise BadMacro(f'{where}: "macros" is not a list')
+        raise BadMacro(Message('{where}: "macros" is not a list', where=where))
     if len(entries) > MAX_MACROS:
-        raise BadMacro(f"{where}: {len(entries)} macros; at most {MAX_MACROS}")
+        raise BadMacro(
+            Message(
+                "{where}: {count} macros; at most {limit}",
+                where=where,
+                count=len(entries),
+                limit=MAX_MACROS,
+            )
+        )
     macros: list[Macro] = []
     seen: set[tuple[str, str]] = set()
     known = set(protocol_names())
     for number, entry in enumerate(entries, 1):
-        macro = _entry(entry, f"{where}: macro {number}", known)
+        macro = _entry(entry, Message("{where}: macro {number}", where=where, number=number), known)
         if (macro.protocol, macro.name) in seen:
-            raise BadMacro(f"{where}: two {macro.protocol} macros are named {macro.name!r}")
+            raise BadMacro(
+                Message(
+                    "{where}: two {protocol} macros are named {name!r}",
+                    where=where,
+                    protocol=macro.protocol,
+                    name=macro.name,
+                )
+            )
         seen.add((macro.protocol, macro.name))
         macros.append(macro)
     return macros
@@ -203,39 +281,57 @@ def from_data(data: object, where: str) -> list[Macro]:
 
 def _entry(entry: object, where: str, known: set[str]) -> Macro:
     if not isinstance(entry, dict):
-        raise BadMacro(f"{where} is not an object with name, protocol and steps")
+        raise BadMacro(
+            Message("{where} is not an object with name, protocol and steps", where=where)
+        )
     name, protocol, steps = entry.get("name"), entry.get("protocol"), entry.get("steps")
     if not isinstance(name, str):
-        raise BadMacro(f"{where} has no name")
+        raise BadMacro(Message("{where} has no name", where=where))
     if protocol not in known:
-        raise BadMacro(f"{where} ({name!r}): unknown protocol {protocol!r}")
+        raise BadMacro(
+            Message(
+                "{where} ({name!r}): unknown protocol {protocol!r}",
+                where=where,
+                name=name,
+                protocol=protocol,
+            )
+        )
     if not isinstance(steps, list) or not all(isinstance(s, str) for s in steps):
-        raise BadMacro(f'{where} ({name!r}): "steps" is not a list of strings')
+        raise BadMacro(
+            Message('{where} ({name!r}): "steps" is not a list of strings', where=where, name=name)
+        )
     if len(steps) > MAX_STEPS or any(len(s) > MAX_STEP_CHARS for s in steps):
-        raise BadMacro(f"{where} ({name!r}): over {MAX_STEPS} steps or a step too long")
+        raise BadMacro(
+            Message(
+                "{where} ({name!r}): over {limit} steps or a step too long",
+                where=where,
+                name=name,
+                limit=MAX_STEPS,
+            )
+        )
     try:
         return Macro(check_name(name), str(protocol), tuple(s.strip() for s in steps))
     except BadMacro as exc:
-        raise BadMacro(f"{where}: {exc}") from None
+        raise BadMacro(Message("{where}: {error}", where=where, error=exc)) from None
 
 
 def read_macro_file(path: str | Path) -> list[Macro]:
     """The macros in a file (JSON, at most MACRO_MAX_BYTES); BadMacroFile if it is not one.
     Steps are checked against their protocol when run or imported, not here."""
-    text = read_text(path, MACRO_MAX_BYTES, "macro file", BadMacroFile)
+    text = read_text(path, MACRO_MAX_BYTES, Message("macro file"), BadMacroFile)
     try:
         data = json.loads(text, parse_constant=_no_constant)
     except (ValueError, RecursionError) as exc:
-        raise BadMacroFile(f"{path}: not JSON ({exc})") from None
+        raise BadMacroFile(Message("{path}: not JSON ({error})", path=path, error=exc)) from None
     try:
         return from_data(data, str(path))
     except BadMacro as exc:
-        raise BadMacroFile(str(exc)) from None
+        raise BadMacroFile(message_of(exc) or str(exc)) from None
 
 
 def _no_constant(name: str) -> float:
     """JSON's NaN and Infinity are not data a macro file holds."""
-    raise ValueError(f"{name} is not a JSON number")
+    raise ValueError(Message("{name} is not a JSON number", name=name))
 
 
 def write_macro_file(path: str | Path, macros: Iterable[Macro]) -> None:
@@ -264,7 +360,7 @@ def read_saved(settings: Any, protocol: str) -> list[Macro]:
     if not isinstance(text, str) or not text:
         return []
     try:
-        macros = from_data(json.loads(text, parse_constant=_no_constant), "saved macros")
+        macros = from_data(json.loads(text, parse_constant=_no_constant), Message("saved macros"))
     except (ValueError, RecursionError) as exc:  # BadMacro is a ValueError too
         log.warning("the saved %s macros are unreadable and were left out: %s", protocol, exc)
         return []

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Qt
@@ -10,9 +11,11 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow
 
 from app import jobs
 from app.dock_layout import empty_dock
+from app.messages import localized
 from app.settings import read_parameters, write_parameters
 from app.worker import DeviceInfo
 from drivers.errors import BadInput
+from drivers.messages import message_of
 from drivers.param_profile import read_profile, write_profile
 from drivers.parameters import Parameter, ParameterWritten
 from drivers.protocols.base import Protocol
@@ -35,9 +38,31 @@ FORCED_NOTE = QT_TRANSLATE_NOOP(
 def editor_rows(parameters: tuple[Parameter, ...]) -> list[ParameterRow]:
     """The editor's plain rows for a protocol's parameters."""
     return [
-        ParameterRow(p.id, p.name, p.unit, p.minimum, p.maximum, p.step, p.output, p.description)
+        ParameterRow(
+            p.id, p.name, p.unit, p.minimum, p.maximum, p.step, p.output, localized(p.description)
+        )
         for p in parameters
     ]
+
+
+def shown_derivation(
+    derive: Callable[[dict[str, float]], list[tuple[str, str]]],
+) -> Callable[[dict[str, float]], list[tuple[str, str]]]:
+    """`derive` with its figures and its refusals in the interface's language (the editor, a
+    widget, shows what it is given)."""
+
+    def shown(values: dict[str, float]) -> list[tuple[str, str]]:
+        try:
+            rows = derive(values)
+        except KeyError:
+            raise  # the editor names the value that is missing
+        except (ValueError, ArithmeticError, LookupError) as exc:
+            if message_of(exc) is None:
+                raise
+            raise ValueError(localized(exc)) from exc
+        return [(localized(label), localized(text)) for label, text in rows]
+
+    return shown
 
 
 DOCK_NAME = "parameterEditor"
@@ -94,7 +119,7 @@ class ParameterDock(QObject):
         defaults = {p.name: p.default for p in info.parameters}
         self.editor.set_values({**defaults, **last})
         self.editor.set_last_written(last)
-        self.editor.set_derivation(self.protocol.derived_values)
+        self.editor.set_derivation(shown_derivation(self.protocol.derived_values))
         self.editor.set_connected(True)
         self.dock.setWindowTitle(fill(self.tr("Parameters (%1)"), info.protocol))
         self.dock.setToolTip(fill(self.tr("%1 on %2"), info.identity, info.port))
@@ -155,7 +180,9 @@ class ParameterDock(QObject):
         values = {name: written.value, **written.device_values}
         write_parameters(self.window.settings, info.protocol, info.port, values)
         self.protocol.assume_parameters(values)
-        self.editor.set_status(written.parameter.id, CONFIRMED, "; ".join(written.notes))
+        self.editor.set_status(
+            written.parameter.id, CONFIRMED, "; ".join(localized(note) for note in written.notes)
+        )
         self.editor.set_last_written({**self.editor.last_written(), **values})
         for other, value in written.device_values.items():
             self.editor.set_row_note(other, fill(self.tr(FORCED_NOTE), f"{value:g}"))
@@ -189,7 +216,7 @@ class ParameterDock(QObject):
         try:
             values = read_profile(path, self.protocol.parameters, self.protocol.name)
         except BadInput as exc:
-            self.editor.show_message(str(exc), error=True)
+            self.editor.show_message(localized(exc), error=True)
             return
         self.editor.set_values(values)
         self.editor.show_message(
@@ -207,7 +234,7 @@ class ParameterDock(QObject):
         try:
             write_profile(path, self.editor.values(), self.protocol.parameters, self.protocol.name)
         except BadInput as exc:
-            self.editor.show_message(str(exc), error=True)
+            self.editor.show_message(localized(exc), error=True)
             return
         saved = self.tr("saved %1 values to %2")
         self.editor.show_message(fill(saved, len(self.editor.values()), path))

@@ -14,8 +14,10 @@ from urllib.parse import quote, urlsplit
 
 from PySide6.QtCore import QSettings, QStandardPaths
 
+from app.messages import localized
 from drivers.errors import BadFile, BadInput
 from drivers.files import SETTINGS_MAX_BYTES, check_user_file
+from drivers.messages import Message, message_of, message_template
 from drivers.registry import get_protocol_class
 from drivers.travel import TravelLimits, parse_travel
 
@@ -27,12 +29,13 @@ DEFAULT_PORT = "sim://coxiris"
 DEFAULT_PROTOCOL = "coxiris"
 PROBLEM = "motionpanelSettingsProblem"  # the property of a stand-in: why the file was not used
 _STATUS = {
-    QSettings.Status.AccessError: "it cannot be read",
-    QSettings.Status.FormatError: "it is not an INI file Qt can read",
+    QSettings.Status.AccessError: message_template("it cannot be read"),
+    QSettings.Status.FormatError: message_template("it is not an INI file Qt can read"),
 }
 _stand_ins: list[QSettings] = []  # synced at exit, before their folder is removed
 _scratch: list[str] = []  # the stand-ins' folder, once made
 _warned: set[str] = set()
+_said: dict[str, Message] = {}  # a stand-in's problem (a property keeps only its text)
 # Files Qt found malformed, by name: (size, modification time), why. Qt keeps a file it has read
 # and does not say again that it is malformed, so until it changes it is not handed to Qt again.
 _malformed: dict[str, tuple[tuple[int, int], str]] = {}
@@ -49,9 +52,9 @@ def open_settings() -> QSettings:
         if not os.path.lexists(file):
             continue
         try:
-            info = check_user_file(file, SETTINGS_MAX_BYTES, "settings file", BadFile)
+            info = check_user_file(file, SETTINGS_MAX_BYTES, Message("settings file"), BadFile)
         except BadFile as exc:
-            return _stand_in(str(exc))
+            return _stand_in(message_of(exc) or str(exc))
         seen = _malformed.get(os.path.abspath(file))
         if seen is not None and seen[0] == (info.st_size, info.st_mtime_ns):
             return _stand_in(seen[1])
@@ -61,7 +64,11 @@ def open_settings() -> QSettings:
         settings = QSettings(ORGANISATION, APPLICATION)
     why = _STATUS.get(settings.status())
     if why is not None:
-        problem = f"cannot read the settings file {settings.fileName()}: {why}"
+        problem = Message(
+            "cannot read the settings file {file}: {why}",
+            file=settings.fileName(),
+            why=Message(why),
+        )
         name = os.path.abspath(settings.fileName())
         with contextlib.suppress(OSError):
             info = os.stat(name)
@@ -71,9 +78,12 @@ def open_settings() -> QSettings:
 
 
 def settings_problem(settings: QSettings) -> str:
-    """Why these settings are a stand-in with the defaults ("" when they are the user's own)."""
+    """Why these settings are a stand-in with the defaults ("" when they are the user's own),
+    in the interface's language."""
     problem = settings.property(PROBLEM)
-    return problem if isinstance(problem, str) else ""
+    if not isinstance(problem, str):
+        return ""
+    return localized(_said.get(problem, problem))
 
 
 def _native_files() -> list[Path]:
@@ -101,7 +111,9 @@ def _stand_in(problem: str) -> QSettings:
         atexit.register(_remove_stand_ins)
     file = Path(_scratch[0]) / f"defaults-{len(_stand_ins)}.ini"  # each starts from nothing
     settings = QSettings(str(file), QSettings.Format.IniFormat)
-    settings.setProperty(PROBLEM, problem)
+    settings.setProperty(PROBLEM, str(problem))
+    if isinstance(problem, Message):
+        _said[str(problem)] = problem
     _stand_ins.append(settings)
     return settings
 

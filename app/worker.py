@@ -14,6 +14,7 @@ from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, S
 
 from app import jobs
 from app.macros import Macro, run_macro
+from app.messages import localized
 from drivers.capabilities import Capabilities
 from drivers.client import Client
 from drivers.commands import Stop
@@ -29,6 +30,7 @@ from drivers.errors import (
     PortError,
 )
 from drivers.events import ErrorReport, Event, TextLine, Undecodable
+from drivers.messages import Message
 from drivers.motion import Motion, MoveStart
 from drivers.parameters import Parameter
 from drivers.protocols.base import Setting
@@ -184,10 +186,24 @@ class SerialWorker(QObject):
 
     @Slot(object)
     def set_session_log(self, stream: TextIO | None) -> None:
-        """Write every byte of every connection to `stream` from now on (None: stop)."""
-        if self._session_log is not None:
-            self._session_log.stream.close()
+        """Write every byte of every connection to `stream` from now on (None: stop); the
+        connection open now, if any, goes on in the new one, and each file says where the
+        other is."""
+        before = self._session_log
         self._session_log = TrafficLogWriter(stream) if stream is not None else None
+        link = self._link
+        if link is not None:
+            if before is not None and before in link.listeners:
+                link.listeners.remove(before)
+            if self._session_log is not None:
+                link.listeners.append(self._session_log)
+        if before is not None:
+            if self._session_log is not None:
+                self._log_note(f"continued from {_file_name(before.stream)}")
+                before.note(f"the session log goes on in {_file_name(self._session_log.stream)}")
+            else:
+                before.note("the session log was turned off")
+            before.stream.close()
 
     def _log_note(self, text: str) -> None:
         if self._session_log is not None:
@@ -208,7 +224,10 @@ class SerialWorker(QObject):
         """Open the port, identify the device and read its state."""
         options = options or ConnectOptions()
         self.close_port()
-        self.state_changed.emit("connecting", f"{url} ({protocol_name}, {baud} baud)")
+        connecting = Message(
+            "{url} ({protocol}, {baud} baud)", url=url, protocol=protocol_name, baud=baud
+        )
+        self.state_changed.emit("connecting", localized(connecting))
         try:
             protocol = create_protocol(protocol_name, options.variant or None)
             protocol.assume_parameters(options.parameters)
@@ -216,7 +235,7 @@ class SerialWorker(QObject):
             dtr = protocol.capabilities.dtr if options.dtr is None else options.dtr
             link = open_link(url, baud, dtr=dtr, rts=options.rts)
         except MotionError as exc:
-            self.state_changed.emit("error", str(exc))
+            self.state_changed.emit("error", localized(exc))
             return
         link.listeners.append(self._on_traffic)
         link.note_listeners.append(self._on_link_note)
@@ -233,7 +252,7 @@ class SerialWorker(QObject):
         self._motion.poll_interval = 1.0 / self.poll_moving_hz
         self._motion.position_listeners.append(self.position_changed.emit)
         self._motion.move_listeners.append(self._on_move_started)
-        self._motion.notice_listeners.append(self.notice.emit)
+        self._motion.notice_listeners.append(self._on_motion_notice)
         self._motion.parameter_listeners.append(self.parameter_written.emit)
         self._motion.travel = self._travel
         self._connection = (url, protocol_name, options)
@@ -255,10 +274,11 @@ class SerialWorker(QObject):
         try:
             motion.start()
         except DeviceError as exc:  # a saved setup the device refuses: say so, stay connected
-            self.notice.emit(f"the saved setup was refused: {exc}")
+            self.notice.emit(localized(Message("the saved setup was refused: {error}", error=exc)))
         self._refresh()
         self._flush_traffic()
-        self.state_changed.emit("connected", f"{identity} on {url}")
+        connected = Message("{identity} on {url}", identity=identity, url=url)
+        self.state_changed.emit("connected", localized(connected))
         variant = protocol.variant.name if protocol.variant else ""
         self.device_ready.emit(
             DeviceInfo(
@@ -291,7 +311,8 @@ class SerialWorker(QObject):
         without modem lines: a notice saying why, and the lines as unknown)."""
         link = self._link
         if link is None:
-            self.notice.emit(f"{name.upper()} not changed: not connected")
+            unchanged = Message("{line} not changed: not connected", line=name.upper())
+            self.notice.emit(localized(unchanged))
             return
         try:
             link.set_control(name, on)
@@ -299,7 +320,7 @@ class SerialWorker(QObject):
             self._fail_connection(exc)
             return
         except MotionError as exc:  # NoControlLines, or a line that is not DTR or RTS
-            self.notice.emit(str(exc))
+            self.notice.emit(localized(exc))
         self._after_line_change()
 
     @Slot()
@@ -307,7 +328,7 @@ class SerialWorker(QObject):
         """Send a break (BREAK_S, 250 ms: the worker waits it out); a notice if it cannot."""
         link = self._link
         if link is None:
-            self.notice.emit("no break sent: not connected")
+            self.notice.emit(localized(Message("no break sent: not connected")))
             return
         self._flush_traffic()  # the console shows what went before the break, before it
         try:
@@ -316,7 +337,7 @@ class SerialWorker(QObject):
             self._fail_connection(exc)
             return
         except NoControlLines as exc:
-            self.notice.emit(str(exc))
+            self.notice.emit(localized(exc))
         self._after_line_change()
 
     def _after_line_change(self) -> None:
@@ -349,8 +370,8 @@ class SerialWorker(QObject):
         """A control-line change or break: to the session log and the console, in order with
         the traffic."""
         self._flush_traffic()
-        self._log_note(text)
-        self.control_note.emit(text)
+        self._log_note(str(text))  # the session log keeps English
+        self.control_note.emit(localized(text))
 
     @Slot()
     def close_port(self) -> None:
@@ -408,7 +429,8 @@ class SerialWorker(QObject):
         except CommunicationError as exc:  # no answer, a garbled or wrong one, a restart
             self._lose_device(exc)
         except MotionError as exc:
-            self.state_changed.emit("connected", f"device: {exc}")
+            # "device: " marks the detail for the window (which compares it): kept as is.
+            self.state_changed.emit("connected", "device: " + localized(exc))
         self._flush_traffic()
 
     def _poll_idle(self, motion: Motion) -> None:
@@ -429,8 +451,11 @@ class SerialWorker(QObject):
         if stood_still and not _same(here, before) and _same(here, (0.0, 0.0, 0.0)):
             shown = ", ".join(f"{v:g}" for v in before)
             raise DeviceRestarted(
-                f"the position went from ({shown}) to (0, 0, 0) mm while nothing was sent: "
-                "the device restarted"
+                Message(
+                    "the position went from ({position}) to (0, 0, 0) mm while nothing was sent: "
+                    "the device restarted",
+                    position=shown,
+                )
             )
 
     def _rest_after(self, job: jobs.Job) -> None:
@@ -452,12 +477,22 @@ class SerialWorker(QObject):
         self._next_recover = time.monotonic() + (
             0.0 if isinstance(exc, DeviceRestarted) else RECOVER_S
         )
-        self.state_changed.emit("error", f"{exc}; {_not_sent(dropped)}talking to it again")
+        if dropped:
+            lost = Message(
+                "{error}; not sent: {jobs}; talking to it again",
+                error=exc,
+                jobs=_described(dropped),
+            )
+        else:
+            lost = Message("{error}; talking to it again", error=exc)
+        self.state_changed.emit("error", localized(lost))
 
     def _recover(self) -> None:
         """Refuse what was queued meanwhile; when due, identify and re-read the device."""
         for job in self.cancel_pending():
-            self.job_failed.emit(job, "not sent: the device is being reconnected")
+            self.job_failed.emit(
+                job, localized(Message("not sent: the device is being reconnected"))
+            )
         if time.monotonic() < self._next_recover:
             return
         motion = self._motion
@@ -481,21 +516,22 @@ class SerialWorker(QObject):
             result = self._dispatch(motion, job)
         except PortError:
             self._flush_traffic()
-            self.job_failed.emit(job, "the connection was lost")
+            self.job_failed.emit(job, localized(Message("the connection was lost")))
             raise
         except CommunicationError as exc:  # the tick talks to the device again
             self._flush_traffic()
             if isinstance(exc, DeviceTimeout):
                 self.job_timed_out.emit(job)
-            self.job_failed.emit(job, str(exc))
+            self.job_failed.emit(job, localized(exc))
             raise
         except Aborted:
             self._flush_traffic()
-            self.job_failed.emit(job, "abandoned: disconnected while it was under way")
+            abandoned = Message("abandoned: disconnected while it was under way")
+            self.job_failed.emit(job, localized(abandoned))
             raise
         except MotionError as exc:
             self._flush_traffic()  # the console shows the traffic before the failure
-            self.job_failed.emit(job, str(exc))
+            self.job_failed.emit(job, localized(exc))
         else:
             self._flush_traffic()
             self.job_finished.emit(job, result)
@@ -542,7 +578,7 @@ class SerialWorker(QObject):
             return None
         if isinstance(job, jobs.MacroJob):
             return self._macro(motion, job.macro)
-        raise MotionError(f"unknown job {job!r}")
+        raise MotionError(Message("unknown job {job!r}", job=job))
 
     def _macro(self, motion: Motion, macro: Macro) -> list[dict[str, object]]:
         """Run a macro, telling each step before it starts; the traffic goes out as it runs."""
@@ -587,9 +623,11 @@ class SerialWorker(QObject):
 
     def _fail_connection(self, exc: Exception) -> None:
         dropped = self.cancel_pending()
-        detail = str(exc)
         if dropped:
-            detail += f"; {_not_sent(dropped)}".rstrip("; ")
+            failed = Message("{error}; not sent: {jobs}", error=exc, jobs=_described(dropped))
+            detail = localized(failed)
+        else:
+            detail = localized(exc)
         self._recovering = ""
         self._flush_traffic()
         if self._link is not None:
@@ -615,6 +653,10 @@ class SerialWorker(QObject):
             self.traffic.emit(batch)
         self._batch_sent = time.monotonic()
 
+    def _on_motion_notice(self, text: str) -> None:
+        """A notice of the Motion (e.g. a move clamped), in the interface's language."""
+        self.notice.emit(localized(text))
+
     def _on_move_started(self, start: MoveStart) -> None:
         self.target_changed.emit(start.target)  # the target as sent, after any clamping
         self.move_started.emit(start)
@@ -627,16 +669,20 @@ class SerialWorker(QObject):
         if isinstance(event, ErrorReport):
             self.device_error.emit(event.message)
         elif isinstance(event, Undecodable):
-            self.device_note.emit(str(event))
+            self.device_note.emit(localized(str(event)))
         elif isinstance(event, TextLine) and not self._motion.capabilities.raw_text:
-            self.device_note.emit(f"the device says: {event.text}")
+            self.device_note.emit(localized(Message("the device says: {text}", text=event.text)))
 
 
-def _not_sent(dropped: list[jobs.Job]) -> str:
-    """`not sent: jog by (1, 0, 0) mm, go home; ` for the queued jobs dropped ('' for none)."""
-    if not dropped:
-        return ""
-    return "not sent: " + ", ".join(job.describe() for job in dropped) + "; "
+def _file_name(stream: TextIO) -> str:
+    """The path of a log's file, as far as the stream knows it."""
+    return str(getattr(stream, "name", "another file"))
+
+
+def _described(dropped: list[jobs.Job]) -> str:
+    """`jog by (1, 0, 0) mm, go home` for the queued jobs dropped (each described in the
+    interface's language)."""
+    return ", ".join(job.describe() for job in dropped)
 
 
 def _same(a: tuple[float, float, float], b: tuple[float, float, float]) -> bool:

@@ -32,6 +32,7 @@ from types import TracebackType
 import serial
 
 from drivers.errors import PortError
+from drivers.messages import Message
 from drivers.traffic import RX, TX, Traffic
 from drivers.transport import Link, open_link
 
@@ -87,7 +88,7 @@ class Bridge:
     def open(self) -> None:
         """Open the device's port and create the pty (`path`); PortError if the port won't open."""
         if self._closed:
-            raise PortError(f"the bridge to {self.device} is closed")
+            raise PortError(Message("the bridge to {device} is closed", device=self.device))
         if self._link is not None:
             return
         link = open_link(self.device, self.baud, dtr=self.dtr)
@@ -104,7 +105,13 @@ class Bridge:
         except OSError as exc:
             link.close()
             self._close_descriptors()
-            raise PortError(f"cannot create a pseudo-terminal for {self.device}: {exc}") from exc
+            raise PortError(
+                Message(
+                    "cannot create a pseudo-terminal for {device}: {error}",
+                    device=self.device,
+                    error=exc,
+                )
+            ) from exc
         self._link = link
         mode = "its descriptor" if self._device_fd is not None else "pyserial reads"
         log.info("bridging %s (%s) <-> %s", self.device, mode, self.path)
@@ -157,7 +164,7 @@ class Bridge:
     def serve_forever(self) -> None:
         """Forward both ways until `stop()`; DeviceVanished if the device's port fails."""
         if self._link is None:
-            raise PortError("the bridge is not open")
+            raise PortError(Message("the bridge is not open"))
         self._idle.clear()
         self._serving_thread = threading.get_ident()
         try:
@@ -224,7 +231,11 @@ class Bridge:
                     waiting = port.in_waiting
                     data = bytes(port.read(waiting)) if waiting else b""
                 except (serial.SerialException, OSError, ValueError, TypeError) as exc:
-                    raise DeviceVanished(f"the device on {self.device} failed: {exc}") from exc
+                    raise DeviceVanished(
+                        Message(
+                            "the device on {device} failed: {error}", device=self.device, error=exc
+                        )
+                    ) from exc
                 if data:
                     self._report(RX, data)
                     self._to_program += data
@@ -257,9 +268,15 @@ class Bridge:
         except BlockingIOError:
             return
         except OSError as exc:
-            raise DeviceVanished(f"the device on {self.device} went away: {exc}") from exc
+            raise DeviceVanished(
+                Message("the device on {device} went away: {error}", device=self.device, error=exc)
+            ) from exc
         if not data:
-            raise DeviceVanished(f"the device on {self.device} went away (its port was closed)")
+            raise DeviceVanished(
+                Message(
+                    "the device on {device} went away (its port was closed)", device=self.device
+                )
+            )
         self._report(RX, data)
         self._to_program += data
         self._write_program()
@@ -270,7 +287,9 @@ class Bridge:
         except BlockingIOError:
             return
         except OSError as exc:  # not while the bridge holds the slave open
-            raise PortError(f"the pseudo-terminal {self.path} failed: {exc}") from exc
+            raise PortError(
+                Message("the pseudo-terminal {path} failed: {error}", path=self.path, error=exc)
+            ) from exc
         if not data:
             return
         self._report(TX, data)
@@ -286,7 +305,13 @@ class Bridge:
         except BlockingIOError:
             return
         except OSError as exc:
-            raise DeviceVanished(f"writing to the device on {self.device} failed: {exc}") from exc
+            raise DeviceVanished(
+                Message(
+                    "writing to the device on {device} failed: {error}",
+                    device=self.device,
+                    error=exc,
+                )
+            ) from exc
         del self._to_device[:written]
         self.bytes_to_device += written
 
@@ -297,7 +322,13 @@ class Bridge:
             written = self._link.port.write(data)
             self._link.port.flush()
         except (serial.SerialException, OSError, ValueError) as exc:
-            raise DeviceVanished(f"writing to the device on {self.device} failed: {exc}") from exc
+            raise DeviceVanished(
+                Message(
+                    "writing to the device on {device} failed: {error}",
+                    device=self.device,
+                    error=exc,
+                )
+            ) from exc
         written = len(data) if written is None else written
         del self._to_device[:written]
         self.bytes_to_device += written
@@ -308,7 +339,13 @@ class Bridge:
         except BlockingIOError:
             return  # the other program reads slowly (or not at all): kept until it does
         except OSError as exc:
-            raise PortError(f"writing to the pseudo-terminal {self.path} failed: {exc}") from exc
+            raise PortError(
+                Message(
+                    "writing to the pseudo-terminal {path} failed: {error}",
+                    path=self.path,
+                    error=exc,
+                )
+            ) from exc
         del self._to_program[:written]
         self.bytes_from_device += written
 

@@ -16,7 +16,11 @@ class Completion(enum.Enum):
 
 @dataclass(frozen=True)
 class Capabilities:
-    """Static description of a protocol's abilities."""
+    """Static description of a protocol's abilities.
+
+    Its texts for the operator (`speed_note`, `home_note`, `notes`) are Messages
+    (drivers/messages.py), so that the window shows them in the operator's language.
+    """
 
     axes: tuple[str, ...]
     length_unit: str = "mm"

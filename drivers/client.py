@@ -18,6 +18,7 @@ from drivers.errors import (
     Retransmit,
 )
 from drivers.events import Event, Undecodable
+from drivers.messages import Message, message_of
 from drivers.protocols.base import Exchange, Protocol, Reply
 from drivers.transport import Link
 
@@ -29,6 +30,8 @@ EventListener = Callable[[Event, bool], None]
 BACKPRESSURE_WAIT = 0.05  # s to let a full device queue work itself down before sending again
 BACKPRESSURE_LIMIT = 120.0  # s of queue-full replies before giving up
 MAX_TIMEOUT_EXTENSION = 5  # a chattering device extends the wait at most this many timeouts
+ABANDONED = Message("abandoned: the connection is closing")
+"""Why a wait was given up (Aborted)."""
 
 
 class Client:
@@ -94,7 +97,11 @@ class Client:
                 full_since = self.clock() if full_since is None else full_since
                 if self.clock() - full_since > BACKPRESSURE_LIMIT:
                     raise DeviceError(
-                        f"{exc}; still full after {BACKPRESSURE_LIMIT:.0f} s"
+                        Message(
+                            "{error}; still full after {seconds:.0f} s",
+                            error=exc,
+                            seconds=BACKPRESSURE_LIMIT,
+                        )
                     ) from exc
                 self.backpressure_waits += 1
                 self.listen(BACKPRESSURE_WAIT)  # the device works its queue down meanwhile
@@ -105,7 +112,12 @@ class Client:
                         raise
                     name = self.protocol.command_name(command)
                     raise type(exc)(
-                        f"{name} failed after {attempt} tries; the last: {exc}"
+                        Message(
+                            "{command} failed after {tries} tries; the last: {error}",
+                            command=name,
+                            tries=attempt,
+                            error=exc,
+                        )
                     ) from exc
                 self.retransmissions += 1
                 log.info(
@@ -224,27 +236,56 @@ class Client:
         ):
             return
         if self.protocol.is_restart(event, waiting):
-            during = f" during {self.protocol.command_name(waiting)}" if waiting else ""
+            if waiting:
+                raise DeviceRestarted(
+                    Message(
+                        "the device restarted during {command} ({event}): "
+                        "its position and settings are lost",
+                        command=self.protocol.command_name(waiting),
+                        event=str(event),
+                    )
+                )
             raise DeviceRestarted(
-                f"the device restarted{during} ({event}): its position and settings are lost"
+                Message(
+                    "the device restarted ({event}): its position and settings are lost",
+                    event=str(event),
+                )
             )
 
     def _check_abort(self) -> None:
         if self.abort.is_set():
-            raise Aborted("abandoned: the connection is closing")
+            raise Aborted(ABANDONED)
 
     def _timeout_message(
         self, exchange: Exchange, silence: float, extra: float, stray: list[Event]
     ) -> str:
         name = self.protocol.command_name(exchange.command)
-        what = "did not finish its reply" if exchange.events else "did not answer"
-        message = f"the device {what} to {name} within {silence + extra:.3g} s"
+        seconds = silence + extra
+        if exchange.events:
+            message = Message(
+                "the device did not finish its reply to {command} within {seconds:.3g} s",
+                command=name,
+                seconds=seconds,
+            )
+        else:
+            message = Message(
+                "the device did not answer to {command} within {seconds:.3g} s",
+                command=name,
+                seconds=seconds,
+            )
         if stray:
-            message += f"; it sent {len(stray)} unexpected frame(s), the last: {stray[-1]}"
+            message = Message(
+                "{message}; it sent {count} unexpected frame(s), the last: {frame}",
+                message=message,
+                count=len(stray),
+                frame=str(stray[-1]),
+            )
         if self.protocol.capabilities.busy_silent:
-            message += (
-                f" (it may still be moving: {self.protocol.name.upper()} answers nothing "
-                "until a blocking move has ended; try again once it has stopped)"
+            message = Message(
+                "{message} (it may still be moving: {protocol} answers nothing "
+                "until a blocking move has ended; try again once it has stopped)",
+                message=message,
+                protocol=self.protocol.name.upper(),
             )
         return message
 
@@ -269,7 +310,7 @@ class Client:
             try:
                 events.extend(self.protocol.decode(frame))
             except FrameError as exc:
-                events.append(Undecodable(frame, str(exc)))
+                events.append(Undecodable(frame, message_of(exc) or str(exc)))
         return events
 
     def _notify(self, event: Event, solicited: bool) -> None:

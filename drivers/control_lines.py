@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, fields
 
+from drivers.messages import Message
+
 OUTPUTS = ("dtr", "rts")  # driven by the host
 INPUTS = ("cts", "dsr", "cd", "ri")  # driven by the device (or its adapter)
 BREAK_S = 0.25  # seconds a break holds the transmit line low (pyserial's default)
@@ -27,8 +29,11 @@ class ControlLines:
     def describe(self) -> str:
         """`DTR on, RTS off, CTS on, DSR on, CD off, RI off` (`CTS ?` where unknown)."""
         if self.unknown():
-            return "no modem control lines"
-        return ", ".join(f"{name.upper()} {_word(getattr(self, name))}" for name in _NAMES)
+            return Message("no modem control lines")
+        return Message(
+            "{dtr}, {rts}, {cts}, {dsr}, {cd}, {ri}",
+            **{name: _state(name, getattr(self, name)) for name in _NAMES},
+        )
 
     def unknown(self) -> bool:
         """Whether the port can tell nothing (no line is known)."""
@@ -37,7 +42,7 @@ class ControlLines:
     def changes(self, before: ControlLines) -> list[str]:
         """What differs from `before`, line by line: `["CTS off", "DSR ?"]`."""
         return [
-            f"{name.upper()} {_word(getattr(self, name))}"
+            _state(name, getattr(self, name))
             for name in _NAMES
             if getattr(self, name) != getattr(before, name)
         ]
@@ -46,5 +51,10 @@ class ControlLines:
 _NAMES = tuple(f.name for f in fields(ControlLines))
 
 
-def _word(value: bool | None) -> str:
-    return "?" if value is None else "on" if value else "off"
+def _state(name: str, value: bool | None) -> Message:
+    """`CTS on`, `CTS off`, `CTS ?` (unknown)."""
+    if value is None:
+        return Message("{line} ?", line=name.upper())
+    if value:
+        return Message("{line} on", line=name.upper())
+    return Message("{line} off", line=name.upper())

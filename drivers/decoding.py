@@ -14,6 +14,7 @@ from drivers.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.framers.base import Framer
 from drivers.framers.lines import LineFramer
 from drivers.log_reader import LogRecord
+from drivers.messages import Message, message_of
 from drivers.protocols.base import Protocol
 
 CACHE_SIZE = 4096  # distinct frames remembered per direction, with their meaning
@@ -22,7 +23,11 @@ RECORD_FRAMES = 4  # a record of at most this many frames, each known, is rememb
 
 @dataclass(slots=True)
 class DecodedFrame:
-    """One frame (or note) of the traffic and what it means; `kind`: frame, error, text, note."""
+    """One frame (or note) of the traffic and what it means; `kind`: frame, error, text, note.
+
+    `meaning` is for people: a Message (drivers/messages.py) where the decoder's words are to
+    be translated, else the protocol's own words.
+    """
 
     time: float
     direction: str
@@ -59,7 +64,8 @@ def _received(protocol: Protocol, frame: bytes) -> tuple[str, str, tuple[Event, 
     try:
         events = protocol.decode(frame)
     except FrameError as exc:
-        return f"unreadable: {exc}", "error", ()
+        # The error's Message, not the error: a kept frame must not keep its traceback alive.
+        return Message("unreadable: {error}", error=message_of(exc) or str(exc)), "error", ()
     if len(events) == 1:  # the common case (one line, one event), without generators
         event = events[0]
         if isinstance(event, (ErrorReport, Undecodable)):

@@ -1,8 +1,15 @@
-"""Typed events: what a decoder makes of the frames a device sends."""
+"""Typed events: what a decoder makes of the frames a device sends.
+
+An event's str() is what it says to a person: a Message (drivers/messages.py) where it has words
+to translate, built only when asked, so that decoding stays cheap; the protocol's own words (ACK,
+DONE, a command's name, a code) are its values.
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+
+from drivers.messages import Message
 
 
 @dataclass(frozen=True)
@@ -36,10 +43,14 @@ class ErrorReport(Event):
     """The device reported an error."""
 
     message: str
+    """The device's own words, or what its code means (a Message where the protocol's
+    documents give the meaning)."""
     code: str | None = None
 
     def __str__(self) -> str:
-        return f"error {self.code}: {self.message}" if self.code else f"error: {self.message}"
+        if self.code:
+            return Message("error {code}: {message}", code=self.code, message=self.message)
+        return Message("error: {message}", message=self.message)
 
 
 @dataclass(frozen=True)
@@ -54,10 +65,14 @@ class PositionReport(Event):
     """For a commanded position: the device said the move to it has ended (Visiomex FA0001)."""
 
     def __str__(self) -> str:
-        kind = ""
-        if not self.measured:
-            kind = " (commanded, confirmed)" if self.confirmed else " (commanded)"
-        return f"position ({self.x:g}, {self.y:g}, {self.z:g}) mm{kind}"
+        x, y, z = self.x, self.y, self.z
+        if self.measured:
+            return Message("position ({x:g}, {y:g}, {z:g}) mm", x=x, y=y, z=z)
+        if self.confirmed:
+            return Message(
+                "position ({x:g}, {y:g}, {z:g}) mm (commanded, confirmed)", x=x, y=y, z=z
+            )
+        return Message("position ({x:g}, {y:g}, {z:g}) mm (commanded)", x=x, y=y, z=z)
 
 
 @dataclass(frozen=True)
@@ -67,11 +82,16 @@ class Feedback(Event):
     code: str
     value: bytes = b""
     meaning: str = ""
+    """What the packet means, for people (a Message where it has words to translate)."""
 
     def __str__(self) -> str:
         if self.meaning:  # the bytes are shown beside it where they matter
-            return f"feedback {self.code} ({self.meaning})"
-        return f"feedback {self.code}" + (f" {self.value.hex(' ').upper()}" if self.value else "")
+            return Message("feedback {code} ({meaning})", code=self.code, meaning=self.meaning)
+        if self.value:
+            return Message(
+                "feedback {code} {bytes}", code=self.code, bytes=self.value.hex(" ").upper()
+            )
+        return Message("feedback {code}", code=self.code)
 
 
 @dataclass(frozen=True)
@@ -81,7 +101,7 @@ class TextLine(Event):
     text: str
 
     def __str__(self) -> str:
-        return f"the line {self.text!r}"
+        return Message("the line {text!r}", text=self.text)
 
 
 @dataclass(frozen=True)
@@ -90,6 +110,11 @@ class Undecodable(Event):
 
     data: bytes
     reason: str
+    """Why it could not be read (a Message, as the FrameError that said it carried)."""
 
     def __str__(self) -> str:
-        return f"an unreadable frame ({self.reason}): {self.data.hex(' ').upper()}"
+        return Message(
+            "an unreadable frame ({reason}): {bytes}",
+            reason=self.reason,
+            bytes=self.data.hex(" ").upper(),
+        )

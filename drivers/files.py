@@ -7,7 +7,8 @@ would reset the board behind it) no larger than the reader's limit below (a spar
 is refused by its size alone), and what is read must be UTF-8 text without NUL bytes. The reads
 are bounded too, should the file grow meanwhile. A refusal is the reader's own `BadFile`,
 naming the file, the line where there is one, and why. Nothing here evaluates anything, and the
-readers parse with tomllib, json, csv and regular expressions only.
+readers parse with tomllib, json, csv and regular expressions only. `what`, the kind of file
+the refusals name, is a Message (`Message("program")`) so that the window translates it.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from pathlib import Path
 from typing import BinaryIO
 
 from drivers.errors import BadFile
+from drivers.messages import Message
 
 KiB = 1024
 MiB = 1024 * KiB
@@ -35,11 +37,11 @@ SETTINGS_MAX_BYTES = 1 * MiB  # the panel writes a few KiB: its window layout, n
 CHUNK_BYTES = 1 * MiB  # a streamed file is read this much at a time
 
 _KINDS = (
-    (stat.S_ISDIR, "a directory"),
-    (stat.S_ISFIFO, "a named pipe (FIFO)"),
-    (stat.S_ISCHR, "a character device"),
-    (stat.S_ISBLK, "a block device"),
-    (stat.S_ISSOCK, "a socket"),
+    (stat.S_ISDIR, Message("a directory")),
+    (stat.S_ISFIFO, Message("a named pipe (FIFO)")),
+    (stat.S_ISCHR, Message("a character device")),
+    (stat.S_ISBLK, Message("a block device")),
+    (stat.S_ISSOCK, Message("a socket")),
 )
 _LINE_ENDS = frozenset("\n\r\v\f\x1c\x1d\x1e\x85\u2028\u2029")  # where str.splitlines cuts
 _OPEN_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0)
@@ -50,15 +52,16 @@ def _size(count: int) -> str:
 
 
 def _unreadable(file: Path, what: str, error: type[BadFile], why: str) -> BadFile:
-    return error(f"cannot read the {what} {file}: {why}")
+    return error(Message("cannot read the {what} {file}: {why}", what=what, file=file, why=why))
 
 
 def _check_status(
     file: Path, info: os.stat_result, max_bytes: int, what: str, error: type[BadFile]
 ) -> None:
     if not stat.S_ISREG(info.st_mode):
-        kind = next((name for test, name in _KINDS if test(info.st_mode)), "a special file")
-        raise _unreadable(file, what, error, f"{kind}, not a regular file")
+        kind = next((name for test, name in _KINDS if test(info.st_mode)), None)
+        why = Message("{kind}, not a regular file", kind=kind or Message("a special file"))
+        raise _unreadable(file, what, error, why)
     if info.st_size > max_bytes:
         raise _too_large(file, max_bytes, what, error, info.st_size)
 
@@ -66,8 +69,24 @@ def _check_status(
 def _too_large(
     file: Path, max_bytes: int, what: str, error: type[BadFile], size: int | None = None
 ) -> BadFile:
-    count = f" ({size:,} bytes)" if size is not None else ""
-    return error(f"{file}: larger than {_size(max_bytes)}{count}, too large for a {what}")
+    if size is not None:
+        return error(
+            Message(
+                "{file}: larger than {limit} ({size:,} bytes), too large for a {what}",
+                file=file,
+                limit=_size(max_bytes),
+                size=size,
+                what=what,
+            )
+        )
+    return error(
+        Message(
+            "{file}: larger than {limit}, too large for a {what}",
+            file=file,
+            limit=_size(max_bytes),
+            what=what,
+        )
+    )
 
 
 def check_user_file(
@@ -111,17 +130,32 @@ def _read(stream: BinaryIO, count: int, file: Path, what: str, error: type[BadFi
 def _check_text(text: str, lines_before: int, file: Path, what: str, error: type[BadFile]) -> None:
     """Refuse text that held bytes UTF-8 refuses (decoded with surrogateescape) or a NUL byte;
     the line is counted as str.splitlines counts, `lines_before` lines before the text."""
-    bad, why = -1, ""
     if not text.isascii():
         try:
             text.encode("utf-8")  # fails at the first byte surrogateescape kept
         except UnicodeEncodeError as exc:
-            bad, why = exc.start, "not UTF-8 text"
-    if bad < 0 and "\x00" in text:
-        bad, why = text.index("\x00"), "a NUL byte"
-    if bad >= 0:
-        line = lines_before + len((text[:bad] + "x").splitlines())
-        raise error(f"{file}: {why} (line {line}), not a {what}")
+            raise error(
+                Message(
+                    "{file}: not UTF-8 text (line {line}), not a {what}",
+                    file=file,
+                    line=_line_at(text, exc.start, lines_before),
+                    what=what,
+                )
+            ) from None
+    if "\x00" in text:
+        raise error(
+            Message(
+                "{file}: a NUL byte (line {line}), not a {what}",
+                file=file,
+                line=_line_at(text, text.index("\x00"), lines_before),
+                what=what,
+            )
+        )
+
+
+def _line_at(text: str, index: int, lines_before: int) -> int:
+    """The line of `text[index]`, counted as str.splitlines counts."""
+    return lines_before + len((text[:index] + "x").splitlines())
 
 
 def read_text(
@@ -164,8 +198,13 @@ def read_lines(
             if max(max(map(len, lines), default=0), len(carry)) > max_line:
                 at = next((n for n, line in enumerate(lines) if len(line) > max_line), len(lines))
                 raise error(
-                    f"{file} line {number + at + 1}: longer than {max_line:,} characters, "
-                    f"not a {what} line"
+                    Message(
+                        "{file} line {line}: longer than {limit:,} characters, not a {what} line",
+                        file=file,
+                        line=number + at + 1,
+                        limit=max_line,
+                        what=what,
+                    )
                 )
             number += len(lines)
             yield from lines

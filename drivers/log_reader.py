@@ -18,6 +18,7 @@ from pathlib import Path
 
 from drivers.errors import BadFile
 from drivers.files import LOG_MAX_BYTES, LOG_MAX_LINE, read_lines
+from drivers.messages import Message
 
 _LINE = re.compile(r"^(\d{6,}\.\d{3}) (TX|RX)   ((?:[0-9A-F]{2} ){0,15}[0-9A-F]{2})(.*)$")
 _HEX_FIELD = 47  # 16 bytes as hex; shorter rows are padded to it before the text column
@@ -70,7 +71,14 @@ def log_records(lines: Iterable[str], source: str) -> Iterator[LogRecord]:
         if hit is None or not _text_column_fits(hit.group(3), hit.group(4)):
             note = _NOTE.match(line)
             if note is None:
-                raise LogError(f"{source} line {number}: not a traffic log line: {line[:60]!r}")
+                raise LogError(
+                    Message(
+                        "{source} line {number}: not a traffic log line: {line!r}",
+                        source=source,
+                        number=number,
+                        line=line[:60],
+                    )
+                )
             if key is not None:
                 yield LogRecord(key[0], key[1], b"".join(parts))
             key, parts, full = None, [], False
@@ -88,11 +96,13 @@ def log_records(lines: Iterable[str], source: str) -> Iterator[LogRecord]:
     if key is not None:
         yield LogRecord(key[0], key[1], b"".join(parts))
     if not traffic:
-        raise LogError(f"{source}: no traffic in it (not a Motion Panel log)")
+        raise LogError(
+            Message("{source}: no traffic in it (not a Motion Panel log)", source=source)
+        )
 
 
 def _lines(file: Path) -> Iterator[str]:
-    return read_lines(file, LOG_MAX_BYTES, LOG_MAX_LINE, "traffic log", LogError)
+    return read_lines(file, LOG_MAX_BYTES, LOG_MAX_LINE, Message("traffic log"), LogError)
 
 
 def read_log(path: str | Path) -> list[LogRecord]:
@@ -123,10 +133,20 @@ def open_any_log(path: str | Path) -> tuple[str, Iterator[LogRecord]]:
         if _LINE.match(line) or _NOTE.match(line):
             return "motionpanel", log_records(again, str(file))
         raise LogError(
-            f"{file}: not a Motion Panel log nor a pyserial spy:// capture: line {blanks + 1} is "
-            f"not a traffic log line: {line[:60]!r}; for spy://, {spy_log.HEXDUMP_HINT}"
+            Message(
+                "{file}: not a Motion Panel log nor a pyserial spy:// capture: line {number} is "
+                "not a traffic log line: {line!r}; for spy://, {hint}",
+                file=file,
+                number=blanks + 1,
+                line=line[:60],
+                hint=spy_log.HEXDUMP_HINT,
+            )
         )
     raise LogError(
-        f"{file}: empty, not a Motion Panel log nor a pyserial spy:// capture "
-        f"(spy's raw format leaves its file empty); {spy_log.HEXDUMP_HINT}"
+        Message(
+            "{file}: empty, not a Motion Panel log nor a pyserial spy:// capture "
+            "(spy's raw format leaves its file empty); {hint}",
+            file=file,
+            hint=spy_log.HEXDUMP_HINT,
+        )
     )

@@ -12,9 +12,10 @@ from dataclasses import dataclass
 
 from drivers import commands as cmd
 from drivers.capabilities import Capabilities, Completion
-from drivers.client import Client
+from drivers.client import ABANDONED, Client
 from drivers.errors import Aborted, BadInput, DeviceError, DeviceTimeout
 from drivers.events import ErrorReport, Event, PositionReport
+from drivers.messages import Message
 from drivers.parameters import ParameterWritten
 from drivers.protocols.base import Reply
 from drivers.travel import Point, TravelLimits, check_resolution
@@ -124,7 +125,8 @@ class Motion:
             return True
         errors = [e for e in events if isinstance(e, ErrorReport)]
         if errors:
-            raise DeviceError("the device reported: " + "; ".join(e.message for e in errors))
+            reported = "; ".join(e.message for e in errors)
+            raise DeviceError(Message("the device reported: {reported}", reported=reported))
         return False
 
     def start(self) -> None:
@@ -135,7 +137,7 @@ class Motion:
     def identify(self) -> str:
         """The device's identifier (the protocol's name where the device cannot say)."""
         if not self.capabilities.identity_queryable:
-            return f"{self.client.protocol.name} device"
+            return Message("{protocol} device", protocol=self.client.protocol.name)
         return str(self.client.execute(cmd.GetId()).value)
 
     def position(self) -> PositionReport:
@@ -147,13 +149,20 @@ class Motion:
         inferred = self.last_position if self._fresh() else None
         value = self.client.execute(cmd.GetPosition()).value
         if not isinstance(value, PositionReport):
-            raise DeviceError(f"the device did not report a position (it answered {value})")
+            raise DeviceError(
+                Message("the device did not report a position (it answered {value})", value=value)
+            )
         if inferred is not None and not inferred.measured and not _at(value, inferred):
             self.arrives_on_reply, self._late_replies = False, 0  # it was not where it said
             for listener in list(self.notice_listeners):
                 listener(
-                    f"the device is at ({value.x:g}, {value.y:g}, {value.z:g}) mm, not where its "
-                    "last move ended: its replies are no longer taken as arrival"
+                    Message(
+                        "the device is at ({x:g}, {y:g}, {z:g}) mm, not where its "
+                        "last move ended: its replies are no longer taken as arrival",
+                        x=value.x,
+                        y=value.y,
+                        z=value.z,
+                    )
                 )
         self._set_position(value)
         self._known()  # nothing has been sent since it was read
@@ -205,7 +214,12 @@ class Motion:
             elif self.capabilities.speed_range is not None:
                 return self.capabilities.speed_range  # not kept: settings may change it
             else:
-                raise BadInput(f"{self.client.protocol.name} has no speed limits to report")
+                raise BadInput(
+                    Message(
+                        "{protocol} has no speed limits to report",
+                        protocol=self.client.protocol.name,
+                    )
+                )
         return self._limits
 
     def set_speed(self, speed: float) -> float:
@@ -216,12 +230,20 @@ class Motion:
         sets the speed as parameters (Visiomex 21 and 22), each is written and reported.
         """
         if not math.isfinite(speed) or speed <= 0:
-            raise BadInput(f"speed {speed:g} refused: the speed must be a positive number")
+            raise BadInput(
+                Message("speed {speed:g} refused: the speed must be a positive number", speed=speed)
+            )
         low, high = self.speed_limits()
         unit = self.capabilities.speed_unit
         if not low <= speed <= high:
             raise BadInput(
-                f"speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}"
+                Message(
+                    "speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}",
+                    speed=speed,
+                    unit=unit,
+                    low=low,
+                    high=high,
+                )
             )
         # Where the speed goes with every move (pi-frame, Firmata), nothing is sent now.
         speed_in_moves = self.capabilities.speed_in_moves
@@ -262,7 +284,7 @@ class Motion:
         the panel knows is sent.
         """
         check_resolution((x, y, z), ("x", "y", "z"), self.capabilities.resolution)
-        what = f"move to ({x:g}, {y:g}, {z:g}) mm"
+        what = Message("move to ({x:g}, {y:g}, {z:g}) mm", x=x, y=y, z=z)
         if self.capabilities.absolute_moves:
             return self._move(
                 what, lambda here: (x, y, z), lambda here, t: cmd.MoveTo(*t), cmd.MoveTo(x, y, z)
@@ -283,7 +305,13 @@ class Motion:
             check_resolution((dx, dy, dz), ("dx", "dy", "dz"), self.capabilities.resolution)
         lx, ly, lz = self.client.protocol.kind_to_length(command)
         return self._move(
-            f"jog by ({dx:g}, {dy:g}, {dz:g}) {'mm' if kind == 'linear' else kind}",
+            Message(
+                "jog by ({dx:g}, {dy:g}, {dz:g}) {unit}",
+                dx=dx,
+                dy=dy,
+                dz=dz,
+                unit="mm" if kind == "linear" else kind,
+            ),
             lambda here: (here.x + lx, here.y + ly, here.z + lz),
             lambda here, t: self._relative(command, here, t, (lx, ly, lz)),
             check=command if self.capabilities.relative_moves else cmd.MoveTo(dx, dy, dz),
@@ -308,8 +336,10 @@ class Motion:
         if not self.capabilities.homing:
             if not self.capabilities.position_feedback:  # the panel knows where (0, 0, 0) is
                 return self.move_to(0.0, 0.0, 0.0)
-            raise BadInput(f"{self.client.protocol.name} has no way to go home")
-        return self._move("go home", lambda here: (0.0, 0.0, 0.0), None, check=cmd.Home())
+            raise BadInput(
+                Message("{protocol} has no way to go home", protocol=self.client.protocol.name)
+            )
+        return self._move(Message("go home"), lambda here: (0.0, 0.0, 0.0), None, check=cmd.Home())
 
     def _as_reported(self, point: Point) -> Point:
         """`point` on the device's resolution, as it reports it (5.1 - 0.2: 4.9, not 4.8999...)."""
@@ -339,7 +369,9 @@ class Motion:
         if self.capabilities.set_home:
             self.client.execute(cmd.SetHome())
         elif self.capabilities.position_feedback:
-            raise BadInput(f"{self.client.protocol.name} has no set-home command")
+            raise BadInput(
+                Message("{protocol} has no set-home command", protocol=self.client.protocol.name)
+            )
         self._set_position(PositionReport(0.0, 0.0, 0.0, self.capabilities.position_feedback))
 
     def _set_position(self, report: PositionReport) -> None:
@@ -374,7 +406,9 @@ class Motion:
             limited, note = self.travel.apply(target, what)
             if note is not None:
                 if command_of is None:
-                    raise BadInput(f"{what} refused: home is outside the travel limits")
+                    raise BadInput(
+                        Message("{what} refused: home is outside the travel limits", what=what)
+                    )
                 target, command = limited, command_of(here, limited)
                 protocol.encode(command)
                 for listener in list(self.notice_listeners):
@@ -422,7 +456,7 @@ class Motion:
                         protocol.move_timing(part, start, target) if len(parts) > 1 else None
                     )
                     if self.wait(sum(part_timing) if part_timing else delay + duration):
-                        raise Aborted("abandoned: the connection is closing")
+                        raise Aborted(ABANDONED)
             else:
                 self.client.execute(command, extra=(delay + duration) * ESTIMATE_MARGIN)
         finally:
@@ -457,7 +491,9 @@ class Motion:
     def arc(self, arc: cmd.Arc) -> PositionReport:
         """An arc: a straight move to its start point first where the stage is elsewhere."""
         if not self.capabilities.arcs:
-            raise BadInput(f"{self.client.protocol.name} has no arc moves")
+            raise BadInput(
+                Message("{protocol} has no arc moves", protocol=self.client.protocol.name)
+            )
         self.client.protocol.encode(self._with_speed(arc))  # refused before anything is sent
         here = self.position()
         sx, sy = arc.point(arc.start)
@@ -467,7 +503,7 @@ class Motion:
         target = (ex, ey, arc.z)
         if self.travel is not None:
             for point in arc_points(arc, here.z, 72):
-                self.travel.apply(point, "arc")  # refuses an arc that leaves the box
+                self.travel.apply(point, Message("arc"))  # refuses an arc that leaves the box
         z0 = here.z
         return self._run_move(
             arc, (here.x, here.y, here.z), target, lambda f: arc_point(arc, z0, f)
@@ -476,12 +512,12 @@ class Motion:
     def dwell(self, ms: int) -> None:
         """Wait on the device (its queue pauses) for `ms` milliseconds."""
         if not self.capabilities.dwell:
-            raise BadInput(f"{self.client.protocol.name} has no dwell")
+            raise BadInput(Message("{protocol} has no dwell", protocol=self.client.protocol.name))
         command = cmd.Dwell(ms)
         self.client.protocol.encode(command)
         self.client.execute(command)  # acknowledged where the protocol acknowledges (laser)
         if self.wait(ms / 1000):
-            raise Aborted("abandoned: the connection is closing")
+            raise Aborted(ABANDONED)
 
     def _wait_until_at(
         self, target: tuple[float, float, float], estimate: float
@@ -499,7 +535,14 @@ class Motion:
                 self.client.execute(cmd.Stop())  # halts the move under way and flushes the queue
                 stopped = self.position()
                 for listener in list(self.notice_listeners):
-                    listener(f"stopped at ({stopped.x:g}, {stopped.y:g}, {stopped.z:g}) mm")
+                    listener(
+                        Message(
+                            "stopped at ({x:g}, {y:g}, {z:g}) mm",
+                            x=stopped.x,
+                            y=stopped.y,
+                            z=stopped.z,
+                        )
+                    )
                 return stopped, None
             now = self.position()
             if _at(now, target):
@@ -508,7 +551,13 @@ class Motion:
                 log.warning("the stage stopped at %s short of the target %s", now, target)
                 return now, None
             if time.monotonic() > deadline:
-                raise DeviceTimeout(f"the move to {target} did not end within {allowed:.1f} s")
+                raise DeviceTimeout(
+                    Message(
+                        "the move to {target} did not end within {seconds:.1f} s",
+                        target=target,
+                        seconds=allowed,
+                    )
+                )
             previous = now
             if self.wait(self.poll_interval):
-                raise Aborted("abandoned: the connection is closing")
+                raise Aborted(ABANDONED)

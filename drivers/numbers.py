@@ -7,6 +7,7 @@ import re
 from decimal import Decimal
 
 from drivers.errors import BadInput
+from drivers.messages import Message
 
 # What the COXIRIS firmware accepts: optional sign, digits, at most one '.', at least one digit
 # (PROTOCOLS.md §1: `+.5`, `1.`, `-2` accepted; `1e3`, `.`, `nan`, `0x10`, `1,5` rejected).
@@ -21,8 +22,12 @@ def parse_number(text: str, what: str = "value") -> float:
     stripped = text.strip()
     if not _DEVICE_NUMBER.fullmatch(stripped):
         raise BadInput(
-            f"{what} {text!r} is not a number the device accepts: "
-            "use digits with an optional sign and one decimal point, e.g. -12.5"
+            Message(
+                "{what} {text!r} is not a number the device accepts: "
+                "use digits with an optional sign and one decimal point, e.g. -12.5",
+                what=what,
+                text=text,
+            )
         )
     return float(stripped)
 
@@ -30,9 +35,16 @@ def parse_number(text: str, what: str = "value") -> float:
 def format_number(value: float, what: str = "value", limit: float = ARDUINO_FLOAT_LIMIT) -> str:
     """Shortest fixed-point text for `value` (never exponent notation), within +-`limit`."""
     if not math.isfinite(value):
-        raise BadInput(f"{what} {value!r} is not a finite number")
+        raise BadInput(Message("{what} {value!r} is not a finite number", what=what, value=value))
     if abs(value) > limit:
-        raise BadInput(f"{what} {value:g} is out of range: the device handles at most ±{limit:g}")
+        raise BadInput(
+            Message(
+                "{what} {value:g} is out of range: the device handles at most ±{limit:g}",
+                what=what,
+                value=value,
+                limit=limit,
+            )
+        )
     text = format(Decimal(repr(float(value))), "f")
     if "." in text:
         text = text.rstrip("0").rstrip(".")

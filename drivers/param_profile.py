@@ -21,6 +21,7 @@ from pathlib import Path
 
 from drivers.errors import BadFile, BadInput
 from drivers.files import PROFILE_MAX_BYTES, read_text
+from drivers.messages import Message
 from drivers.parameters import Parameter
 
 HEADER = "# Motion Panel parameter profile"
@@ -43,39 +44,76 @@ def parse_profile(
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise ProfileError(f"{source}: not a parameter profile: {exc}") from None
+        raise ProfileError(
+            Message("{source}: not a parameter profile: {error}", source=source, error=exc)
+        ) from None
     except ValueError:  # an integer of over 4300 digits, which int() refuses
-        raise ProfileError(f"{source}: not a parameter profile: a number too long") from None
+        raise ProfileError(
+            Message("{source}: not a parameter profile: a number too long", source=source)
+        ) from None
     except RecursionError:
-        raise ProfileError(f"{source}: not a parameter profile: nested too deeply") from None
+        raise ProfileError(
+            Message("{source}: not a parameter profile: nested too deeply", source=source)
+        ) from None
     named = data.get("protocol")
     if named is not None and not isinstance(named, str):
-        raise ProfileError(f"{source}: protocol must be a name in quotes")
+        raise ProfileError(Message("{source}: protocol must be a name in quotes", source=source))
     if named is not None and named != protocol:
-        raise ProfileError(f"{source}: a profile for {named!r}, not for {protocol!r}")
+        raise ProfileError(
+            Message(
+                "{source}: a profile for {named!r}, not for {protocol!r}",
+                source=source,
+                named=named,
+                protocol=protocol,
+            )
+        )
     unknown_keys = sorted(set(data) - {"protocol", "parameters"})
     if unknown_keys:
         line = _line_of(text, unknown_keys[0])
-        where = f" (line {line})" if line else ""
-        raise ProfileError(f"{source}{where}: unknown key {unknown_keys[0]!r}")
+        if line:
+            raise ProfileError(
+                Message(
+                    "{source} (line {line}): unknown key {key!r}",
+                    source=source,
+                    line=line,
+                    key=unknown_keys[0],
+                )
+            )
+        raise ProfileError(
+            Message("{source}: unknown key {key!r}", source=source, key=unknown_keys[0])
+        )
     table = data.get("parameters")
     if not isinstance(table, dict) or not table:
-        raise ProfileError(f"{source}: no [parameters] table with values in it")
+        raise ProfileError(
+            Message("{source}: no [parameters] table with values in it", source=source)
+        )
     by_name = {p.name: p for p in parameters}
     values: dict[str, float] = {}
     for name, value in table.items():
         line = _line_of(text, name)
-        where = f"{source} line {line}" if line else source
+        where = Message("{source} line {line}", source=source, line=line) if line else source
         parameter = by_name.get(name)
         if parameter is None:
-            raise ProfileError(f"{where}: unknown parameter {name!r} for {protocol}")
+            raise ProfileError(
+                Message(
+                    "{where}: unknown parameter {name!r} for {protocol}",
+                    where=where,
+                    name=name,
+                    protocol=protocol,
+                )
+            )
         try:
             parameter.to_wire(value)
         except BadInput as exc:
-            raise ProfileError(f"{where}: {exc}") from None
+            raise ProfileError(Message("{where}: {error}", where=where, error=exc)) from None
         except (OverflowError, ValueError):  # an integer too large for a float, or to print
             raise ProfileError(
-                f"{where}: {name}: not a number the device takes ({parameter.range_text()})"
+                Message(
+                    "{where}: {name}: not a number the device takes ({range})",
+                    where=where,
+                    name=name,
+                    range=parameter.range_text(),
+                )
             ) from None
         values[name] = float(value)
     return values
@@ -87,7 +125,7 @@ def read_profile(
     """A profile file's values; ProfileError for a missing, special, large, binary or malformed
     file (nothing is sent: this only reads)."""
     file = Path(path)
-    text = read_text(file, PROFILE_MAX_BYTES, "profile", ProfileError)
+    text = read_text(file, PROFILE_MAX_BYTES, Message("profile"), ProfileError)
     return parse_profile(text, parameters, protocol, str(file))
 
 
@@ -113,4 +151,8 @@ def write_profile(
     try:
         Path(path).write_text(format_profile(values, parameters, protocol), encoding="utf-8")
     except OSError as exc:
-        raise ProfileError(f"cannot write the profile {path}: {exc.strerror or exc}") from None
+        raise ProfileError(
+            Message(
+                "cannot write the profile {path}: {error}", path=path, error=exc.strerror or exc
+            )
+        ) from None

@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass, field
 
 from drivers.errors import BadInput
+from drivers.messages import Message
 
 RELATIVE_TOLERANCE = 1e-9
 
@@ -56,27 +57,58 @@ class Parameter:
 
     def range_text(self) -> str:
         """E.g. `0 to 99999.9 mm in steps of 0.1 mm`."""
-        text = f"{self.with_unit(self.minimum)} to {self.with_unit(self.maximum)}"
+        low, high = self.with_unit(self.minimum), self.with_unit(self.maximum)
         if self.scale != 1:
-            text += f" in steps of {self.with_unit(self.step)}"
-        elif self.digits:
-            text += " (whole numbers)"
-        return text
+            return Message(
+                "{low} to {high} in steps of {step}",
+                low=low,
+                high=high,
+                step=self.with_unit(self.step),
+            )
+        if self.digits:
+            return Message("{low} to {high} (whole numbers)", low=low, high=high)
+        return Message("{low} to {high}", low=low, high=high)
 
     def to_wire(self, value: object) -> int:
         """The wire integer; BadInput naming the parameter, its unit and range if it cannot be."""
         if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise BadInput(f"{self.name}: {value!r} is not a number ({self.range_text()})")
+            raise BadInput(
+                Message(
+                    "{name}: {value!r} is not a number ({range})",
+                    name=self.name,
+                    value=value,
+                    range=self.range_text(),
+                )
+            )
         if not math.isfinite(value):
-            raise BadInput(f"{self.name}: {value} refused: {self.range_text()}")
+            raise BadInput(
+                Message(
+                    "{name}: {value} refused: {range}",
+                    name=self.name,
+                    value=value,
+                    range=self.range_text(),
+                )
+            )
         scaled = value * self.scale
         wire = round(scaled)
         if abs(scaled - wire) > RELATIVE_TOLERANCE * max(1.0, abs(scaled)):
             raise BadInput(
-                f"{self.name}: {self._given(value)} refused: the device takes {self.range_text()}"
+                Message(
+                    "{name}: {value} refused: the device takes {range}",
+                    name=self.name,
+                    value=self._given(value),
+                    range=self.range_text(),
+                )
             )
         if not self.minimum <= wire / self.scale <= self.maximum:
-            raise BadInput(f"{self.name}: {self._given(value)} refused: {self.range_text()}")
+            raise BadInput(
+                Message(
+                    "{name}: {value} refused: {range}",
+                    name=self.name,
+                    value=self._given(value),
+                    range=self.range_text(),
+                )
+            )
         return wire
 
     def _given(self, value: float) -> str:
@@ -105,10 +137,23 @@ def find_parameter(parameters: tuple[Parameter, ...], key: str | int) -> Paramet
         if text == parameter.name or (text.isdigit() and int(text) == parameter.id):
             return parameter
     if not parameters:
-        raise BadInput("this protocol has no parameters")
+        raise BadInput(Message("this protocol has no parameters"))
     close = [p.name for p in parameters if text.lower() in p.name]
-    hint = f" (did you mean {', '.join(close[:3])}?)" if close and text else ""
+    if close and text:
+        raise BadInput(
+            Message(
+                "unknown parameter {name!r} (did you mean {close}?): use a name or an id "
+                "1..{count}; 'motionctl ... param list' lists them",
+                name=text,
+                close=", ".join(close[:3]),
+                count=len(parameters),
+            )
+        )
     raise BadInput(
-        f"unknown parameter {text!r}{hint}: use a name or an id 1..{len(parameters)}; "
-        "'motionctl ... param list' lists them"
+        Message(
+            "unknown parameter {name!r}: use a name or an id 1..{count}; "
+            "'motionctl ... param list' lists them",
+            name=text,
+            count=len(parameters),
+        )
     )

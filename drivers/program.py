@@ -12,12 +12,13 @@ import csv
 import io
 import json
 import math
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
 from drivers.errors import BadFile
 from drivers.files import PROGRAM_MAX_BYTES, read_text
+from drivers.messages import Message
 
 MAX_POINTS = 1_000_000
 FLOAT32_MAX = 3.4028234663852886e38
@@ -38,20 +39,42 @@ class ProgramPoint:
     speed: float
 
 
-def _point(values: list[str | float], where: str) -> ProgramPoint:
+def _point(values: list[str | float], place: Callable[[], Message]) -> ProgramPoint:
+    """The point of one line (or JSON entry); `place()` names it for people, made only when a
+    value is refused (a program has up to a million points)."""
     numbers = []
     for name, value in zip(COLUMNS, values, strict=True):
         try:
             number = float(value)
         except (TypeError, ValueError):
-            raise ProgramError(f"{where}: {name} {value!r} is not a number") from None
+            raise ProgramError(
+                Message(
+                    "{where}: {name} {value!r} is not a number",
+                    where=place(),
+                    name=name,
+                    value=value,
+                )
+            ) from None
         except OverflowError:  # a JSON integer too large for a float
-            raise ProgramError(f"{where}: {name} is not a finite float32 number") from None
+            raise ProgramError(
+                Message("{where}: {name} is not a finite float32 number", where=place(), name=name)
+            ) from None
         if not math.isfinite(number) or abs(number) > FLOAT32_MAX:
-            raise ProgramError(f"{where}: {name} {value!r} is not a finite float32 number")
+            raise ProgramError(
+                Message(
+                    "{where}: {name} {value!r} is not a finite float32 number",
+                    where=place(),
+                    name=name,
+                    value=value,
+                )
+            )
         numbers.append(number)
     if numbers[3] <= 0:
-        raise ProgramError(f"{where}: speed {numbers[3]:g} mm/s must be above 0")
+        raise ProgramError(
+            Message(
+                "{where}: speed {speed:g} mm/s must be above 0", where=place(), speed=numbers[3]
+            )
+        )
     return ProgramPoint(*numbers)
 
 
@@ -61,7 +84,14 @@ def parse_csv(text: str, source: str = "program") -> list[ProgramPoint]:
     try:
         return _csv_points(rows, source)
     except csv.Error as exc:  # a field over csv's 128 KiB limit
-        raise ProgramError(f"{source} line {rows.line_num}: not CSV: {exc}") from None
+        raise ProgramError(
+            Message(
+                "{source} line {line}: not CSV: {error}",
+                source=source,
+                line=rows.line_num,
+                error=exc,
+            )
+        ) from None
 
 
 def _csv_points(rows: Iterator[list[str]], source: str) -> list[ProgramPoint]:
@@ -73,21 +103,43 @@ def _csv_points(rows: Iterator[list[str]], source: str) -> list[ProgramPoint]:
         if header is None:
             header = [c.strip().lower() for c in row]
             if sorted(header) != sorted(COLUMNS):
+                got = ", ".join(header)
+                if not got:
+                    raise ProgramError(
+                        Message(
+                            "{source} line {line}: the header must name x, y, z and speed "
+                            "(got nothing)",
+                            source=source,
+                            line=number,
+                        )
+                    )
                 raise ProgramError(
-                    f"{source} line {number}: the header must name x, y, z and speed "
-                    f"(got {', '.join(header) or 'nothing'})"
+                    Message(
+                        "{source} line {line}: the header must name x, y, z and speed "
+                        "(got {columns})",
+                        source=source,
+                        line=number,
+                        columns=got,
+                    )
                 )
             continue
         if len(row) != len(header):
-            raise ProgramError(f"{source} line {number}: {len(row)} values, expected 4")
+            raise ProgramError(
+                Message(
+                    "{source} line {line}: {count} values, expected 4",
+                    source=source,
+                    line=number,
+                    count=len(row),
+                )
+            )
         by_name = dict(zip(header, row, strict=True))
-        points.append(_point([by_name[c].strip() for c in COLUMNS], f"{source} line {number}"))
+        points.append(_point([by_name[c].strip() for c in COLUMNS], _line(source, number)))
         if len(points) > MAX_POINTS:
-            raise ProgramError(f"{source}: more than {MAX_POINTS} points")
+            raise ProgramError(_too_many(source))
     if header is None:
-        raise ProgramError(f"{source}: no header line (x,y,z,speed)")
+        raise ProgramError(Message("{source}: no header line (x,y,z,speed)", source=source))
     if not points:
-        raise ProgramError(f"{source}: no points")
+        raise ProgramError(Message("{source}: no points", source=source))
     return points
 
 
@@ -96,29 +148,53 @@ def parse_json(text: str, source: str = "program") -> list[ProgramPoint]:
     try:
         data = json.loads(text)
     except json.JSONDecodeError as exc:
-        raise ProgramError(f"{source} line {exc.lineno}: not JSON ({exc.msg})") from None
+        raise ProgramError(
+            Message(
+                "{source} line {line}: not JSON ({reason})",
+                source=source,
+                line=exc.lineno,
+                reason=exc.msg,
+            )
+        ) from None
     except ValueError:  # an integer of over 4300 digits, which int() refuses
-        raise ProgramError(f"{source}: not JSON the panel reads (a number too long)") from None
+        raise ProgramError(
+            Message("{source}: not JSON the panel reads (a number too long)", source=source)
+        ) from None
     except RecursionError:
-        raise ProgramError(f"{source}: not JSON the panel reads (nested too deeply)") from None
+        raise ProgramError(
+            Message("{source}: not JSON the panel reads (nested too deeply)", source=source)
+        ) from None
     points = data.get("points") if isinstance(data, dict) else None
     if not isinstance(points, list) or not points:
-        raise ProgramError(f'{source}: no "points" list')
+        raise ProgramError(Message('{source}: no "points" list', source=source))
     if len(points) > MAX_POINTS:
-        raise ProgramError(f"{source}: more than {MAX_POINTS} points")
+        raise ProgramError(_too_many(source))
     result = []
     for index, point in enumerate(points):
+        place = _entry(source, index + 1)
         if not isinstance(point, list) or len(point) != 4:
-            raise ProgramError(f"{source} point {index + 1}: expected [x, y, z, speed]")
-        result.append(_point(point, f"{source} point {index + 1}"))
+            raise ProgramError(Message("{where}: expected [x, y, z, speed]", where=place()))
+        result.append(_point(point, place))
     return result
+
+
+def _line(source: str, number: int) -> Callable[[], Message]:
+    return lambda: Message("{source} line {line}", source=source, line=number)
+
+
+def _entry(source: str, number: int) -> Callable[[], Message]:
+    return lambda: Message("{source} point {number}", source=source, number=number)
+
+
+def _too_many(source: str) -> Message:
+    return Message("{source}: more than {count} points", source=source, count=MAX_POINTS)
 
 
 def read_program(path: str | Path) -> list[ProgramPoint]:
     """A program file's points (`.json`: the panel's JSON, anything else: CSV)."""
     file = Path(path)
     # a spreadsheet's "CSV UTF-8" starts with a BOM
-    text = read_text(file, PROGRAM_MAX_BYTES, "program", ProgramError, "utf-8-sig")
+    text = read_text(file, PROGRAM_MAX_BYTES, Message("program"), ProgramError, "utf-8-sig")
     if file.suffix.lower() == ".json":
         return parse_json(text, str(file))
     return parse_csv(text, str(file))
@@ -130,4 +206,8 @@ def write_program(path: str | Path, points: list[ProgramPoint]) -> None:
     try:
         Path(path).write_text(json.dumps(data), encoding="utf-8")
     except OSError as exc:
-        raise ProgramError(f"cannot write the program {path}: {exc.strerror or exc}") from None
+        raise ProgramError(
+            Message(
+                "cannot write the program {path}: {error}", path=path, error=exc.strerror or exc
+            )
+        ) from None

@@ -6,6 +6,7 @@ import importlib
 from typing import TYPE_CHECKING
 
 from drivers.errors import UnknownProtocol
+from drivers.messages import Message
 
 if TYPE_CHECKING:
     from drivers.protocols.base import Protocol
@@ -40,9 +41,13 @@ def get_protocol_class(name: str) -> type[Protocol]:
         module_name, class_name = PROTOCOLS[name]
     except KeyError:
         if name in PLANNED:
-            raise UnknownProtocol(f"protocol {name!r} is not implemented yet") from None
+            raise UnknownProtocol(
+                Message("protocol {name!r} is not implemented yet", name=name)
+            ) from None
         known = ", ".join(protocol_names())
-        raise UnknownProtocol(f"unknown protocol {name!r} (known: {known})") from None
+        raise UnknownProtocol(
+            Message("unknown protocol {name!r} (known: {known})", name=name, known=known)
+        ) from None
     return getattr(importlib.import_module(module_name), class_name)
 
 

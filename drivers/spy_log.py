@@ -18,8 +18,11 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
 from drivers.log_reader import LogError, LogRecord
+from drivers.messages import Message
 
-HEXDUMP_HINT = "capture with spy's default hexdump format: spy://PORT?file=FILE, without raw"
+HEXDUMP_HINT = Message(
+    "capture with spy's default hexdump format: spy://PORT?file=FILE, without raw"
+)
 _ESCAPE = re.compile(r"\x1b\[[0-9;]*m")
 _DATA = re.compile(r"^(-?\d+\.\d{3}) (TX|RX)   ([0-9A-F]{4,})  (.*)$")
 _EVENT = re.compile(r"^(-?\d+\.\d{3}) (Q-RX|Q-TX|BRK|RTS|DTR|CTS|DSR|RI|CD|RX) +(\S.*)$")
@@ -73,11 +76,24 @@ def _refusal(source: str, number: int, line: str) -> LogError:
     """The error for a line that is not one spy writes in its hexdump format."""
     clean = _clean(line)
     if _ESCAPE.match(line) and not _STAMPED.match(clean):
-        why = "both directions run together, nothing tells TX from RX"
+        why = Message("both directions run together, nothing tells TX from RX")
         return LogError(
-            f"{source} line {number}: spy's raw format is refused ({why}); {HEXDUMP_HINT}"
+            Message(
+                "{source} line {number}: spy's raw format is refused ({why}); {hint}",
+                source=source,
+                number=number,
+                why=why,
+                hint=HEXDUMP_HINT,
+            )
         )
-    return LogError(f"{source} line {number}: not a pyserial spy:// hexdump line: {line[:60]!r}")
+    return LogError(
+        Message(
+            "{source} line {number}: not a pyserial spy:// hexdump line: {line!r}",
+            source=source,
+            number=number,
+            line=line[:60],
+        )
+    )
 
 
 def parse_spy(text: str, source: str) -> list[LogRecord]:
@@ -118,8 +134,14 @@ def spy_records(lines: Iterable[str], source: str) -> Iterator[LogRecord]:
                 call = calls.get(direction)
                 if call is None or offset % 16 or len(call.data) != offset:
                     raise LogError(
-                        f"{source} line {number}: bytes at offset {offset:#06x} of a "
-                        f"{direction.upper()} call whose earlier lines are missing"
+                        Message(
+                            "{source} line {number}: bytes at offset {offset:#06x} of a "
+                            "{direction} call whose earlier lines are missing",
+                            source=source,
+                            number=number,
+                            offset=offset,
+                            direction=direction.upper(),
+                        )
                     )
                 call.data += data
             if len(call.data) % 16:  # a short line ends its call
@@ -137,7 +159,15 @@ def spy_records(lines: Iterable[str], source: str) -> Iterator[LogRecord]:
         while waiting and not _is_open(waiting[0], calls):
             yield _record(waiting.popleft())
     if entries and not traffic:
-        raise LogError(f"{source}: no traffic in it, only control-line events")
+        raise LogError(
+            Message("{source}: no traffic in it, only control-line events", source=source)
+        )
     if not traffic:  # e.g. the colour code alone that `raw&color` leaves
-        raise LogError(f"{source}: no traffic in it (nor spy's raw format); {HEXDUMP_HINT}")
+        raise LogError(
+            Message(
+                "{source}: no traffic in it (nor spy's raw format); {hint}",
+                source=source,
+                hint=HEXDUMP_HINT,
+            )
+        )
     yield from map(_record, waiting)

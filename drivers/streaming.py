@@ -13,8 +13,9 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from drivers.client import Client
+from drivers.client import ABANDONED, Client
 from drivers.errors import Aborted, DeviceTimeout, Retransmit
+from drivers.messages import Message
 from drivers.program import ProgramPoint
 from drivers.protocols.laser import (
     GROUP,
@@ -132,7 +133,7 @@ class Streamer:
             self.progress(self.state)
         while not self._stopped.is_set() and self.state.executed < self.state.acknowledged:
             if self.client.abort.wait(DRAIN_POLL):
-                raise Aborted("abandoned: the connection is closing")
+                raise Aborted(ABANDONED)
             self._check_status(force=True)
             self.progress(self.state)
         self.state.retransmissions = self.client.retransmissions - retransmissions_before
@@ -153,8 +154,14 @@ class Streamer:
             except (Retransmit, DeviceTimeout) as exc:
                 if round_number == ROUNDS:
                     raise type(exc)(
-                        f"{exc} (after {ROUNDS} rounds; {self.state.acknowledged} of "
-                        f"{self.state.total} instructions were acknowledged before it)"
+                        Message(
+                            "{error} (after {rounds} rounds; {acknowledged} of {total} "
+                            "instructions were acknowledged before it)",
+                            error=exc,
+                            rounds=ROUNDS,
+                            acknowledged=self.state.acknowledged,
+                            total=self.state.total,
+                        )
                     ) from exc
                 self.client.retransmissions += 1
 

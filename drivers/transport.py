@@ -21,6 +21,7 @@ if os.name == "posix":
 
 from drivers.control_lines import BREAK_S, OUTPUTS, ControlLines
 from drivers.errors import BadInput, NoControlLines, PortError
+from drivers.messages import Message
 from drivers.traffic import RX, TX, Traffic
 
 log = logging.getLogger(__name__)
@@ -67,7 +68,7 @@ class Link:
         if os.name != "posix" or type(self.port) is not serial.Serial:
             return None
         if not self.port.is_open:
-            raise PortError(f"{self.url} is not open")
+            raise PortError(Message("{url} is not open", url=self.url))
         return self.port.fd  # type: ignore[no-any-return]
 
     def write(self, data: bytes) -> None:
@@ -86,9 +87,18 @@ class Link:
             written = self.port.write(data)
             self.port.flush()
         except (serial.SerialException, OSError, ValueError) as exc:
-            raise PortError(f"writing to {self.url} failed: {exc}") from exc
+            raise PortError(
+                Message("writing to {url} failed: {error}", url=self.url, error=exc)
+            ) from exc
         if written is not None and written != len(data):
-            raise PortError(f"writing to {self.url}: only {written} of {len(data)} bytes sent")
+            raise PortError(
+                Message(
+                    "writing to {url}: only {written} of {total} bytes sent",
+                    url=self.url,
+                    written=written,
+                    total=len(data),
+                )
+            )
 
     def read(self, wait: bool = True) -> bytes:
         """Everything that has arrived; with `wait`, waiting at most POLL_INTERVAL for it.
@@ -109,7 +119,9 @@ class Link:
                 if more:  # the first byte ended the wait: take the rest that came with it
                     data += bytes(self.port.read(more))
         except (serial.SerialException, OSError, ValueError, TypeError) as exc:
-            raise PortError(f"reading from {self.url} failed: {exc}") from exc
+            raise PortError(
+                Message("reading from {url} failed: {error}", url=self.url, error=exc)
+            ) from exc
         if data:
             self._report(RX, data)
         return data
@@ -122,9 +134,11 @@ class Link:
         """
         key = name.strip().lower()
         if key not in OUTPUTS:
-            raise BadInput(f"{name!r} is not a line the host drives (DTR or RTS)")
+            raise BadInput(
+                Message("{name!r} is not a line the host drives (DTR or RTS)", name=name)
+            )
         label = key.upper()
-        self._require_lines(f"{label} cannot be set")
+        self._require_lines(Message("{line} cannot be set", line=label))
         before = getattr(self.port, f"_{key}_state", None)
         try:
             setattr(self.port, key, bool(on))
@@ -133,9 +147,15 @@ class Link:
                 setattr(self.port, f"_{key}_state", before)
             if isinstance(exc, OSError) and exc.errno in NO_MODEM_LINES:
                 self._no_lines = self._why_no_lines()
-                raise NoControlLines(self._no_lines_text(f"{label} cannot be set")) from exc
-            raise PortError(f"setting {label} on {self.url} failed: {exc}") from exc
-        self._note(f"{label} {'on' if on else 'off'}")
+                raise NoControlLines(
+                    self._no_lines_text(Message("{line} cannot be set", line=label))
+                ) from exc
+            raise PortError(
+                Message(
+                    "setting {line} on {url} failed: {error}", line=label, url=self.url, error=exc
+                )
+            ) from exc
+        self._note(Message("{line} on", line=label) if on else Message("{line} off", line=label))
 
     def control_lines(self) -> ControlLines:
         """All six lines as the port reports them; all None on a port without modem lines.
@@ -172,8 +192,10 @@ class Link:
         that long), then note it ("break 250 ms"). NoControlLines where the port has no line to
         break (a pseudo-terminal: the break would go nowhere); PortError if it fails."""
         if not 0 < seconds <= MAX_BREAK_S:
-            raise BadInput(f"a break lasts more than 0 and at most {MAX_BREAK_S:g} s")
-        self._require_lines("no break can be sent")
+            raise BadInput(
+                Message("a break lasts more than 0 and at most {most:g} s", most=MAX_BREAK_S)
+            )
+        self._require_lines(Message("no break can be sent"))
         try:
             self.port.break_condition = True
             try:
@@ -181,8 +203,10 @@ class Link:
             finally:
                 self.port.break_condition = False
         except (serial.SerialException, OSError, ValueError) as exc:
-            raise PortError(f"sending a break on {self.url} failed: {exc}") from exc
-        self._note(f"break {seconds * 1000:.0f} ms")
+            raise PortError(
+                Message("sending a break on {url} failed: {error}", url=self.url, error=exc)
+            ) from exc
+        self._note(Message("break {ms:.0f} ms", ms=seconds * 1000))
 
     def _note(self, text: str) -> None:
         for listener in list(self.note_listeners):
@@ -197,16 +221,26 @@ class Link:
         except OSError as exc:
             if exc.errno in NO_MODEM_LINES:
                 return None
-            raise PortError(f"reading {name.upper()} on {self.url} failed: {exc}") from exc
+            raise self._input_failed(name, exc) from exc
         except (serial.SerialException, ValueError) as exc:
-            raise PortError(f"reading {name.upper()} on {self.url} failed: {exc}") from exc
+            raise self._input_failed(name, exc) from exc
+
+    def _input_failed(self, name: str, exc: Exception) -> PortError:
+        return PortError(
+            Message(
+                "reading {line} on {url} failed: {error}",
+                line=name.upper(),
+                url=self.url,
+                error=exc,
+            )
+        )
 
     def _modem_descriptor(self) -> int | None:
         """The descriptor of a POSIX serial port (spy:// on one included), for modem ioctls."""
         if os.name != "posix" or not isinstance(self.port, serial.Serial):
             return None
         if not self.port.is_open:
-            raise PortError(f"{self.url} is not open")
+            raise PortError(Message("{url} is not open", url=self.url))
         return self.port.fd  # type: ignore[no-any-return]
 
     def _modem_bits(self, fd: int) -> int | None:
@@ -217,7 +251,11 @@ class Link:
             if exc.errno in NO_MODEM_LINES:
                 self._no_lines = self._why_no_lines()
                 return None
-            raise PortError(f"reading the control lines of {self.url} failed: {exc}") from exc
+            raise PortError(
+                Message(
+                    "reading the control lines of {url} failed: {error}", url=self.url, error=exc
+                )
+            ) from exc
         return int(struct.unpack("I", packed)[0])
 
     def _lines_missing(self) -> str:
@@ -225,19 +263,26 @@ class Link:
         if self._no_lines is None:
             self._no_lines = ""
             if _is_socket(self.port):
-                self._no_lines = "a TCP socket"  # pyserial's socket:// ignores them silently
+                self._no_lines = Message(
+                    "a TCP socket"
+                )  # pyserial's socket:// ignores them silently
             else:
                 fd = self._modem_descriptor()
                 if fd is not None:
                     self._modem_bits(fd)  # sets the reason if the tty has none
         return self._no_lines
 
-    def _require_lines(self, what: str) -> None:
+    def _require_lines(self, what: Message) -> None:
         if self._lines_missing():
             raise NoControlLines(self._no_lines_text(what))
 
-    def _no_lines_text(self, what: str) -> str:
-        return f"{self.url} has no modem control lines ({self._no_lines}): {what}"
+    def _no_lines_text(self, what: Message) -> Message:
+        return Message(
+            "{url} has no modem control lines ({why}): {what}",
+            url=self.url,
+            why=self._no_lines,
+            what=what,
+        )
 
     def _why_no_lines(self) -> str:
         """ "a pseudo-terminal" for a pty's slave, else what the driver says."""
@@ -246,8 +291,8 @@ class Link:
         except (OSError, AttributeError, TypeError):
             path = ""
         if _PTY_PATH.match(path):
-            return "a pseudo-terminal"
-        return "its driver has no modem-line control"
+            return Message("a pseudo-terminal")
+        return Message("its driver has no modem-line control")
 
     def close(self) -> None:
         """Close the port (idempotent)."""
@@ -297,7 +342,7 @@ def open_link(url: str, baud: int, *, dtr: bool | None = None, rts: bool | None 
     """Open `url` (path, COM name or pyserial URL, `sim://NAME` included) at `baud`, 8N1, with
     DTR and RTS as given (None: as the port opens them, asserted with pyserial)."""
     if not url:
-        raise PortError("no port given")
+        raise PortError(Message("no port given"))
     try:
         port = serial.serial_for_url(url, baudrate=baud, timeout=POLL_INTERVAL, do_not_open=True)
         if dtr is not None:
@@ -306,5 +351,5 @@ def open_link(url: str, baud: int, *, dtr: bool | None = None, rts: bool | None 
             port.rts = rts
         port.open()
     except (serial.SerialException, OSError, ValueError) as exc:
-        raise PortError(f"cannot open {url}: {exc}") from exc
+        raise PortError(Message("cannot open {url}: {error}", url=url, error=exc)) from exc
     return Link(port, url)

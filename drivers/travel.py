@@ -10,6 +10,7 @@ import math
 from dataclasses import dataclass
 
 from drivers.errors import BadInput
+from drivers.messages import Message
 
 AXIS_NAMES = ("x", "y", "z")
 Box = tuple[tuple[float, float], tuple[float, float], tuple[float, float]]
@@ -29,12 +30,17 @@ class TravelLimits:
 
     def __post_init__(self) -> None:
         if len(self.box) != 3:
-            raise BadInput("travel limits need a range for each of x, y and z")
+            raise BadInput(Message("travel limits need a range for each of x, y and z"))
         for axis, (low, high) in zip(AXIS_NAMES, self.box, strict=True):
             if not (math.isfinite(low) and math.isfinite(high)) or low > high:
                 raise BadInput(
-                    f"travel limits for {axis.upper()} ({_fmt(low)} to {_fmt(high)} mm) "
-                    "are not a range: the minimum must be at most the maximum"
+                    Message(
+                        "travel limits for {axis} ({low:g} to {high:g} mm) "
+                        "are not a range: the minimum must be at most the maximum",
+                        axis=axis.upper(),
+                        low=low,
+                        high=high,
+                    )
                 )
 
     def describe(self) -> str:
@@ -49,8 +55,12 @@ class TravelLimits:
         """Whether `point` is inside the box (edges included)."""
         return all(lo <= v <= hi for v, (lo, hi) in zip(point, self.box, strict=True))
 
-    def apply(self, target: Point, what: str = "the move") -> tuple[Point, str | None]:
-        """The target to send and a note when it was clamped; BadInput when it is refused."""
+    def apply(self, target: Point, what: str | None = None) -> tuple[Point, str | None]:
+        """The target to send and a note when it was clamped; BadInput when it is refused.
+
+        `what` names the move for people (a Message; default "the move")."""
+        if what is None:
+            what = Message("the move")
         outside = [
             (axis, value, lo, hi)
             for axis, value, (lo, hi) in zip(AXIS_NAMES, target, self.box, strict=True)
@@ -58,16 +68,32 @@ class TravelLimits:
         ]
         if not outside:
             return target, None
-        details = "; ".join(
-            f"{a.upper()} {_fmt(v)} mm is outside {_fmt(lo)}..{_fmt(hi)} mm"
-            for a, v, lo, hi in outside
+        details = joined(
+            [
+                Message(
+                    "{axis} {value:g} mm is outside {low:g}..{high:g} mm",
+                    axis=a.upper(),
+                    value=v,
+                    low=lo,
+                    high=hi,
+                )
+                for a, v, lo, hi in outside
+            ]
         )
         if not self.clamp:
-            raise BadInput(f"{what} refused: {details} (travel limits)")
-        clamped = tuple(min(max(v, lo), hi) for v, (lo, hi) in zip(target, self.box, strict=True))
-        where = ", ".join(f"{_fmt(c)}" for c in clamped)
-        note = f"{what} clamped to the travel limits: {details}; going to ({where}) mm"
-        return (clamped[0], clamped[1], clamped[2]), note
+            raise BadInput(
+                Message("{what} refused: {details} (travel limits)", what=what, details=details)
+            )
+        x, y, z = (min(max(v, lo), hi) for v, (lo, hi) in zip(target, self.box, strict=True))
+        note = Message(
+            "{what} clamped to the travel limits: {details}; going to ({x:g}, {y:g}, {z:g}) mm",
+            what=what,
+            details=details,
+            x=x,
+            y=y,
+            z=z,
+        )
+        return (x, y, z), note
 
 
 def parse_travel(text: str) -> TravelLimits | None:
@@ -78,8 +104,11 @@ def parse_travel(text: str) -> TravelLimits | None:
     parts = stripped.split(",")
     if len(parts) != 3:
         raise BadInput(
-            f"travel limits {text!r}: write three ranges in mm, X0:X1,Y0:Y1,Z0:Z1 "
-            "(e.g. -100:100,-50:50,0:20), or none"
+            Message(
+                "travel limits {text!r}: write three ranges in mm, X0:X1,Y0:Y1,Z0:Z1 "
+                "(e.g. -100:100,-50:50,0:20), or none",
+                text=text,
+            )
         )
     ranges = []
     for axis, part in zip(AXIS_NAMES, parts, strict=True):
@@ -90,7 +119,11 @@ def parse_travel(text: str) -> TravelLimits | None:
             low, high = float(low_text), float(high_text)
         except ValueError:
             raise BadInput(
-                f"travel limits for {axis.upper()}: {part!r} is not MIN:MAX in mm (e.g. -100:100)"
+                Message(
+                    "travel limits for {axis}: {part!r} is not MIN:MAX in mm (e.g. -100:100)",
+                    axis=axis.upper(),
+                    part=part,
+                )
             ) from None
         ranges.append((low, high))
     return TravelLimits((ranges[0], ranges[1], ranges[2]))
@@ -102,14 +135,30 @@ def check_resolution(values: Point, names: tuple[str, ...], resolution: float | 
         return
     for name, value in zip(names, values, strict=True):
         if not math.isfinite(value):
-            raise BadInput(f"{name} {value!r} is not a finite number")
+            raise BadInput(
+                Message("{name} {value!r} is not a finite number", name=name, value=value)
+            )
         steps = value / resolution
         if abs(steps - round(steps)) > 1e-6 * max(1.0, abs(steps)):
             nearest = round(steps) * resolution
             raise BadInput(
-                f"{name} {_fmt(value)} mm refused: the device works to {_fmt(resolution)} mm "
-                f"(the nearest it can do is {nearest:.{_decimals(resolution)}f} mm)"
+                Message(
+                    "{name} {value:g} mm refused: the device works to {resolution:g} mm "
+                    "(the nearest it can do is {nearest} mm)",
+                    name=name,
+                    value=value,
+                    resolution=resolution,
+                    nearest=f"{nearest:.{_decimals(resolution)}f}",
+                )
             )
+
+
+def joined(parts: list[Message]) -> Message:
+    """Phrases for people as one, separated by "; " (each translated whole)."""
+    said = parts[0]
+    for part in parts[1:]:
+        said = Message("{earlier}; {later}", earlier=said, later=part)
+    return said
 
 
 def _decimals(resolution: float) -> int:

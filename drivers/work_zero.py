@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from drivers.errors import BadInput
+from drivers.messages import Message
 
 Point = tuple[float, float, float]
 _INDEX = {"x": 0, "y": 1, "z": 2}
@@ -43,7 +44,7 @@ class WorkZero:
         changes = {}
         for axis in axes.lower():
             if axis not in _INDEX:
-                raise BadInput(f"no axis {axis!r}: x, y or z")
+                raise BadInput(Message("no axis {axis!r}: x, y or z", axis=axis))
             changes[axis] = machine[_INDEX[axis]]
         return replace(self, **changes)
 
@@ -54,8 +55,10 @@ class WorkZero:
     def describe(self) -> str:
         """E.g. `work zero at (10, 5, 0) mm machine`."""
         if self.is_machine():
-            return "work zero at home (work = machine)"
-        return f"work zero at ({self.x:g}, {self.y:g}, {self.z:g}) mm machine"
+            return Message("work zero at home (work = machine)")
+        return Message(
+            "work zero at ({x:g}, {y:g}, {z:g}) mm machine", x=self.x, y=self.y, z=self.z
+        )
 
 
 def parse_work_zero(text: str) -> WorkZero:
@@ -64,9 +67,11 @@ def parse_work_zero(text: str) -> WorkZero:
     try:
         values = [float(part) for part in parts]
     except ValueError:
-        raise BadInput(f"work zero {text!r} is not three numbers x,y,z") from None
+        raise BadInput(
+            Message("work zero {text!r} is not three numbers x,y,z", text=text)
+        ) from None
     if len(values) != 3 or any(v != v or abs(v) == float("inf") for v in values):
-        raise BadInput(f"work zero {text!r} is not three finite numbers x,y,z")
+        raise BadInput(Message("work zero {text!r} is not three finite numbers x,y,z", text=text))
     return WorkZero(*values)
 
 

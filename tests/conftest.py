@@ -14,9 +14,11 @@ from widgets.position_view_3d import share_opengl_contexts
 
 share_opengl_contexts()  # as the application does, before any QApplication exists
 
+import re
 from pathlib import Path
 
 import pytest
+from PySide6.QtCore import QCoreApplication, QTranslator
 
 from app.main_window import MainWindow
 from drivers.client import Client
@@ -118,3 +120,24 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
         raise pytest.UsageError(
             "CI must run the tests under Xvfb (no DISPLAY): see resources/setup.sh"
         )
+
+
+class UpperTranslator(QTranslator):
+    """Translates every message template (drivers/messages.py) into upper case, its fields kept."""
+
+    def translate(self, context, source, disambiguation=None, n=-1):
+        from drivers.messages import CONTEXT
+
+        if context != CONTEXT:
+            return None
+        parts = re.split(r"(\{[^{}]*\})", source)
+        return "".join(p if p.startswith("{") else p.upper() for p in parts)
+
+
+@pytest.fixture
+def upper(qapp) -> Iterator[None]:
+    """Messages shown upper-cased, as a translation would change them, while the test runs."""
+    translator = UpperTranslator()
+    QCoreApplication.installTranslator(translator)
+    yield
+    QCoreApplication.removeTranslator(translator)

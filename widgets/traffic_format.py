@@ -4,6 +4,10 @@ from __future__ import annotations
 
 import re
 
+from PySide6.QtCore import QCoreApplication
+
+from widgets._i18n import fill
+
 _UNESCAPES = {"r": b"\r", "n": b"\n", "t": b"\t", "\\": b"\\", "0": b"\0"}
 _HEX_SEPARATORS = re.compile(r"[\s,:;-]+")
 _HEX_DIGITS = re.compile(r"[0-9a-fA-F]+")
@@ -29,14 +33,33 @@ def unescape(text: str) -> bytes:
         elif code == "x":
             digits = text[i + 2 : i + 4]
             if len(digits) != 2 or not _HEX_DIGITS.fullmatch(digits):
-                raise ValueError(f"\\x needs two hex digits at column {i + 1}: {text[i : i + 4]!r}")
+                raise ValueError(
+                    fill(
+                        QCoreApplication.translate(
+                            "TrafficFormat", "\\x needs two hex digits at column %1: %2"
+                        ),
+                        i + 1,
+                        repr(text[i : i + 4]),
+                    )
+                )
             out.append(int(digits, 16))
             i += 4
         elif not code:
-            raise ValueError("a lone backslash ends the line: write \\\\ for a backslash")
+            raise ValueError(
+                QCoreApplication.translate(
+                    "TrafficFormat", "a lone backslash ends the line: write \\\\ for a backslash"
+                )
+            )
         else:
             raise ValueError(
-                f"unknown escape \\{code} at column {i + 1} (use \\r \\n \\t \\0 \\\\ \\xNN)"
+                fill(
+                    QCoreApplication.translate(
+                        "TrafficFormat",
+                        "unknown escape \\%1 at column %2 (use \\r \\n \\t \\0 \\\\ \\xNN)",
+                    ),
+                    code,
+                    i + 1,
+                )
             )
     return bytes(out)
 
@@ -49,8 +72,18 @@ def parse_hex(text: str) -> bytes:
             continue
         digits = token[2:] if token[:2].lower() == "0x" else token
         if not digits or not _HEX_DIGITS.fullmatch(digits):
-            raise ValueError(f"not hex: {token!r}")
+            raise ValueError(
+                fill(QCoreApplication.translate("TrafficFormat", "not hex: %1"), repr(token))
+            )
         if len(digits) % 2:
-            raise ValueError(f"odd number of hex digits in {token!r}: write 0{digits} or pairs")
+            raise ValueError(
+                fill(
+                    QCoreApplication.translate(
+                        "TrafficFormat", "odd number of hex digits in %1: write 0%2 or pairs"
+                    ),
+                    repr(token),
+                    digits,
+                )
+            )
         out += bytes.fromhex(digits)
     return bytes(out)

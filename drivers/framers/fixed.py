@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from drivers.errors import FrameError
 from drivers.framers.base import Framer, garbage_before
+from drivers.messages import Message
 
 
 class FixedFramer(Framer):
@@ -31,5 +32,11 @@ class FixedFramer(Framer):
     def encode(self, payload: bytes) -> bytes:
         """Header, the body, trailer; the body must be exactly `body_length` bytes."""
         if len(payload) != self.body_length:
-            raise FrameError(f"a frame body is {self.body_length} bytes, not {len(payload)}")
+            raise FrameError(
+                Message(
+                    "a frame body is {expected} bytes, not {length}",
+                    expected=self.body_length,
+                    length=len(payload),
+                )
+            )
         return self.header + payload + self.trailer

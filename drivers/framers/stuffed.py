@@ -8,6 +8,7 @@ stuffed: the receiver knows the byte after `90 82` is the checksum whatever its 
 from __future__ import annotations
 
 from drivers.framers.base import Framer, garbage_before
+from drivers.messages import Message
 
 HEADER = b"\xeb\x90\x82"
 FLAG = 0xF0
@@ -21,7 +22,8 @@ def checksum(data: bytes) -> int:
 
 
 class StuffedFramer(Framer):
-    """Byte-stuffed frames with a checksum; corrupt frames are dropped and `last_error` says why."""
+    """Byte-stuffed frames with a checksum; corrupt frames are dropped and `last_error` says why
+    (a Message, made only for a corrupt frame)."""
 
     def __init__(self, max_length: int = 4096) -> None:
         self.max_length = max_length
@@ -36,7 +38,7 @@ class StuffedFramer(Framer):
         if len(buffer) <= index:
             return 0, None
         if buffer[index] != FLAG:
-            self.last_error = f"flag byte {buffer[index]:#04x}, expected 0xf0"
+            self.last_error = Message("flag byte {byte:#04x}, expected 0xf0", byte=buffer[index])
             return 1, None
         index += 1
         data = bytearray()
@@ -54,17 +56,21 @@ class StuffedFramer(Framer):
                 if index + 2 >= len(buffer):
                     return 0, None
                 if buffer[index + 2] != checksum(data):
-                    self.last_error = (
-                        f"checksum {buffer[index + 2]:#04x}, expected {checksum(data):#04x}"
+                    self.last_error = Message(
+                        "checksum {got:#04x}, expected {expected:#04x}",
+                        got=buffer[index + 2],
+                        expected=checksum(data),
                     )
                     return index + 3, None
                 self.last_error = None
                 return index + 3, bytes(data)
             else:
-                self.last_error = f"0x90 followed by {buffer[index + 1]:#04x} inside the data"
+                self.last_error = Message(
+                    "0x90 followed by {byte:#04x} inside the data", byte=buffer[index + 1]
+                )
                 return index + 1, None
             if len(data) > self.max_length:
-                self.last_error = f"no tail within {self.max_length} bytes"
+                self.last_error = Message("no tail within {most} bytes", most=self.max_length)
                 return index, None
         return 0, None
 

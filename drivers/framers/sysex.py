@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from drivers.errors import FrameError
 from drivers.framers.base import Framer
+from drivers.messages import Message
 
 START_SYSEX = 0xF0
 END_SYSEX = 0xF7
@@ -60,8 +61,8 @@ class SysexFramer(Framer):
     def encode(self, payload: bytes) -> bytes:
         """`F0 payload F7`; every payload byte must be 7-bit."""
         if not payload:
-            raise FrameError("a SysEx message needs at least a command byte")
+            raise FrameError(Message("a SysEx message needs at least a command byte"))
         bad = [b for b in payload if b > 0x7F]
         if bad:
-            raise FrameError(f"SysEx data must be 7-bit; got {bad[0]:#04x}")
+            raise FrameError(Message("SysEx data must be 7-bit; got {byte:#04x}", byte=bad[0]))
         return bytes((START_SYSEX,)) + payload + bytes((END_SYSEX,))

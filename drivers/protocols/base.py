@@ -11,6 +11,7 @@ from drivers.commands import Command, MoveBy, SetParameter
 from drivers.errors import BadInput, FrameError, MotionError
 from drivers.events import Event
 from drivers.framers.base import Framer
+from drivers.messages import Message, message_of
 from drivers.parameters import Parameter, ParameterWritten, find_parameter
 
 Point = tuple[float, float, float]
@@ -25,13 +26,20 @@ class Setting:
     default: float
     minimum: float
     maximum: float
-    description: str
+    description: str  # a Message: it is shown to the operator
 
     def check(self, value: float) -> float:
         """The value if it is in range; BadInput naming the setting, its unit and its range."""
         if not isinstance(value, (int, float)) or not self.minimum <= value <= self.maximum:
             raise BadInput(
-                f"{self.name} {value} refused: {self.minimum:g} to {self.maximum:g} {self.unit}"
+                Message(
+                    "{setting} {value} refused: {minimum:g} to {maximum:g} {unit}",
+                    setting=self.name,
+                    value=value,
+                    minimum=self.minimum,
+                    maximum=self.maximum,
+                    unit=self.unit,
+                )
             )
         return float(value)
 
@@ -41,7 +49,7 @@ class Variant:
     """A wire profile of a protocol (e.g. Visiomex's 12-character board): name and line rate."""
 
     name: str
-    description: str
+    description: str  # a Message: it is shown to the operator
     baud: int | None = None  # None: the protocol's default
 
 
@@ -151,7 +159,9 @@ class Protocol(ABC):
         checked = {}
         for name, value in values.items():
             if name not in known:
-                raise BadInput(f"{self.name} has no setting {name!r}")
+                raise BadInput(
+                    Message("{protocol} has no setting {name!r}", protocol=self.name, name=name)
+                )
             checked[name] = known[name].check(value)
         self.values.update(checked)
         self.configured()
@@ -171,7 +181,13 @@ class Protocol(ABC):
     def _choose_variant(cls, name: str | None) -> Variant | None:
         if not cls.variants:
             if name:
-                raise BadInput(f"{cls.name} has no wire variants (got {name!r})")
+                raise BadInput(
+                    Message(
+                        "{protocol} has no wire variants (got {name!r})",
+                        protocol=cls.name,
+                        name=name,
+                    )
+                )
             return None
         if not name:
             return cls.variants[0]
@@ -179,7 +195,14 @@ class Protocol(ABC):
             if variant.name == name:
                 return variant
         known = ", ".join(v.name for v in cls.variants)
-        raise BadInput(f"{cls.name} has no variant {name!r} (variants: {known})")
+        raise BadInput(
+            Message(
+                "{protocol} has no variant {name!r} (variants: {known})",
+                protocol=cls.name,
+                name=name,
+                known=known,
+            )
+        )
 
     @classmethod
     def default_baud(cls, variant: str | None = None) -> int:
@@ -217,7 +240,13 @@ class Protocol(ABC):
     def kind_to_length(self, command: MoveBy) -> Point:
         """A relative move's deltas in the length unit (its `kind` may be degrees or steps)."""
         if command.kind != "linear":
-            raise BadInput(f"{self.name} moves are linear only (got {command.kind!r})")
+            raise BadInput(
+                Message(
+                    "{protocol} moves are linear only (got {kind!r})",
+                    protocol=self.name,
+                    kind=command.kind,
+                )
+            )
         return (command.dx, command.dy, command.dz)
 
     @abstractmethod
@@ -241,11 +270,15 @@ class Protocol(ABC):
         return self.new_framer()
 
     def describe_sent(self, frame: bytes) -> str:
-        """What a frame the host sent means, in the protocol's words (for logs and consoles)."""
+        """What a frame the host sent means, in the protocol's words (for logs and consoles);
+        a Message where it has words to translate."""
         try:
-            return "; ".join(str(e) for e in self.decode(frame))
+            events = self.decode(frame)
         except FrameError as exc:
-            return f"unreadable: {exc}"
+            return Message("unreadable: {error}", error=message_of(exc) or str(exc))
+        if len(events) == 1:
+            return str(events[0])  # the event's Message as it is (a join would make it a str)
+        return "; ".join(str(e) for e in events)
 
     def is_restart(self, event: Event, waiting: Command | None = None) -> bool:
         """Whether `event` is what the device prints when it boots (its banner), while the

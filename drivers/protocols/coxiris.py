@@ -22,6 +22,7 @@ from drivers.commands import (
 from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
 from drivers.events import Ack, Done, ErrorReport, Event, PositionReport, TextLine
 from drivers.framers.lines import LineFramer
+from drivers.messages import Message
 from drivers.numbers import format_number
 from drivers.protocols.base import Exchange, Protocol
 
@@ -29,6 +30,13 @@ MAX_COMMAND_LENGTH = 63  # the firmware's 64-byte buffer keeps 63 characters and
 HELP_LINE_COUNT = 12
 UNKNOWN_COMMAND = "Unknown command - "
 TOO_LONG = "Command too long"
+# What a number is, for format_number's and parse_reply_number's refusals: made once, so that
+# encoding a move builds no message unless it is refused.
+_COORDINATES = tuple(Message("{axis} coordinate", axis=a) for a in "xyz")
+_DISTANCES = tuple(Message("{axis} distance", axis=a) for a in ("dx", "dy", "dz"))
+_SPEED = Message("speed")
+_A_COORDINATE = Message("a coordinate")
+_THE_SPEED = Message("the speed")
 
 _SIMPLE: dict[type[Command], str] = {
     Help: "HELP",
@@ -49,36 +57,48 @@ def command_line(command: Command) -> str:
         line = _SIMPLE[type(command)]
     elif isinstance(command, MoveTo):
         parts = [
-            format_number(v, f"{a} coordinate")
-            for a, v in zip("xyz", (command.x, command.y, command.z), strict=True)
+            format_number(v, what)
+            for what, v in zip(_COORDINATES, (command.x, command.y, command.z), strict=True)
         ]
         line = "ABSOLUTE_MOVE " + " ".join(parts)
     elif isinstance(command, MoveBy):
         deltas = (command.dx, command.dy, command.dz)
-        parts = [
-            format_number(v, f"{a} distance")
-            for a, v in zip(("dx", "dy", "dz"), deltas, strict=True)
-        ]
+        parts = [format_number(v, what) for what, v in zip(_DISTANCES, deltas, strict=True)]
         line = "DELTA_MOVE " + " ".join(parts)
     elif isinstance(command, SetSpeed):
         if not command.speed > 0:
-            raise BadInput(f"speed {command.speed:g} mm/s refused: the speed must be positive")
-        line = "SET_SPEED " + format_number(command.speed, "speed")
+            raise BadInput(
+                Message(
+                    "speed {speed:g} mm/s refused: the speed must be positive", speed=command.speed
+                )
+            )
+        line = "SET_SPEED " + format_number(command.speed, _SPEED)
     elif isinstance(command, Raw):
         try:
             line = command.data.decode("ascii")
         except UnicodeDecodeError as exc:
-            raise BadInput("raw command refused: COXIRIS takes ASCII text only") from exc
+            raise BadInput(Message("raw command refused: COXIRIS takes ASCII text only")) from exc
         if any(c in line for c in "\r\n"):
-            raise BadInput("raw command refused: one line at a time (it contains a line break)")
+            raise BadInput(
+                Message("raw command refused: one line at a time (it contains a line break)")
+            )
         if not line.strip():
-            raise BadInput("raw command refused: it is empty, and the device ignores blank lines")
+            raise BadInput(
+                Message("raw command refused: it is empty, and the device ignores blank lines")
+            )
     else:
-        raise BadInput(f"COXIRIS has no command for {type(command).__name__}")
+        raise BadInput(
+            Message("COXIRIS has no command for {command}", command=type(command).__name__)
+        )
     if len(line) > MAX_COMMAND_LENGTH:
         raise BadInput(
-            f"command refused: {len(line)} characters, the device takes at most "
-            f"{MAX_COMMAND_LENGTH} ({line[:24]}...)"
+            Message(
+                "command refused: {length} characters, the device takes at most {most} "
+                "({start}...)",
+                length=len(line),
+                most=MAX_COMMAND_LENGTH,
+                start=line[:24],
+            )
         )
     return line
 
@@ -89,15 +109,20 @@ def expected_name(line: str) -> str:
 
 
 def parse_reply_number(text: str, what: str) -> float:
-    """A number printed by the firmware; `ovf`, `nan` and `inf` are reported as unreadable."""
+    """A number printed by the firmware; `ovf`, `nan` and `inf` are reported as unreadable.
+    `what` (a Message, e.g. "a coordinate") names it in the refusal."""
     try:
         value = float(text)
     except ValueError as exc:
         raise GarbledReply(
-            f"the device reported {what} as {text!r}, which is not a number"
+            Message(
+                "the device reported {what} as {text!r}, which is not a number",
+                what=what,
+                text=text,
+            )
         ) from exc
     if text.strip().lower() in ("nan", "inf", "-inf", "ovf"):
-        raise GarbledReply(f"the device reported {what} as {text!r}")
+        raise GarbledReply(Message("the device reported {what} as {text!r}", what=what, text=text))
     return value
 
 
@@ -137,7 +162,11 @@ class CoxirisExchange(Exchange):
             if isinstance(event, TextLine) and event.text == self.name:
                 self._trailing_lines = 1 + HELP_LINE_COUNT  # "Available commands:" and the help
                 self.lines.append(event.text)
-                self.fail(DeviceError(f"the device does not know the command {self.name!r}"))
+                self.fail(
+                    DeviceError(
+                        Message("the device does not know the command {name!r}", name=self.name)
+                    )
+                )
                 return True
             return False
         if not self.acked:
@@ -152,7 +181,11 @@ class CoxirisExchange(Exchange):
                 if event.message.startswith(UNKNOWN_COMMAND.rstrip()):
                     self._unknown_pending = True
                     return True
-                self.fail(DeviceError(f"the device refused the command: {event.message}"))
+                self.fail(
+                    DeviceError(
+                        Message("the device refused the command: {error}", error=event.message)
+                    )
+                )
                 return True
             return False
         if isinstance(event, ErrorReport):
@@ -168,7 +201,13 @@ class CoxirisExchange(Exchange):
                 self._complete(event)
             return True
         if isinstance(event, (Ack, Done)):
-            self.fail(GarbledReply(f"expected DONE {self.name}, got {event}"))
+            self.fail(
+                GarbledReply(
+                    Message(
+                        "expected DONE {command}, got {event}", command=self.name, event=str(event)
+                    )
+                )
+            )
             return True
         return False
 
@@ -179,11 +218,13 @@ class CoxirisExchange(Exchange):
             if isinstance(command, GetPosition):
                 fields = (data or "").split()
                 if len(fields) != 3:
-                    raise GarbledReply(f"position reply {data!r} does not hold three numbers")
-                x, y, z = (parse_reply_number(f, "a coordinate") for f in fields)
+                    raise GarbledReply(
+                        Message("position reply {data!r} does not hold three numbers", data=data)
+                    )
+                x, y, z = (parse_reply_number(f, _A_COORDINATE) for f in fields)
                 self.finish(PositionReport(x, y, z))
             elif isinstance(command, (GetSpeed, GetMinSpeed, GetMaxSpeed)):
-                self.finish(parse_reply_number(data or "", "the speed"))
+                self.finish(parse_reply_number(data or "", _THE_SPEED))
             elif isinstance(command, GetId):
                 self.finish((data or "").strip())
             elif isinstance(command, Help):
@@ -205,7 +246,10 @@ class CoxirisProtocol(Protocol):
         completion=Completion.REPLY,
         resolution=0.01,  # positions are printed with two decimals
         busy_silent=True,  # a blocking move callback delays every reply (PROTOCOLS.md §1)
-        notes=("speeds are reported rounded to whole mm/s", "positions are reported to 0.01 mm"),
+        notes=(
+            Message("speeds are reported rounded to whole mm/s"),
+            Message("positions are reported to 0.01 mm"),
+        ),
     )
 
     def new_framer(self) -> LineFramer:
@@ -222,7 +266,7 @@ class CoxirisProtocol(Protocol):
             text = frame.decode("ascii")
         except UnicodeDecodeError as exc:
             raise FrameError(
-                f"non-ASCII bytes in a COXIRIS line: {frame.hex(' ').upper()}"
+                Message("non-ASCII bytes in a COXIRIS line: {bytes}", bytes=frame.hex(" ").upper())
             ) from exc
         if text.startswith("ACK "):
             return [Ack(text[4:].strip())]
@@ -251,8 +295,11 @@ class CoxirisProtocol(Protocol):
         for line in data.replace(b"\r", b"\n").split(b"\n"):
             if len(line) > MAX_COMMAND_LENGTH:
                 raise BadInput(
-                    f"line refused: {len(line)} characters, the device takes at most "
-                    f"{MAX_COMMAND_LENGTH}"
+                    Message(
+                        "line refused: {length} characters, the device takes at most {most}",
+                        length=len(line),
+                        most=MAX_COMMAND_LENGTH,
+                    )
                 )
 
     def raw_exchange(self, data: bytes) -> CoxirisExchange | None:

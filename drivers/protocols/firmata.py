@@ -17,6 +17,7 @@ from drivers.commands import Command, GetId, MoveBy, Raw
 from drivers.errors import BadInput, DeviceError, FrameError
 from drivers.events import ErrorReport, Event, Feedback, TextLine
 from drivers.framers.sysex import SysexFramer
+from drivers.messages import Message
 from drivers.protocols.base import Exchange, Point, Protocol, Setting
 from drivers.protocols.piframe import NoReply
 
@@ -30,10 +31,15 @@ CONFIGURE, STEP, LIBRARY_VERSION = 0x00, 0x01, 0x02
 MAX_STEPS = 16383  # 14 bits: PyMata masks more (a bug); the driver splits instead
 MAX_RPM = 2**21 - 1
 USEFUL_RPM = 1000  # the speed control's top: Arduino's Stepper.step cannot go much faster
-STEPS_PER_REV = Setting("steps_per_rev", "steps/rev", 200, 1, MAX_STEPS, "Motor steps per turn")
-STEPS_PER_MM = Setting("steps_per_mm", "steps/mm", 80, 0.001, 1e6, "Motor steps per millimetre")
+STEPS_PER_REV = Setting(
+    "steps_per_rev", "steps/rev", 200, 1, MAX_STEPS, Message("Motor steps per turn")
+)
+STEPS_PER_MM = Setting(
+    "steps_per_mm", "steps/mm", 80, 0.001, 1e6, Message("Motor steps per millimetre")
+)
 PINS = tuple(
-    Setting(f"pin{i}", "", -1, -1, 127, f"Motor control pin {i} (-1: none)") for i in range(1, 5)
+    Setting(f"pin{i}", "", -1, -1, 127, Message("Motor control pin {pin} (-1: none)", pin=i))
+    for i in range(1, 5)
 )
 IDENTIFY_TIMEOUT = 3.0  # s for the version and firmware name, after the board's reset
 
@@ -50,8 +56,8 @@ CAPABILITIES = Capabilities(
     raw_line_end="",
     speed_in_moves=True,
     startup_wait=2.5,  # an Arduino resets when the port opens; its bootloader runs up to ~2 s
-    home_note="Moves back to 0 by a relative move: the board has no homing",
-    notes=("no completion message: moves are estimated from speed and steps",),
+    home_note=Message("Moves back to 0 by a relative move: the board has no homing"),
+    notes=(Message("no completion message: moves are estimated from speed and steps"),),
 )
 
 
@@ -74,6 +80,14 @@ class StepperStep(Command):
 @dataclass(frozen=True)
 class StepperVersion(Command):
     """Ask the stepper library's version."""
+
+
+_COMMAND_NAMES: dict[type[Command], str] = {
+    GetId: Message("the version and firmware name (is a Firmata board on this port?)"),
+    StepperConfig: "STEPPER_CONFIGURE",
+    StepperVersion: "STEPPER_LIBRARY_VERSION",
+    StepperStep: "STEPPER_STEP",
+}
 
 
 def step_parts(rpm: int, steps: int) -> list[StepperStep]:
@@ -99,9 +113,31 @@ def from_pairs(data: bytes) -> str:
     return chars.decode("latin-1")
 
 
+# What a checked number is (made once: a step message is checked at every move).
+_RPM = Message("speed (rpm)")
+_STEPS_PER_REV = Message("steps per revolution")
+_PIN = Message("pin")
+_STEPS = Message("steps")
+_SYSEX_NAMES = {
+    CAPABILITY_RESPONSE: Message("capability response"),
+    ANALOG_MAPPING_RESPONSE: Message("analog mapping"),
+}
+_VERSION_REQUEST = Message("version request")
+_FIRMWARE_REQUEST = Message("firmware name request")
+_LIBRARY_VERSION_REQUEST = Message("STEPPER_LIBRARY_VERSION request")
+
+
 def _check(value: int, low: int, high: int, what: str) -> int:
     if not isinstance(value, int) or not low <= value <= high:
-        raise BadInput(f"{what} {value} refused: the stepper takes {low} to {high}")
+        raise BadInput(
+            Message(
+                "{what} {value} refused: the stepper takes {low} to {high}",
+                what=what,
+                value=value,
+                low=low,
+                high=high,
+            )
+        )
     return value
 
 
@@ -127,10 +163,10 @@ class _Reply(Exchange):
     def handle(self, event: Event) -> bool:
         """The wanted message ends it; a STRING_DATA error fails it."""
         if isinstance(event, ErrorReport):
-            self.fail(DeviceError(f"the board answered: {event.message}"))
+            self.fail(DeviceError(Message("the board answered: {error}", error=event.message)))
             return True
         if isinstance(event, Feedback) and event.code == "version":
-            self.version = event.meaning.removeprefix("Firmata protocol ")
+            self.version = f"{event.value[1]}.{event.value[2]}"  # the report's bytes
             return self.code == "version"
         if isinstance(event, Feedback) and event.code == self.code:
             self.finish(event.meaning)
@@ -180,16 +216,22 @@ class FirmataProtocol(Protocol):
             max(1, round(steps_per_s * 60 / self.values["steps_per_rev"])),
             1,
             MAX_RPM,
-            "speed (rpm)",
+            _RPM,
         )
 
     def steps(self, mm: float) -> int:
         """Whole steps for a distance; BadInput where it is finer than one step."""
         steps = mm * self.values["steps_per_mm"]
         if abs(steps - round(steps)) > 1e-6 * max(1.0, abs(steps)):
+            per_mm = self.values["steps_per_mm"]
             raise BadInput(
-                f"{mm:g} mm refused: the motor moves in steps of "
-                f"{1 / self.values['steps_per_mm']:g} mm ({self.values['steps_per_mm']:g} steps/mm)"
+                Message(
+                    "{distance:g} mm refused: the motor moves in steps of {step:g} mm "
+                    "({per_mm:g} steps/mm)",
+                    distance=mm,
+                    step=1 / per_mm,
+                    per_mm=per_mm,
+                )
             )
         return round(steps)
 
@@ -197,7 +239,7 @@ class FirmataProtocol(Protocol):
         """A move as step messages of at most 16383 steps; a speed is kept, not sent."""
         if isinstance(command, MoveBy):
             if command.dy or command.dz:
-                raise BadInput("the Firmata stepper is one axis (X): Y and Z must be 0")
+                raise BadInput(Message("the Firmata stepper is one axis (X): Y and Z must be 0"))
             rpm = self.rpm(command.speed or self.capabilities.default_speed)
             return list(step_parts(rpm, self.steps(command.dx)))
         return [command]
@@ -207,16 +249,20 @@ class FirmataProtocol(Protocol):
         if isinstance(command, GetId):
             return bytes((REPORT_VERSION, START, REPORT_FIRMWARE, END))
         if isinstance(command, StepperConfig):
-            _check(command.steps_per_rev, 1, MAX_STEPS, "steps per revolution")
+            _check(command.steps_per_rev, 1, MAX_STEPS, _STEPS_PER_REV)
             if len(command.pins) not in (2, 4):
-                raise BadInput(f"{len(command.pins)} pins refused: a stepper has 2 or 4 pins")
+                raise BadInput(
+                    Message(
+                        "{count} pins refused: a stepper has 2 or 4 pins", count=len(command.pins)
+                    )
+                )
             for pin in command.pins:
-                _check(pin, 0, 127, "pin")
+                _check(pin, 0, 127, _PIN)
             spr = command.steps_per_rev
             return bytes((START, STEPPER_DATA, CONFIGURE, spr & 0x7F, spr >> 7, *command.pins, END))
         if isinstance(command, StepperStep):
-            rpm = _check(command.rpm, 1, MAX_RPM, "speed (rpm)")
-            steps = _check(abs(command.steps), 0, MAX_STEPS, "steps")
+            rpm = _check(command.rpm, 1, MAX_RPM, _RPM)
+            steps = _check(abs(command.steps), 0, MAX_STEPS, _STEPS)
             direction = 1 if command.steps >= 0 else 0
             speed = (rpm & 0x7F, (rpm >> 7) & 0x7F, rpm >> 14)
             return bytes(
@@ -228,24 +274,29 @@ class FirmataProtocol(Protocol):
             return b"".join(self.encode(part) for part in self.expand(command))
         if isinstance(command, Raw):
             return command.data
-        raise BadInput(f"Firmata has no message for {type(command).__name__}")
+        raise BadInput(
+            Message("Firmata has no message for {command}", command=type(command).__name__)
+        )
 
     def decode(self, frame: bytes) -> list[Event]:
         """Every Firmata message named; STRING_DATA as the board's own words."""
         if not frame:
-            raise FrameError("an empty Firmata message")
+            raise FrameError(Message("an empty Firmata message"))
         status = frame[0]
         if status == REPORT_VERSION and len(frame) == 3:
-            return [Feedback("version", frame, f"Firmata protocol {frame[1]}.{frame[2]}")]
+            version = Message("Firmata protocol {major}.{minor}", major=frame[1], minor=frame[2])
+            return [Feedback("version", frame, version)]
         if 0xE0 <= status <= 0xEF and len(frame) == 3:
-            return [
-                Feedback("analog", frame, f"analog pin {status & 0x0F}: {frame[1] | frame[2] << 7}")
-            ]
+            value = frame[1] | frame[2] << 7
+            meaning = Message("analog pin {pin}: {value}", pin=status & 0x0F, value=value)
+            return [Feedback("analog", frame, meaning)]
         if 0x90 <= status <= 0x9F and len(frame) == 3:
             bits = frame[1] | frame[2] << 7
-            return [Feedback("digital", frame, f"digital port {status & 0x0F}: {bits:08b}")]
+            meaning = Message("digital port {port}: {bits:08b}", port=status & 0x0F, bits=bits)
+            return [Feedback("digital", frame, meaning)]
         if status != START or len(frame) < 3:
-            return [Feedback("firmata", frame, f"message {frame.hex(' ').upper()}")]
+            meaning = Message("message {bytes}", bytes=frame.hex(" ").upper())
+            return [Feedback("firmata", frame, meaning)]
         command, data = frame[1], frame[2:-1]
         if command == STRING_DATA:
             text = from_pairs(data)
@@ -255,11 +306,8 @@ class FirmataProtocol(Protocol):
             return [Feedback("firmware", frame, f"{name} {data[0]}.{data[1]}")]
         if command == STEPPER_DATA and len(data) == 2:
             return [Feedback("stepper_version", frame, str(data[0] | data[1] << 7))]
-        names = {
-            CAPABILITY_RESPONSE: "capability response",
-            ANALOG_MAPPING_RESPONSE: "analog mapping",
-        }
-        return [Feedback("sysex", frame, names.get(command, f"SysEx {command:#04x}"))]
+        name = _SYSEX_NAMES.get(command) or Message("SysEx {command:#04x}", command=command)
+        return [Feedback("sysex", frame, name)]
 
     def is_restart(self, event: Event, waiting: Command | None = None) -> bool:
         """`Firmata.begin()` reports the protocol version unasked at every boot (identifying
@@ -277,20 +325,30 @@ class FirmataProtocol(Protocol):
     def describe_sent(self, frame: bytes) -> str:
         """What the host asked the board, e.g. `STEPPER_STEP 300 rpm, 500 steps forward`."""
         if frame == bytes((REPORT_VERSION,)):
-            return "version request"
+            return _VERSION_REQUEST
         if frame[:2] == bytes((START, REPORT_FIRMWARE)):
-            return "firmware name request"
+            return _FIRMWARE_REQUEST
         if frame[:2] == bytes((START, STEPPER_DATA)) and len(frame) >= 4:
             sub, data = frame[2], frame[3:-1]
             if sub == CONFIGURE and len(data) >= 2:
                 pins = " ".join(str(p) for p in data[2:])
-                return f"STEPPER_CONFIGURE {data[0] | data[1] << 7} steps/rev, pins {pins}"
+                return Message(
+                    "STEPPER_CONFIGURE {steps} steps/rev, pins {pins}",
+                    steps=data[0] | data[1] << 7,
+                    pins=pins,
+                )
             if sub == STEP and len(data) == 6:
                 rpm = data[0] | data[1] << 7 | data[2] << 14
-                way = "forward" if data[5] else "reverse"
-                return f"STEPPER_STEP {rpm} rpm, {data[3] | data[4] << 7} steps {way}"
+                steps = data[3] | data[4] << 7
+                if data[5]:
+                    return Message(
+                        "STEPPER_STEP {rpm} rpm, {steps} steps forward", rpm=rpm, steps=steps
+                    )
+                return Message(
+                    "STEPPER_STEP {rpm} rpm, {steps} steps reverse", rpm=rpm, steps=steps
+                )
             if sub == LIBRARY_VERSION:
-                return "STEPPER_LIBRARY_VERSION request"
+                return _LIBRARY_VERSION_REQUEST
         return super().describe_sent(frame)
 
     def sent_kind(self, frame: bytes) -> str:
@@ -313,13 +371,7 @@ class FirmataProtocol(Protocol):
 
     def command_name(self, command: Command) -> str:
         """What the board was asked, in Firmata's words."""
-        names = {
-            GetId: "the version and firmware name (is a Firmata board on this port?)",
-            StepperConfig: "STEPPER_CONFIGURE",
-            StepperVersion: "STEPPER_LIBRARY_VERSION",
-            StepperStep: "STEPPER_STEP",
-        }
-        return names.get(type(command), type(command).__name__)
+        return _COMMAND_NAMES.get(type(command), type(command).__name__)
 
     def move_timing(
         self, command: Command, start: Point, target: Point

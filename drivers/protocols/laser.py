@@ -29,6 +29,7 @@ from drivers.commands import (
 from drivers.errors import BadInput, DeviceError, FrameError, QueueFull, Retransmit
 from drivers.events import Event, PositionReport, Undecodable
 from drivers.framers.stuffed import StuffedFramer
+from drivers.messages import Message, message_of
 from drivers.protocols.base import Exchange, Protocol, Setting
 from drivers.protocols.laser_codec import (
     CHAR,
@@ -54,12 +55,13 @@ WORD_NAMES = {
     SEQUENCE: "SEQUENCE", ERROR: "ERROR",
 }  # fmt: skip
 ERROR_CODES = {
-    1: "framing",
-    2: "checksum",
-    3: "unknown command",
-    4: "bad arguments",
-    5: "queue full",
+    1: Message("framing"),
+    2: Message("checksum"),
+    3: Message("unknown command"),
+    4: Message("bad arguments"),
+    5: Message("queue full"),
 }
+_UNDOCUMENTED = Message("undocumented")
 
 
 @dataclass(frozen=True)
@@ -98,8 +100,12 @@ class LaserReply(Event):
     def __str__(self) -> str:
         if self.error is not None:
             failed, code = self.error
-            name = WORD_NAMES.get(failed, f"{failed:#04x}")
-            return f"error {code} ({ERROR_CODES.get(code, 'undocumented')}) for {name}"
+            return Message(
+                "error {code} ({meaning}) for {command}",
+                code=code,
+                meaning=ERROR_CODES.get(code, _UNDOCUMENTED),
+                command=WORD_NAMES.get(failed, f"{failed:#04x}"),
+            )
         return " ".join(
             WORD_NAMES.get(i.word, f"{i.word:#04x}")
             + "".join(f" {list(f.values)}" for f in i.fields)
@@ -110,7 +116,7 @@ class LaserReply(Event):
 def move_instruction(x: float, y: float, z: float, speed: float) -> Instruction:
     """MOVE_LINEAR to (x, y, z) mm at `speed` mm/s."""
     if not speed > 0:
-        raise BadInput(f"speed {speed:g} mm/s refused: it must be above 0")
+        raise BadInput(Message("speed {speed:g} mm/s refused: it must be above 0", speed=speed))
     return Instruction(MOVE_LINEAR, (Field(FLOAT, (x, y, z, speed)),))
 
 
@@ -120,7 +126,9 @@ def reply_value(command: Command, reply: LaserReply) -> object:
     if isinstance(command, GetPosition):
         values = first.values(FLOAT)
         if len(values) != 3:
-            raise DeviceError(f"the position reply holds {len(values)} numbers, not 3")
+            raise DeviceError(
+                Message("the position reply holds {count} numbers, not 3", count=len(values))
+            )
         x, y, z = (float(v) for v in values)
         return PositionReport(x, y, z)
     if isinstance(command, GetId):
@@ -128,7 +136,9 @@ def reply_value(command: Command, reply: LaserReply) -> object:
     if isinstance(command, GetStatus):
         values = first.values(UINT8)
         if len(values) != 2:
-            raise DeviceError(f"the status reply holds {len(values)} numbers, not 2")
+            raise DeviceError(
+                Message("the status reply holds {count} numbers, not 2", count=len(values))
+            )
         return {"queue": int(values[0]), "moving": bool(values[1])}
     return reply
 
@@ -153,8 +163,13 @@ class LaserExchange(Exchange):
             failed, code = event.error
             if failed not in (self.word, 0):
                 return False  # a late error reply to another frame
-            meaning = ERROR_CODES.get(code, f"undocumented code {code}")
-            message = f"{self.what}: the device answered error {code} ({meaning})"
+            meaning = ERROR_CODES.get(code) or Message("undocumented code {code}", code=code)
+            message = Message(
+                "{command}: the device answered error {code} ({meaning})",
+                command=self.what,
+                code=code,
+                meaning=meaning,
+            )
             # A queued frame the driver built cannot be malformed unless damaged on the way past
             # the one-byte sum (its header, so that the CRC is not even read): sent again too.
             if code in (1, 2) or (code in (3, 4) and self.sequence is not None):
@@ -194,11 +209,20 @@ class LaserProtocol(Protocol):
         speed_in_moves=True,
         dwell=True,
         streaming=True,
-        notes=("moves are queued on the device; the position is read back while they run",),
+        notes=(
+            Message("moves are queued on the device; the position is read back while they run"),
+        ),
     )
     attempts = 3
     settings = (
-        Setting("next_sequence", "", 0, 0, 32767, "The next queued frame's number (0: random)"),
+        Setting(
+            "next_sequence",
+            "",
+            0,
+            0,
+            32767,
+            Message("The next queued frame's number (0: random)"),
+        ),
     )
 
     def __init__(self, variant: str | None = None) -> None:
@@ -230,14 +254,25 @@ class LaserProtocol(Protocol):
             queued = [Instruction(GO_HOME)]
         elif isinstance(command, Dwell):
             if not 0 <= command.ms <= 32767:
-                raise BadInput(f"dwell {command.ms} ms refused: the field is an int16 (0 to 32767)")
+                raise BadInput(
+                    Message(
+                        "dwell {ms} ms refused: the field is an int16 (0 to 32767)", ms=command.ms
+                    )
+                )
             queued = [Instruction(DWELL, (Field(INT16, (command.ms,)),))]
         elif isinstance(command, QueuedGroup):
             queued = list(command.instructions)
             if not 1 <= len(queued) <= GROUP or any(i.word not in QUEUED for i in queued):
-                raise BadInput(f"a queued frame holds 1 to {GROUP} queued instructions")
+                raise BadInput(
+                    Message("a queued frame holds 1 to {most} queued instructions", most=GROUP)
+                )
         else:
-            raise BadInput(f"the laser link has no instruction for {type(command).__name__}")
+            raise BadInput(
+                Message(
+                    "the laser link has no instruction for {command}",
+                    command=type(command).__name__,
+                )
+            )
         number = getattr(command, "sequence", None) or self.sequence
         # The frame's own CRC-16 beside its number: the link's one-byte sum misses two errors
         # that cancel out, and a queued move must not run with damaged coordinates.
@@ -256,7 +291,7 @@ class LaserProtocol(Protocol):
         try:
             return [LaserReply(tuple(decode_instructions(frame)))]
         except FrameError as exc:
-            return [Undecodable(frame, str(exc))]
+            return [Undecodable(frame, message_of(exc) or str(exc))]
 
     def exchange(self, command: Command) -> LaserExchange:
         """The reply carries the first instruction's word (and, queued, the frame number)."""
@@ -289,7 +324,7 @@ class LaserProtocol(Protocol):
             return None
         first = instructions[0]
         sequence = int(first.values(INT16)[0]) if first.word == SEQUENCE else None
-        name = WORD_NAMES.get(first.word, f"word {first.word:#04x}")
+        name = WORD_NAMES.get(first.word) or Message("word {word:#04x}", word=first.word)
         return LaserExchange(Raw(data), first.word, sequence, name)
 
     def on_sent(self, command: Command) -> None:
@@ -315,5 +350,9 @@ class LaserProtocol(Protocol):
             return WORD_NAMES.get(instructions[0].word, f"{instructions[0].word:#04x}")
         words = [WORD_NAMES.get(i.word, "?") for i in instructions[1:]]
         shown = words[0] if len(set(words)) == 1 else "+".join(words)
-        count = f" ×{len(words)}" if len(words) > 1 else ""
-        return f"frame {instructions[0].values(INT16)[0]} ({shown}{count})"
+        number = instructions[0].values(INT16)[0]
+        if len(words) > 1:
+            return Message(
+                "frame {number} ({words} ×{count})", number=number, words=shown, count=len(words)
+            )
+        return Message("frame {number} ({words})", number=number, words=shown)

@@ -12,6 +12,7 @@ import struct
 from dataclasses import dataclass
 
 from drivers.errors import BadInput, FrameError
+from drivers.messages import Message
 
 FLOAT, INT16, UINT8, CHAR = 0xF0, 0xF1, 0xF2, 0xF3
 _FORMATS = {FLOAT: ("<f", 4), INT16: ("<h", 2), UINT8: ("<B", 1), CHAR: ("<c", 1)}
@@ -30,25 +31,35 @@ class Field:
     def encode(self) -> bytes:
         """Marker, count, the values; BadInput where a value does not fit its type."""
         if not 0 < len(self.values) <= 255:
-            raise BadInput(f"a field holds 1 to 255 values, not {len(self.values)}")
+            raise BadInput(
+                Message("a field holds 1 to 255 values, not {count}", count=len(self.values))
+            )
         fmt, _ = _FORMATS[self.kind]
         out = bytearray((self.kind, len(self.values)))
         for value in self.values:
             if self.kind == CHAR:
                 text = str(value)
                 if len(text) != 1 or not text.isascii():
-                    raise BadInput(f"{value!r} is not one ASCII character")
+                    raise BadInput(Message("{value!r} is not one ASCII character", value=value))
                 out += text.encode("ascii")
                 continue
             if self.kind == FLOAT:
                 number = float(value)
                 if not math.isfinite(number) or abs(number) > FLOAT32_MAX:
-                    raise BadInput(f"{value} does not fit a float32")
+                    raise BadInput(Message("{value} does not fit a float32", value=value))
                 out += struct.pack(fmt, number)
                 continue
             low, high = _RANGES[self.kind]
             if not isinstance(value, int) or not low <= value <= high:
-                raise BadInput(f"{value} does not fit a {_NAMES[self.kind]} ({low} to {high})")
+                raise BadInput(
+                    Message(
+                        "{value} does not fit a {kind} ({low} to {high})",
+                        value=value,
+                        kind=_NAMES[self.kind],
+                        low=low,
+                        high=high,
+                    )
+                )
             out += struct.pack(fmt, value)
         return bytes(out)
 
@@ -63,7 +74,9 @@ class Instruction:
     def encode(self) -> bytes:
         """The instruction's bytes."""
         if not 0x01 <= self.word <= 0x7F:
-            raise BadInput(f"command word {self.word:#04x} is outside 0x01..0x7F")
+            raise BadInput(
+                Message("command word {word:#04x} is outside 0x01..0x7F", word=self.word)
+            )
         return bytes((self.word,)) + b"".join(f.encode() for f in self.fields)
 
     def values(self, kind: int) -> tuple[float | int | str, ...]:
@@ -78,18 +91,37 @@ def decode_instructions(data: bytes) -> list[Instruction]:
     while index < len(data):
         word = data[index]
         if not 0x01 <= word <= 0x7F:
-            raise FrameError(f"byte {index}: {word:#04x} where a command word was expected")
+            raise FrameError(
+                Message(
+                    "byte {index}: {byte:#04x} where a command word was expected",
+                    index=index,
+                    byte=word,
+                )
+            )
         index += 1
         fields: list[Field] = []
         while index < len(data) and data[index] in _FORMATS:
             kind = data[index]
             if index + 1 >= len(data):
-                raise FrameError(f"byte {index}: a {_NAMES[kind]} field without its count")
+                raise FrameError(
+                    Message(
+                        "byte {index}: a {kind} field without its count",
+                        index=index,
+                        kind=_NAMES[kind],
+                    )
+                )
             count = data[index + 1]
             fmt, size = _FORMATS[kind]
             end = index + 2 + count * size
             if end > len(data):
-                raise FrameError(f"byte {index}: {count} {_NAMES[kind]} values run past the data")
+                raise FrameError(
+                    Message(
+                        "byte {index}: {count} {kind} values run past the data",
+                        index=index,
+                        count=count,
+                        kind=_NAMES[kind],
+                    )
+                )
             raw = data[index + 2 : end]
             if kind == CHAR:
                 values: tuple[float | int | str, ...] = tuple(raw.decode("latin-1"))

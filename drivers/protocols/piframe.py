@@ -18,6 +18,7 @@ from drivers.commands import Arc, Command, Dwell, Home, MoveTo, Raw, SetHome
 from drivers.errors import BadInput
 from drivers.events import Event, Feedback
 from drivers.framers.fixed import FixedFramer
+from drivers.messages import Message
 from drivers.protocols.base import Exchange, Point, Protocol, Setting
 
 HEADER = b"\x7b\x7d"
@@ -27,7 +28,7 @@ INT16 = (-32768, 32767)
 UINT16 = (0, 65535)
 ACTION_NAMES = {DWELL: "Dwell", LINEAR: "Linear", CIRCULAR: "Circular", SET_HOME: "SetHome"}
 TICKS_PER_MM = Setting(
-    "ticks_per_mm", "ticks/mm", 100.0, 0.001, 100000.0, "Encoder ticks per millimetre"
+    "ticks_per_mm", "ticks/mm", 100.0, 0.001, 100000.0, Message("Encoder ticks per millimetre")
 )
 DEFAULT_SPEED = 10.0  # mm/s until the operator sets one
 
@@ -47,9 +48,20 @@ CAPABILITIES = Capabilities(
     dtr=True,  # the seed's set-up: "cocher la case DTR"
     arcs=True,
     dwell=True,
-    home_note="Moves back to (0, 0, 0) with a Linear frame: the device has no homing",
-    notes=("write-only: positions are commanded, completion estimated from distance and speed",),
+    home_note=Message("Moves back to (0, 0, 0) with a Linear frame: the device has no homing"),
+    notes=(
+        Message(
+            "write-only: positions are commanded, completion estimated from distance and speed"
+        ),
+    ),
 )
+
+# The fields a refusal names, made once: every move checks its fields.
+_SPEEDS = {axis: Message("speed {axis}", axis=axis) for axis in "XYZ"}
+_CENTRE = {axis: Message("centre {axis}", axis=axis) for axis in "XY"}
+_RADIUS = Message("radius")
+_ANGULAR_SPEED = Message("angular speed")
+_DWELL = Message("dwell")
 
 
 class NoReply(Exchange):
@@ -69,7 +81,14 @@ def _field(value: float, name: str, bounds: tuple[int, int], unit: str) -> int:
     number = round(value)
     if not bounds[0] <= number <= bounds[1]:
         raise BadInput(
-            f"{name} {value:g} {unit} refused: a pi-frame field holds {bounds[0]} to {bounds[1]}"
+            Message(
+                "{field} {value:g} {unit} refused: a pi-frame field holds {low} to {high}",
+                field=name,
+                value=value,
+                unit=unit,
+                low=bounds[0],
+                high=bounds[1],
+            )
         )
     return number
 
@@ -111,14 +130,27 @@ class PiFrameProtocol(Protocol):
         ticks = mm * self.ticks_per_mm
         if abs(ticks - round(ticks)) > 1e-6 * max(1.0, abs(ticks)):
             raise BadInput(
-                f"{name} {mm:g} mm refused: the device moves in ticks of "
-                f"{1 / self.ticks_per_mm:g} mm ({self.ticks_per_mm:g} ticks/mm)"
+                Message(
+                    "{field} {distance:g} mm refused: the device moves in ticks of {tick:g} mm "
+                    "({per_mm:g} ticks/mm)",
+                    field=name,
+                    distance=mm,
+                    tick=1 / self.ticks_per_mm,
+                    per_mm=self.ticks_per_mm,
+                )
             )
-        limit = f"{INT16[0] / self.ticks_per_mm:g} to {INT16[1] / self.ticks_per_mm:g} mm"
         if not INT16[0] <= round(ticks) <= INT16[1]:
             raise BadInput(
-                f"{name} {mm:g} mm refused: {round(ticks)} ticks do not fit 16 bits "
-                f"({limit} at {self.ticks_per_mm:g} ticks/mm)"
+                Message(
+                    "{field} {distance:g} mm refused: {ticks} ticks do not fit 16 bits "
+                    "({low:g} to {high:g} mm at {per_mm:g} ticks/mm)",
+                    field=name,
+                    distance=mm,
+                    ticks=round(ticks),
+                    low=INT16[0] / self.ticks_per_mm,
+                    high=INT16[1] / self.ticks_per_mm,
+                    per_mm=self.ticks_per_mm,
+                )
             )
         return round(ticks)
 
@@ -132,7 +164,7 @@ class PiFrameProtocol(Protocol):
         for axis, delta in zip("XYZ", deltas, strict=True):
             wanted = speed * self.ticks_per_mm * abs(delta) / length
             value = max(1, math.ceil(wanted - 1e-9)) if delta else 0
-            speeds.append(_field(value, f"speed {axis}", UINT16, "ticks/s"))
+            speeds.append(_field(value, _SPEEDS[axis], UINT16, "ticks/s"))
         return tuple(speeds)
 
     def frame(self, command: Command) -> bytes:
@@ -151,30 +183,30 @@ class PiFrameProtocol(Protocol):
             return self.frame(MoveTo(0.0, 0.0, 0.0))
         elif isinstance(command, Arc):
             action, direction = CIRCULAR, 1 if command.ccw else 0
-            fields[0] = self._ticks(command.cx, "centre X")
-            fields[1] = self._ticks(command.cy, "centre Y")
+            fields[0] = self._ticks(command.cx, _CENTRE["X"])
+            fields[1] = self._ticks(command.cy, _CENTRE["Y"])
             fields[2] = self._ticks(command.z, "Z")
-            fields[6] = _field(
-                command.radius * self.ticks_per_mm, "radius", (1, UINT16[1]), "ticks"
-            )
+            fields[6] = _field(command.radius * self.ticks_per_mm, _RADIUS, (1, UINT16[1]), "ticks")
             speed = command.speed or DEFAULT_SPEED
             angular = math.degrees(speed / command.radius) * 100
-            fields[7] = _field(max(1, angular), "angular speed", UINT16, "0.01°/s")
+            fields[7] = _field(max(1, angular), _ANGULAR_SPEED, UINT16, "0.01°/s")
             seconds = command.sweep() / (fields[7] / 100)
             fields[5] = _field(
-                abs(fields[2] - self.commanded[2]) / seconds, "speed Z", UINT16, "ticks/s"
+                abs(fields[2] - self.commanded[2]) / seconds, _SPEEDS["Z"], UINT16, "ticks/s"
             )
             fields[8] = round(command.start * 100) % 36000
             fields[9] = round(command.end * 100) % 36000
         elif isinstance(command, Dwell):
             action = DWELL
-            fields[0] = _field(command.ms, "dwell", UINT16, "ms")
+            fields[0] = _field(command.ms, _DWELL, UINT16, "ms")
         elif isinstance(command, SetHome):
             action = SET_HOME
         elif isinstance(command, Raw):
             return command.data
         else:
-            raise BadInput(f"pi-frame has no frame for {type(command).__name__}")
+            raise BadInput(
+                Message("pi-frame has no frame for {command}", command=type(command).__name__)
+            )
         body = struct.pack(">B3h7HB", action, *fields, direction)
         return HEADER + body + END
 
@@ -185,28 +217,44 @@ class PiFrameProtocol(Protocol):
     def decode(self, frame: bytes) -> list[Event]:
         """The device sends nothing; a frame seen on the line (an echo) is named, not obeyed."""
         action = frame[2] if len(frame) > 2 else -1
-        return [Feedback("frame", frame, ACTION_NAMES.get(action, f"action {action}"))]
+        name = ACTION_NAMES.get(action) or Message("action {number}", number=action)
+        return [Feedback("frame", frame, name)]
 
     def describe_sent(self, frame: bytes) -> str:
         """A frame's action and fields, e.g. `Linear X=100 Y=50 Z=0 ticks at 9/5/0 ticks/s`."""
         if len(frame) != 25:
-            return f"a {len(frame)}-byte frame"
+            return Message("a {length}-byte frame", length=len(frame))
         action, x, y, z, sx, sy, sz, radius, angular, a0, a1, direction = struct.unpack(
             ">B3h7HB", frame[2:-1]
         )
         if action == LINEAR:
-            return f"Linear X={x} Y={y} Z={z} ticks at {sx}/{sy}/{sz} ticks/s"
+            return Message(
+                "Linear X={x} Y={y} Z={z} ticks at {sx}/{sy}/{sz} ticks/s",
+                x=x,
+                y=y,
+                z=z,
+                sx=sx,
+                sy=sy,
+                sz=sz,
+            )
         if action == CIRCULAR:
-            turn = "CCW" if direction else "CW"
-            return (
-                f"Circular centre ({x}, {y}) radius {radius} ticks, {a0 / 100:g}° to "
-                f"{a1 / 100:g}° {turn} at {angular / 100:g}°/s, Z to {z}"
+            return Message(
+                "Circular centre ({x}, {y}) radius {radius} ticks, {start:g}° to {end:g}° "
+                "{turn} at {speed:g}°/s, Z to {z}",
+                x=x,
+                y=y,
+                radius=radius,
+                start=a0 / 100,
+                end=a1 / 100,
+                turn="CCW" if direction else "CW",
+                speed=angular / 100,
+                z=z,
             )
         if action == DWELL:
-            return f"Dwell {x & 0xFFFF} ms"
+            return Message("Dwell {ms} ms", ms=x & 0xFFFF)
         if action == SET_HOME:
             return "SetHome"
-        return f"action {action}"
+        return Message("action {number}", number=action)
 
     def sent_kind(self, frame: bytes) -> str:
         """Every action moves (or waits) but SetHome, a setting."""

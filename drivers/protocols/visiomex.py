@@ -16,6 +16,7 @@ from drivers.commands import Command, Home, MoveBy, MoveTo, Raw, SetParameter, S
 from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
 from drivers.events import ErrorReport, Event, Feedback, TextLine
 from drivers.framers.lines import LineFramer
+from drivers.messages import Message
 from drivers.parameters import ParameterWritten
 from drivers.protocols.base import Exchange, Point, Protocol, Variant
 from drivers.protocols.visiomex_model import (
@@ -36,18 +37,29 @@ from drivers.protocols.visiomex_params import (
 REPLY_MARGIN = 0.5  # s beyond the silence window before a reply counts as missing
 PAD = "N"
 MOVE_TYPES = {"linear": "L", "rotational": "R", "steps": "S"}
-FEEDBACK = {"FP0001": "move package confirmed", "FA0001": "action accomplished"}
-ERRORS = {
-    "EP0001": "package size mismatch",
-    "EP0002": "invalid command type",
-    "EP0003": "invalid motion type",
-    "EP0004": "invalid direction for the X axis",
-    "EP0005": "invalid direction for the Y axis",
-    "EP0006": "invalid set parameter ID",
-    "EF0001": "parse function error in the firmware",
-    "EF0002": "invalid driving mechanism",
+# What the codes mean (the protocol's documents), made once: decoding a line builds no text.
+FEEDBACK = {
+    "FP0001": Message("move package confirmed"),
+    "FA0001": Message("action accomplished"),
 }
+ERRORS = {
+    "EP0001": Message("package size mismatch"),
+    "EP0002": Message("invalid command type"),
+    "EP0003": Message("invalid motion type"),
+    "EP0004": Message("invalid direction for the X axis"),
+    "EP0005": Message("invalid direction for the Y axis"),
+    "EP0006": Message("invalid set parameter ID"),
+    "EF0001": Message("parse function error in the firmware"),
+    "EF0002": Message("invalid driving mechanism"),
+}
+UNLISTED_ERROR = Message("an error code the documentation does not list")
+_SET = {
+    number: Message("{parameter} set", parameter=parameter.name)
+    for number, parameter in BY_ID.items()
+} | {28: Message("{parameter} set", parameter="driving_mechanism_y")}  # the firmware's FS0028
 _CODE = re.compile(r"(?:FS|FP|FA|EP|EF)\d{4}")
+_UNITS = {"linear": "mm", "rotational": "°", "steps": Message("steps")}
+_GO_HOME = Message("go home")
 BOOT_BANNER = "Checkpoint 2"  # setup() prints it at every boot
 BOOT_ONLY = (1, 2, 3, 4)  # the cycle length is computed at boot only
 
@@ -85,18 +97,18 @@ CAPABILITIES = Capabilities(
     resolution=0.001,  # µm on the wire
     raw_line_end="",  # a packet has no terminator: the silence after it ends it
     move_kinds=tuple(MOVE_TYPES),
-    speed_note=(
+    speed_note=Message(
         "Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times "
         "its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace."
     ),
-    home_note=(
+    home_note=Message(
         "Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move "
         "from the position the panel counted"
     ),
     notes=(
-        "no read-back: the panel keeps what was last written",
-        "positions are commanded, and confirmed by FA0001 when the move ends",
-        "a reply comes 1 s after a packet: the firmware waits for 1 s of silence",
+        Message("no read-back: the panel keeps what was last written"),
+        Message("positions are commanded, and confirmed by FA0001 when the move ends"),
+        Message("a reply comes 1 s after a packet: the firmware waits for 1 s of silence"),
     ),
 )
 
@@ -106,9 +118,8 @@ def _code_meaning(code: str) -> str:
         return FEEDBACK[code]
     if code.startswith("FS"):
         number = int(code[2:])
-        name = BY_ID[number].name if number in BY_ID else f"parameter {number}"
-        return f"{'driving_mechanism_y' if number == 28 else name} set"
-    return f"feedback code {code} is not documented"
+        return _SET.get(number) or Message("parameter {number} set", number=number)
+    return Message("feedback code {code} is not documented", code=code)
 
 
 class VisiomexExchange(Exchange):
@@ -129,9 +140,21 @@ class VisiomexExchange(Exchange):
     def handle(self, event: Event) -> bool:
         """Track one event of the reply."""
         if isinstance(event, ErrorReport) and event.code:
-            message = f"{self.what}: the device answered {event.code} ({event.message})"
             if self.expect is None and event.code == "EP0003":
-                message += "; this firmware revision runs the move anyway"
+                message = Message(
+                    "{command}: the device answered {code} ({meaning}); this firmware revision "
+                    "runs the move anyway",
+                    command=self.what,
+                    code=event.code,
+                    meaning=event.message,
+                )
+            else:
+                message = Message(
+                    "{command}: the device answered {code} ({meaning})",
+                    command=self.what,
+                    code=event.code,
+                    meaning=event.message,
+                )
             self.fail(DeviceError(message))
             return True
         if isinstance(event, Feedback):
@@ -141,7 +164,16 @@ class VisiomexExchange(Exchange):
                 self.finish(event)
             else:
                 wanted = self.expect or "FP0001/FA0001"
-                self.fail(GarbledReply(f"{self.what}: expected {wanted}, got {event.code}"))
+                self.fail(
+                    GarbledReply(
+                        Message(
+                            "{command}: expected {wanted}, got {code}",
+                            command=self.what,
+                            wanted=wanted,
+                            code=event.code,
+                        )
+                    )
+                )
             return True
         if isinstance(event, TextLine) and self.expect is None:
             self.notes.append(event.text)  # the firmware's debug lines before FP0001
@@ -161,9 +193,13 @@ class VisiomexProtocol(Protocol):
     capabilities = CAPABILITIES
     write_gap = SILENCE + 0.05
     variants = (
-        Variant("seed", "18-character packets at 9600 baud, as the seed documents", 9600),
-        Variant("prefixed", "the seed's packets; feedback lines start with '>'", 9600),
-        Variant("board12", "12-character packets at 115200 baud, moves in mm, D goes home", 115200),
+        Variant("seed", Message("18-character packets at 9600 baud, as the seed documents"), 9600),
+        Variant("prefixed", Message("the seed's packets; feedback lines start with '>'"), 9600),
+        Variant(
+            "board12",
+            Message("12-character packets at 115200 baud, moves in mm, D goes home"),
+            115200,
+        ),
     )
     parameters = PARAMETERS
 
@@ -205,45 +241,82 @@ class VisiomexProtocol(Protocol):
         if isinstance(command, Raw):
             return self._raw_text(command.data)
         if isinstance(command, MoveTo):
-            raise BadInput("Visiomex moves are relative: the panel sends the distance to go")
+            raise BadInput(
+                Message("Visiomex moves are relative: the panel sends the distance to go")
+            )
         if isinstance(command, SetSpeed):
-            raise BadInput("the speed is parameters 21 and 22: it is sent as two sets")
-        raise BadInput(f"Visiomex has no packet for {type(command).__name__}")
+            raise BadInput(Message("the speed is parameters 21 and 22: it is sent as two sets"))
+        raise BadInput(
+            Message("Visiomex has no packet for {command}", command=type(command).__name__)
+        )
 
     def _move_packet(self, command: MoveBy) -> str:
         kind = command.kind
         if kind not in MOVE_TYPES:
             kinds = ", ".join(MOVE_TYPES)
-            raise BadInput(f"move kind {kind!r} refused: Visiomex moves are {kinds}")
+            raise BadInput(
+                Message(
+                    "move kind {kind!r} refused: Visiomex moves are {kinds}", kind=kind, kinds=kinds
+                )
+            )
         if command.dz != 0:
-            raise BadInput(f"Z {command.dz:g} mm refused: the Visiomex controller has X and Y only")
+            raise BadInput(
+                Message(
+                    "Z {distance:g} mm refused: the Visiomex controller has X and Y only",
+                    distance=command.dz,
+                )
+            )
         digits, per_unit = self.format.digits, self.format.per_mm if kind == "linear" else 1
-        unit = {"linear": "mm", "rotational": "°", "steps": "steps"}[kind]
+        unit = _UNITS[kind]
         fields = []
         for axis, value in (("X", command.dx), ("Y", command.dy)):
             scaled = value * per_unit
             wire = round(scaled)
             if abs(scaled - wire) > 1e-6 * max(1.0, abs(scaled)):
-                finest = "1 µm" if per_unit == 1000 else f"whole {unit}"
-                raise BadInput(f"{axis} {value:g} {unit} refused: this device moves in {finest}")
+                if per_unit == 1000:
+                    refusal = Message(
+                        "{axis} {value:g} {unit} refused: this device moves in 1 µm",
+                        axis=axis,
+                        value=value,
+                        unit=unit,
+                    )
+                else:
+                    refusal = Message(
+                        "{axis} {value:g} {unit} refused: this device moves in whole {unit}",
+                        axis=axis,
+                        value=value,
+                        unit=unit,
+                    )
+                raise BadInput(refusal)
             if abs(wire) > 10**digits - 1:
                 most = f"{(10**digits - 1) / per_unit:.{len(str(per_unit)) - 1}f}"
                 raise BadInput(
-                    f"{axis} {value:g} {unit} refused: one move goes at most {most} {unit} "
-                    f"per axis ({digits} digits)"
+                    Message(
+                        "{axis} {value:g} {unit} refused: one move goes at most {most} {unit} "
+                        "per axis ({digits} digits)",
+                        axis=axis,
+                        value=value,
+                        unit=unit,
+                        most=most,
+                        digits=digits,
+                    )
                 )
             fields.append(("N" if wire < 0 else "P") + f"{abs(wire):0{digits}d}")
         return f"M{MOVE_TYPES[kind]}{fields[0]}{fields[1]}"
 
     def _raw_text(self, data: bytes) -> str:
         if not data.isascii():
-            raise BadInput("packet refused: Visiomex takes ASCII characters only")
+            raise BadInput(Message("packet refused: Visiomex takes ASCII characters only"))
         if not data:
-            raise BadInput("packet refused: it is empty")
+            raise BadInput(Message("packet refused: it is empty"))
         if len(data) > self.format.length:
             raise BadInput(
-                f"packet refused: {len(data)} characters, a Visiomex packet has "
-                f"{self.format.length} (a line ending counts too)"
+                Message(
+                    "packet refused: {length} characters, a Visiomex packet has {most} "
+                    "(a line ending counts too)",
+                    length=len(data),
+                    most=self.format.length,
+                )
             )
         return data.decode("ascii")
 
@@ -264,7 +337,9 @@ class VisiomexProtocol(Protocol):
             text = frame.decode("ascii").rstrip("\r\n")
         except UnicodeDecodeError as exc:
             shown = frame.hex(" ").upper()
-            raise FrameError(f"non-ASCII bytes in a Visiomex line: {shown}") from exc
+            raise FrameError(
+                Message("non-ASCII bytes in a Visiomex line: {bytes}", bytes=shown)
+            ) from exc
         prefix = self.format.prefix
         if prefix and not text.startswith(prefix):
             return [TextLine(text)]
@@ -272,7 +347,7 @@ class VisiomexProtocol(Protocol):
         if not _CODE.fullmatch(code):
             return [TextLine(text)]
         if code.startswith("E"):
-            meaning = ERRORS.get(code, "an error code the documentation does not list")
+            meaning = ERRORS.get(code, UNLISTED_ERROR)
             return [ErrorReport(meaning, code)]
         return [Feedback(code, meaning=_code_meaning(code))]
 
@@ -291,15 +366,19 @@ class VisiomexProtocol(Protocol):
         if isinstance(command, Raw):
             exchange = self.raw_exchange(command.data)
             if exchange is None:
-                raise BadInput("that packet gets no reply: send it from the console instead")
+                raise BadInput(
+                    Message("that packet gets no reply: send it from the console instead")
+                )
             return exchange
-        raise BadInput(f"Visiomex has no packet for {type(command).__name__}")
+        raise BadInput(
+            Message("Visiomex has no packet for {command}", command=type(command).__name__)
+        )
 
     def raw_exchange(self, data: bytes) -> VisiomexExchange | None:
         """A console packet followed by its first letter; `G` gets no reply at all."""
         text = self._raw_text(data)
         first = text[0]
-        what = f"packet {text}"
+        what = Message("packet {packet}", packet=text)
         if first == "S":
             return VisiomexExchange(Raw(data), what, "")
         if first == "M" or (first == "D" and self.format.home):
@@ -330,14 +409,24 @@ class VisiomexProtocol(Protocol):
             if number in BY_ID:
                 parameter = BY_ID[number]
                 value = parameter.from_wire(int(text[3:9]))
-                return f"set {parameter.name} = {parameter.with_unit(value)}"
+                return Message(
+                    "set {parameter} = {value}",
+                    parameter=parameter.name,
+                    value=parameter.with_unit(value),
+                )
         if text.startswith("M") and len(text) >= 2 + 2 * (self.format.digits + 1):
-            d, kinds = self.format.digits, {"L": "linear", "R": "rotational", "S": "steps"}
+            d = self.format.digits
             x, y = text[2 : 3 + d], text[3 + d : 4 + 2 * d]
-            return f"move {kinds.get(text[1], text[1])} X {x[0]}{x[1:]} Y {y[0]}{y[1:]}"
+            if text[1] == "L":
+                return Message("move linear X {x} Y {y}", x=x, y=y)
+            if text[1] == "R":
+                return Message("move rotational X {x} Y {y}", x=x, y=y)
+            if text[1] == "S":
+                return Message("move steps X {x} Y {y}", x=x, y=y)
+            return Message("move {kind} X {x} Y {y}", kind=text[1], x=x, y=y)
         if text.startswith("D") and self.format.home:
-            return "go home"
-        return f"packet {text!r}"
+            return _GO_HOME
+        return Message("packet {packet!r}", packet=text)
 
     def sent_kind(self, frame: bytes) -> str:
         """`M…` moves and `D` (home) are motion, `S…` sets a parameter; the rest queries."""
@@ -357,7 +446,11 @@ class VisiomexProtocol(Protocol):
         except BadInput:
             return type(command).__name__
         if isinstance(command, SetParameter):
-            return f"{packet} (set {self.parameter(command.param_id).name})"
+            return Message(
+                "{packet} (set {parameter})",
+                packet=packet,
+                parameter=self.parameter(command.param_id).name,
+            )
         return packet
 
     # -- what the panel knows of the device ---------------------------------------------------
@@ -368,13 +461,16 @@ class VisiomexProtocol(Protocol):
         notes = []
         forced: dict[str, float] = {}
         if self.known[DRIVING_MECHANISM_ID] != 1:
-            notes.append("the firmware forces driving_mechanism to 1 after every set")
+            notes.append(Message("the firmware forces driving_mechanism to 1 after every set"))
         self.known[DRIVING_MECHANISM_ID] = 1
         forced[BY_ID[DRIVING_MECHANISM_ID].name] = 1.0
         if parameter.id in BOOT_ONLY:
             notes.append(
-                f"this firmware revision reads {parameter.name} only at boot (and keeps pulley "
-                "values divided by 4): moves do not change until the firmware is fixed"
+                Message(
+                    "this firmware revision reads {parameter} only at boot (and keeps pulley "
+                    "values divided by 4): moves do not change until the firmware is fixed",
+                    parameter=parameter.name,
+                )
             )
         return ParameterWritten(parameter, command.value, forced, tuple(notes))
 
@@ -394,9 +490,11 @@ class VisiomexProtocol(Protocol):
         if any(by_id[i] != boot[i] for i in boot):
             rows.append(
                 (
-                    "Note",
-                    "this firmware revision moves by the cycle it computed at boot "
-                    "(10 mm lead screw), whatever 01-04 and 27 say",
+                    Message("Note"),
+                    Message(
+                        "this firmware revision moves by the cycle it computed at boot "
+                        "(10 mm lead screw), whatever 01-04 and 27 say"
+                    ),
                 )
             )
         return rows

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 
+from drivers.messages import Message
 from drivers.protocols.visiomex_params import DEFAULTS
 
 SILENCE = 1.0  # Serial.readString() ends a packet after 1 s without bytes
@@ -67,8 +68,13 @@ def derived_values(values: dict[int, float]) -> list[tuple[str, str]]:
         steps = steps_per_cycle(values, axis)
         if cycle <= 0 or steps <= 0:
             raise ValueError(
-                f"{axis.upper()}: the cycle ({cycle:g} mm) and the steps per turn ({steps:g}) "
-                "must both be above 0"
+                Message(
+                    "{axis}: the cycle ({cycle:g} mm) and the steps per turn ({steps:g}) "
+                    "must both be above 0",
+                    axis=axis.upper(),
+                    cycle=cycle,
+                    steps=steps,
+                )
             )
         name = axis.upper()
         ten_mm = int(10 / cycle * steps) * step_seconds(values, axis) + SILENCE
@@ -76,9 +82,10 @@ def derived_values(values: dict[int, float]) -> list[tuple[str, str]]:
         per_axis["mm_step"].append(f"{name} {cycle / steps:.4f} mm")
         per_axis["step_mm"].append(f"{name} {steps / cycle:.3f}")
         per_axis["ten"].append(f"{name} {ten_mm:.2f} s")
+    ten = Message("{times} (1 s silence included)", times=" · ".join(per_axis["ten"]))
     return [
-        ("Microsteps per turn", " · ".join(per_axis["turn"])),
-        ("Per step", " · ".join(per_axis["mm_step"])),
-        ("Steps per mm", " · ".join(per_axis["step_mm"])),
-        ("A 10 mm move", " · ".join(per_axis["ten"]) + " (1 s silence included)"),
+        (Message("Microsteps per turn"), " · ".join(per_axis["turn"])),
+        (Message("Per step"), " · ".join(per_axis["mm_step"])),
+        (Message("Steps per mm"), " · ".join(per_axis["step_mm"])),
+        (Message("A 10 mm move"), ten),
     ]

@@ -8,6 +8,7 @@ firmware holds at power-on, as the simulator has them (a move of 10 mm is 400 st
 
 from __future__ import annotations
 
+from drivers.messages import Message, message_template
 from drivers.parameters import Parameter
 
 DRIVING_MECHANISM_ID = 27
@@ -18,13 +19,14 @@ _AXIS_WORD = {"x": "X", "y": "Y"}
 def _pair(
     first_id: int, name: str, unit: str, text: str, default: float, **options: object
 ) -> tuple[Parameter, Parameter]:
-    """The X and Y parameters of one kind: ids `first_id` and `first_id + 1`."""
+    """The X and Y parameters of one kind: ids `first_id` and `first_id + 1`; `text` is a
+    message_template whose `{axis}` each gets its axis in."""
     return tuple(  # type: ignore[return-value]
         Parameter(
             first_id + index,
             f"{name}_{axis}",
             unit,
-            text.format(axis=_AXIS_WORD[axis]),
+            Message(text, axis=_AXIS_WORD[axis]),
             default=default,
             **options,  # type: ignore[arg-type]
         )
@@ -33,33 +35,59 @@ def _pair(
 
 
 PARAMETERS: tuple[Parameter, ...] = (
-    *_pair(1, "thread_distance", "mm", "Lead-screw pitch of the {axis} axis (mm per turn)", 10),
+    *_pair(
+        1,
+        "thread_distance",
+        "mm",
+        message_template("Lead-screw pitch of the {axis} axis (mm per turn)"),
+        10,
+    ),
     *_pair(
         3,
         "pulley_diameter",
         "mm",
-        "Belt pulley diameter of the {axis} axis; sent as mm×10 (38.2 mm -> 000382)",
+        message_template(
+            "Belt pulley diameter of the {axis} axis; sent as mm×10 (38.2 mm -> 000382)"
+        ),
         38.2,
         scale=10,
     ),
-    *_pair(5, "motor_fullcycle_step", "steps", "Full steps per motor turn, {axis} axis", 200),
-    *_pair(7, "microstep_coeff", "×", "Microstepping factor of the {axis} driver", 2),
-    *_pair(9, "max_speed", "mm/s", "Highest speed allowed on the {axis} axis", 50),
+    *_pair(
+        5,
+        "motor_fullcycle_step",
+        "steps",
+        message_template("Full steps per motor turn, {axis} axis"),
+        200,
+    ),
+    *_pair(
+        7, "microstep_coeff", "×", message_template("Microstepping factor of the {axis} driver"), 2
+    ),
+    *_pair(
+        9, "max_speed", "mm/s", message_template("Highest speed allowed on the {axis} axis"), 50
+    ),
     *_pair(
         11,
         "step_delay_speed_steady",
         "µs",
-        "Step delay at the steady speed, {axis} axis (computed by the firmware)",
+        message_template("Step delay at the steady speed, {axis} axis (computed by the firmware)"),
         4000,
         output=True,
     ),
-    *_pair(13, "step_delay_speed_min", "µs", "Step delay at the lowest speed, {axis} axis", 8000),
+    *_pair(
+        13,
+        "step_delay_speed_min",
+        "µs",
+        message_template("Step delay at the lowest speed, {axis} axis"),
+        8000,
+    ),
     *_pair(
         15,
         "step_delay_instantaneous",
         "µs",
-        "Current step delay, {axis} axis (computed by the firmware; this revision times every "
-        "step from it: one step is twice this delay)",
+        message_template(
+            "Current step delay, {axis} axis (computed by the firmware; this revision times every "
+            "step from it: one step is twice this delay)"
+        ),
         4000,
         output=True,
     ),
@@ -67,7 +95,9 @@ PARAMETERS: tuple[Parameter, ...] = (
         17,
         "step_delay_acceleration_avg",
         "µs",
-        "Mean step delay while accelerating, {axis} axis (computed by the firmware)",
+        message_template(
+            "Mean step delay while accelerating, {axis} axis (computed by the firmware)"
+        ),
         6000,
         output=True,
     ),
@@ -75,17 +105,29 @@ PARAMETERS: tuple[Parameter, ...] = (
         19,
         "step_count_acceleration",
         "steps",
-        "Steps spent accelerating, {axis} axis (computed by the firmware)",
+        message_template("Steps spent accelerating, {axis} axis (computed by the firmware)"),
         0,
         output=True,
     ),
-    *_pair(21, "input_speed_steady", "mm/s", "Requested steady speed of the {axis} axis", 10),
-    *_pair(23, "input_acceleration", "mm/s²", "Requested acceleration of the {axis} axis", 100),
+    *_pair(
+        21,
+        "input_speed_steady",
+        "mm/s",
+        message_template("Requested steady speed of the {axis} axis"),
+        10,
+    ),
+    *_pair(
+        23,
+        "input_acceleration",
+        "mm/s²",
+        message_template("Requested acceleration of the {axis} axis"),
+        100,
+    ),
     *_pair(
         25,
         "delta_t",
         "s",
-        "Duration of the last move, {axis} axis (computed by the firmware)",
+        message_template("Duration of the last move, {axis} axis (computed by the firmware)"),
         0,
         output=True,
     ),
@@ -93,7 +135,7 @@ PARAMETERS: tuple[Parameter, ...] = (
         DRIVING_MECHANISM_ID,
         "driving_mechanism",
         "",
-        "0 belt pulley, 1 lead screw (this firmware forces 1 after every set)",
+        Message("0 belt pulley, 1 lead screw (this firmware forces 1 after every set)"),
         default=1,
         maximum_value=1,
     ),

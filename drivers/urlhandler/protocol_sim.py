@@ -24,6 +24,7 @@ from serial.serialutil import PortNotOpenError, SerialBase, SerialException
 
 from drivers.control_lines import ControlLines
 from drivers.errors import MotionError
+from drivers.messages import Message
 from drivers.sim.device import SimulatedDevice
 from drivers.sim.registry import create_device
 
@@ -37,7 +38,7 @@ def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
     """Split `sim://name?opts` into the protocol name, device options and line timing."""
     parts = urllib.parse.urlsplit(url)
     if parts.scheme != "sim":
-        raise SerialException(f"expected a sim:// URL, got {url!r}")
+        raise SerialException(Message("expected a sim:// URL, got {url!r}", url=url))
     name = (parts.netloc or parts.path).strip("/")
     options: dict[str, Any] = {}
     line_timing = True
@@ -57,7 +58,7 @@ def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
         elif key == "fault":
             options["faults"] = (*options.get("faults", ()), value)
         else:
-            raise SerialException(f"unknown sim:// option {key!r}")
+            raise SerialException(Message("unknown sim:// option {key!r}", key=key))
     return name, options, line_timing
 
 
@@ -80,15 +81,17 @@ class Serial(SerialBase):
     def open(self) -> None:
         """Create and boot the device named by the URL."""
         if self._port is None:
-            raise SerialException("port must be configured before it can be used")
+            raise SerialException(Message("port must be configured before it can be used"))
         if self.is_open:
-            raise SerialException("port already open")
+            raise SerialException(Message("port already open"))
         try:
             name, options, line_timing = parse_sim_url(self._port)
             baud = self._baudrate if line_timing else None
             self.device: SimulatedDevice = create_device(name, time.monotonic, baud, **options)
         except (MotionError, ValueError, TypeError) as exc:  # TypeError: option not for it
-            raise SerialException(f"cannot open {self._port}: {exc}") from exc
+            raise SerialException(
+                Message("cannot open {port}: {error}", port=self._port, error=exc)
+            ) from exc
         self._pending = bytearray()
         self._wakeup = threading.Event()
         self.is_open = True
