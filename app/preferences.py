@@ -22,7 +22,8 @@ Ranges, and why:
   the session log with polls for nothing (the window's range today).
 - `console_max_lines`: the console keeps every line by design (a spool file on disk, about 33
   bytes a line in memory, README "A million lines"); this is the cap on the lines it keeps,
-  0 (the default, as today) for no cap, else 10,000 to 10,000,000 (330 MB of memory at most).
+  0 (the default, as today) for no cap, else 10,000 to 10,000,000: past it the oldest lines are
+  dropped in blocks (up to 10% more are held between trims: about 363 MB of memory at most).
 """
 
 from __future__ import annotations

@@ -2,7 +2,9 @@
 
 Lines live in a TrafficIndex (on disk, a few bytes each in memory), shown by a table that reads
 only the rows on screen, so a million lines stay light. New traffic is decoded in turns of at
-most 2 ms and shown at most 10 times a second, in a turn of its own.
+most 2 ms and shown at most 10 times a second, in a turn of its own. With a line limit the
+console is a scrollback buffer: it keeps the newest lines, dropping the oldest a block at a time
+(see set_max_lines); the session log on disk keeps every line.
 """
 
 from __future__ import annotations
@@ -34,6 +36,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.messages import localized
 from app.traffic_table import (
     BYTES,
     COLUMNS,
@@ -66,6 +69,7 @@ FLUSH_BUDGET = 0.002  # s of decoding per turn of the event loop; the rest waits
 RECENT_RECORDS = 20_000  # raw records kept for `records()`; the index keeps every line
 HIDDEN_BY_DEFAULT = ("poll",)
 STATUS_INTERVAL_S = 0.25  # the status line's counts follow a flood at most 4 times a second
+TRIM_MARGIN = 0.1  # past its line limit by this fraction, the console drops its oldest lines
 
 # the names shown for the keys (marked here, translated at use); the keys stay as they are
 MODE_NAMES = {
@@ -103,6 +107,13 @@ def ask_save_path(parent: QWidget) -> str:
     return path
 
 
+def localized_index(protocol: Protocol | None = None) -> TrafficIndex:
+    """A traffic index whose frames' meanings read in the interface's language."""
+    index = TrafficIndex(protocol)
+    index.meaning_text = localized
+    return index
+
+
 class RawConsole(QWidget):
     """Decoded traffic with filters, search and export, and a send line emitting bytes."""
 
@@ -124,8 +135,9 @@ class RawConsole(QWidget):
         self._shown_at = 0.0  # perf_counter of the last update of the table
         self._show_due = False  # the table's update waits for the next turn (see _timed_flush)
         self._status_at = 0.0  # and of the status line
-        self.index = TrafficIndex()
+        self.index = localized_index()
         self.max_lines = 0  # 0: keep every line (see set_max_lines)
+        self._trim_noted = False  # the note saying lines are being dropped was added
         self._model = TrafficModel(self.index, self)  # goes with the console, never before it
         self._origin_set = False
         self._shown_until = 0  # lines up to here have been through the filter
@@ -469,35 +481,52 @@ class RawConsole(QWidget):
         self._show_new()
 
     def set_max_lines(self, lines: int) -> None:
-        """Keep at most `lines` lines (0: every line): past it the console starts afresh with
-        a note, as if Clear were pressed (the session log on disk keeps every byte)."""
+        """Keep the newest `lines` lines (0: every line), as a terminal's scrollback does: once
+        past the limit by TRIM_MARGIN (a tenth), the oldest are dropped down to the limit, a
+        block at a time. Lines keep their numbers; the session log on disk keeps every line."""
         self.max_lines = max(0, int(lines))
+        self._trim()
+        self._update_status()
 
-    def _over_limit(self) -> bool:
-        """Past the line limit: cleared, with a note saying so; True then."""
-        if not self.max_lines or len(self.index) <= self.max_lines:
-            return False
-        dropped = len(self.index)
-        self.clear()
-        note = self.tr(
-            "%1 lines reached the console's limit and were cleared; the session log keeps them"
-        )
-        self.append_note(fill(note, f"{dropped:,}"))
-        self._take_pending(None)
-        return True
+    def _trim(self) -> None:
+        """Past the line limit (and its margin): drop the oldest lines, down to the limit. A
+        view following the tail keeps following; one scrolled up keeps its top line in place
+        (or shows the oldest line kept, if its own was dropped)."""
+        limit, index = self.max_lines, self.index
+        if not limit or index.kept <= limit + int(limit * TRIM_MARGIN):
+            return
+        view, model = self.view, self._model
+        top_row = view.rowAt(0)
+        top_line = int(model.rows[top_row]) if 0 <= top_row < len(model.rows) else None
+        self._scrolling = True  # (Qt's own scrolling as the rows go is not the user's)
+        try:
+            index.drop_oldest(index.kept - limit)
+            model.drop_before(index.first)
+            if self._follow:
+                view.scrollToBottom()
+            elif top_line is not None and len(model.rows):
+                row = min(model.row_of(top_line), len(model.rows) - 1)
+                view.scrollTo(model.index(row, BYTES), QAbstractItemView.ScrollHint.PositionAtTop)
+        finally:
+            self._scrolling = False
+        if not self._trim_noted:
+            self._trim_noted = True
+            note = self.tr(
+                "the console keeps the newest %1 lines: older lines are dropped from it as new"
+                " ones come; the session log keeps every line"
+            )
+            self.append_note(fill(note, f"{limit:,}"))
 
     def _show_new(self) -> None:
         """Put the lines decoded since the last time in the table (through the filters)."""
-        if self._over_limit():
-            self._show_new()
-            return
+        self._trim()
         self._show_due = False
         self._flush_timer.setInterval(FLUSH_INTERVAL_MS)
         self._shown_at = time.perf_counter()
         total = len(self.index)
         if total == self._shown_until:
             return
-        first = self._shown_until
+        first = min(max(self._shown_until, self.index.first), total)  # (some maybe dropped)
         rows = self.index.select(self._directions, self._kinds, self._pattern, start=first)
         if self._search is not None:
             self._model.add_matches(self.index.select(None, None, self._search, start=first))
@@ -526,7 +555,7 @@ class RawConsole(QWidget):
             self._pattern = compile_filter(self._pattern_text)
         except FilterError as exc:
             self.filter_edit.setStyleSheet("color: #c62828;")
-            self.filter_edit.setToolTip(str(exc))
+            self.filter_edit.setToolTip(localized(exc))
             return
         self.filter_edit.setStyleSheet("")
         self._directions = {
@@ -616,7 +645,7 @@ class RawConsole(QWidget):
             self._search = compile_filter(text)
         except FilterError as exc:
             self.search_edit.setStyleSheet("color: #c62828;")
-            self.search_edit.setToolTip(str(exc))
+            self.search_edit.setToolTip(localized(exc))
             return
         self.search_edit.setStyleSheet("")
         self.flush()
@@ -679,7 +708,13 @@ class RawConsole(QWidget):
         """Select `line` (or the next shown line after it) and scroll to it; stops following.
         With `reveal`, a line of a hidden kind (the poll) has its kind shown first."""
         self.flush()
-        if reveal and 0 <= line < len(self.index):
+        if line < self.index.first:  # dropped by the line limit: the oldest line kept instead
+            note = self.tr(
+                "line %1 is no longer in the console (its line limit dropped it); the session"
+                " log has it"
+            )
+            self.show_error(fill(note, line))
+        elif reveal and line < len(self.index):
             kind = self.index.line(line).kind
             if kind not in self._kinds:
                 self.kind_actions[kind].setChecked(True)
@@ -740,9 +775,11 @@ class RawConsole(QWidget):
         self._status_at = time.perf_counter()
         counts = self.index.counts
         parts = [
-            fill(self.tr("%1 lines"), f"{len(self.index):,}"),
+            fill(self.tr("%1 lines"), f"{self.index.kept:,}"),
             fill(self.tr("%1 shown"), f"{len(self._model.rows):,}"),
         ]
+        if self.index.first:
+            parts.append(fill(self.tr("%1 older in the session log"), f"{self.index.first:,}"))
         if "poll" not in self._kinds and counts["poll"]:
             parts.append(fill(self.tr("%1 poll hidden"), f"{counts['poll']:,}"))
         if counts["error"]:
@@ -750,7 +787,14 @@ class RawConsole(QWidget):
         if self._search is not None:
             parts.append(fill(self.tr("%1 matches"), f"{len(self._model.matches):,}"))
         self.status_label.setText(" · ".join(parts))
-        self.status_label.setToolTip("\n".join(parts))
+        tip = parts
+        if self.max_lines:
+            limit = self.tr(
+                "The console keeps the newest %1 lines (Settings): older lines are dropped from"
+                " it, the session log on disk keeps every line"
+            )
+            tip = [*parts, fill(limit, f"{self.max_lines:,}")]
+        self.status_label.setToolTip("\n".join(tip))
 
     def status_text(self) -> str:
         """The counts under the filters (lines, shown, hidden polls, errors, matches)."""
@@ -776,11 +820,12 @@ class RawConsole(QWidget):
         """Forget all lines (the session log on disk keeps them) and empty the view."""
         protocol = self.index.protocol
         self.index.close()
-        self.index = TrafficIndex(protocol)
+        self.index = localized_index(protocol)
         self._recent.clear()
         self._pending.clear()
         self._incoming.clear()
         self._shown_until = 0
+        self._trim_noted = False
         self._model.set_index(self.index)
         self._set_follow(True)
         self._update_status()
@@ -794,8 +839,9 @@ class RawConsole(QWidget):
         self._pending.clear()
         self._incoming.clear()
         self._shown_until = 0
+        self._trim_noted = False
         self._model.set_index(index)
-        self._model.origin = index.time(0) if len(index) else 0.0
+        self._model.origin = index.time(index.first) if index.kept else 0.0
         self._origin_set = True
         self._model.set_rows(self.index.select(self._directions, self._kinds, self._pattern))
         self._shown_until = len(index)
@@ -833,7 +879,7 @@ class RawConsole(QWidget):
             count = self.export(path)
         except OSError as exc:
             log.warning("export to %s failed: %s", path, exc)
-            self.show_error(fill(self.tr("export failed: %1"), exc))
+            self.show_error(fill(self.tr("export failed: %1"), localized(exc)))
         else:
             self.show_error("")
             self.append_note(fill(self.tr("exported %1 lines to %2"), count, path))

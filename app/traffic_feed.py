@@ -27,6 +27,7 @@ class TimelineFeed(QObject):
         a time (the timeline adds up seconds: one call each, not one a line), and latencies."""
         index, origin = self.console.index, self.console.time_origin()
         end = first + count
+        first = min(max(first, index.first), end)  # (lines the console's limit dropped)
         times = index.times(first, end) - origin
         sizes = index.sizes(first, end)
         directions = index.direction_codes(first, end)
@@ -50,7 +51,8 @@ class TimelineFeed(QObject):
     def on_reset(self) -> None:
         """The console was cleared or shows another session: start again."""
         self.timeline.clear()
-        self.on_lines(0, len(self.console.index))
+        index = self.console.index
+        self.on_lines(index.first, len(index) - index.first)
 
     @Slot(int)
     def on_click(self, line: int) -> None:

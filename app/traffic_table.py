@@ -167,6 +167,22 @@ class TrafficModel(QAbstractTableModel):
         self._count = end
         self.endInsertRows()
 
+    def drop_before(self, line: int) -> int:
+        """Stop showing the lines before `line` (dropped by the index); returns the rows gone.
+        Rows are removed, not reset: the view keeps its selection and current row on the rows
+        that stay."""
+        self.matches = self.matches[int(np.searchsorted(self.matches, line)) :]
+        gone = int(np.searchsorted(self.rows, line))
+        if not gone:
+            return 0
+        self.beginRemoveRows(QModelIndex(), 0, gone - 1)
+        count = self._count
+        self._rows[: count - gone] = self._rows[gone:count]  # (numpy copies overlaps safely)
+        self._count = count - gone
+        self._views.clear()
+        self.endRemoveRows()
+        return gone
+
     def set_matches(self, matches: np.ndarray) -> None:
         """Highlight these lines (the search's hits)."""
         self.matches = matches

@@ -4,6 +4,12 @@ Modes (each prints one JSON object; run each in its own process so memory figure
 - `ingest --lines N`: lines/s a console (COXIRIS decoding, every line kept and viewable)
   takes in, fed as the worker feeds it (batches, a flush per 20 ms batch); also per second of
   the process's CPU time (`lines_per_cpu_s`), which a busy machine disturbs less.
+- `ingest --lines N --max-lines M`: the same with the console's line limit (a scrollback of M
+  lines, its oldest dropped a block at a time).
+- `trim --lines N`: what one trim of a console with a limit of N lines costs, in the steady
+  state (N + 10% lines kept, the oldest 10% dropped): the index's part (arrays moved, the
+  spool's hole punched), the table's part (rows removed) and the whole, with the view following
+  the tail and with it scrolled up.
 - `memory --lines N`: resident memory the process gained for N lines, and the spool's size.
 - `flood --seconds S`: the main window on `sim://coxiris?chatter=5000` (5,000 debug lines/s,
   a USB device with no baud limit), jogging so the 3D/2D views update; a 5 ms timer records
@@ -79,18 +85,76 @@ def _feed(lines: int, console: object | None = None) -> tuple[object, float, flo
     return console, time.perf_counter() - start, time.process_time() - cpu
 
 
-def ingest(lines: int) -> dict[str, float]:
+def ingest(lines: int, max_lines: int = 0) -> dict[str, float]:
     """Lines per second into the console (and per second of this process's CPU time, which
-    other programs on a busy machine disturb less)."""
-    console, seconds, cpu = _feed(lines)
+    other programs on a busy machine disturb less), with a line limit if `max_lines`."""
+    console = _console()
+    console.set_max_lines(max_lines)  # type: ignore[attr-defined]
+    console, seconds, cpu = _feed(lines, console)
     count = len(console.index)  # type: ignore[attr-defined]
     return {
+        "max_lines": max_lines,
+        "kept": console.index.kept,  # type: ignore[attr-defined]
         "lines": count,
         "seconds": seconds,
         "console_lines_per_s": count / seconds,
         "cpu_seconds": cpu,
         "lines_per_cpu_s": count / cpu,
     }
+
+
+def trim(lines: int) -> dict[str, float]:
+    """One trim of a console limited to `lines` lines holding 10% more (ms), following the
+    tail and scrolled up (the median of 3 each, fed without a limit to the limit and its margin
+    before each)."""
+    from app.traffic_console import TRIM_MARGIN
+
+    console = _console()
+    timings: dict[str, list[float]] = {}
+
+    def timed(owner: object, name: str) -> None:
+        original = getattr(owner, name)
+
+        def wrapper(*args: object) -> object:
+            start = time.perf_counter()
+            try:
+                return original(*args)
+            finally:
+                timings.setdefault(name, []).append((time.perf_counter() - start) * 1000)
+
+        setattr(owner, name, wrapper)
+
+    timed(console.index, "drop_oldest")  # type: ignore[attr-defined]
+    timed(console._model, "drop_before")  # type: ignore[attr-defined]
+    block = int(lines * TRIM_MARGIN) + 1  # the lines a trim drops
+    index = console.index  # type: ignore[attr-defined]
+    console.show_poll(True)  # type: ignore[attr-defined]
+    results: dict[str, float] = {"lines": lines, "block": block}
+    for following in (True, False):
+        whole = []
+        for _ in range(3):  # fed (without a limit) to the limit and its margin, then trimmed
+            console.max_lines = 0  # type: ignore[attr-defined]
+            _feed((lines + block - index.kept) * 8 // 7 + 16, console)
+            if following:
+                console.view.scrollToBottom()  # type: ignore[attr-defined]
+                console._set_follow(True)  # type: ignore[attr-defined]
+            else:
+                console.jump_to_line(index.first + index.kept // 2)  # type: ignore[attr-defined]
+            console.max_lines = lines  # type: ignore[attr-defined]
+            assert console.is_following() is following  # type: ignore[attr-defined]
+            start = time.perf_counter()
+            console._trim()  # type: ignore[attr-defined]
+            whole.append((time.perf_counter() - start) * 1000)
+            assert index.kept == lines, index.kept
+        tail = "following" if following else "scrolled_up"
+        results[f"trim_ms_{tail}"] = sorted(whole)[1]
+    results["index_drop_ms"] = sorted(timings["drop_oldest"])[len(timings["drop_oldest"]) // 2]
+    results["table_drop_ms"] = sorted(timings["drop_before"])[len(timings["drop_before"]) // 2]
+    results["kept"] = index.kept
+    spool = os.fstat(index._fd)
+    results["spool_mb"] = spool.st_size / 1e6
+    results["spool_on_disk_mb"] = spool.st_blocks * 512 / 1e6
+    return results
 
 
 def memory(lines: int) -> dict[str, float]:
@@ -461,8 +525,11 @@ def flood(
 def main() -> int:
     """Run one mode and print one JSON object."""
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("mode", choices=["ingest", "memory", "flood"])
+    parser.add_argument("mode", choices=["ingest", "trim", "memory", "flood"])
     parser.add_argument("--lines", type=int, default=200_000)
+    parser.add_argument(
+        "--max-lines", type=int, default=0, help="ingest: the console's line limit (0: none)"
+    )
     parser.add_argument("--seconds", type=float, default=10.0)
     parser.add_argument("--display", action="store_true", help="use $DISPLAY instead of offscreen")
     parser.add_argument(
@@ -496,7 +563,9 @@ def main() -> int:
     os.environ.setdefault("MOTIONPANEL_SETTINGS", os.path.join(tempfile.mkdtemp(), "bench.ini"))
     os.environ.setdefault("MOTIONPANEL_LOG_DIR", tempfile.mkdtemp())
     if options.mode == "ingest":
-        result = ingest(options.lines)
+        result = ingest(options.lines, options.max_lines)
+    elif options.mode == "trim":
+        result = trim(options.lines)
     elif options.mode == "memory":
         result = memory(options.lines)
     else:

@@ -11,6 +11,11 @@ decoding and its spool line are made once and kept on the decoder's shared Frame
 the arrays and the spool a batch at a time; and what a request's reply tracker does with each
 reply frame is learnt once and replayed for the next copy of the request (see _Waiting).
 
+A console with a line limit drops its oldest lines (`drop_oldest`): lines keep their numbers
+(`first` is the oldest kept, `len()` the number the next line gets), the arrays lose their
+first rows (a memory move) and, on Linux, the spool's dropped bytes are given back to the file
+system (a hole punched; offsets in the spool stay as they were).
+
 Kinds: `motion`, `query`, `poll` (the position query and its reply), `setting`, `error`,
 `debug` (the device's own text) and `note`. A sent frame's kind is the protocol's
 `sent_kind`; a reply takes its request's kind. Replies are paired with requests by the
@@ -20,17 +25,19 @@ the oldest request still waiting (for `REPLY_WINDOW` seconds) that `expects_repl
 
 from __future__ import annotations
 
+import ctypes
 import functools
 import logging
 import math
 import mmap
 import os
 import re
+import sys
 import tempfile
 import time as time_module
 from array import array
 from collections import deque
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from itertools import accumulate
 from pathlib import Path
@@ -40,6 +47,7 @@ import numpy as np
 from drivers.decoding import Frame, StreamDecoder
 from drivers.errors import BadInput
 from drivers.log_reader import LogRecord
+from drivers.messages import Message
 from drivers.protocols.base import Exchange, Protocol
 
 log = logging.getLogger(__name__)
@@ -86,11 +94,21 @@ def compile_filter(pattern: str) -> re.Pattern[bytes] | None:
     try:
         return re.compile(pattern.encode("utf-8"), re.IGNORECASE | re.MULTILINE)
     except re.error as exc:
-        raise FilterError(f"{pattern!r} is not a regular expression: {exc}") from None
+        raise FilterError(
+            Message(
+                "{pattern!r} is not a regular expression: {error}", pattern=pattern, error=str(exc)
+            )
+        ) from None
     except UnicodeEncodeError:  # a lone surrogate: no line of the spool can hold it
-        raise FilterError(f"{pattern!r} is not valid text") from None
+        raise FilterError(Message("{pattern!r} is not valid text", pattern=pattern)) from None
     except (OverflowError, RecursionError) as exc:  # a{4294967296}, thousands of nested groups
-        raise FilterError(f"{pattern[:40]!r}… is too large a regular expression: {exc}") from None
+        raise FilterError(
+            Message(
+                "{pattern!r}… is too large a regular expression: {error}",
+                pattern=pattern[:40],
+                error=str(exc),
+            )
+        ) from None
 
 
 @functools.lru_cache(maxsize=64)
@@ -166,7 +184,8 @@ class _Columns:
 
     New lines wait in `new` (a tuple each) and join the arrays a batch at a time. The pairing
     columns, written while a batch is under way, are allocated ahead (their defaults filled in)
-    and are longer than `size`.
+    and are longer than `size`. Row 0 is the oldest line kept (the index's `first`): the index
+    subtracts it from a line's number; `offset` holds absolute positions in the spool.
     """
 
     def __init__(self) -> None:
@@ -208,6 +227,13 @@ class _Columns:
         self.offset.extend(ends)
         return list(lines)
 
+    def drop(self, count: int) -> None:
+        """Forget the first `count` rows (count <= size, nothing waiting in `new`)."""
+        for column in (self.time, self.code, self.size_, self.pair, self.latency):
+            del column[:count]
+        del self.first_copy[:count]
+        del self.offset[:count]  # offset[0]: where the first row kept starts
+
     def view(self, name: str, dtype: type) -> np.ndarray:
         """A numpy view of a column: do not keep it (the column cannot grow while it lives)."""
         column = getattr(self, name)
@@ -216,6 +242,31 @@ class _Columns:
 
 _MINUS_ONE = array("i", [-1])
 _NAN = array("f", [math.nan])
+_HOLE_BLOCK = 1 << 20  # bytes: the spool's dropped bytes are given back a megabyte at a time
+
+
+@functools.cache
+def _fallocate() -> ctypes._CFuncPtr | None:  # type: ignore[name-defined]
+    """libc's fallocate (Linux), to punch holes in the spool; None where there is none."""
+    if not sys.platform.startswith("linux"):
+        return None
+    try:
+        function = ctypes.CDLL(None, use_errno=True).fallocate
+    except (OSError, AttributeError):
+        return None
+    function.argtypes = (ctypes.c_int, ctypes.c_int, ctypes.c_int64, ctypes.c_int64)
+    function.restype = ctypes.c_int
+    return function
+
+
+def _punch_hole(fd: int, start: int, end: int) -> bool:
+    """Give bytes start..end-1 of a file back to the file system, the file's size and the
+    other bytes' offsets unchanged (FALLOC_FL_PUNCH_HOLE | FALLOC_FL_KEEP_SIZE); False where
+    the platform or the file system cannot."""
+    function = _fallocate()
+    if function is None or end <= start:
+        return False
+    return function(fd, 0x02 | 0x01, start, end - start) == 0
 
 
 @dataclass(slots=True)
@@ -291,13 +342,15 @@ class TrafficIndex:
         os.unlink(name)  # the descriptor keeps it; nothing is left behind after a crash
         self._columns = _Columns()
         self._size = 0  # lines, those waiting in the columns' `new` included
-        self._reserved = 0  # lines the pairing columns have room for
+        self._base = 0  # the oldest line kept (row 0 of the columns); lines before it dropped
+        self._reserved = 0  # lines the pairing columns have room for (up to this line number)
+        self._punched = 0  # spool bytes before this were given back (see drop_oldest)
         self._new = self._columns.new.append
         self._unwritten: list[bytes] = []  # spool lines not yet written (one write a batch)
         self._written = 0
         self._cache: dict[int, TrafficLine] = {}
         self._counts = dict.fromkeys(KINDS, 0)
-        self._counted = 0  # lines whose kinds `counts` has added up
+        self._counted = 0  # lines before this one have had their kinds added up in `counts`
         self.new_latencies = array("i")  # replies paired since the caller last took them
         self.wall_offset: float | None = None  # wall-clock time minus record time
         self.set_protocol(protocol)
@@ -311,6 +364,8 @@ class TrafficIndex:
         self._last_kind = _KIND_CODE["query"]  # of the last frame sent, for a reply unpaired
         self._sent: dict[bytes, tuple[int, bool]] = {}  # frame → kind code, expects a reply
         self._scripts = _Scripts()
+        self.meaning_text: Callable[[str], str] = str
+        """What a decoded frame's meaning reads as in the index (the window: its language)."""
 
     def close(self) -> None:
         """Release the spool."""
@@ -319,19 +374,70 @@ class TrafficIndex:
             self._fd = -1
 
     def __len__(self) -> int:
+        """The number the next line gets: every line ever added, dropped ones included
+        (`kept` is how many are here)."""
         return self._size
 
     @property
+    def first(self) -> int:
+        """The oldest line kept (0 until lines are dropped: see drop_oldest)."""
+        return self._base
+
+    @property
+    def kept(self) -> int:
+        """Lines kept: first..len()-1."""
+        return self._size - self._base
+
+    @property
     def counts(self) -> dict[str, int]:
-        """Lines of each kind (added up from the kind codes of the lines new since last time)."""
+        """Lines kept of each kind (the kind codes of the lines new since last time added up)."""
         columns = self._columns
-        if self._counted < columns.size:
-            codes = columns.view("code", np.uint8)[self._counted :]
-            added = np.bincount(codes & 0x0F, minlength=len(KINDS)).tolist()
-            for kind, count in zip(KINDS, added, strict=False):
-                self._counts[kind] += count
-            self._counted = columns.size
+        end = self._base + columns.size
+        if self._counted < end:
+            codes = columns.view("code", np.uint8)[self._counted - self._base :]
+            self._count_kinds(codes, 1)
+            self._counted = end
         return self._counts
+
+    def _count_kinds(self, codes: np.ndarray, sign: int) -> None:
+        added = np.bincount(codes & 0x0F, minlength=len(KINDS)).tolist()
+        for kind, count in zip(KINDS, added, strict=False):
+            self._counts[kind] += sign * count
+
+    def drop_oldest(self, count: int) -> int:
+        """Forget the oldest `count` lines (at most every line); returns how many went.
+
+        The lines after keep their numbers, and their pairs and first copies still name the
+        lines dropped (`first` says which are gone). Costs a memory move of the columns (about
+        33 bytes a line kept) and, on Linux, a hole punched in the spool for the bytes dropped,
+        a megabyte at a time (elsewhere the spool file keeps them until the index is closed).
+        """
+        self._write()  # every line in the columns and the spool
+        columns = self._columns
+        count = min(max(0, int(count)), columns.size)
+        if not count:
+            return 0
+        base = self._base
+        counted = min(count, self._counted - base)
+        if counted > 0:
+            self._count_kinds(columns.view("code", np.uint8)[:counted], -1)
+        end = columns.offset[count]  # where the first line kept starts in the spool
+        columns.drop(count)
+        self._base = base + count
+        self._counted = max(self._counted, self._base)
+        if self._cache:
+            self._cache = {n: line for n, line in self._cache.items() if n >= self._base}
+        latencies = self.new_latencies  # (in order: the replies dropped are the first ones)
+        if latencies and latencies[0] < self._base:
+            del latencies[: int(np.searchsorted(np.frombuffer(latencies, np.int32), self._base))]
+        hole_end = end - end % _HOLE_BLOCK
+        if (
+            hole_end - self._punched >= _HOLE_BLOCK
+            and self._fd >= 0
+            and _punch_hole(self._fd, self._punched, hole_end)
+        ):
+            self._punched = hole_end
+        return count
 
     # -- adding ------------------------------------------------------------------------------
 
@@ -417,7 +523,7 @@ class TrafficIndex:
             waiting.popleft()
         first = self._last_sent.get(data)
         if first is not None:
-            self._columns.first_copy[line] = first
+            self._columns.first_copy[line - self._base] = first
         else:
             self._last_sent[data] = line
         if not expects:
@@ -456,13 +562,15 @@ class TrafficIndex:
             kind = request.kind if request is not None else self._last_kind
         line = self._append_frame(frame, time, _RX | kind)
         if request is not None:
-            columns, asked = self._columns, request.line
-            if columns.pair[asked] < 0:  # the first reply line answers the request
-                columns.pair[asked] = line
+            asked, base = request.line, self._base
+            pair = self._columns.pair  # (rows: line numbers less `first`)
+            pair[line - base] = asked
+            # (a request dropped meanwhile: its reply names it, with no latency)
+            if asked >= base and pair[asked - base] < 0:  # the first reply line answers it
+                pair[asked - base] = line
                 self._cache.pop(asked, None)
-                columns.latency[line] = (time - request.time) * 1000.0
+                self._columns.latency[line - base] = (time - request.time) * 1000.0
                 self.new_latencies.append(line)
-            columns.pair[line] = asked
             if kind != _ERROR:
                 self._last_sent.pop(request.data, None)  # answered: a copy now is not a retry
 
@@ -537,12 +645,13 @@ class TrafficIndex:
         if memo is None or memo[0] != code:
             raw = frame.raw
             direction, kind = DIRECTIONS[code >> 4], KINDS[code & 0x0F]
-            memo = frame.memo = (code, len(raw), _spool_line(direction, kind, raw, frame.meaning))
+            meaning = self.meaning_text(frame.meaning)
+            memo = frame.memo = (code, len(raw), _spool_line(direction, kind, raw, meaning))
         line = self._size
         self._size = line + 1
         self._new((time, memo))
         if line >= self._reserved:
-            self._reserved = self._columns.reserve(line + 1)
+            self._reserved = self._base + self._columns.reserve(line + 1 - self._base)
         return line
 
     def _append(self, time: float, direction: str, kind: str, data: bytes, meaning: str) -> int:
@@ -551,7 +660,7 @@ class TrafficIndex:
         self._size = line + 1
         self._new((time, (code, len(data), _spool_line(direction, kind, data, meaning))))
         if line >= self._reserved:
-            self._reserved = self._columns.reserve(line + 1)
+            self._reserved = self._base + self._columns.reserve(line + 1 - self._base)
         return line
 
     def commit(self) -> None:
@@ -573,31 +682,43 @@ class TrafficIndex:
 
     # -- reading -----------------------------------------------------------------------------
 
+    def _rows(self, start: int, end: int | None) -> slice:
+        """The columns' rows of lines start..end-1 (lines dropped left out: from `first` on)."""
+        base = self._base
+        return slice(max(start - base, 0), None if end is None else max(end - base, 0))
+
     def time(self, line: int) -> float:
         """A line's time (s)."""
-        return float(self._columns.time[line])
+        if line < self._base:
+            raise IndexError(f"line {line} was dropped (the oldest kept is {self._base})")
+        return float(self._columns.time[line - self._base])
 
     def times(self, start: int = 0, end: int | None = None) -> np.ndarray:
-        """Times of lines start..end-1 (a copy)."""
-        return np.array(self._columns.time[start:end], dtype=np.float64)
+        """Times of lines start..end-1 (a copy; lines dropped left out: see `first`)."""
+        return np.array(self._columns.time[self._rows(start, end)], dtype=np.float64)
 
     def sizes(self, start: int, end: int) -> np.ndarray:
-        """Bytes of lines start..end-1 (0 for notes)."""
-        return np.array(self._columns.size_[start:end], dtype=np.uint32)
+        """Bytes of lines start..end-1 (0 for notes; lines dropped left out)."""
+        return np.array(self._columns.size_[self._rows(start, end)], dtype=np.uint32)
 
     def directions(self, start: int, end: int) -> list[str]:
-        """Directions of lines start..end-1 ("" for notes)."""
-        return [DIRECTIONS[code >> 4] for code in self._columns.code[start:end]]
+        """Directions of lines start..end-1 ("" for notes; lines dropped left out)."""
+        return [DIRECTIONS[code >> 4] for code in self._columns.code[self._rows(start, end)]]
 
     def direction_codes(self, start: int, end: int) -> np.ndarray:
-        """Directions of lines start..end-1 as indexes into DIRECTIONS (a copy)."""
-        return self._columns.view("code", np.uint8)[start:end] >> 4
+        """Directions of lines start..end-1 as indexes into DIRECTIONS (a copy; lines dropped
+        left out)."""
+        return self._columns.view("code", np.uint8)[self._rows(start, end)] >> 4
 
     def take_latencies(self) -> list[tuple[int, float, float]]:
-        """(reply line, its time, latency in ms) paired since the last call."""
-        columns, taken = self._columns, self.new_latencies
+        """(reply line, its time, latency in ms) paired since the last call (and not dropped)."""
+        columns, taken, base = self._columns, self.new_latencies, self._base
         self.new_latencies = array("i")
-        return [(n, float(columns.time[n]), float(columns.latency[n])) for n in taken]
+        return [
+            (n, float(columns.time[n - base]), float(columns.latency[n - base]))
+            for n in taken
+            if n >= base
+        ]
 
     def line(self, number: int) -> TrafficLine:
         """One line, read back from the spool (the latest few thousand are kept)."""
@@ -613,10 +734,11 @@ class TrafficIndex:
     def read(self, number: int) -> tuple[int, float, str, str, bytes, str, int, float, int]:
         """A line's fields as TrafficLine has them, in a tuple, read from the spool each time
         (what the console's table keeps: plain tuples, which the garbage collector skips)."""
-        columns = self._columns
-        if not 0 <= number < self._size:
-            raise IndexError(f"line {number} of {self._size}")
-        start, end = columns.offset[number], columns.offset[number + 1]
+        columns, base = self._columns, self._base
+        if not base <= number < self._size:
+            raise IndexError(f"line {number} of {base}..{self._size - 1}")
+        row = number - base
+        start, end = columns.offset[row], columns.offset[row + 1]
         if end > self._written:
             self._write()
         raw = os.pread(self._fd, end - start, start).decode("utf-8")
@@ -625,7 +747,7 @@ class TrafficIndex:
         data = bytes.fromhex(hexes)
         return (
             number,
-            columns.time[number],
+            columns.time[row],
             direction,
             kind,
             data,
@@ -637,12 +759,14 @@ class TrafficIndex:
 
     def pairing(self, number: int) -> tuple[str, int, float, int]:
         """A line's direction, pair, latency (ms) and first copy (see TrafficLine)."""
-        columns = self._columns
+        columns, row = self._columns, number - self._base
+        if row < 0:
+            raise IndexError(f"line {number} was dropped (the oldest kept is {self._base})")
         return (
-            DIRECTIONS[columns.code[number] >> 4],
-            columns.pair[number],
-            columns.latency[number],
-            columns.first_copy[number],
+            DIRECTIONS[columns.code[row] >> 4],
+            columns.pair[row],
+            columns.latency[row],
+            columns.first_copy[row],
         )
 
     def select(
@@ -652,8 +776,10 @@ class TrafficIndex:
         pattern: re.Pattern[bytes] | None = None,
         start: int = 0,
     ) -> np.ndarray:
-        """Line numbers from `start` on that pass the filters (None: any), in order."""
-        codes = self._columns.view("code", np.uint8)[start:]
+        """Line numbers from `start` on that pass the filters (None: any), in order (lines
+        dropped left out: from `first` on)."""
+        start = max(start, self._base)
+        codes = self._columns.view("code", np.uint8)[start - self._base :]
         if directions is None and kinds is None:
             lines = np.arange(start, start + len(codes), dtype=np.int64)
         else:
@@ -674,7 +800,9 @@ class TrafficIndex:
             return lines[:0]
         if pattern.search(b"") is not None:  # it matches the empty string: every line
             return lines
+        base = self._base
         offsets = self._columns.view("offset", np.int64)
+        lines = lines - base  # rows of the columns; numbers again at the end
         first, last = int(lines[0]), int(lines[-1])
         begin, end = int(offsets[first]), int(offsets[last + 1])
         with mmap.mmap(self._fd, self._written, access=mmap.ACCESS_READ) as spool:
@@ -684,7 +812,7 @@ class TrafficIndex:
                     for line in lines.tolist()
                     if pattern.search(spool, int(offsets[line]), int(offsets[line + 1]) - 1)
                 ]
-                return np.asarray(keep, dtype=np.int64)
+                return np.asarray(keep, dtype=np.int64) + base
             starts, ends = _hit_spans(spool, begin, end, pattern)
             first_line = np.searchsorted(offsets, starts, side="right") - 1
             last_line = np.searchsorted(offsets, np.maximum(ends - 1, starts), side="right") - 1
@@ -696,4 +824,4 @@ class TrafficIndex:
                 if pattern.search(spool, int(offsets[line]), int(offsets[line + 1]) - 1)
             ]
         hits = np.unique(np.concatenate((first_line[inside], np.asarray(checked, np.int64))))
-        return hits[np.isin(hits, lines, assume_unique=True)]
+        return hits[np.isin(hits, lines, assume_unique=True)] + base

@@ -257,8 +257,8 @@ class SettingsDialog(QDialog):
             fill(
                 self.tr(
                     "The most lines the console keeps: 0 keeps every line (a spool file on disk "
-                    "and about 33 bytes a line in memory), else %1 to %2 lines. The session log "
-                    "keeps every byte either way."
+                    "and about 33 bytes a line in memory), else %1 to %2 lines, the oldest "
+                    "dropped as new ones come. The session log keeps every byte either way."
                 ),
                 f"{spec.low:,}",
                 f"{int(high):,}",

@@ -16,6 +16,7 @@ from widgets.position_view_3d import share_opengl_contexts
 
 share_opengl_contexts()  # as the application does: several GL views over the session
 
+from app.traffic_console import RawConsole  # noqa: E402
 from widgets.coordinate_entry import CoordinateEntry  # noqa: E402
 from widgets.position_readout import PositionReadout  # noqa: E402
 
@@ -47,4 +48,18 @@ def entry(qtbot) -> CoordinateEntry:
     widget = CoordinateEntry()
     qtbot.addWidget(widget)
     widget.show()
+    return widget
+
+
+@pytest.fixture
+def console(qtbot) -> RawConsole:
+    """A shown traffic console decoding COXIRIS, its times from 0."""
+    from drivers.registry import create_protocol
+
+    widget = RawConsole()
+    qtbot.addWidget(widget)
+    widget.resize(900, 300)
+    widget.show()
+    widget.set_time_origin(0.0)
+    widget.set_protocol(create_protocol("coxiris"))
     return widget

@@ -18,17 +18,6 @@ pytestmark = pytest.mark.timeout(60)
 LEFT = Qt.MouseButton.LeftButton
 
 
-@pytest.fixture
-def console(qtbot) -> RawConsole:
-    widget = RawConsole()
-    qtbot.addWidget(widget)
-    widget.resize(900, 300)
-    widget.show()
-    widget.set_time_origin(0.0)
-    widget.set_protocol(create_protocol("coxiris"))
-    return widget
-
-
 def _lines(console: RawConsole) -> list[str]:
     console.flush()
     return console.text().splitlines()
@@ -445,18 +434,17 @@ def test_traffic_is_decoded_and_shown_in_turns_of_their_own(qtbot, monkeypatch) 
     assert console.shown_lines()[-1] == 20  # every line kept and shown
 
 
-def test_past_its_line_limit_the_console_starts_afresh_with_a_note(console: RawConsole) -> None:
-    console.set_max_lines(5)
+def test_past_its_line_limit_the_console_drops_its_oldest_lines(console: RawConsole) -> None:
+    console.set_max_lines(5)  # (scrollback: tests/widgets/test_console_scrollback.py)
     for n in range(8):
         console.append_traffic("tx", f"DELTA_MOVE {n} 0 0\n".encode(), float(n))
     console.flush()
-    assert len(console.index) == 1
-    assert "8 lines reached the console's limit and were cleared" in console.text()
-    console.append_traffic("tx", b"GET_SPEED\n", 9.0)
-    console.flush()
-    assert len(console.index) == 2  # under the limit again: kept
+    assert console.index.kept == 5 and console.index.first == 3  # the newest five
+    assert console.shown_lines() == [3, 4, 5, 6, 7]
+    console.flush()  # the note saying so, once
+    assert "the console keeps the newest 5 lines" in console.text()
     console.set_max_lines(0)
     for n in range(20):
         console.append_traffic("tx", b"GET_SPEED\n", 10.0 + n)
     console.flush()
-    assert len(console.index) == 22  # 0: every line
+    assert console.index.kept == 25  # 0: every line
