@@ -9,6 +9,7 @@ from typing import Any
 
 from PySide6.QtCore import QObject
 
+from app.messages import localized
 from app.settings import device_key
 from drivers.errors import BadInput
 from drivers.work_zero import WorkZero, format_work_zero, parse_work_zero
@@ -55,7 +56,7 @@ class WorkFrame(QObject):
                 log.warning("the kept work zero is unreadable and was left out: %s", exc)
         self._set(zero, save=False)
         if not zero.is_machine():
-            self.say(fill(self.tr("work coordinates: %1"), zero.describe()))
+            self.say(fill(self.tr("work coordinates: %1"), localized(zero.describe())))
 
     def set_position(self, position: Point | None) -> None:
         """The stage's machine position as last known (None: unknown); Zero needs one."""
@@ -68,8 +69,10 @@ class WorkFrame(QObject):
             self.say(self.tr("work zero not set: the position is unknown"))
             return
         self._set(self.zero.zeroed(axes, self.position))
-        shown = ", ".join(f"{a.upper()} {self.position['xyz'.index(a)]:g}" for a in axes)
-        self.say(fill(self.tr("work zero set at %1 mm (machine)"), shown))
+        shown = ", ".join(
+            f"{a.upper()} {self.readout.number_text(self.position['xyz'.index(a)])}" for a in axes
+        )
+        self.say(fill(self.tr("work zero set at %1 %2 (machine)"), shown, self.readout.units()))
 
     def clear(self) -> None:
         """Put the work zero back at the device's home."""
@@ -81,7 +84,7 @@ class WorkFrame(QObject):
         if self.zero.is_machine():
             return
         self._set(self.zero.after_set_home(old_home_at))
-        self.say(fill(self.tr("work zero kept in place: %1"), self.zero.describe()))
+        self.say(fill(self.tr("work zero kept in place: %1"), localized(self.zero.describe())))
 
     def disconnected(self) -> None:
         """No device: Zero is off until one is connected."""

@@ -36,7 +36,7 @@ def test_zero_buttons_set_and_keep_the_work_zero(qtbot, parts, tmp_path: Path) -
     qtbot.mouseClick(readout.zero_buttons["x"], LEFT)
     qtbot.mouseClick(readout.zero_buttons["z"], LEFT)
     assert readout.work_text("x") == "0.00 mm" and readout.work_text("y") == "5.00 mm"
-    assert said[-1] == "work zero set at Z -1 mm (machine)"
+    assert said[-1] == "work zero set at Z -1.00 mm (machine)"
     sent: list[object] = []
     entry.go_requested.connect(lambda mode, target: sent.append(target))
     entry.set_frame(WORK)

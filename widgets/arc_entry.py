@@ -22,6 +22,8 @@ from PySide6.QtWidgets import (
 from widgets._axes import Box, decimals_for
 from widgets._buttons import make_button
 from widgets._i18n import fill
+from widgets.coordinate_entry import UnitSpinBox, check_units, number_text
+from widgets.position_readout import INCH, MM
 
 log = logging.getLogger(__name__)
 
@@ -102,6 +104,19 @@ def _spin(name: str, suffix: str, low: float, high: float, decimals: int) -> QDo
     return field
 
 
+def _length(name: str, low: float, high: float) -> UnitSpinBox:
+    """A length field in mm or inches (set and read in mm), 3 decimals of a mm."""
+    field = UnitSpinBox()
+    field.setObjectName(name)
+    field.set_mm_decimals(3)
+    field.set_mm_range(low, high)
+    field.set_single_steps(1.0, 0.1)
+    field.setKeyboardTracking(False)
+    field.setAccelerated(True)
+    field.setMinimumWidth(100)
+    return field
+
+
 FIELDS_PER_ROW = 2  # two columns: the panel fits the left column of a 1024-pixel window
 
 
@@ -121,14 +136,12 @@ class ArcEntry(QWidget):
         self._start_z = 0.0
         self._box: Box | None = None
         self._points: list[Point] = []
+        self._units = MM
 
-        self.cx_field = _spin("arcCentreX", " mm", -UNBOUNDED_MM, UNBOUNDED_MM, 3)
-        self.cx_field.setToolTip(self.tr("X of the arc's centre, in mm from home"))
-        self.cy_field = _spin("arcCentreY", " mm", -UNBOUNDED_MM, UNBOUNDED_MM, 3)
-        self.cy_field.setToolTip(self.tr("Y of the arc's centre, in mm from home"))
-        self.radius_field = _spin("arcRadius", " mm", 0.001, UNBOUNDED_MM, 3)
-        self.radius_field.setValue(10.0)
-        self.radius_field.setToolTip(self.tr("Radius of the arc, in mm (more than 0)"))
+        self.cx_field = _length("arcCentreX", -UNBOUNDED_MM, UNBOUNDED_MM)
+        self.cy_field = _length("arcCentreY", -UNBOUNDED_MM, UNBOUNDED_MM)
+        self.radius_field = _length("arcRadius", 0.001, UNBOUNDED_MM)
+        self.radius_field.set_mm_value(10.0)
         self.start_field = _spin("arcStart", " °", 0.0, 360.0, 1)
         self.start_field.setWrapping(True)
         self.start_field.setSingleStep(15.0)
@@ -147,13 +160,15 @@ class ArcEntry(QWidget):
                 "\nthe same as the start angle: a full circle"
             )
         )
-        self.z_field = _spin("arcFinalZ", " mm", -UNBOUNDED_MM, UNBOUNDED_MM, 3)
-        self.z_field.setToolTip(
-            self.tr(
-                "Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc"
-                "\n(a helix when it differs)"
-            )
+        self.z_field = _length("arcFinalZ", -UNBOUNDED_MM, UNBOUNDED_MM)
+        self.lengths: tuple[UnitSpinBox, ...] = (
+            self.cx_field,
+            self.cy_field,
+            self.radius_field,
+            self.z_field,
         )
+        self.labels: dict[QDoubleSpinBox, QLabel] = {}  # each field's label, by field
+        self._unit_tips()
         self.fields: dict[str, QDoubleSpinBox] = {
             "cx": self.cx_field,
             "cy": self.cy_field,
@@ -176,6 +191,7 @@ class ArcEntry(QWidget):
             label = QLabel(text)
             label.setBuddy(field)
             label.setToolTip(field.toolTip())
+            self.labels[field] = label
             row, column = divmod(index, FIELDS_PER_ROW)
             grid.addWidget(label, row, 2 * column)
             grid.addWidget(field, row, 2 * column + 1)
@@ -240,6 +256,52 @@ class ArcEntry(QWidget):
         self.preview_check.toggled.connect(self._changed)
         self._changed()
 
+    def _unit_tips(self) -> None:
+        """The length fields' tooltips, naming the unit shown (and their labels')."""
+        if self._units == INCH:
+            tips = (
+                self.tr("X of the arc's centre, in inches from home"),
+                self.tr("Y of the arc's centre, in inches from home"),
+                self.tr("Radius of the arc, in inches (more than 0)"),
+                self.tr(
+                    "Z at the end of the arc, in inches; Z moves evenly from the current Z along "
+                    "the arc\n(a helix when it differs)"
+                ),
+            )
+        else:
+            tips = (
+                self.tr("X of the arc's centre, in mm from home"),
+                self.tr("Y of the arc's centre, in mm from home"),
+                self.tr("Radius of the arc, in mm (more than 0)"),
+                self.tr(
+                    "Z at the end of the arc, in mm; Z moves evenly from the current Z along the "
+                    "arc\n(a helix when it differs)"
+                ),
+            )
+        for field, tip in zip(self.lengths, tips, strict=True):
+            field.setToolTip(tip)
+            label = self.labels.get(field)
+            if label is not None:
+                label.setToolTip(tip)
+
+    # -- units -----------------------------------------------------------------------------
+
+    def set_units(self, units: str) -> None:
+        """Show and type lengths in "mm" or "in" (values, the preview and what is sent stay in
+        mm); the fields show the same lengths converted. Emits nothing."""
+        check_units(units)
+        if units == self._units:
+            return
+        self._units = units
+        for field in self.lengths:
+            field.set_units(units)
+        self._unit_tips()
+        self._check()
+
+    def units(self) -> str:
+        """The units lengths are shown and typed in: "mm" or "in"."""
+        return self._units
+
     # -- values ----------------------------------------------------------------------------
 
     def values(self) -> dict:
@@ -247,7 +309,10 @@ class ArcEntry(QWidget):
         out: dict = {}
         for key, field in self.fields.items():
             field.interpretText()
-            out[key] = float(field.value())
+            if isinstance(field, UnitSpinBox):
+                out[key] = field.mm_value()
+            else:
+                out[key] = float(field.value())
         out["ccw"] = self.ccw_radio.isChecked()
         return {key: out[key] for key in ARC_KEYS}
 
@@ -264,10 +329,13 @@ class ArcEntry(QWidget):
             widget.blockSignals(True)
         try:
             for key, value in values.items():
+                field = self.fields.get(key)
                 if key == "ccw":
                     (self.ccw_radio if value else self.cw_radio).setChecked(True)
-                else:
-                    self.fields[key].setValue(float(value))
+                elif isinstance(field, UnitSpinBox):
+                    field.set_mm_value(float(value))  # lengths are given in mm
+                elif field is not None:
+                    field.setValue(float(value))
         finally:
             for widget in widgets:
                 widget.blockSignals(False)
@@ -292,17 +360,17 @@ class ArcEntry(QWidget):
         return self._box
 
     def set_resolution(self, resolution: float | None) -> None:
-        """Type lengths to the device's resolution in mm (None: 0.001 mm)."""
+        """Type lengths to the device's resolution in mm (None: 0.001 mm); in inches, two
+        decimals more (at most 4), sent on the device's resolution."""
         decimals = decimals_for(resolution)
-        lengths = (self.cx_field, self.cy_field, self.radius_field, self.z_field)
-        for field in lengths:
+        for field in self.lengths:
             field.blockSignals(True)
         try:
-            for field in lengths:
-                field.setDecimals(decimals)
-            self.radius_field.setMinimum(10.0**-decimals)
+            for field in self.lengths:
+                field.set_mm_decimals(decimals)
+            self.radius_field.set_mm_range(10.0**-decimals, UNBOUNDED_MM)
         finally:
-            for field in lengths:
+            for field in self.lengths:
                 field.blockSignals(False)
         self._changed()
 
@@ -335,22 +403,36 @@ class ArcEntry(QWidget):
 
     def _find_problem(self) -> str:
         v = self.values()
+        inch = self._units == INCH
         if not v["radius"] > 0:
+            if inch:
+                return self.tr("The radius must be more than 0 in.")
             return self.tr("The radius must be more than 0 mm.")
         if self._box is None:
             return ""
         xs, ys = arc_extent(v["cx"], v["cy"], v["radius"], v["start"], v["end"], v["ccw"])
         zs = (min(self._start_z, v["z"]), max(self._start_z, v["z"]))
         outside = []
-        span = self.tr("%1 %2 to %3 mm (travel %4 to %5 mm)")
-        point = self.tr("%1 %2 mm (travel %3 to %4 mm)")
+        if inch:
+            span = self.tr("%1 %2 to %3 in (travel %4 to %5 in)")
+            point = self.tr("%1 %2 in (travel %3 to %4 in)")
+        else:
+            span = self.tr("%1 %2 to %3 mm (travel %4 to %5 mm)")
+            point = self.tr("%1 %2 mm (travel %3 to %4 mm)")
+        factor = self.cx_field.factor()
+        decimals = self.cx_field.decimals()  # the arc's reach: as typed; the travel: trimmed
+        travel_decimals = decimals if inch else 6
+
+        def shown(mm: float) -> str:
+            return number_text(mm / factor, decimals, trim=False)
+
         for name, (low, high), (lo, hi) in zip("XYZ", (xs, ys, zs), self._box, strict=True):
             if low < lo - TOLERANCE_MM or high > hi + TOLERANCE_MM:
-                travel = (f"{lo:g}", f"{hi:g}")
+                travel = tuple(number_text(v / factor, travel_decimals) for v in (lo, hi))
                 outside.append(
-                    fill(span, name, f"{low:.3f}", f"{high:.3f}", *travel)
+                    fill(span, name, shown(low), shown(high), *travel)
                     if low != high
-                    else fill(point, name, f"{low:.3f}", *travel)
+                    else fill(point, name, shown(low), *travel)
                 )
         if not outside:
             return ""

@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import logging
+import math
 from collections.abc import Callable, Iterable
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QLocale, Signal
 from PySide6.QtWidgets import (
     QButtonGroup,
     QComboBox,
@@ -22,6 +23,7 @@ from PySide6.QtWidgets import (
 from widgets._axes import AXES, Box, decimals_for, normalize_axes
 from widgets._buttons import make_button
 from widgets._i18n import fill
+from widgets.position_readout import INCH, MM, MM_PER_INCH
 
 log = logging.getLogger(__name__)
 
@@ -49,14 +51,177 @@ def ask_with_message_box(question: str, parent: QWidget | None = None) -> bool:
     return answer == QMessageBox.StandardButton.Yes
 
 
-class _AxisSpinBox(QDoubleSpinBox):
-    """A coordinate field: 3 decimals, mm, value read on Enter or when focus leaves."""
+def number_text(value: float, decimals: int, *, signed: bool = False, trim: bool = True) -> str:
+    """`value` to `decimals` decimals in the interface's locale (2,5 in French), no thousands
+    separator, trailing zeros dropped (unless not `trim`); `signed`: "+" before a positive
+    value."""
+    locale = QLocale()
+    locale.setNumberOptions(QLocale.NumberOption.OmitGroupSeparator)
+    decimals = max(int(decimals), 0)
+    rounded = round(float(value), decimals) + 0.0  # no "-0"
+    text = locale.toString(rounded, "f", decimals)
+    if decimals and trim:
+        text = text.rstrip(locale.zeroDigit()).rstrip(locale.decimalPoint())
+    return f"+{text}" if signed and rounded > 0 else text
+
+
+def unit_text(units: str, per_second: bool = False) -> str:
+    """The unit symbol shown after a length ("mm", "in") or a speed ("mm/s", "in/s")."""
+    if units == INCH:
+        if per_second:
+            return QCoreApplication.translate("UnitSpinBox", "in/s", "inches per second")
+        return QCoreApplication.translate("UnitSpinBox", "in", "inches")
+    return "mm/s" if per_second else "mm"
+
+
+def check_units(units: str) -> None:
+    """Refuse units other than "mm" and "in"."""
+    if units not in (MM, INCH):
+        raise ValueError(f"units must be {MM!r} or {INCH!r}, not {units!r}")
+
+
+class UnitSpinBox(QDoubleSpinBox):
+    """A length field (or a speed: `per_second`) shown in mm or inches, set and read in mm.
+
+    The mm API (`set_mm_value`, `mm_value`, `set_mm_range`, `set_mm_decimals`) is what the rest
+    of the panel uses; in mm it is the plain spin box. In inches the field shows two decimals
+    more than in mm (at most 4), its range is the mm range rounded inwards, and `mm_value()` is
+    on the mm grid (`10**-mm_decimals`, the device's resolution) and within the mm range; a
+    value set in mm and not edited since is read back from that mm value, not from the inches
+    shown (no drift through their rounding)."""
+
+    def __init__(self, per_second: bool = False, parent: QWidget | None = None) -> None:
+        super().__init__(parent)
+        self._per_second = per_second
+        self._units = MM
+        self._mm_decimals = self.decimals()
+        self._mm_range = (self.minimum(), self.maximum())
+        self._steps = (self.singleStep(), self.singleStep() / 10.0)  # (mm, inches)
+        self._exact: tuple[float, float] | None = None  # (shown, mm) as last set in mm
+        self.setSuffix(" " + unit_text(MM, per_second))
+
+    def units(self) -> str:
+        """The units shown: "mm" or "in"."""
+        return self._units
+
+    def set_units(self, units: str) -> None:
+        """Show the same length in "mm" or "in"; emits nothing."""
+        check_units(units)
+        if units == self._units:
+            return
+        mm = self._raw_mm()
+        blocked = self.blockSignals(True)
+        try:
+            self._units = units
+            self.setSuffix(" " + unit_text(units, self._per_second))
+            self._show(mm)
+        finally:
+            self.blockSignals(blocked)
+
+    def factor(self) -> float:
+        """mm per unit shown (1 or 25.4)."""
+        return MM_PER_INCH if self._units == INCH else 1.0
+
+    def shown_decimals(self, mm_decimals: int | None = None) -> int:
+        """The decimals shown for `mm_decimals` decimals of a mm (default: the field's)."""
+        mm_decimals = self._mm_decimals if mm_decimals is None else mm_decimals
+        return mm_decimals if self._units == MM else max(0, min(4, mm_decimals + 2))
+
+    def set_mm_decimals(self, decimals: int) -> None:
+        """Type to `decimals` decimals of a mm (the device's resolution); inches: two more."""
+        mm = self._raw_mm()
+        self._mm_decimals = int(decimals)
+        if self._units == MM:
+            self.setDecimals(self._mm_decimals)  # as a plain spin box: Qt rounds the value
+        else:
+            self._show(mm)
+
+    def mm_decimals(self) -> int:
+        """The decimals of a mm the field is typed to."""
+        return self._mm_decimals
+
+    def set_mm_range(self, low: float, high: float) -> None:
+        """Bound the field by low..high mm (clamps the value)."""
+        self._mm_range = (float(low), float(high))
+        if self._units == MM:
+            self.setRange(low, high)
+        else:
+            self._show(self._raw_mm())
+
+    def mm_range(self) -> tuple[float, float]:
+        """The field's range in mm."""
+        return self._mm_range
+
+    def set_single_steps(self, mm_step: float, inch_step: float) -> None:
+        """What an arrow key or wheel step adds, in mm and in inches."""
+        self._steps = (float(mm_step), float(inch_step))
+        self.setSingleStep(self._steps[0] if self._units == MM else self._steps[1])
+
+    def set_mm_value(self, mm: float) -> None:
+        """Show `mm` (clamped to the range) in the units shown."""
+        mm = float(mm)
+        if self._units == MM:
+            self._exact = None
+            self.setValue(mm)
+            return
+        shown = mm / MM_PER_INCH
+        self._exact = None
+        self.setValue(shown)
+        if abs(self.value() - shown) <= 0.5 * 10.0 ** -self.decimals() + 1e-12:
+            self._exact = (self.value(), mm)
+
+    def mm_value(self) -> float:
+        """The value in mm (in inches: on the mm grid, within the mm range)."""
+        if self._units == MM:
+            return float(self.value())
+        return self._on_grid(self._raw_mm())
+
+    def _raw_mm(self) -> float:
+        """The value in mm, not yet on the grid: as set in mm while the field still shows it."""
+        if self._units == MM:
+            return float(self.value())
+        exact = self._exact
+        if exact is not None and exact[0] == self.value():
+            return exact[1]
+        return self.value() * MM_PER_INCH
+
+    def _on_grid(self, mm: float) -> float:
+        grid = 10.0**-self._mm_decimals
+        low, high = self._mm_range
+        steps = math.copysign(math.floor(abs(mm) / grid + 0.5), mm)  # halves away from 0
+        if steps * grid < low - 1e-9:
+            steps = math.ceil(low / grid - 1e-9)
+        if steps * grid > high + 1e-9:
+            steps = math.floor(high / grid + 1e-9)
+        return round(steps * grid, self._mm_decimals) + 0.0
+
+    def _show(self, mm: float) -> None:
+        """Decimals, range and step in the units shown, then `mm`."""
+        decimals = self.shown_decimals()
+        low, high = self._mm_range
+        self.setDecimals(decimals)
+        if self._units == MM:
+            self.setRange(low, high)
+            self.setSingleStep(self._steps[0])
+        else:
+            scale = 10.0**decimals
+            shown_low = math.ceil(round(low / MM_PER_INCH * scale, 6)) / scale  # inwards
+            shown_high = math.floor(round(high / MM_PER_INCH * scale, 6)) / scale
+            if shown_low > shown_high:
+                shown_low = shown_high = round(low / MM_PER_INCH, decimals)
+            self.setRange(shown_low, shown_high)
+            self.setSingleStep(self._steps[1])
+        self.set_mm_value(mm)
+
+
+class _AxisSpinBox(UnitSpinBox):
+    """A coordinate field: 3 decimals of a mm, value read on Enter or when focus leaves."""
 
     def __init__(self, axis: str, parent: QWidget | None = None) -> None:
-        super().__init__(parent)
+        super().__init__(parent=parent)
         self.setObjectName(f"coord{axis.upper()}")
-        self.setDecimals(3)
-        self.setSuffix(" mm")
+        self.set_mm_decimals(3)
+        self.set_single_steps(1.0, 0.1)
         self.setKeyboardTracking(False)
         self.setAccelerated(True)
         self.setMinimumWidth(110)
@@ -78,9 +243,10 @@ class CoordinateEntry(QWidget):
         self._box: Box | None = None
         self._known: tuple[float, float, float] | None = None
         self._zero: tuple[float, float, float] = (0.0, 0.0, 0.0)
+        self._units = MM
 
         grid = QGridLayout()
-        self.fields: dict[str, QDoubleSpinBox] = {}
+        self.fields: dict[str, UnitSpinBox] = {}
         for column, axis in enumerate(AXES):
             label = QLabel(fill(self.tr("%1:", "an axis field's label"), axis.upper()))
             field = _AxisSpinBox(axis)
@@ -92,12 +258,8 @@ class CoordinateEntry(QWidget):
 
         self.absolute_radio = QRadioButton(self.tr("Absolute"))
         self.absolute_radio.setObjectName("modeAbsolute")
-        self.absolute_radio.setToolTip(self.tr("Go to the typed coordinates (mm from home)"))
         self.relative_radio = QRadioButton(self.tr("Relative"))
         self.relative_radio.setObjectName("modeRelative")
-        self.relative_radio.setToolTip(
-            self.tr("Move by the typed distances (mm) from where the stage is")
-        )
         self._mode_group = QButtonGroup(self)
         self._mode_group.addButton(self.absolute_radio)
         self._mode_group.addButton(self.relative_radio)
@@ -107,12 +269,7 @@ class CoordinateEntry(QWidget):
         self.frame_combo.setObjectName("coordinateFrame")
         self.frame_combo.addItem(self.tr("Machine"), MACHINE)
         self.frame_combo.addItem(self.tr("Work"), WORK)
-        self.frame_combo.setToolTip(
-            self.tr(
-                "Which frame the typed coordinates are in: Machine (mm from the device's home) "
-                "or Work (mm from the work zero); the device is always sent machine coordinates"
-            )
-        )
+        self._unit_tips()
         self.frame_combo.currentIndexChanged.connect(self._frame_changed)
 
         self.go_button = make_button(
@@ -159,6 +316,45 @@ class CoordinateEntry(QWidget):
         layout.addLayout(actions)
         layout.addStretch(1)  # extra height goes below the panel, not between its rows
         self._apply_range()
+
+    def _unit_tips(self) -> None:
+        """The tooltips that name the unit shown."""
+        if self._units == INCH:
+            absolute = self.tr("Go to the typed coordinates (inches from home)")
+            relative = self.tr("Move by the typed distances (inches) from where the stage is")
+            frame = self.tr(
+                "Which frame the typed coordinates are in: Machine (inches from the device's "
+                "home) or Work (inches from the work zero); the device is always sent machine "
+                "coordinates, in mm"
+            )
+        else:
+            absolute = self.tr("Go to the typed coordinates (mm from home)")
+            relative = self.tr("Move by the typed distances (mm) from where the stage is")
+            frame = self.tr(
+                "Which frame the typed coordinates are in: Machine (mm from the device's home) "
+                "or Work (mm from the work zero); the device is always sent machine coordinates"
+            )
+        self.absolute_radio.setToolTip(absolute)
+        self.relative_radio.setToolTip(relative)
+        self.frame_combo.setToolTip(frame)
+
+    # -- units -----------------------------------------------------------------------------
+
+    def set_units(self, units: str) -> None:
+        """Show and type coordinates in "mm" or "in" (what is sent stays in mm); the fields
+        show the same lengths converted; emits nothing."""
+        check_units(units)
+        if units == self._units:
+            return
+        self._units = units
+        for field in self.fields.values():
+            field.set_units(units)
+        self._unit_tips()
+        self._apply_range()
+
+    def units(self) -> str:
+        """The units coordinates are shown and typed in: "mm" or "in"."""
+        return self._units
 
     # -- values ----------------------------------------------------------------------------
 
@@ -215,13 +411,13 @@ class CoordinateEntry(QWidget):
             field = self.fields[axis]
             field.interpretText()
             enabled = axis in self._axes
-            out.append(0.0 if relative and not enabled else float(field.value()))
+            out.append(0.0 if relative and not enabled else field.mm_value())
         return (out[0], out[1], out[2])
 
     def set_values(self, x: float, y: float, z: float) -> None:
-        """Fill the fields (clamped to the range); emits nothing."""
+        """Fill the fields with mm (clamped to the range); emits nothing."""
         for axis, value in zip(AXES, (x, y, z), strict=True):
-            self.fields[axis].setValue(value)
+            self.fields[axis].set_mm_value(value)
 
     def set_current(self, x: float, y: float, z: float) -> None:
         """Fill the fields with a machine position, in the frame chosen (and switch to absolute
@@ -251,10 +447,11 @@ class CoordinateEntry(QWidget):
         return self._box
 
     def set_resolution(self, resolution: float | None) -> None:
-        """Type coordinates to the device's resolution in mm (None: 0.001 mm)."""
+        """Type coordinates to the device's resolution in mm (None: 0.001 mm); in inches, two
+        decimals more (at most 4), sent on the device's resolution."""
         decimals = decimals_for(resolution)
         for field in self.fields.values():
-            field.setDecimals(decimals)
+            field.set_mm_decimals(decimals)
 
     def set_home_tips(self, home: str, set_home: str) -> None:
         """Say what Home and Set Home do on this device."""
@@ -280,25 +477,37 @@ class CoordinateEntry(QWidget):
         offset = self._offset()[index]  # the box is in machine mm
         return lo - offset, hi - offset
 
+    def _range_tip(self, relative: bool) -> str:
+        """The field tooltip's template, in the unit shown."""
+        if self._units == INCH:
+            if relative:
+                return self.tr("%1 distance to move, %2 to %3 in (%4)")
+            if self.frame() == MACHINE:
+                return self.tr("%1 target coordinate, %2 to %3 in (%4)")
+            return self.tr("%1 target coordinate in the work frame, %2 to %3 in (%4)")
+        if relative:
+            return self.tr("%1 distance to move, %2 to %3 mm (%4)")
+        if self.frame() == MACHINE:
+            return self.tr("%1 target coordinate, %2 to %3 mm (%4)")
+        return self.tr("%1 target coordinate in the work frame, %2 to %3 mm (%4)")
+
     def _apply_range(self) -> None:
         relative = self.mode() == RELATIVE
+        tip = self._range_tip(relative)
         for index, (axis, field) in enumerate(self.fields.items()):
             lo, hi = self._range(index)
             if relative:
                 lo, hi = -(hi - lo), hi - lo
-            field.setRange(lo, hi)
-            if relative:
-                tip = self.tr("%1 distance to move, %2 to %3 mm (%4)")
-            elif self.frame() == MACHINE:
-                tip = self.tr("%1 target coordinate, %2 to %3 mm (%4)")
-            else:
-                tip = self.tr("%1 target coordinate in the work frame, %2 to %3 mm (%4)")
+            field.set_mm_range(lo, hi)
             if self._box is not None:
                 limits = self.tr("travel limits")
             else:
                 limits = self.tr("no travel limits set")
             state = "" if axis in self._axes else "\n" + self.tr("(this device has no such axis)")
-            field.setToolTip(fill(tip, axis.upper(), f"{lo:g}", f"{hi:g}", limits) + state)
+            low, high = (
+                number_text(v, field.decimals()) for v in (field.minimum(), field.maximum())
+            )
+            field.setToolTip(fill(tip, axis.upper(), low, high, limits) + state)
 
     def set_axes_enabled(self, axes: Iterable[str]) -> None:
         """Only the fields of `axes` can be edited."""

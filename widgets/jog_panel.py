@@ -10,7 +10,6 @@ from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import (
     QApplication,
     QButtonGroup,
-    QDoubleSpinBox,
     QGridLayout,
     QHBoxLayout,
     QLabel,
@@ -22,10 +21,14 @@ from PySide6.QtWidgets import (
 
 from widgets._axes import AXES, decimals_for, modifier_bits, normalize_axes
 from widgets._i18n import fill
+from widgets.coordinate_entry import UnitSpinBox, check_units, number_text
+from widgets.position_readout import INCH, MM, MM_PER_INCH
 
 log = logging.getLogger(__name__)
 
 STEP_PRESETS: tuple[float, ...] = (0.01, 0.1, 1.0, 10.0, 100.0)
+INCH_STEP_PRESETS: tuple[float, ...] = (0.001, 0.01, 0.1, 1.0)  # inches, as Candle and UGS
+STEP_RANGE_MM = (0.001, 1000.0)
 SHIFT_FACTOR = 10.0
 KEY_HINT = QT_TRANSLATE_NOOP("JogPanel", "Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10")
 
@@ -120,13 +123,28 @@ class JogPanel(QWidget):
             self._preset_group.addButton(button)
             presets.addWidget(button)
             self.preset_buttons[value] = button
+        # Shown instead of the mm presets when lengths are shown in inches (`set_units`).
+        self.inch_preset_buttons: dict[float, QPushButton] = {}
+        for value in INCH_STEP_PRESETS:
+            text = fill(self.tr("%1 in"), number_text(value, 3))
+            button = QPushButton(text)
+            button.setObjectName(f"jogStepIn{value:g}".replace(".", "_"))
+            button.setCheckable(True)
+            button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+            button.setToolTip(fill(self.tr("Jog by %1 per press"), text))
+            button.clicked.connect(lambda _=False, v=value: self.set_step(v * MM_PER_INCH))
+            button.setVisible(False)
+            self._preset_group.addButton(button)
+            presets.addWidget(button)
+            self.inch_preset_buttons[value] = button
+        self._units = MM
 
-        self.step_spin = QDoubleSpinBox()
+        self.step_spin = UnitSpinBox()
         self.step_spin.setObjectName("jogStepSpin")
-        self.step_spin.setDecimals(3)
-        self.step_spin.setRange(0.001, 1000.0)
-        self.step_spin.setSuffix(" mm")
-        self.step_spin.setToolTip(self.tr("Any step size (0.001 to 1000 mm)"))
+        self.step_spin.set_mm_decimals(3)
+        self.step_spin.set_mm_range(*STEP_RANGE_MM)
+        self.step_spin.set_single_steps(1.0, 0.1)
+        self._step_tip()
         self.step_spin.valueChanged.connect(self._step_edited)
         presets.addStretch(1)
         step_row = QHBoxLayout()
@@ -180,53 +198,101 @@ class JogPanel(QWidget):
         return key in self.key_map or key in self.step_keys
 
     def change_step(self, direction: int) -> float:
-        """The next preset step below (-1) or above (+1) the current one; returns it."""
-        step = self.step()
-        usable = [v for v, b in self.preset_buttons.items() if b.isEnabled()]
+        """The next preset step below (-1) or above (+1) the current one, among the presets
+        of the units shown; returns the step in mm."""
+        inch = self._units == INCH
+        presets = self.inch_preset_buttons if inch else self.preset_buttons
+        step = self.step_spin.value() if inch else self.step()  # in the units shown
+        usable = [v for v, b in presets.items() if b.isEnabled()]
         if direction < 0:
             smaller = [v for v in usable if v < step - 1e-12]
-            chosen = max(smaller) if smaller else step
+            chosen = max(smaller) if smaller else None
         else:
             larger = [v for v in usable if v > step + 1e-12]
-            chosen = min(larger) if larger else step
-        self.set_step(chosen)
-        return chosen
+            chosen = min(larger) if larger else None
+        if chosen is not None:
+            self.set_step(chosen * MM_PER_INCH if inch else chosen)
+        return self.step()
 
     def set_resolution(self, resolution: float | None) -> None:
-        """Step sizes are typed to the device's resolution in mm (None: 0.001 mm)."""
+        """Step sizes are typed to the device's resolution in mm (None: 0.001 mm); in inches,
+        to two decimals more (at most 4), and a step is sent on the device's resolution."""
         decimals = decimals_for(resolution)
-        self.step_spin.setDecimals(decimals)
-        self.step_spin.setMinimum(10.0**-decimals)
+        finest = 10.0**-decimals
+        self.step_spin.set_mm_decimals(decimals)
+        self.step_spin.set_mm_range(finest, STEP_RANGE_MM[1])
         for value, button in self.preset_buttons.items():
-            button.setEnabled(value >= 10.0**-decimals - 1e-12)
+            button.setEnabled(value >= finest - 1e-12)
+        for value, button in self.inch_preset_buttons.items():
+            button.setEnabled(value * MM_PER_INCH >= finest - 1e-12)
+        self._step_tip()
+        self._sync_presets()
+
+    def set_units(self, units: str) -> None:
+        """Show the step in "mm" or "in", with that unit's preset steps (mm: 0.01 to 100;
+        inches: 0.001 to 1); the step stays the same length, and is still read in mm. Emits
+        nothing."""
+        check_units(units)
+        if units == self._units:
+            return
+        self._units = units
+        self.step_spin.set_units(units)
+        for button in self.preset_buttons.values():
+            button.setVisible(units == MM)
+        for button in self.inch_preset_buttons.values():
+            button.setVisible(units == INCH)
+        self._step_tip()
+        self._sync_presets()
+
+    def units(self) -> str:
+        """The units the step is shown in: "mm" or "in"."""
+        return self._units
+
+    def _step_tip(self) -> None:
+        if self._units == INCH:
+            spin = self.step_spin
+            low, high = (number_text(v, spin.decimals()) for v in (spin.minimum(), spin.maximum()))
+            self.step_spin.setToolTip(fill(self.tr("Any step size (%1 to %2 in)"), low, high))
+        else:
+            self.step_spin.setToolTip(self.tr("Any step size (0.001 to 1000 mm)"))
 
     def step(self) -> float:
         """The current step in mm (without the Shift factor)."""
-        return float(self.step_spin.value())
+        return self.step_spin.mm_value()
 
     def set_step(self, step_mm: float) -> None:
         """Set the step in mm; emits nothing."""
-        self.step_spin.setValue(step_mm)
+        self.step_spin.set_mm_value(step_mm)
         self._sync_presets()  # valueChanged is not emitted when the value is unchanged
 
     def _step_edited(self, _value: float) -> None:
         self._sync_presets()
 
     def _sync_presets(self) -> None:
-        step = self.step()
-        match = next((b for v, b in self.preset_buttons.items() if abs(v - step) < 1e-9), None)
+        inch = self._units == INCH
+        presets = self.inch_preset_buttons if inch else self.preset_buttons
+        shown = self.step_spin.value() if inch else self.step()
+        match = next((b for v, b in presets.items() if abs(v - shown) < 1e-9), None)
         self._preset_group.setExclusive(False)
-        for button in self.preset_buttons.values():
+        for button in (*self.preset_buttons.values(), *self.inch_preset_buttons.values()):
             button.setChecked(button is match)
         self._preset_group.setExclusive(True)
+        step = self.step()
+        if inch:
+            template = self.tr("Jog %1 by %2 in (Shift: %3 in)")
+            step /= MM_PER_INCH  # what is sent, on the device's resolution, in inches
+            decimals = self.step_spin.decimals()
+        else:
+            template = self.tr("Jog %1 by %2 mm (Shift: %3 mm)")
+            decimals = max(self.step_spin.decimals(), 6)
         for (axis, direction), button in self.buttons.items():
             normal, big = direction * step, direction * step * SHIFT_FACTOR
             button.setToolTip(
                 fill(
-                    self.tr("Jog %1 by %2 mm (Shift: %3 mm)"),
+                    template,
                     axis.upper(),
-                    f"{normal:+g}",
-                    f"{big:+g}",
+                    number_text(normal, decimals, signed=True),
+                    number_text(big, decimals, signed=True),
                 )
             )
 

@@ -72,9 +72,6 @@ class PositionReadout(QWidget):
     def __init__(self, parent: QWidget | None = None, decimals: int = 2) -> None:
         super().__init__(parent)
         self.setObjectName("positionReadout")
-        self.setToolTip(
-            self.tr("Stage position in mm: from the device's home, and from the work zero")
-        )
         self._decimals = decimals
         self._axes = frozenset(AXES)
         self._position: tuple[float, float, float] | None = None
@@ -96,11 +93,11 @@ class PositionReadout(QWidget):
         grid.setHorizontalSpacing(12)
         self.machine_header = QLabel(self.tr("Machine"))
         self.machine_header.setObjectName("machineFrameHeader")
-        self.machine_header.setToolTip(self.tr("Millimetres from the device's home (its origin)"))
+        self.machine_header.setToolTip(self.tr("Distances from the device's home (its origin)"))
         self.work_header = QLabel(self.tr("Work"))
         self.work_header.setObjectName("workFrameHeader")
         self.work_header.setToolTip(
-            self.tr("Millimetres from the work zero the panel keeps (the device is not told)")
+            self.tr("Distances from the work zero the panel keeps (the device is not told)")
         )
         for header in (self.machine_header, self.work_header):
             header.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignBottom)
@@ -193,6 +190,11 @@ class PositionReadout(QWidget):
         value.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         value.setMinimumWidth(value.fontMetrics().horizontalAdvance("-0000.000 mm"))
         return value
+
+    def number_text(self, value: float) -> str:
+        """A length in mm as shown here: in the units and decimals shown, in the interface's
+        locale (12,34 in French), no thousands separator, no unit."""
+        return self._number(value)
 
     def _number(self, value: float) -> str:
         """A value with the decimals shown, in the interface's locale (12,34 in French), no
@@ -336,6 +338,12 @@ class PositionReadout(QWidget):
         return label.palette().color(QPalette.ColorRole.WindowText).name(), label.font().italic()
 
     def _render(self) -> None:
+        unit = self.tr("millimetres") if self._units == MM else self.tr("inches")
+        tip = fill(
+            self.tr("Stage position in %1: from the device's home, and from the work zero"), unit
+        )
+        if tip != self.toolTip():
+            self.setToolTip(tip)
         for index, axis in enumerate(AXES):
             label, work = self.labels[axis], self.work_labels[axis]
             enabled = axis in self._axes
@@ -355,10 +363,10 @@ class PositionReadout(QWidget):
                 label.setText(f"{self._number(machine)} {self._units}")
                 work.setText(f"{self._number(machine - self._zero[index])} {self._units}")
                 label.setToolTip(
-                    self.tr("%1 position in mm from the device's home").replace("%1", axis.upper())
+                    fill(self.tr("%1 position in %2 from the device's home"), axis.upper(), unit)
                 )
                 work.setToolTip(
-                    self.tr("%1 position in mm from the work zero").replace("%1", axis.upper())
+                    fill(self.tr("%1 position in %2 from the work zero"), axis.upper(), unit)
                 )
         at_home = self._zero == (0.0, 0.0, 0.0)
         comma = QLocale().decimalPoint() == ","

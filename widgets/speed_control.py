@@ -6,7 +6,6 @@ import logging
 
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtWidgets import (
-    QDoubleSpinBox,
     QHBoxLayout,
     QLabel,
     QPushButton,
@@ -16,6 +15,8 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._i18n import fill
+from widgets.coordinate_entry import UnitSpinBox, check_units, number_text
+from widgets.position_readout import INCH, MM, MM_PER_INCH
 
 log = logging.getLogger(__name__)
 
@@ -23,7 +24,8 @@ SLIDER_STEPS = 1000
 
 
 class SpeedControl(QWidget):
-    """Slider + spin box in mm/s; `speed_requested` on slider release, Enter or Apply only."""
+    """Slider + spin box, shown in mm/s or in/s (`set_units`) and always set, read and sent
+    in mm/s; `speed_requested` (mm/s) on slider release, Enter or Apply only."""
 
     speed_requested = Signal(float)
 
@@ -31,6 +33,8 @@ class SpeedControl(QWidget):
         super().__init__(parent)
         self.setObjectName("speedControl")
         self._min, self._max = 0.0, 100.0
+        self._units = MM
+        self._reported: float | None = None
 
         label = QLabel(self.tr("Speed:"))
         label.setToolTip(self.tr("Speed of the next moves"))
@@ -42,10 +46,9 @@ class SpeedControl(QWidget):
         self.slider.sliderMoved.connect(self._slider_moved)
         self.slider.valueChanged.connect(self._slider_committed)
 
-        self.spin = QDoubleSpinBox()
+        self.spin = UnitSpinBox(per_second=True)
         self.spin.setObjectName("speedSpin")
-        self.spin.setDecimals(2)
-        self.spin.setSuffix(" mm/s")
+        self.spin.set_mm_decimals(2)
         self.spin.setKeyboardTracking(False)
         self.spin.setMinimumWidth(100)
         self.spin.valueChanged.connect(self._spin_changed)
@@ -91,45 +94,80 @@ class SpeedControl(QWidget):
         self.apply_button.setToolTip(tip + (f"\n{text}" if text else ""))
 
     def set_decimals(self, decimals: int) -> None:
-        """The decimals the device takes (0: whole mm/s)."""
-        self.spin.setDecimals(decimals)
+        """The decimals the device takes (0: whole mm/s); in in/s, two more (at most 4), and
+        the speed is sent rounded to the device's decimals."""
+        self.spin.set_mm_decimals(decimals)
+        self._range_tips()
 
     def value(self) -> float:
         """The speed shown in the field, in mm/s."""
-        return float(self.spin.value())
+        return self.spin.mm_value()
 
     def set_value(self, speed: float) -> None:
-        """Show `speed` (clamped to the range) in the field and the slider; emits nothing."""
+        """Show `speed` mm/s (clamped to the range) in the field and the slider; emits nothing."""
         self.spin.blockSignals(True)
-        self.spin.setValue(speed)
+        self.spin.set_mm_value(speed)
         self.spin.blockSignals(False)
-        self._move_slider(self.spin.value())
+        self._move_slider(self.value())
+
+    def set_units(self, units: str) -> None:
+        """Show speeds in mm/s ("mm") or in/s ("in"); what is sent stays in mm/s. Emits
+        nothing."""
+        check_units(units)
+        if units == self._units:
+            return
+        self._units = units
+        self.spin.set_units(units)
+        self._range_tips()
+        self.set_reported(self._reported)
+
+    def units(self) -> str:
+        """The length unit speeds are shown in: "mm" (mm/s) or "in" (in/s)."""
+        return self._units
 
     def set_range(self, minimum: float, maximum: float) -> None:
         """Limit the speed to minimum..maximum mm/s; emits nothing."""
         if not minimum <= maximum:
             raise ValueError(f"empty speed range {minimum}..{maximum}")
         self._min, self._max = float(minimum), float(maximum)
-        current = self.spin.value()
+        current = self.value()
         self.spin.blockSignals(True)
-        self.spin.setRange(self._min, self._max)
-        self.spin.setSingleStep(max((self._max - self._min) / 100.0, 0.01))
+        self.spin.set_mm_range(self._min, self._max)
+        step = (self._max - self._min) / 100.0
+        self.spin.set_single_steps(max(step, 0.01), max(step / MM_PER_INCH, 0.0001))
         self.spin.blockSignals(False)
         self.slider.setEnabled(self._max > self._min)
-        low, high = f"{self._min:g}", f"{self._max:g}"
-        tip = self.tr("Speed, %1 to %2 mm/s; press Enter or Apply to send")
-        self.spin.setToolTip(fill(tip, low, high))
-        self.slider.setToolTip(fill(self.tr("Drag and release to send (%1 to %2 mm/s)"), low, high))
+        self._range_tips()
         self.set_value(current)
+
+    def _range_tips(self) -> None:
+        """The field's and the slider's tooltips, with the range in the unit shown."""
+        if self._units == INCH:
+            spin = self.spin
+            low, high = (number_text(v, spin.decimals()) for v in (spin.minimum(), spin.maximum()))
+            tip = self.tr("Speed, %1 to %2 in/s; press Enter or Apply to send")
+            drag = self.tr("Drag and release to send (%1 to %2 in/s)")
+        else:
+            low, high = number_text(self._min, 6), number_text(self._max, 6)
+            tip = self.tr("Speed, %1 to %2 mm/s; press Enter or Apply to send")
+            drag = self.tr("Drag and release to send (%1 to %2 mm/s)")
+        self.spin.setToolTip(fill(tip, low, high))
+        self.slider.setToolTip(fill(drag, low, high))
 
     def speed_range(self) -> tuple[float, float]:
         """The (minimum, maximum) speed in mm/s."""
         return self._min, self._max
 
     def set_reported(self, speed: float | None) -> None:
-        """Show the device-reported speed, e.g. "device: 13 mm/s" (None: unknown)."""
-        text = "—" if speed is None else f"{speed:g}"
-        self.reported_label.setText(fill(self.tr("device: %1 mm/s"), text))
+        """Show the device-reported speed in mm/s, e.g. "device: 13 mm/s" (None: unknown);
+        in in/s when speeds are shown in inches."""
+        self._reported = speed
+        if self._units == INCH:
+            text = "—" if speed is None else number_text(speed / MM_PER_INCH, self.spin.decimals())
+            self.reported_label.setText(fill(self.tr("device: %1 in/s"), text))
+        else:
+            text = "—" if speed is None else number_text(speed, 6)
+            self.reported_label.setText(fill(self.tr("device: %1 mm/s"), text))
 
     # -- user actions --------------------------------------------------------------------
 
@@ -155,7 +193,7 @@ class SpeedControl(QWidget):
     def _slider_moved(self, position: int) -> None:
         """While dragging: show the value, send nothing."""
         self.spin.blockSignals(True)
-        self.spin.setValue(self._from_slider(position))
+        self.spin.set_mm_value(self._from_slider(position))
         self.spin.blockSignals(False)
 
     def _slider_committed(self, position: int) -> None:
@@ -163,6 +201,6 @@ class SpeedControl(QWidget):
         self._slider_moved(position)
         self.apply()
 
-    def _spin_changed(self, speed: float) -> None:
+    def _spin_changed(self, _shown: float) -> None:
         """Typed or stepped: move the slider along, send nothing until Enter or Apply."""
-        self._move_slider(speed)
+        self._move_slider(self.value())
