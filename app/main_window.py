@@ -19,9 +19,12 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.dock_balance import DockBalance
 from app.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
 from app.keyboard_jog import KeyboardJog
+from app.messages import localized
 from app.ports import PortWatcher
+from app.preferences import read_preferences, session_log_folder
 from app.session_log import log_folder, open_session_log
 from app.settings import (
     DEFAULT_PORT,
@@ -239,10 +242,11 @@ class MainWindow(QMainWindow):
 
     def _start_session_log(self) -> Path | None:
         """Every byte of this session to a file in the log folder (on unless turned off)."""
-        if str(self.settings.value("session_log", "true")).lower() == "false":
+        prefs = read_preferences(self.settings)
+        if not prefs.session_log:
             return None
         try:
-            path, stream = open_session_log()
+            path, stream = open_session_log(session_log_folder(prefs))
         except OSError as exc:
             self._say(fill(self.tr("no session log: %1"), exc), status.WARNING)
             return None
@@ -256,6 +260,14 @@ class MainWindow(QMainWindow):
         self._to_worker(hand_over)
         self.console.append_note(fill(self.tr("session log: %1"), path))
         return path
+
+    def restart_session_log(self) -> None:
+        """Follow the session-log settings now: a new file in the folder chosen (the worker
+        goes on in it, and each file names the other), or no log at all."""
+        self.session_log_path = self._start_session_log()
+        if self.session_log_path is None:
+            self._to_worker(lambda thread: thread.set_session_log(None))
+            self.console.append_note(self.tr("no session log from now on"))
 
     def _ask_log_path(self) -> str:
         from app.log_viewer import ask_open_path
@@ -362,6 +374,10 @@ class MainWindow(QMainWindow):
         self._build_menus(docks)
         # The left panels run the full height; the console sits under the views only.
         self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
+        # Once the docks built after the first paint are in: no left panel scrolls while the
+        # column has room for all of them.
+        self.dock_balance = DockBalance(self, LEFT)
+        self.views.ready.connect(self.dock_balance.start)
 
         self.status_line = StatusLine(self)
         self.statusBar().addWidget(self.status_line, 1)
@@ -604,8 +620,8 @@ class MainWindow(QMainWindow):
             path = session.start()
         except MotionError as exc:
             session.deleteLater()
-            self.connection_bar.set_state("error", str(exc))
-            self._say(fill(self.tr("bridge refused: %1"), exc), status.FAILURE)
+            self.connection_bar.set_state("error", localized(exc))
+            self._say(fill(self.tr("bridge refused: %1"), localized(exc)), status.FAILURE)
             return None
         self.bridge = session
         session.traffic.connect(self._on_traffic)
@@ -654,7 +670,11 @@ class MainWindow(QMainWindow):
             self.console.append_note(self.tr("disconnected"))
         elif state == "connected" and detail.startswith("device: "):
             self._failed = True
-            self._say(detail, status.FAILURE, note=False)
+            self._say(
+                fill(self.tr("device: %1"), detail.removeprefix("device: ")),
+                status.FAILURE,
+                note=False,
+            )
         if not self.connected:
             self._set_controls_enabled(False)
             self.parameters.disconnected()
@@ -717,10 +737,12 @@ class MainWindow(QMainWindow):
         for widget in (self.jog_panel, self.coordinates, self.readout):
             widget.set_axes_enabled(caps.axes)
         self.readout.set_measured(caps.position_feedback)
-        self.speed.set_note(caps.speed_note)
+        self.speed.set_note(localized(caps.speed_note))
         self.speed.set_decimals(caps.speed_decimals)
         self.coordinates.set_home_tips(
-            caps.home_note or self.tr("Go to the home position (0, 0, 0)"),
+            localized(caps.home_note)
+            if caps.home_note
+            else self.tr("Go to the home position (0, 0, 0)"),
             self.tr("Make the current position the origin (asks first)")
             if caps.set_home or caps.position_feedback
             else fill(
@@ -757,7 +779,7 @@ class MainWindow(QMainWindow):
         try:
             cls = get_protocol_class(name)
         except LookupError as exc:
-            self._say(str(exc), status.WARNING, note=False)
+            self._say(localized(exc), status.WARNING, note=False)
             return
         self.tools.protocol_chosen(name)
         self._show_variants(name, read_str(self.settings, f"variant/{name}", ""))
@@ -770,7 +792,9 @@ class MainWindow(QMainWindow):
             cls = get_protocol_class(protocol) if has_variants(protocol) else None
         except LookupError:
             cls = None
-        variants = [(v.name, v.description) for v in cls.variants] if cls is not None else []
+        variants = (
+            [(v.name, localized(v.description)) for v in cls.variants] if cls is not None else []
+        )
         self.connection_bar.set_variants(variants, current)
 
     def _on_variant_changed(self, variant: str) -> None:
@@ -778,7 +802,7 @@ class MainWindow(QMainWindow):
             cls = get_protocol_class(self.connection_bar.protocol())
             self.connection_bar.set_baud(cls.default_baud(variant))
         except LookupError as exc:
-            self._say(str(exc), status.WARNING, note=False)
+            self._say(localized(exc), status.WARNING, note=False)
 
     def _on_port_added(self, port: str) -> None:
         """A port appeared; if it is the one that was lost, connect again (position re-read)."""

@@ -15,7 +15,7 @@ from app.preferences import Preferences, read_preferences, write_preferences
 from app.settings import device_key
 from app.work_frame import WorkFrame
 from widgets._i18n import fill
-from widgets.lazy_view import LazyPart
+from widgets.lazy_view import LazyPart, built
 
 if TYPE_CHECKING:
     from app.macro_dock import MacroDock
@@ -68,6 +68,8 @@ class WindowTools(QObject):
         lines.break_requested.connect(self._on_break_requested)
         self.apply_jog_keys()
         window.readout.set_display(self.prefs.units, self.prefs.decimals)
+        self.apply_units()
+        window.views.add(self.apply_units)  # again once the device docks (the arc) are built
         window.console.set_max_lines(self.prefs.console_max_lines)
         if self.prefs.theme == "system":  # nothing to change before the first paint (asking
             window.views.add(self.apply_theme)  # for the style costs some 40 ms): after it
@@ -213,6 +215,18 @@ class WindowTools(QObject):
             )
         self.window.jog_panel.set_key_map(key_map, step_keys, hint)
 
+    def apply_units(self) -> None:
+        """Lengths and speeds typed and shown in the preferences' units (mm or inches): the Go
+        to fields, the jog step, the speed and, once built, the arc; they still hand the window
+        mm and mm/s. Converts what is shown; sends nothing."""
+        window, units = self.window, self.prefs.units
+        window.coordinates.set_units(units)
+        window.jog_panel.set_units(units)
+        window.speed.set_units(units)
+        devices = window.devices
+        if built(devices):  # else the step added to window.views sets it once it is built
+            devices.arc.set_units(units)
+
     # -- settings ------------------------------------------------------------------------------
     def edit_settings(self) -> None:
         """File → Settings…: change the preferences; applied on OK or Apply."""
@@ -247,14 +261,13 @@ class WindowTools(QObject):
             self.apply_jog_keys()
         if {"units", "decimals"} & set(changed):
             self.window.readout.set_display(prefs.units, prefs.decimals)
-        later = []
+        if "units" in changed:
+            self.apply_units()
         if {"session_log", "log_folder"} & set(changed):
-            later.append(self.tr("the session log from the next start"))
-        if "language" in changed:
-            later.append(self.tr("the language from the next start"))
+            self.window.restart_session_log()
         message = self.tr("settings saved")
-        if later:
-            message = fill(self.tr("settings saved; %1"), "; ".join(later))
+        if "language" in changed:
+            message = self.tr("settings saved; the language from the next start")
         self._say(message)
 
     # -- the connection --------------------------------------------------------------------------

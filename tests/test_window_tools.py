@@ -4,6 +4,7 @@ lines, the settings dialog changing the poll rate, and the Help menu."""
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -176,9 +177,34 @@ def test_jog_keys_and_units_from_the_preferences(qtbot, window: MainWindow) -> N
     assert panel.handle_key(Qt.Key.Key_D)
     panel.release()
     assert not panel.handle_key(Qt.Key.Key_Right)  # no longer a jog key
-    assert panel.handle_key(Qt.Key.Key_BracketRight)  # the next larger step
-    assert panel.step() == 10.0
+    assert panel.handle_key(Qt.Key.Key_BracketRight)  # the next larger inch step
+    assert panel.step() == pytest.approx(2.54)  # 0.1 in, in mm
     assert jogs == [("x", 1.0)]
+    assert window.coordinates.units() == "in"
     assert panel.key_hint.startswith("Keys: A/D X")
     assert window.readout.units() == "in"
     assert window.readout.text("x").endswith(" in")
+
+
+def test_the_session_log_follows_its_settings_at_once(
+    qtbot, window: MainWindow, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _connect(qtbot, window, "sim://coxiris?instant=1")
+    first = window.session_log_path
+    assert first is not None and first.is_file()
+    monkeypatch.delenv("MOTIONPANEL_LOG_DIR")  # the environment would come before the setting
+    chosen = tmp_path / "chosen-logs"
+    chosen.mkdir()  # the setting takes a folder that exists
+    window.tools.apply_preferences(dataclasses.replace(window.tools.prefs, log_folder=str(chosen)))
+    second = window.session_log_path
+    assert second is not None and second.parent == chosen
+    window.jog_panel.jog_requested.emit("x", 1.0)  # the open connection goes on in the new file
+    qtbot.waitUntil(lambda: "DELTA_MOVE" in second.read_text(encoding="utf-8"), timeout=10000)
+    assert f"continued from {first}" in second.read_text(encoding="utf-8")
+    qtbot.waitUntil(lambda: f"goes on in {second}" in first.read_text(encoding="utf-8"))
+    assert "DELTA_MOVE" not in first.read_text(encoding="utf-8")
+    assert window.status_line.message() == "settings saved"
+    window.tools.apply_preferences(dataclasses.replace(window.tools.prefs, session_log=False))
+    assert window.session_log_path is None
+    qtbot.waitUntil(lambda: "turned off" in second.read_text(encoding="utf-8"))
+    assert "no session log from now on" in _console(window)

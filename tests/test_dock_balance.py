@@ -1,0 +1,105 @@
+"""The left panels share their column: none scrolls while another has room to spare."""
+
+from __future__ import annotations
+
+import pytest
+from PySide6.QtCore import QSize, Qt
+from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QWidget
+
+from app.dock_balance import DockBalance, balanced_heights, stacked
+
+pytestmark = pytest.mark.timeout(60)
+LEFT = Qt.DockWidgetArea.LeftDockWidgetArea
+BOTTOM = Qt.DockWidgetArea.BottomDockWidgetArea
+
+
+def test_the_cramped_panel_gets_its_height_and_the_spare_goes_last() -> None:
+    assert balanced_heights([100, 100, 100], [60, 180, 40]) == [60, 180, 60]
+    assert balanced_heights([100, 100, 100], [60, 90, 40]) is None  # none is short
+    assert balanced_heights([100, 100, 100], [150, 180, 40]) is None  # no room: they scroll
+
+
+class Tall(QLabel):
+    """A panel asking for a given height."""
+
+    def __init__(self, height: int) -> None:
+        super().__init__("panel")
+        self._height = height
+
+    def sizeHint(self) -> QSize:
+        return QSize(120, self._height)
+
+    def minimumSizeHint(self) -> QSize:
+        return QSize(120, 20)
+
+
+def _window(qtbot, heights: list[int]) -> tuple[QMainWindow, list[QDockWidget], QDockWidget]:
+    window = QMainWindow()
+    qtbot.addWidget(window)
+    window.setCentralWidget(QWidget())
+    docks = []
+    for number, height in enumerate(heights):
+        dock = QDockWidget(f"dock {number}", window)
+        dock.setObjectName(f"dock{number}")
+        dock.setWidget(Tall(height))
+        window.addDockWidget(LEFT, dock)
+        docks.append(dock)
+    bottom = QDockWidget("bottom", window)
+    bottom.setObjectName("bottom")
+    bottom.setWidget(Tall(300))
+    window.addDockWidget(BOTTOM, bottom)
+    window.setCorner(Qt.Corner.BottomLeftCorner, LEFT)
+    window.resize(900, 800)
+    window.show()
+    qtbot.waitExposed(window)
+    return window, docks, bottom
+
+
+def test_a_window_gives_a_cramped_panel_its_height_and_keeps_the_bottom_dock(qtbot) -> None:
+    window, docks, bottom = _window(qtbot, [40, 420, 40])
+    window.resizeDocks(docks, [240, 240, 240], Qt.Orientation.Vertical)  # the tall one is short
+    qtbot.waitUntil(lambda: docks[1].height() < docks[1].sizeHint().height())
+    assert stacked(window, LEFT) == docks
+    bottom_height = bottom.height()
+    balance = DockBalance(window, LEFT)
+    balance.start()
+    qtbot.waitUntil(lambda: docks[1].height() >= docks[1].sizeHint().height())
+    assert docks[0].height() >= docks[0].sizeHint().height()
+    assert bottom.height() == bottom_height  # the other areas keep their heights
+    window.resize(900, 700)  # a resize balances again
+    qtbot.waitUntil(lambda: window.height() == 700)
+    qtbot.waitUntil(lambda: docks[1].height() >= docks[1].sizeHint().height())
+
+
+def test_a_tab_hidden_behind_another_is_not_counted(qtbot) -> None:
+    window, docks, _ = _window(qtbot, [40, 120, 40])
+    extra = QDockWidget("tab", window)
+    extra.setObjectName("tab")
+    extra.setWidget(Tall(60))
+    window.tabifyDockWidget(docks[2], extra)
+    docks[2].raise_()
+    qtbot.waitUntil(lambda: extra.visibleRegion().isEmpty())
+    assert extra not in stacked(window, LEFT)
+    assert docks[2] in stacked(window, LEFT)
+
+
+def _scrolling(window) -> list[str]:
+    from widgets.panel_scroll_area import PanelScrollArea
+
+    return [
+        dock.objectName()
+        for dock in stacked(window, LEFT)
+        if isinstance(dock.widget(), PanelScrollArea)
+        and dock.widget().verticalScrollBar().isVisible()
+    ]
+
+
+def test_the_main_window_shows_every_left_panel_whole_when_there_is_room(qtbot, window) -> None:
+    """At 1600×1000 the jog panel used to scroll while Go to and Speed had room to spare."""
+    window.resize(1000, 600)
+    qtbot.waitUntil(lambda: window.height() == 600)
+    window.resize(1600, 1000)
+    qtbot.waitUntil(lambda: window.height() == 1000)
+    qtbot.waitUntil(lambda: _scrolling(window) == [])
+    for dock in stacked(window, LEFT):
+        assert dock.height() >= dock.sizeHint().height(), dock.objectName()
