@@ -67,22 +67,22 @@
 <context>
     <name>ArcEntry</name>
     <message>
-        <location filename="../../widgets/arc_entry.py" line="+126"/>
+        <location filename="../../widgets/arc_entry.py" line="+273"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
         <translation>X del centro del arco, en mm desde el origen</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Y of the arc&apos;s centre, in mm from home</source>
         <translation>Y del centro del arco, en mm desde el origen</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>Radius of the arc, in mm (more than 0)</source>
         <translation>Radio del arco, en mm (mayor que 0)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-125"/>
         <source>Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above</source>
         <translation>Ángulo del punto inicial, de 0 a 360°, en sentido antihorario desde +X visto desde arriba</translation>
     </message>
@@ -94,14 +94,14 @@ the same as the start angle: a full circle</source>
 igual al ángulo inicial: una circunferencia completa</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+118"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
         <translation>Z al final del arco, en mm; Z avanza de forma uniforme desde la Z actual a lo largo del arco
 (una hélice si es distinta)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-94"/>
         <source>Centre X:</source>
         <translation>Centro X:</translation>
     </message>
@@ -131,7 +131,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>Z final:</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>CW</source>
         <translation>Horario</translation>
     </message>
@@ -167,22 +167,59 @@ igual al ángulo inicial: una circunferencia completa</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+130"/>
+        <location line="+182"/>
         <source>Move along the arc, from its start point to its end point</source>
         <translation>Moverse a lo largo del arco, desde su punto inicial hasta su punto final</translation>
     </message>
     <message>
-        <location line="-122"/>
+        <location line="-174"/>
         <source>Why the arc cannot run</source>
         <translation>Por qué no se puede ejecutar el arco</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+36"/>
+        <source>X of the arc&apos;s centre, in inches from home</source>
+        <translation>X del centro del arco, en pulgadas desde el origen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y of the arc&apos;s centre, in inches from home</source>
+        <translation>Y del centro del arco, en pulgadas desde el origen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Radius of the arc, in inches (more than 0)</source>
+        <translation>Radio del arco, en pulgadas (mayor que 0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Z at the end of the arc, in inches; Z moves evenly from the current Z along the arc
+(a helix when it differs)</source>
+        <translation>Z al final del arco, en pulgadas; Z avanza de forma uniforme desde la Z actual a lo largo del arco
+(una hélice si es distinta)</translation>
+    </message>
+    <message>
+        <location line="+142"/>
+        <source>The radius must be more than 0 in.</source>
+        <translation>El radio debe ser mayor que 0 in.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>The radius must be more than 0 mm.</source>
         <translation>El radio debe ser mayor que 0 mm.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>%1 %2 to %3 in (travel %4 to %5 in)</source>
+        <translation>%1 de %2 a %3 in (recorrido de %4 a %5 in)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 in (travel %3 to %4 in)</source>
+        <translation>%1 %2 in (recorrido de %3 a %4 in)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 %2 to %3 mm (travel %4 to %5 mm)</source>
         <translation>%1 de %2 a %3 mm (recorrido de %4 a %5 mm)</translation>
     </message>
@@ -192,7 +229,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>%1 %2 mm (recorrido de %3 a %4 mm)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
         <source>The arc leaves the travel limits: %1.</source>
         <translation>El arco sale de los límites de recorrido: %1.</translation>
     </message>
@@ -200,7 +237,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/bridge_session.py" line="+82"/>
+        <location filename="../../app/bridge_session.py" line="+83"/>
         <source>the bridge failed: %1</source>
         <translation>el puente falló: %1</translation>
     </message>
@@ -464,7 +501,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
 <context>
     <name>CoordinateEntry</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="+33"/>
+        <location filename="../../widgets/coordinate_entry.py" line="+35"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
         <translation>¿Convertir la posición actual en el nuevo origen (0, 0, 0)?
@@ -476,7 +513,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+205"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
         <translation>%1:</translation>
@@ -487,22 +524,22 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Absoluto</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+72"/>
         <source>Go to the typed coordinates (mm from home)</source>
         <translation>Ir a las coordenadas introducidas (mm desde el origen)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-70"/>
         <source>Relative</source>
         <translation>Relativo</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+71"/>
         <source>Move by the typed distances (mm) from where the stage is</source>
         <translation>Mover las distancias introducidas (mm) desde la posición actual de la platina</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-62"/>
         <source>Machine</source>
         <translation>Máquina</translation>
     </message>
@@ -512,12 +549,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+63"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
         <translation>Sistema de las coordenadas introducidas: Máquina (mm desde el origen del dispositivo) o Trabajo (mm desde el cero de pieza); al dispositivo siempre se le envían coordenadas de máquina</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-58"/>
         <source>Go</source>
         <translation>Ir</translation>
     </message>
@@ -558,12 +595,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+127"/>
+        <location line="+167"/>
         <source>Stop</source>
         <translation>Detener</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-167"/>
         <source>Stop the stage now</source>
         <translation>Detener la platina ahora</translation>
     </message>
@@ -573,12 +610,42 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Detener la platina ahora (Esc)</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+26"/>
+        <source>Go to the typed coordinates (inches from home)</source>
+        <translation>Ir a las coordenadas introducidas (pulgadas desde el origen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move by the typed distances (inches) from where the stage is</source>
+        <translation>Mover las distancias introducidas (pulgadas) desde la posición actual de la platina</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Which frame the typed coordinates are in: Machine (inches from the device&apos;s home) or Work (inches from the work zero); the device is always sent machine coordinates, in mm</source>
+        <translation>Sistema de las coordenadas introducidas: Máquina (pulgadas desde el origen del dispositivo) o Trabajo (pulgadas desde el cero de pieza); al dispositivo siempre se le envían coordenadas de máquina, en mm</translation>
+    </message>
+    <message>
+        <location line="+137"/>
         <source>Drop queued</source>
         <translation>Descartar cola</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+21"/>
+        <source>%1 distance to move, %2 to %3 in (%4)</source>
+        <translation>Distancia a mover en %1, de %2 a %3 in (%4)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 target coordinate, %2 to %3 in (%4)</source>
+        <translation>Coordenada de destino %1, de %2 a %3 in (%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 target coordinate in the work frame, %2 to %3 in (%4)</source>
+        <translation>Coordenada de destino %1 en el sistema de trabajo, de %2 a %3 in (%4)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 distance to move, %2 to %3 mm (%4)</source>
         <translation>Distancia a mover en %1, de %2 a %3 mm (%4)</translation>
     </message>
@@ -588,12 +655,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Coordenada de destino %1, de %2 a %3 mm (%4)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>%1 target coordinate in the work frame, %2 to %3 mm (%4)</source>
         <translation>Coordenada de destino %1 en el sistema de trabajo, de %2 a %3 mm (%4)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>travel limits</source>
         <translation>límites de recorrido</translation>
     </message>
@@ -634,7 +701,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/device_docks.py" line="+135"/>
+        <location filename="../../app/device_docks.py" line="+136"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>%1 a %2 mm en cada eje (cuentas de 16 bits)</translation>
     </message>
@@ -910,7 +977,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+30"/>
+        <location filename="../../widgets/jog_panel.py" line="+33"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>Teclas: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</translation>
     </message>
@@ -933,16 +1000,27 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
     </message>
     <message>
         <location line="+7"/>
+        <location line="+13"/>
         <source>Jog by %1 per press</source>
         <translation>Desplazar %1 por pulsación</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-5"/>
+        <source>%1 in</source>
+        <translation>%1 in</translation>
+    </message>
+    <message>
+        <location line="+126"/>
+        <source>Any step size (%1 to %2 in)</source>
+        <translation>Cualquier tamaño de paso (de %1 a %2 in)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Any step size (0.001 to 1000 mm)</source>
         <translation>Cualquier tamaño de paso (de 0.001 a 1000 mm)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="-83"/>
         <source>keys active</source>
         <translation>teclas activas</translation>
     </message>
@@ -965,7 +1043,12 @@ Hacer clic en las vistas o en este panel para devolver las teclas al desplazamie
 Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+104"/>
+        <source>Jog %1 by %2 in (Shift: %3 in)</source>
+        <translation>Desplazar %1 %2 in (Shift: %3 in)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Jog %1 by %2 mm (Shift: %3 mm)</source>
         <translation>Desplazar %1 %2 mm (Shift: %3 mm)</translation>
     </message>
@@ -1046,7 +1129,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/log_viewer.py" line="+42"/>
+        <location filename="../../app/log_viewer.py" line="+43"/>
         <source>(undecoded)</source>
         <translation>(sin decodificar)</translation>
     </message>
@@ -1109,7 +1192,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>MacroDock</name>
     <message>
-        <location filename="../../app/macro_dock.py" line="+28"/>
+        <location filename="../../app/macro_dock.py" line="+29"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
         <translation>Macros de Motion Panel (*.json);;Todos los archivos (*)</translation>
     </message>
@@ -1301,7 +1384,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+102"/>
+        <location filename="../../app/main_window.py" line="+105"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 no tiene comando de parada: esto descarta los comandos aún no enviados; un movimiento ya en curso en el dispositivo termina (Esc)</translation>
     </message>
@@ -1321,7 +1404,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+107"/>
         <source>no session log: %1</source>
         <translation>sin registro de sesión: %1</translation>
     </message>
@@ -1331,7 +1414,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>registro de sesión: %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+9"/>
+        <source>no session log from now on</source>
+        <translation>sin registro de sesión a partir de ahora</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
@@ -1371,7 +1459,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Línea de tiempo del tráfico</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+26"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
@@ -1417,12 +1505,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     </message>
     <message>
         <location line="+1"/>
-        <location line="+351"/>
+        <location line="+357"/>
         <source>&amp;Stop</source>
         <translation>&amp;Detener</translation>
     </message>
     <message>
-        <location line="-346"/>
+        <location line="-352"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Límites de recorrido…</translation>
     </message>
@@ -1492,7 +1580,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>desconectado</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+36"/>
         <source>connected to %1 on %2</source>
         <translation>conectado a %1 en %2</translation>
     </message>
@@ -1512,7 +1600,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>el dispositivo</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Go to the home position (0, 0, 0)</source>
         <translation>Ir a la posición de origen (0, 0, 0)</translation>
     </message>
@@ -1532,7 +1620,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Descartar comandos en cola</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>port %1 appeared</source>
         <translation>apareció el puerto %1</translation>
     </message>
@@ -1597,7 +1685,8 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-393"/>
+        <location line="+397"/>
         <source>device: %1</source>
         <translation>dispositivo: %1</translation>
     </message>
@@ -1615,12 +1704,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/parameter_dock.py" line="+30"/>
+        <location filename="../../app/parameter_dock.py" line="+33"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>el dispositivo tiene ahora %1: el firmware lo impone tras cada escritura</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+40"/>
         <source>Parameters</source>
         <translation>Parámetros</translation>
     </message>
@@ -1645,7 +1734,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>sin enviar</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <source>the device did not answer</source>
         <translation>el dispositivo no respondió</translation>
     </message>
@@ -2146,29 +2235,36 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>última posición conocida: no conectado</translation>
     </message>
     <message>
-        <location line="+19"/>
         <source>Stage position in mm: from the device&apos;s home, and from the work zero</source>
-        <translation>Posición de la platina en mm: desde el origen del dispositivo y desde el cero de pieza</translation>
+        <translation type="vanished">Posición de la platina en mm: desde el origen del dispositivo y desde el cero de pieza</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+37"/>
         <source>Machine</source>
         <translation>Máquina</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Millimetres from the device&apos;s home (its origin)</source>
-        <translation>Milímetros desde el origen del dispositivo (su posición de referencia)</translation>
+        <translation type="vanished">Milímetros desde el origen del dispositivo (su posición de referencia)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Work</source>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Millimetres from the work zero the panel keeps (the device is not told)</source>
-        <translation>Milímetros desde el cero de pieza que guarda el panel (no se comunica al dispositivo)</translation>
+        <translation type="vanished">Milímetros desde el cero de pieza que guarda el panel (no se comunica al dispositivo)</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Distances from the device&apos;s home (its origin)</source>
+        <translation>Distancias desde el origen del dispositivo (su punto cero)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Distances from the work zero the panel keeps (the device is not told)</source>
+        <translation>Distancias desde el cero de pieza que guarda el panel (el dispositivo no lo sabe)</translation>
     </message>
     <message>
         <location line="+16"/>
@@ -2201,7 +2297,22 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Devolver el cero de pieza al origen del dispositivo (trabajo = máquina)</translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+197"/>
+        <source>millimetres</source>
+        <translation>milímetros</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>inches</source>
+        <translation>pulgadas</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stage position in %1: from the device&apos;s home, and from the work zero</source>
+        <translation>Posición de la platina en %1: desde el origen del dispositivo y desde el cero de pieza</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>This device has no %1 axis</source>
         <translation>Este dispositivo no tiene eje %1</translation>
     </message>
@@ -2212,13 +2323,21 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     </message>
     <message>
         <location line="+6"/>
-        <source>%1 position in mm from the device&apos;s home</source>
-        <translation>Posición %1 en mm desde el origen del dispositivo</translation>
+        <source>%1 position in %2 from the device&apos;s home</source>
+        <translation>Posición %1 en %2 desde el origen del dispositivo</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>%1 position in %2 from the work zero</source>
+        <translation>Posición %1 en %2 desde el cero de pieza</translation>
+    </message>
+    <message>
+        <source>%1 position in mm from the device&apos;s home</source>
+        <translation type="vanished">Posición %1 en mm desde el origen del dispositivo</translation>
+    </message>
+    <message>
         <source>%1 position in mm from the work zero</source>
-        <translation>Posición %1 en mm desde el cero de pieza</translation>
+        <translation type="vanished">Posición %1 en mm desde el cero de pieza</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2238,7 +2357,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+85"/>
+        <location filename="../../widgets/position_view_2d.py" line="+86"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>Platina vista desde arriba: trayectoria, posición actual (punto; hueco si es estimada), destino (+), límites de recorrido (discontinuos)</translation>
     </message>
@@ -2278,7 +2397,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>posición (mm)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>Clear trail</source>
         <translation>Borrar trayectoria</translation>
     </message>
@@ -2415,7 +2534,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>pulsar el botón que tiene el foco</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+51"/>
         <source>Poll while moving</source>
         <translation>Consulta en movimiento</translation>
     </message>
@@ -2698,7 +2817,7 @@ La vista 2D muestra las mismas posiciones.</translation>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/traffic_console.py" line="+72"/>
+        <location filename="../../app/traffic_console.py" line="+76"/>
         <source>text</source>
         <translation>texto</translation>
     </message>
@@ -2748,7 +2867,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>Exportar tráfico</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+97"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
         <translation>Bytes como texto (escapes \r \n \xNN), hex (47 45 54) o mixto (texto, &lt;0A&gt; para el resto)</translation>
     </message>
@@ -2878,12 +2997,21 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>TX (azul): enviado al dispositivo; RX (verde): recibido; gris: notas y texto propio del dispositivo; rojo: errores. Doble clic en una línea para ir a su petición, su respuesta o su primera copia.</translation>
     </message>
     <message>
-        <location line="+144"/>
-        <source>%1 lines reached the console&apos;s limit and were cleared; the session log keeps them</source>
-        <translation>%1 líneas alcanzaron el límite de la consola y se borraron; el registro de sesión las conserva</translation>
+        <location line="+164"/>
+        <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
+        <translation>la consola conserva las %1 líneas más recientes: las más antiguas se descartan a medida que llegan otras nuevas; el registro de sesión conserva todas las líneas</translation>
     </message>
     <message>
-        <location line="+260"/>
+        <location line="+198"/>
+        <source>line %1 is no longer in the console (its line limit dropped it); the session log has it</source>
+        <translation>la línea %1 ya no está en la consola (la descartó su límite de líneas); está en el registro de sesión</translation>
+    </message>
+    <message>
+        <source>%1 lines reached the console&apos;s limit and were cleared; the session log keeps them</source>
+        <translation type="vanished">%1 líneas alcanzaron el límite de la consola y se borraron; el registro de sesión las conserva</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>%1 lines</source>
         <translation>%1 líneas</translation>
     </message>
@@ -2894,6 +3022,11 @@ La vista 2D muestra las mismas posiciones.</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>%1 older in the session log</source>
+        <translation>%1 más antiguas en el registro de sesión</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 poll hidden</source>
         <translation>%1 de consulta ocultas</translation>
     </message>
@@ -2908,7 +3041,12 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>%1 coincidencias</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+5"/>
+        <source>The console keeps the newest %1 lines (Settings): older lines are dropped from it, the session log on disk keeps every line</source>
+        <translation>La consola conserva las %1 líneas más recientes (Ajustes): las más antiguas se descartan; el registro de sesión en disco conserva todas las líneas</translation>
+    </message>
+    <message>
+        <location line="+89"/>
         <source>export failed: %1</source>
         <translation>exportación fallida: %1</translation>
     </message>
@@ -3011,7 +3149,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>SettingsDialog</name>
     <message>
-        <location filename="../../widgets/settings_dialog.py" line="+87"/>
+        <location filename="../../widgets/settings_dialog.py" line="+77"/>
         <source>Settings</source>
         <translation>Ajustes</translation>
     </message>
@@ -3111,9 +3249,13 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Conservar todas las líneas</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines. The session log keeps every byte either way.</source>
-        <translation>Máximo de líneas que conserva la consola: 0 conserva todas (un archivo de volcado en disco y unos 33 bytes por línea en memoria); si no, de %1 a %2 líneas. El registro de sesión conserva todos los bytes en cualquier caso.</translation>
+        <translation type="vanished">Máximo de líneas que conserva la consola: 0 conserva todas (un archivo de volcado en disco y unos 33 bytes por línea en memoria); si no, de %1 a %2 líneas. El registro de sesión conserva todos los bytes en cualquier caso.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines, the oldest dropped as new ones come. The session log keeps every byte either way.</source>
+        <translation>Máximo de líneas que conserva la consola: 0 conserva todas (un archivo de volcado en disco y unos 33 bytes por línea en memoria); si no, de %1 a %2 líneas, y las más antiguas se descartan a medida que llegan otras nuevas. El registro de sesión conserva todos los bytes en cualquier caso.</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -3453,7 +3595,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+35"/>
+        <location filename="../../widgets/speed_control.py" line="+39"/>
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -3463,7 +3605,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Velocidad de los próximos movimientos</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>Apply</source>
         <translation>Aplicar</translation>
     </message>
@@ -3479,17 +3621,32 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>La velocidad que indica el dispositivo (puede redondearla)</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+84"/>
+        <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
+        <translation>Velocidad, de %1 a %2 in/s; pulsar Enter o Aplicar para enviar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drag and release to send (%1 to %2 in/s)</source>
+        <translation>Arrastrar y soltar para enviar (%1 a %2 in/s)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Speed, %1 to %2 mm/s; press Enter or Apply to send</source>
         <translation>Velocidad, de %1 a %2 mm/s; pulsar Enter o Aplicar para enviar</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Drag and release to send (%1 to %2 mm/s)</source>
         <translation>Arrastrar y soltar para enviar (%1 a %2 mm/s)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
+        <source>device: %1 in/s</source>
+        <translation>dispositivo: %1 in/s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>device: %1 mm/s</source>
         <translation>dispositivo: %1 mm/s</translation>
     </message>
@@ -3508,12 +3665,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Connecting…</source>
         <translation>Conectando…</translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location line="-38"/>
         <source>Opening the port and asking the device who it is</source>
         <translation>Abriendo el puerto y preguntando al dispositivo su identidad</translation>
     </message>
@@ -3582,6 +3739,34 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
 </context>
 <context>
+    <name>TrafficFormat</name>
+    <message>
+        <location filename="../../widgets/traffic_format.py" line="+38"/>
+        <source>\x needs two hex digits at column %1: %2</source>
+        <translation>\x necesita dos dígitos hex en la columna %1: %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>a lone backslash ends the line: write \\ for a backslash</source>
+        <translation>una barra invertida sola termina la línea: escribir \\ para una barra invertida</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>unknown escape \%1 at column %2 (use \r \n \t \0 \\ \xNN)</source>
+        <translation>escape desconocido \%1 en la columna %2 (usar \r \n \t \0 \\ \xNN)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>not hex: %1</source>
+        <translation>no es hex: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>odd number of hex digits in %1: write 0%2 or pairs</source>
+        <translation>número impar de dígitos hex en %1: escribir 0%2 o pares</translation>
+    </message>
+</context>
+<context>
     <name>TrafficModel</name>
     <message>
         <location filename="../../app/traffic_table.py" line="-19"/>
@@ -3614,7 +3799,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Respuesta</translation>
     </message>
     <message>
-        <location line="+249"/>
+        <location line="+265"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
@@ -3742,6 +3927,21 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
 </context>
 <context>
+    <name>UnitSpinBox</name>
+    <message>
+        <location filename="../../widgets/coordinate_entry.py" line="-434"/>
+        <source>in/s</source>
+        <comment>inches per second</comment>
+        <translation>in/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>in</source>
+        <comment>inches</comment>
+        <translation>in</translation>
+    </message>
+</context>
+<context>
     <name>ValueDelegate</name>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-95"/>
@@ -3772,7 +3972,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Macros</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+31"/>
         <source>&amp;Settings…</source>
         <translation>A&amp;justes…</translation>
     </message>
@@ -3797,7 +3997,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>&amp;Acerca de Motion Panel</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+55"/>
         <source>Jog X - / +</source>
         <translation>Desplazar X - / +</translation>
     </message>
@@ -3842,30 +4042,32 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>, %1/%2 paso</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+58"/>
+        <source>settings saved; the language from the next start</source>
+        <translation>ajustes guardados; el idioma se aplica en el próximo inicio</translation>
+    </message>
+    <message>
         <source>the session log from the next start</source>
-        <translation>el registro de sesión se aplica en el próximo inicio</translation>
+        <translation type="vanished">el registro de sesión se aplica en el próximo inicio</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>the language from the next start</source>
-        <translation>el idioma se aplica en el próximo inicio</translation>
+        <translation type="vanished">el idioma se aplica en el próximo inicio</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>settings saved</source>
         <translation>ajustes guardados</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>settings saved; %1</source>
-        <translation>ajustes guardados; %1</translation>
+        <translation type="vanished">ajustes guardados; %1</translation>
     </message>
 </context>
 <context>
     <name>WorkFrame</name>
     <message>
-        <location filename="../../app/work_frame.py" line="+58"/>
+        <location filename="../../app/work_frame.py" line="+59"/>
         <source>work coordinates: %1</source>
         <translation>coordenadas de trabajo: %1</translation>
     </message>
@@ -3875,9 +4077,13 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>cero de pieza no fijado: la posición es desconocida</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
+        <source>work zero set at %1 %2 (machine)</source>
+        <translation>cero de pieza fijado en %1 %2 (máquina)</translation>
+    </message>
+    <message>
         <source>work zero set at %1 mm (machine)</source>
-        <translation>cero de pieza fijado en %1 mm (máquina)</translation>
+        <translation type="vanished">cero de pieza fijado en %1 mm (máquina)</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -3888,6 +4094,2024 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+7"/>
         <source>work zero kept in place: %1</source>
         <translation>cero de pieza mantenido: %1</translation>
+    </message>
+</context>
+<context>
+    <name>messages</name>
+    <message>
+        <location filename="message_templates.py" line="+6"/>
+        <source>usage: {usage} (got {count} arguments)</source>
+        <translation>uso: {usage} (se recibieron {count} argumentos)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>usage: {usage}</source>
+        <translation>uso: {usage}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>usage: {command} {axes} ({protocol} has {count} axes)</source>
+        <translation>uso: {command} {axes} ({protocol} tiene {count} ejes)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--kind {kind} refused: {protocol} moves are {kinds}</source>
+        <translation>--kind {kind} rechazado: los movimientos de {protocol} son {kinds}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s</source>
+        <translation>velocidad de {speed:g} mm/s rechazada: el dispositivo admite de {low:g} a {high:g} mm/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused ({error})</source>
+        <translation>velocidad de {speed:g} mm/s rechazada ({error})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} ({count} step)</source>
+        <translation>macro {name} ({count} paso)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} ({count} steps)</source>
+        <translation>macro {name} ({count} pasos)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a macro needs a name</source>
+        <translation>una macro necesita un nombre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro name {name!r}… is over {limit} characters</source>
+        <translation>el nombre de macro {name!r}… supera los {limit} caracteres</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro name {name!r} holds a control character</source>
+        <translation>el nombre de macro {name!r} contiene un carácter de control</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} is for {protocol}, not {device}</source>
+        <translation>la macro {name} es para {protocol}, no para {device}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} has no steps</source>
+        <translation>la macro {name} no tiene pasos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} has {count} steps; at most {limit}</source>
+        <translation>la macro {name} tiene {count} pasos; como máximo {limit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name}, step {number} ({step!r}): {error}</source>
+        <translation>macro {name}, paso {number} ({step!r}): {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the step is over {limit} characters</source>
+        <translation>el paso supera los {limit} caracteres</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a step is one line (use one step per line)</source>
+        <translation>un paso es una sola línea (usar un paso por línea)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the step is empty</source>
+        <translation>el paso está vacío</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown command {command!r}; a step is one of: {commands}</source>
+        <translation>comando desconocido {command!r}; un paso es uno de: {commands}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} is a {owner} command</source>
+        <translation>{command} es un comando de {owner}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>usage: wait SECONDS</source>
+        <translation>uso: wait SEGUNDOS</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wait {seconds:g} s refused: from 0 to {limit:g} s</source>
+        <translation>wait {seconds:g} s rechazado: de 0 a {limit:g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} stopped before step {number} ({step})</source>
+        <translation>{name} se detuvo antes del paso {number} ({step})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} stopped during step {number}</source>
+        <translation>{name} se detuvo durante el paso {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: not a Motion Panel macro file (no &quot;format&quot;: &quot;{format}&quot;)</source>
+        <translation>{where}: no es un archivo de macros de Motion Panel (falta &quot;format&quot;: &quot;{format}&quot;)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: macro file version {version!r}; this reads {reads}</source>
+        <translation>{where}: versión de archivo de macros {version!r}; este panel lee {reads}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: &quot;macros&quot; is not a list</source>
+        <translation>{where}: &quot;macros&quot; no es una lista</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {count} macros; at most {limit}</source>
+        <translation>{where}: {count} macros; como máximo {limit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: macro {number}</source>
+        <translation>{where}: macro {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: two {protocol} macros are named {name!r}</source>
+        <translation>{where}: dos macros de {protocol} se llaman {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} is not an object with name, protocol and steps</source>
+        <translation>{where} no es un objeto con nombre, protocolo y pasos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} has no name</source>
+        <translation>{where} no tiene nombre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} ({name!r}): unknown protocol {protocol!r}</source>
+        <translation>{where} ({name!r}): protocolo desconocido {protocol!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} ({name!r}): &quot;steps&quot; is not a list of strings</source>
+        <translation>{where} ({name!r}): &quot;steps&quot; no es una lista de cadenas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} ({name!r}): over {limit} steps or a step too long</source>
+        <translation>{where} ({name!r}): más de {limit} pasos o un paso demasiado largo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro file</source>
+        <translation>archivo de macros</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{path}: not JSON ({error})</source>
+        <translation>{path}: no es JSON ({error})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} is not a JSON number</source>
+        <translation>{name} no es un número JSON</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>saved macros</source>
+        <translation>macros guardadas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>it cannot be read</source>
+        <translation>no se puede leer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>it is not an INI file Qt can read</source>
+        <translation>no es un archivo INI que Qt pueda leer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>settings file</source>
+        <translation>archivo de ajustes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot read the settings file {file}: {why}</source>
+        <translation>no se puede leer el archivo de ajustes {file}: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} ({protocol}, {baud} baud)</source>
+        <translation>{url} ({protocol}, {baud} baudios)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the saved setup was refused: {error}</source>
+        <translation>se rechazó la configuración guardada: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{identity} on {url}</source>
+        <translation>{identity} en {url}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} not changed: not connected</source>
+        <translation>{line} sin cambiar: no conectado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no break sent: not connected</source>
+        <translation>break no enviado: no conectado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position went from ({position}) to (0, 0, 0) mm while nothing was sent: the device restarted</source>
+        <translation>la posición pasó de ({position}) a (0, 0, 0) mm sin que se enviara nada: el dispositivo se reinició</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; not sent: {jobs}; talking to it again</source>
+        <translation>{error}; sin enviar: {jobs}; reconectando</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; talking to it again</source>
+        <translation>{error}; reconectando</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not sent: the device is being reconnected</source>
+        <translation>sin enviar: el dispositivo se está reconectando</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the connection was lost</source>
+        <translation>se perdió la conexión</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>abandoned: disconnected while it was under way</source>
+        <translation>abandonado: se desconectó mientras estaba en curso</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown job {job!r}</source>
+        <translation>tarea desconocida {job!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; not sent: {jobs}</source>
+        <translation>{error}; sin enviar: {jobs}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device says: {text}</source>
+        <translation>el dispositivo dice: {text}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bridge to {device} is closed</source>
+        <translation>el puente a {device} está cerrado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot create a pseudo-terminal for {device}: {error}</source>
+        <translation>no se puede crear un pseudoterminal para {device}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bridge is not open</source>
+        <translation>el puente no está abierto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device on {device} failed: {error}</source>
+        <translation>el dispositivo en {device} falló: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device on {device} went away: {error}</source>
+        <translation>el dispositivo en {device} desapareció: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device on {device} went away (its port was closed)</source>
+        <translation>el dispositivo en {device} desapareció (se cerró su puerto)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the pseudo-terminal {path} failed: {error}</source>
+        <translation>el pseudoterminal {path} falló: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to the device on {device} failed: {error}</source>
+        <translation>falló la escritura en el dispositivo en {device}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to the pseudo-terminal {path} failed: {error}</source>
+        <translation>falló la escritura en el pseudoterminal {path}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>abandoned: the connection is closing</source>
+        <translation>abandonado: la conexión se está cerrando</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; still full after {seconds:.0f} s</source>
+        <translation>{error}; la cola sigue llena tras {seconds:.0f} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} failed after {tries} tries; the last: {error}</source>
+        <translation>{command} falló tras {tries} intentos; el último: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device restarted during {command} ({event}): its position and settings are lost</source>
+        <translation>el dispositivo se reinició durante {command} ({event}): se han perdido su posición y sus ajustes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device restarted ({event}): its position and settings are lost</source>
+        <translation>el dispositivo se reinició ({event}): se han perdido su posición y sus ajustes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device did not finish its reply to {command} within {seconds:.3g} s</source>
+        <translation>el dispositivo no terminó su respuesta a {command} en {seconds:.3g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device did not answer to {command} within {seconds:.3g} s</source>
+        <translation>el dispositivo no respondió a {command} en {seconds:.3g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{message}; it sent {count} unexpected frame(s), the last: {frame}</source>
+        <translation>{message}; envió {count} trama(s) inesperada(s), la última: {frame}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{message} (it may still be moving: {protocol} answers nothing until a blocking move has ended; try again once it has stopped)</source>
+        <translation>{message} (puede que aún se esté moviendo: {protocol} no responde nada hasta que termina un movimiento bloqueante; volver a intentarlo cuando se haya detenido)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no modem control lines</source>
+        <translation>sin líneas de control de módem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{dtr}, {rts}, {cts}, {dsr}, {cd}, {ri}</source>
+        <translation>{dtr}, {rts}, {cts}, {dsr}, {cd}, {ri}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} ?</source>
+        <translation>{line} ?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} on</source>
+        <translation>{line} activa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} off</source>
+        <translation>{line} inactiva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unreadable: {error}</source>
+        <translation>ilegible: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error {code}: {message}</source>
+        <translation>error {code}: {message}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error: {message}</source>
+        <translation>error: {message}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>posición ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position ({x:g}, {y:g}, {z:g}) mm (commanded, confirmed)</source>
+        <translation>posición ({x:g}, {y:g}, {z:g}) mm (ordenada, confirmada)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position ({x:g}, {y:g}, {z:g}) mm (commanded)</source>
+        <translation>posición ({x:g}, {y:g}, {z:g}) mm (ordenada)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback {code} ({meaning})</source>
+        <translation>realimentación {code} ({meaning})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback {code} {bytes}</source>
+        <translation>realimentación {code} {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback {code}</source>
+        <translation>realimentación {code}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the line {text!r}</source>
+        <translation>la línea {text!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an unreadable frame ({reason}): {bytes}</source>
+        <translation>una trama ilegible ({reason}): {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a directory</source>
+        <translation>un directorio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a named pipe (FIFO)</source>
+        <translation>una tubería con nombre (FIFO)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a character device</source>
+        <translation>un dispositivo de caracteres</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a block device</source>
+        <translation>un dispositivo de bloques</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a socket</source>
+        <translation>un socket</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot read the {what} {file}: {why}</source>
+        <translation>no se puede leer el {what} {file}: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{kind}, not a regular file</source>
+        <translation>{kind}, no un archivo normal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a special file</source>
+        <translation>un archivo especial</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: larger than {limit} ({size:,} bytes), too large for a {what}</source>
+        <translation>{file}: más de {limit} ({size:,} bytes), demasiado grande para un {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: larger than {limit}, too large for a {what}</source>
+        <translation>{file}: más de {limit}, demasiado grande para un {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: not UTF-8 text (line {line}), not a {what}</source>
+        <translation>{file}: no es texto UTF-8 (línea {line}), no es un {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: a NUL byte (line {line}), not a {what}</source>
+        <translation>{file}: un byte NUL (línea {line}), no es un {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file} line {line}: longer than {limit:,} characters, not a {what} line</source>
+        <translation>{file} línea {line}: más de {limit:,} caracteres, no es una línea de {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a frame body is {expected} bytes, not {length}</source>
+        <translation>el cuerpo de una trama tiene {expected} bytes, no {length}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>flag byte {byte:#04x}, expected 0xf0</source>
+        <translation>byte de indicador {byte:#04x}, se esperaba 0xf0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>checksum {got:#04x}, expected {expected:#04x}</source>
+        <translation>suma de comprobación {got:#04x}, se esperaba {expected:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0x90 followed by {byte:#04x} inside the data</source>
+        <translation>0x90 seguido de {byte:#04x} dentro de los datos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no tail within {most} bytes</source>
+        <translation>sin cola de trama en {most} bytes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a SysEx message needs at least a command byte</source>
+        <translation>un mensaje SysEx necesita al menos un byte de comando</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SysEx data must be 7-bit; got {byte:#04x}</source>
+        <translation>los datos SysEx deben ser de 7 bits; se recibió {byte:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: not a traffic log line: {line!r}</source>
+        <translation>{source} línea {number}: no es una línea de registro de tráfico: {line!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no traffic in it (not a Motion Panel log)</source>
+        <translation>{source}: no contiene tráfico (no es un registro de Motion Panel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>traffic log</source>
+        <translation>registro de tráfico</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: not a Motion Panel log nor a pyserial spy:// capture: line {number} is not a traffic log line: {line!r}; for spy://, {hint}</source>
+        <translation>{file}: no es un registro de Motion Panel ni una captura spy:// de pyserial: la línea {number} no es una línea de registro de tráfico: {line!r}; para spy://, {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: empty, not a Motion Panel log nor a pyserial spy:// capture (spy&apos;s raw format leaves its file empty); {hint}</source>
+        <translation>{file}: vacío, no es un registro de Motion Panel ni una captura spy:// de pyserial (el formato raw de spy deja su archivo vacío); {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device reported: {reported}</source>
+        <translation>el dispositivo informó: {reported}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} device</source>
+        <translation>dispositivo {protocol}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device did not report a position (it answered {value})</source>
+        <translation>el dispositivo no informó de una posición (respondió {value})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device is at ({x:g}, {y:g}, {z:g}) mm, not where its last move ended: its replies are no longer taken as arrival</source>
+        <translation>el dispositivo está en ({x:g}, {y:g}, {z:g}) mm, no donde terminó su último movimiento: sus respuestas ya no se toman como llegada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no speed limits to report</source>
+        <translation>{protocol} no tiene límites de velocidad que indicar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} refused: the speed must be a positive number</source>
+        <translation>velocidad de {speed:g} rechazada: la velocidad debe ser un número positivo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}</source>
+        <translation>velocidad de {speed:g} {unit} rechazada: el dispositivo admite de {low:g} a {high:g} {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>movimiento a ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jog by ({dx:g}, {dy:g}, {dz:g}) {unit}</source>
+        <translation>desplazamiento de ({dx:g}, {dy:g}, {dz:g}) {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no way to go home</source>
+        <translation>{protocol} no tiene forma de ir al origen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>go home</source>
+        <translation>retorno al origen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no set-home command</source>
+        <translation>{protocol} no tiene comando para fijar el origen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} refused: home is outside the travel limits</source>
+        <translation>{what} rechazado: el origen está fuera de los límites de recorrido</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no arc moves</source>
+        <translation>{protocol} no admite movimientos en arco</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arc</source>
+        <translation>arco</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no dwell</source>
+        <translation>{protocol} no admite esperas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped at ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>detenido en ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the move to {target} did not end within {seconds:.1f} s</source>
+        <translation>el movimiento a {target} no terminó en {seconds:.1f} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
+        <translation>{what} {text!r} no es un número que acepte el dispositivo: usar dígitos con un signo opcional y un punto decimal, p. ej. -12.5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {value!r} is not a finite number</source>
+        <translation>{what} {value!r} no es un número finito</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {value:g} is out of range: the device handles at most ±{limit:g}</source>
+        <translation>{what} {value:g} está fuera de rango: el dispositivo admite como máximo ±{limit:g}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not a parameter profile: {error}</source>
+        <translation>{source}: no es un perfil de parámetros: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not a parameter profile: a number too long</source>
+        <translation>{source}: no es un perfil de parámetros: un número demasiado largo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not a parameter profile: nested too deeply</source>
+        <translation>{source}: no es un perfil de parámetros: anidamiento demasiado profundo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: protocol must be a name in quotes</source>
+        <translation>{source}: protocol debe ser un nombre entre comillas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: a profile for {named!r}, not for {protocol!r}</source>
+        <translation>{source}: un perfil para {named!r}, no para {protocol!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} (line {line}): unknown key {key!r}</source>
+        <translation>{source} (línea {line}): clave desconocida {key!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: unknown key {key!r}</source>
+        <translation>{source}: clave desconocida {key!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no [parameters] table with values in it</source>
+        <translation>{source}: no hay ninguna tabla [parameters] con valores</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}</source>
+        <translation>{source} línea {line}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: unknown parameter {name!r} for {protocol}</source>
+        <translation>{where}: parámetro desconocido {name!r} para {protocol}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {error}</source>
+        <translation>{where}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name}: not a number the device takes ({range})</source>
+        <translation>{where}: {name}: no es un número que admita el dispositivo ({range})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>profile</source>
+        <translation>perfil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot write the profile {path}: {error}</source>
+        <translation>no se puede escribir el perfil {path}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{low} to {high} in steps of {step}</source>
+        <translation>de {low} a {high} en pasos de {step}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{low} to {high} (whole numbers)</source>
+        <translation>de {low} a {high} (números enteros)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{low} to {high}</source>
+        <translation>de {low} a {high}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: {value!r} is not a number ({range})</source>
+        <translation>{name}: {value!r} no es un número ({range})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: {value} refused: {range}</source>
+        <translation>{name}: {value} rechazado: {range}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: {value} refused: the device takes {range}</source>
+        <translation>{name}: {value} rechazado: el dispositivo admite {range}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this protocol has no parameters</source>
+        <translation>este protocolo no tiene parámetros</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown parameter {name!r} (did you mean {close}?): use a name or an id 1..{count}; &apos;motionctl ... param list&apos; lists them</source>
+        <translation>parámetro desconocido {name!r} (¿quería decir {close}?): usar un nombre o un id 1..{count}; &apos;motionctl ... param list&apos; los enumera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown parameter {name!r}: use a name or an id 1..{count}; &apos;motionctl ... param list&apos; lists them</source>
+        <translation>parámetro desconocido {name!r}: usar un nombre o un id 1..{count}; &apos;motionctl ... param list&apos; los enumera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name} {value!r} is not a number</source>
+        <translation>{where}: {name} {value!r} no es un número</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name} is not a finite float32 number</source>
+        <translation>{where}: {name} no es un número float32 finito</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name} {value!r} is not a finite float32 number</source>
+        <translation>{where}: {name} {value!r} no es un número float32 finito</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: speed {speed:g} mm/s must be above 0</source>
+        <translation>{where}: la velocidad {speed:g} mm/s debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: not CSV: {error}</source>
+        <translation>{source} línea {line}: no es CSV: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: the header must name x, y, z and speed (got nothing)</source>
+        <translation>{source} línea {line}: la cabecera debe nombrar x, y, z y speed (no se recibió nada)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: the header must name x, y, z and speed (got {columns})</source>
+        <translation>{source} línea {line}: la cabecera debe nombrar x, y, z y speed (se recibió {columns})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: {count} values, expected 4</source>
+        <translation>{source} línea {line}: {count} valores, se esperaban 4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no header line (x,y,z,speed)</source>
+        <translation>{source}: sin línea de cabecera (x,y,z,speed)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no points</source>
+        <translation>{source}: sin puntos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: not JSON ({reason})</source>
+        <translation>{source} línea {line}: no es JSON ({reason})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not JSON the panel reads (a number too long)</source>
+        <translation>{source}: no es un JSON que el panel pueda leer (un número demasiado largo)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not JSON the panel reads (nested too deeply)</source>
+        <translation>{source}: no es un JSON que el panel pueda leer (anidamiento demasiado profundo)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no &quot;points&quot; list</source>
+        <translation>{source}: no hay lista &quot;points&quot;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: expected [x, y, z, speed]</source>
+        <translation>{where}: se esperaba [x, y, z, speed]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} point {number}</source>
+        <translation>{source} punto {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: more than {count} points</source>
+        <translation>{source}: más de {count} puntos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>program</source>
+        <translation>programa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot write the program {path}: {error}</source>
+        <translation>no se puede escribir el programa {path}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
+        <translation>{setting} {value} rechazado: de {minimum:g} a {maximum:g} {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no setting {name!r}</source>
+        <translation>{protocol} no tiene el ajuste {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no wire variants (got {name!r})</source>
+        <translation>{protocol} no tiene variantes de transmisión (se recibió {name!r})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no variant {name!r} (variants: {known})</source>
+        <translation>{protocol} no tiene la variante {name!r} (variantes: {known})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} moves are linear only (got {kind!r})</source>
+        <translation>{protocol} solo admite movimientos lineales (se recibió {kind!r})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} coordinate</source>
+        <translation>coordenada {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} distance</source>
+        <translation>distancia {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed</source>
+        <translation>velocidad</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a coordinate</source>
+        <translation>una coordenada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the speed</source>
+        <translation>la velocidad</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused: the speed must be positive</source>
+        <translation>velocidad {speed:g} mm/s rechazada: la velocidad debe ser positiva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw command refused: COXIRIS takes ASCII text only</source>
+        <translation>comando en bruto rechazado: COXIRIS solo acepta texto ASCII</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw command refused: one line at a time (it contains a line break)</source>
+        <translation>comando en bruto rechazado: una línea cada vez (contiene un salto de línea)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw command refused: it is empty, and the device ignores blank lines</source>
+        <translation>comando en bruto rechazado: está vacío y el dispositivo ignora las líneas en blanco</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COXIRIS has no command for {command}</source>
+        <translation>COXIRIS no tiene comando para {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>command refused: {length} characters, the device takes at most {most} ({start}...)</source>
+        <translation>comando rechazado: {length} caracteres, el dispositivo acepta como máximo {most} ({start}...)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device reported {what} as {text!r}, which is not a number</source>
+        <translation>el dispositivo informó de {what} con el valor {text!r}, que no es un número</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device reported {what} as {text!r}</source>
+        <translation>el dispositivo informó de {what} con el valor {text!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device does not know the command {name!r}</source>
+        <translation>el dispositivo no conoce el comando {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device refused the command: {error}</source>
+        <translation>el dispositivo rechazó el comando: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected DONE {command}, got {event}</source>
+        <translation>se esperaba DONE {command}, se recibió {event}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position reply {data!r} does not hold three numbers</source>
+        <translation>la respuesta de posición {data!r} no contiene tres números</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speeds are reported rounded to whole mm/s</source>
+        <translation>las velocidades se indican redondeadas a mm/s enteros</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>positions are reported to 0.01 mm</source>
+        <translation>las posiciones se indican con una resolución de 0.01 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>non-ASCII bytes in a COXIRIS line: {bytes}</source>
+        <translation>bytes no ASCII en una línea COXIRIS: {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line refused: {length} characters, the device takes at most {most}</source>
+        <translation>línea rechazada: {length} caracteres, el dispositivo acepta como máximo {most}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motor steps per turn</source>
+        <translation>Pasos del motor por vuelta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motor steps per millimetre</source>
+        <translation>Pasos del motor por milímetro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motor control pin {pin} (-1: none)</source>
+        <translation>Pin {pin} de control del motor (-1: ninguno)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves back to 0 by a relative move: the board has no homing</source>
+        <translation>Vuelve a 0 con un movimiento relativo: la placa no tiene búsqueda de origen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no completion message: moves are estimated from speed and steps</source>
+        <translation>sin mensaje de fin: los movimientos se estiman a partir de la velocidad y los pasos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the version and firmware name (is a Firmata board on this port?)</source>
+        <translation>la petición de versión y nombre del firmware (¿hay una placa Firmata en este puerto?)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed (rpm)</source>
+        <translation>velocidad (rpm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steps per revolution</source>
+        <translation>pasos por revolución</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pin</source>
+        <translation>pin</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steps</source>
+        <translation>pasos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>capability response</source>
+        <translation>respuesta de capacidades</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>analog mapping</source>
+        <translation>mapa de pines analógicos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>version request</source>
+        <translation>petición de versión</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>firmware name request</source>
+        <translation>petición de nombre del firmware</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_LIBRARY_VERSION request</source>
+        <translation>petición STEPPER_LIBRARY_VERSION</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {value} refused: the stepper takes {low} to {high}</source>
+        <translation>no se admite {what} = {value}: el motor paso a paso acepta de {low} a {high}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the board answered: {error}</source>
+        <translation>la placa respondió: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{distance:g} mm refused: the motor moves in steps of {step:g} mm ({per_mm:g} steps/mm)</source>
+        <translation>{distance:g} mm rechazados: el motor se mueve en pasos de {step:g} mm ({per_mm:g} pasos/mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the Firmata stepper is one axis (X): Y and Z must be 0</source>
+        <translation>el motor paso a paso Firmata tiene un solo eje (X): Y y Z deben ser 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{count} pins refused: a stepper has 2 or 4 pins</source>
+        <translation>{count} pines rechazados: un motor paso a paso tiene 2 o 4 pines</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Firmata has no message for {command}</source>
+        <translation>Firmata no tiene mensaje para {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an empty Firmata message</source>
+        <translation>un mensaje Firmata vacío</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Firmata protocol {major}.{minor}</source>
+        <translation>protocolo Firmata {major}.{minor}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>analog pin {pin}: {value}</source>
+        <translation>pin analógico {pin}: {value}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>digital port {port}: {bits:08b}</source>
+        <translation>puerto digital {port}: {bits:08b}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>message {bytes}</source>
+        <translation>mensaje {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SysEx {command:#04x}</source>
+        <translation>SysEx {command:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_CONFIGURE {steps} steps/rev, pins {pins}</source>
+        <translation>STEPPER_CONFIGURE {steps} pasos/rev, pines {pins}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_STEP {rpm} rpm, {steps} steps forward</source>
+        <translation>STEPPER_STEP {rpm} rpm, {steps} pasos hacia delante</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_STEP {rpm} rpm, {steps} steps reverse</source>
+        <translation>STEPPER_STEP {rpm} rpm, {steps} pasos hacia atrás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>framing</source>
+        <translation>trama incorrecta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>checksum</source>
+        <translation>suma de comprobación</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown command</source>
+        <translation>comando desconocido</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bad arguments</source>
+        <translation>argumentos incorrectos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>queue full</source>
+        <translation>cola llena</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>undocumented</source>
+        <translation>no documentado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error {code} ({meaning}) for {command}</source>
+        <translation>error {code} ({meaning}) en {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused: it must be above 0</source>
+        <translation>velocidad {speed:g} mm/s rechazada: debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position reply holds {count} numbers, not 3</source>
+        <translation>la respuesta de posición contiene {count} números, no 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the status reply holds {count} numbers, not 2</source>
+        <translation>la respuesta de estado contiene {count} números, no 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>undocumented code {code}</source>
+        <translation>código no documentado {code}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: the device answered error {code} ({meaning})</source>
+        <translation>{command}: el dispositivo respondió con el error {code} ({meaning})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>moves are queued on the device; the position is read back while they run</source>
+        <translation>los movimientos se encolan en el dispositivo; la posición se relee mientras se ejecutan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The next queued frame&apos;s number (0: random)</source>
+        <translation>Número de la siguiente trama en cola (0: aleatorio)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dwell {ms} ms refused: the field is an int16 (0 to 32767)</source>
+        <translation>espera de {ms} ms rechazada: el campo es un int16 (de 0 a 32767)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a queued frame holds 1 to {most} queued instructions</source>
+        <translation>una trama en cola contiene de 1 a {most} instrucciones en cola</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the laser link has no instruction for {command}</source>
+        <translation>el enlace láser no tiene instrucción para {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>word {word:#04x}</source>
+        <translation>palabra {word:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frame {number} ({words} ×{count})</source>
+        <translation>trama {number} ({words} ×{count})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frame {number} ({words})</source>
+        <translation>trama {number} ({words})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a field holds 1 to 255 values, not {count}</source>
+        <translation>un campo contiene de 1 a 255 valores, no {count}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{value!r} is not one ASCII character</source>
+        <translation>{value!r} no es un único carácter ASCII</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{value} does not fit a float32</source>
+        <translation>{value} no cabe en un float32</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{value} does not fit a {kind} ({low} to {high})</source>
+        <translation>{value} no cabe en un {kind} (de {low} a {high})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>command word {word:#04x} is outside 0x01..0x7F</source>
+        <translation>la palabra de comando {word:#04x} está fuera de 0x01..0x7F</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>byte {index}: {byte:#04x} where a command word was expected</source>
+        <translation>byte {index}: {byte:#04x} donde se esperaba una palabra de comando</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>byte {index}: a {kind} field without its count</source>
+        <translation>byte {index}: un campo {kind} sin su recuento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>byte {index}: {count} {kind} values run past the data</source>
+        <translation>byte {index}: {count} valores {kind} sobrepasan el final de los datos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Encoder ticks per millimetre</source>
+        <translation>Cuentas del encoder por milímetro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves back to (0, 0, 0) with a Linear frame: the device has no homing</source>
+        <translation>Vuelve a (0, 0, 0) con una trama Linear: el dispositivo no tiene búsqueda de origen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write-only: positions are commanded, completion estimated from distance and speed</source>
+        <translation>solo escritura: las posiciones son ordenadas y el final se estima a partir de la distancia y la velocidad</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {axis}</source>
+        <translation>velocidad {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>centre {axis}</source>
+        <translation>centro {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>radius</source>
+        <translation>radio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>angular speed</source>
+        <translation>velocidad angular</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dwell</source>
+        <translation>espera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{field} {value:g} {unit} refused: a pi-frame field holds {low} to {high}</source>
+        <translation>no se admite {field} = {value:g} {unit}: un campo pi-frame admite de {low} a {high}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{field} {distance:g} mm refused: the device moves in ticks of {tick:g} mm ({per_mm:g} ticks/mm)</source>
+        <translation>no se admite {field} = {distance:g} mm: el dispositivo se mueve en cuentas de {tick:g} mm ({per_mm:g} cuentas/mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{field} {distance:g} mm refused: {ticks} ticks do not fit 16 bits ({low:g} to {high:g} mm at {per_mm:g} ticks/mm)</source>
+        <translation>no se admite {field} = {distance:g} mm: {ticks} cuentas no caben en 16 bits (de {low:g} a {high:g} mm con {per_mm:g} cuentas/mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pi-frame has no frame for {command}</source>
+        <translation>pi-frame no tiene trama para {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a {length}-byte frame</source>
+        <translation>una trama de {length} bytes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Linear X={x} Y={y} Z={z} ticks at {sx}/{sy}/{sz} ticks/s</source>
+        <translation>Linear X={x} Y={y} Z={z} cuentas a {sx}/{sy}/{sz} cuentas/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Circular centre ({x}, {y}) radius {radius} ticks, {start:g}° to {end:g}° {turn} at {speed:g}°/s, Z to {z}</source>
+        <translation>Circular centro ({x}, {y}) radio {radius} cuentas, de {start:g}° a {end:g}° {turn} a {speed:g}°/s, Z a {z}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dwell {ms} ms</source>
+        <translation>Dwell {ms} ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>action {number}</source>
+        <translation>acción {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move package confirmed</source>
+        <translation>paquete de movimiento confirmado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>action accomplished</source>
+        <translation>acción completada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>package size mismatch</source>
+        <translation>tamaño de paquete incorrecto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid command type</source>
+        <translation>tipo de comando no válido</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid motion type</source>
+        <translation>tipo de movimiento no válido</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid direction for the X axis</source>
+        <translation>dirección no válida para el eje X</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid direction for the Y axis</source>
+        <translation>dirección no válida para el eje Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid set parameter ID</source>
+        <translation>ID de parámetro no válido al fijar un parámetro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>parse function error in the firmware</source>
+        <translation>error en la función de análisis del firmware</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid driving mechanism</source>
+        <translation>mecanismo de accionamiento no válido</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an error code the documentation does not list</source>
+        <translation>un código de error que la documentación no recoge</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{parameter} set</source>
+        <translation>{parameter} fijado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace.</source>
+        <translation>Fija input_speed_steady_x e _y (parámetros 21 y 22). Esta revisión del firmware temporiza sus pasos solo a partir de step_delay_instantaneous (15, 16), así que los movimientos mantienen su ritmo.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted</source>
+        <translation>Visiomex no tiene búsqueda de origen en esta revisión: Origen vuelve a (0, 0) con un movimiento relativo desde la posición que ha contado el panel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no read-back: the panel keeps what was last written</source>
+        <translation>sin relectura: el panel guarda lo último que se escribió</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>positions are commanded, and confirmed by FA0001 when the move ends</source>
+        <translation>las posiciones son ordenadas y se confirman con FA0001 al terminar el movimiento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a reply comes 1 s after a packet: the firmware waits for 1 s of silence</source>
+        <translation>la respuesta llega 1 s después de un paquete: el firmware espera 1 s de silencio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>parameter {number} set</source>
+        <translation>parámetro {number} fijado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback code {code} is not documented</source>
+        <translation>el código de respuesta {code} no está documentado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: the device answered {code} ({meaning}); this firmware revision runs the move anyway</source>
+        <translation>{command}: el dispositivo respondió {code} ({meaning}); esta revisión del firmware ejecuta el movimiento de todos modos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: the device answered {code} ({meaning})</source>
+        <translation>{command}: el dispositivo respondió {code} ({meaning})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: expected {wanted}, got {code}</source>
+        <translation>{command}: se esperaba {wanted}, se recibió {code}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>18-character packets at 9600 baud, as the seed documents</source>
+        <translation>paquetes de 18 caracteres a 9600 baudios, según la documentación original (seed)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the seed&apos;s packets; feedback lines start with &apos;&gt;&apos;</source>
+        <translation>los paquetes de seed; las líneas de respuesta empiezan por &apos;&gt;&apos;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>12-character packets at 115200 baud, moves in mm, D goes home</source>
+        <translation>paquetes de 12 caracteres a 115200 baudios, movimientos en mm, D va al origen</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Visiomex moves are relative: the panel sends the distance to go</source>
+        <translation>Visiomex solo hace movimientos relativos: el panel envía la distancia a recorrer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the speed is parameters 21 and 22: it is sent as two sets</source>
+        <translation>la velocidad son los parámetros 21 y 22: se envía con dos escrituras</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Visiomex has no packet for {command}</source>
+        <translation>Visiomex no tiene paquete para {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move kind {kind!r} refused: Visiomex moves are {kinds}</source>
+        <translation>tipo de movimiento {kind!r} rechazado: los movimientos de Visiomex son {kinds}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z {distance:g} mm refused: the Visiomex controller has X and Y only</source>
+        <translation>Z {distance:g} mm rechazado: el controlador Visiomex solo tiene X e Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} {unit} refused: this device moves in 1 µm</source>
+        <translation>{axis} {value:g} {unit} rechazado: este dispositivo se mueve en pasos de 1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} {unit} refused: this device moves in whole {unit}</source>
+        <translation>{axis} {value:g} {unit} rechazado: este dispositivo se mueve en {unit} enteros</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} {unit} refused: one move goes at most {most} {unit} per axis ({digits} digits)</source>
+        <translation>{axis} {value:g} {unit} rechazado: un movimiento llega como máximo a {most} {unit} por eje ({digits} dígitos)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet refused: Visiomex takes ASCII characters only</source>
+        <translation>paquete rechazado: Visiomex solo acepta caracteres ASCII</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet refused: it is empty</source>
+        <translation>paquete rechazado: está vacío</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet refused: {length} characters, a Visiomex packet has {most} (a line ending counts too)</source>
+        <translation>paquete rechazado: {length} caracteres, un paquete Visiomex tiene {most} (el fin de línea también cuenta)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>non-ASCII bytes in a Visiomex line: {bytes}</source>
+        <translation>bytes no ASCII en una línea Visiomex: {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>that packet gets no reply: send it from the console instead</source>
+        <translation>ese paquete no recibe respuesta: enviarlo desde la consola</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet {packet}</source>
+        <translation>paquete {packet}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set {parameter} = {value}</source>
+        <translation>fijar {parameter} = {value}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move linear X {x} Y {y}</source>
+        <translation>movimiento lineal X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move rotational X {x} Y {y}</source>
+        <translation>movimiento rotacional X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move steps X {x} Y {y}</source>
+        <translation>movimiento en pasos X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move {kind} X {x} Y {y}</source>
+        <translation>movimiento {kind} X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet {packet!r}</source>
+        <translation>paquete {packet!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{packet} (set {parameter})</source>
+        <translation>{packet} (fijar {parameter})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware forces driving_mechanism to 1 after every set</source>
+        <translation>el firmware impone driving_mechanism = 1 tras cada escritura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision reads {parameter} only at boot (and keeps pulley values divided by 4): moves do not change until the firmware is fixed</source>
+        <translation>esta revisión del firmware solo lee {parameter} al arrancar (y guarda los valores de polea divididos por 4): los movimientos no cambian hasta que se corrija el firmware</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Note</source>
+        <translation>Nota</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision moves by the cycle it computed at boot (10 mm lead screw), whatever 01-04 and 27 say</source>
+        <translation>esta revisión del firmware se mueve según el ciclo que calculó al arrancar (husillo de 10 mm), digan lo que digan 01-04 y 27</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis}: the cycle ({cycle:g} mm) and the steps per turn ({steps:g}) must both be above 0</source>
+        <translation>{axis}: el ciclo ({cycle:g} mm) y los pasos por vuelta ({steps:g}) deben ser ambos mayores que 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{times} (1 s silence included)</source>
+        <translation>{times} (incluido 1 s de silencio)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Microsteps per turn</source>
+        <translation>Micropasos por vuelta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Per step</source>
+        <translation>Por paso</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Steps per mm</source>
+        <translation>Pasos por mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A 10 mm move</source>
+        <translation>Un movimiento de 10 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lead-screw pitch of the {axis} axis (mm per turn)</source>
+        <translation>Paso del husillo del eje {axis} (mm por vuelta)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Belt pulley diameter of the {axis} axis; sent as mm×10 (38.2 mm -&gt; 000382)</source>
+        <translation>Diámetro de la polea de correa del eje {axis}; se envía como mm×10 (38.2 mm -&gt; 000382)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Full steps per motor turn, {axis} axis</source>
+        <translation>Pasos completos por vuelta del motor, eje {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Microstepping factor of the {axis} driver</source>
+        <translation>Factor de micropasos del driver del eje {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Highest speed allowed on the {axis} axis</source>
+        <translation>Velocidad máxima permitida en el eje {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step delay at the steady speed, {axis} axis (computed by the firmware)</source>
+        <translation>Retardo entre pasos a velocidad constante, eje {axis} (calculado por el firmware)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step delay at the lowest speed, {axis} axis</source>
+        <translation>Retardo entre pasos a la velocidad mínima, eje {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current step delay, {axis} axis (computed by the firmware; this revision times every step from it: one step is twice this delay)</source>
+        <translation>Retardo entre pasos actual, eje {axis} (calculado por el firmware; esta revisión temporiza cada paso a partir de él: un paso dura el doble de este retardo)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mean step delay while accelerating, {axis} axis (computed by the firmware)</source>
+        <translation>Retardo medio entre pasos durante la aceleración, eje {axis} (calculado por el firmware)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Steps spent accelerating, {axis} axis (computed by the firmware)</source>
+        <translation>Pasos empleados en acelerar, eje {axis} (calculados por el firmware)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Requested steady speed of the {axis} axis</source>
+        <translation>Velocidad constante solicitada para el eje {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Requested acceleration of the {axis} axis</source>
+        <translation>Aceleración solicitada para el eje {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Duration of the last move, {axis} axis (computed by the firmware)</source>
+        <translation>Duración del último movimiento, eje {axis} (calculada por el firmware)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 belt pulley, 1 lead screw (this firmware forces 1 after every set)</source>
+        <translation>0 polea de correa, 1 husillo (este firmware impone 1 tras cada escritura)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>protocol {name!r} is not implemented yet</source>
+        <translation>el protocolo {name!r} aún no está implementado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown protocol {name!r} (known: {known})</source>
+        <translation>protocolo desconocido {name!r} (conocidos: {known})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>capture with spy&apos;s default hexdump format: spy://PORT?file=FILE, without raw</source>
+        <translation>capturar con el formato hexdump predeterminado de spy: spy://PORT?file=FILE, sin raw</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>both directions run together, nothing tells TX from RX</source>
+        <translation>ambos sentidos van mezclados y nada distingue TX de RX</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: spy&apos;s raw format is refused ({why}); {hint}</source>
+        <translation>{source} línea {number}: no se admite el formato raw de spy ({why}); {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: not a pyserial spy:// hexdump line: {line!r}</source>
+        <translation>{source} línea {number}: no es una línea hexdump de spy:// de pyserial: {line!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: bytes at offset {offset:#06x} of a {direction} call whose earlier lines are missing</source>
+        <translation>{source} línea {number}: bytes en el desplazamiento {offset:#06x} de una llamada {direction} cuyas líneas anteriores faltan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no traffic in it, only control-line events</source>
+        <translation>{source}: no contiene tráfico, solo eventos de líneas de control</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no traffic in it (nor spy&apos;s raw format); {hint}</source>
+        <translation>{source}: no contiene tráfico (ni está en el formato raw de spy); {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)</source>
+        <translation>{error} (tras {rounds} rondas; antes se confirmaron {acknowledged} de {total} instrucciones)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{pattern!r} is not a regular expression: {error}</source>
+        <translation>{pattern!r} no es una expresión regular: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{pattern!r} is not valid text</source>
+        <translation>{pattern!r} no es un texto válido</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{pattern!r}… is too large a regular expression: {error}</source>
+        <translation>{pattern!r}… es una expresión regular demasiado grande: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} is not open</source>
+        <translation>{url} no está abierto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to {url} failed: {error}</source>
+        <translation>falló la escritura en {url}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to {url}: only {written} of {total} bytes sent</source>
+        <translation>escritura en {url}: solo se enviaron {written} de {total} bytes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reading from {url} failed: {error}</source>
+        <translation>falló la lectura de {url}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name!r} is not a line the host drives (DTR or RTS)</source>
+        <translation>{name!r} no es una línea que controle este equipo (DTR o RTS)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} cannot be set</source>
+        <translation>no se puede fijar {line}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>setting {line} on {url} failed: {error}</source>
+        <translation>falló el ajuste de {line} en {url}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a break lasts more than 0 and at most {most:g} s</source>
+        <translation>un break dura más de 0 s y como máximo {most:g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no break can be sent</source>
+        <translation>no se puede enviar un break</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sending a break on {url} failed: {error}</source>
+        <translation>falló el envío de un break en {url}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>break {ms:.0f} ms</source>
+        <translation>break {ms:.0f} ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reading {line} on {url} failed: {error}</source>
+        <translation>falló la lectura de {line} en {url}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reading the control lines of {url} failed: {error}</source>
+        <translation>falló la lectura de las líneas de control de {url}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a TCP socket</source>
+        <translation>un socket TCP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} has no modem control lines ({why}): {what}</source>
+        <translation>{url} no tiene líneas de control de módem ({why}): {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a pseudo-terminal</source>
+        <translation>un pseudoterminal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its driver has no modem-line control</source>
+        <translation>su driver no controla las líneas de módem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no port given</source>
+        <translation>no se ha indicado ningún puerto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot open {url}: {error}</source>
+        <translation>no se puede abrir {url}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits need a range for each of x, y and z</source>
+        <translation>los límites de recorrido necesitan un rango para cada uno de x, y y z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits for {axis} ({low:g} to {high:g} mm) are not a range: the minimum must be at most the maximum</source>
+        <translation>los límites de recorrido de {axis} (de {low:g} a {high:g} mm) no forman un rango: el mínimo no puede superar el máximo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the move</source>
+        <translation>el movimiento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} mm is outside {low:g}..{high:g} mm</source>
+        <translation>{axis} {value:g} mm está fuera de {low:g}..{high:g} mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} refused: {details} (travel limits)</source>
+        <translation>se rechaza {what}: {details} (límites de recorrido)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} clamped to the travel limits: {details}; going to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>se ajusta {what} a los límites de recorrido: {details}; se va a ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits {text!r}: write three ranges in mm, X0:X1,Y0:Y1,Z0:Z1 (e.g. -100:100,-50:50,0:20), or none</source>
+        <translation>límites de recorrido {text!r}: escribir tres rangos en mm, X0:X1,Y0:Y1,Z0:Z1 (p. ej. -100:100,-50:50,0:20), o none</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits for {axis}: {part!r} is not MIN:MAX in mm (e.g. -100:100)</source>
+        <translation>límites de recorrido de {axis}: {part!r} no es MIN:MAX en mm (p. ej. -100:100)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} {value!r} is not a finite number</source>
+        <translation>{name} {value!r} no es un número finito</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} {value:g} mm refused: the device works to {resolution:g} mm (the nearest it can do is {nearest} mm)</source>
+        <translation>{name} {value:g} mm rechazado: la resolución del dispositivo es {resolution:g} mm (el valor posible más cercano es {nearest} mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{earlier}; {later}</source>
+        <translation>{earlier}; {later}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected a sim:// URL, got {url!r}</source>
+        <translation>se esperaba una URL sim://, se recibió {url!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown sim:// option {key!r}</source>
+        <translation>opción sim:// desconocida {key!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>port must be configured before it can be used</source>
+        <translation>el puerto debe configurarse antes de poder usarlo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>port already open</source>
+        <translation>el puerto ya está abierto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot open {port}: {error}</source>
+        <translation>no se puede abrir {port}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no axis {axis!r}: x, y or z</source>
+        <translation>no existe el eje {axis!r}: x, y o z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero at home (work = machine)</source>
+        <translation>cero de pieza en el origen (trabajo = máquina)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero at ({x:g}, {y:g}, {z:g}) mm machine</source>
+        <translation>cero de pieza en ({x:g}, {y:g}, {z:g}) mm de máquina</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero {text!r} is not three numbers x,y,z</source>
+        <translation>cero de pieza {text!r}: no son tres números x,y,z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero {text!r} is not three finite numbers x,y,z</source>
+        <translation>cero de pieza {text!r}: no son tres números finitos x,y,z</translation>
     </message>
 </context>
 </TS>

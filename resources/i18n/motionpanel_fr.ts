@@ -67,22 +67,22 @@
 <context>
     <name>ArcEntry</name>
     <message>
-        <location filename="../../widgets/arc_entry.py" line="+126"/>
+        <location filename="../../widgets/arc_entry.py" line="+273"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
         <translation>X du centre de l&apos;arc, en mm depuis l&apos;origine</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Y of the arc&apos;s centre, in mm from home</source>
         <translation>Y du centre de l&apos;arc, en mm depuis l&apos;origine</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>Radius of the arc, in mm (more than 0)</source>
         <translation>Rayon de l&apos;arc, en mm (supérieur à 0)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-125"/>
         <source>Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above</source>
         <translation>Angle du point de départ, de 0 à 360°, dans le sens antihoraire depuis +X, vu de dessus</translation>
     </message>
@@ -94,14 +94,14 @@ the same as the start angle: a full circle</source>
 identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+118"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
         <translation>Z à la fin de l&apos;arc, en mm&#xa0;; Z varie uniformément depuis le Z actuel le long de l&apos;arc
 (une hélice s&apos;il diffère)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-94"/>
         <source>Centre X:</source>
         <translation>Centre X&#xa0;:</translation>
     </message>
@@ -131,7 +131,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>Z final&#xa0;:</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>CW</source>
         <translation>Horaire</translation>
     </message>
@@ -167,22 +167,59 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+130"/>
+        <location line="+182"/>
         <source>Move along the arc, from its start point to its end point</source>
         <translation>Se déplacer le long de l&apos;arc, de son point de départ à son point d&apos;arrivée</translation>
     </message>
     <message>
-        <location line="-122"/>
+        <location line="-174"/>
         <source>Why the arc cannot run</source>
         <translation>Pourquoi l&apos;arc ne peut pas être exécuté</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+36"/>
+        <source>X of the arc&apos;s centre, in inches from home</source>
+        <translation>X du centre de l&apos;arc, en pouces depuis l&apos;origine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y of the arc&apos;s centre, in inches from home</source>
+        <translation>Y du centre de l&apos;arc, en pouces depuis l&apos;origine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Radius of the arc, in inches (more than 0)</source>
+        <translation>Rayon de l&apos;arc, en pouces (supérieur à 0)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Z at the end of the arc, in inches; Z moves evenly from the current Z along the arc
+(a helix when it differs)</source>
+        <translation>Z à la fin de l&apos;arc, en pouces&#xa0;; Z varie uniformément depuis le Z actuel le long de l&apos;arc
+(une hélice s&apos;il diffère)</translation>
+    </message>
+    <message>
+        <location line="+142"/>
+        <source>The radius must be more than 0 in.</source>
+        <translation>Le rayon doit être supérieur à 0 in.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>The radius must be more than 0 mm.</source>
         <translation>Le rayon doit être supérieur à 0 mm.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>%1 %2 to %3 in (travel %4 to %5 in)</source>
+        <translation>%1 de %2 à %3 in (course de %4 à %5 in)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 in (travel %3 to %4 in)</source>
+        <translation>%1 %2 in (course de %3 à %4 in)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 %2 to %3 mm (travel %4 to %5 mm)</source>
         <translation>%1 de %2 à %3 mm (course de %4 à %5 mm)</translation>
     </message>
@@ -192,7 +229,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>%1 %2 mm (course de %3 à %4 mm)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
         <source>The arc leaves the travel limits: %1.</source>
         <translation>L&apos;arc sort des limites de course&#xa0;: %1.</translation>
     </message>
@@ -200,7 +237,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/bridge_session.py" line="+82"/>
+        <location filename="../../app/bridge_session.py" line="+83"/>
         <source>the bridge failed: %1</source>
         <translation>la passerelle a échoué&#xa0;: %1</translation>
     </message>
@@ -464,7 +501,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 <context>
     <name>CoordinateEntry</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="+33"/>
+        <location filename="../../widgets/coordinate_entry.py" line="+35"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
         <translation>Faire de la position actuelle la nouvelle origine (0, 0, 0)&#xa0;?
@@ -476,7 +513,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+205"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
         <translation>%1&#xa0;:</translation>
@@ -487,22 +524,22 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Absolu</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+72"/>
         <source>Go to the typed coordinates (mm from home)</source>
         <translation>Aller aux coordonnées saisies (mm depuis l&apos;origine)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-70"/>
         <source>Relative</source>
         <translation>Relatif</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+71"/>
         <source>Move by the typed distances (mm) from where the stage is</source>
         <translation>Se déplacer des distances saisies (mm) depuis la position actuelle de la platine</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-62"/>
         <source>Machine</source>
         <translation>Machine</translation>
     </message>
@@ -512,12 +549,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Pièce</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+63"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
         <translation>Repère des coordonnées saisies&#xa0;: Machine (mm depuis l&apos;origine de l&apos;appareil) ou Pièce (mm depuis le zéro pièce)&#xa0;; l&apos;appareil reçoit toujours des coordonnées machine</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-58"/>
         <source>Go</source>
         <translation>Aller</translation>
     </message>
@@ -558,12 +595,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     </message>
     <message>
         <location line="+3"/>
-        <location line="+127"/>
+        <location line="+167"/>
         <source>Stop</source>
         <translation>Arrêt</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-167"/>
         <source>Stop the stage now</source>
         <translation>Arrêter la platine immédiatement</translation>
     </message>
@@ -573,12 +610,42 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Arrêter la platine immédiatement (Échap)</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+26"/>
+        <source>Go to the typed coordinates (inches from home)</source>
+        <translation>Aller aux coordonnées saisies (pouces depuis l&apos;origine)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move by the typed distances (inches) from where the stage is</source>
+        <translation>Se déplacer des distances saisies (pouces) depuis la position actuelle de la platine</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Which frame the typed coordinates are in: Machine (inches from the device&apos;s home) or Work (inches from the work zero); the device is always sent machine coordinates, in mm</source>
+        <translation>Repère des coordonnées saisies&#xa0;: Machine (pouces depuis l&apos;origine de l&apos;appareil) ou Pièce (pouces depuis le zéro pièce)&#xa0;; l&apos;appareil reçoit toujours des coordonnées machine, en mm</translation>
+    </message>
+    <message>
+        <location line="+137"/>
         <source>Drop queued</source>
         <translation>Vider la file</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+21"/>
+        <source>%1 distance to move, %2 to %3 in (%4)</source>
+        <translation>Distance à parcourir sur %1, de %2 à %3 in (%4)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 target coordinate, %2 to %3 in (%4)</source>
+        <translation>Coordonnée cible %1, de %2 à %3 in (%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 target coordinate in the work frame, %2 to %3 in (%4)</source>
+        <translation>Coordonnée cible %1 dans le repère pièce, de %2 à %3 in (%4)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 distance to move, %2 to %3 mm (%4)</source>
         <translation>Distance à parcourir sur %1, de %2 à %3 mm (%4)</translation>
     </message>
@@ -588,12 +655,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Coordonnée cible %1, de %2 à %3 mm (%4)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>%1 target coordinate in the work frame, %2 to %3 mm (%4)</source>
         <translation>Coordonnée cible %1 dans le repère pièce, de %2 à %3 mm (%4)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>travel limits</source>
         <translation>limites de course</translation>
     </message>
@@ -634,7 +701,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/device_docks.py" line="+135"/>
+        <location filename="../../app/device_docks.py" line="+136"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>de %1 à %2 mm sur chaque axe (impulsions sur 16 bits)</translation>
     </message>
@@ -884,7 +951,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+1"/>
         <source>configure the stepper: %1 steps/rev on pins %2</source>
-        <translation>configuration du moteur pas à pas : %1 pas/tour sur les broches %2</translation>
+        <translation>configuration du moteur pas à pas&#xa0;: %1 pas/tour sur les broches %2</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -899,7 +966,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     <message>
         <location line="+1"/>
         <source>send &quot;%1&quot;</source>
-        <translation>transmission de « %1 »</translation>
+        <translation>transmission de «&#xa0;%1&#xa0;»</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -910,7 +977,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+30"/>
+        <location filename="../../widgets/jog_panel.py" line="+33"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>Touches&#xa0;: ←/→ X, ↑/↓ Y, Page préc/Page suiv Z, Maj ×10</translation>
     </message>
@@ -933,16 +1000,27 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     </message>
     <message>
         <location line="+7"/>
+        <location line="+13"/>
         <source>Jog by %1 per press</source>
         <translation>Déplacer de %1 par appui</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-5"/>
+        <source>%1 in</source>
+        <translation>%1 in</translation>
+    </message>
+    <message>
+        <location line="+126"/>
+        <source>Any step size (%1 to %2 in)</source>
+        <translation>Pas quelconque (de %1 à %2 in)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Any step size (0.001 to 1000 mm)</source>
         <translation>Pas quelconque (de 0,001 à 1000 mm)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="-83"/>
         <source>keys active</source>
         <translation>touches actives</translation>
     </message>
@@ -965,7 +1043,12 @@ Cliquer sur les vues ou sur ce panneau pour rendre les touches au déplacement.
 Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+104"/>
+        <source>Jog %1 by %2 in (Shift: %3 in)</source>
+        <translation>Déplacer %1 de %2 in (Maj&#xa0;: %3 in)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Jog %1 by %2 mm (Shift: %3 mm)</source>
         <translation>Déplacer %1 de %2 mm (Maj&#xa0;: %3 mm)</translation>
     </message>
@@ -1046,7 +1129,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/log_viewer.py" line="+42"/>
+        <location filename="../../app/log_viewer.py" line="+43"/>
         <source>(undecoded)</source>
         <translation>(non décodé)</translation>
     </message>
@@ -1109,7 +1192,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>MacroDock</name>
     <message>
-        <location filename="../../app/macro_dock.py" line="+28"/>
+        <location filename="../../app/macro_dock.py" line="+29"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
         <translation>Macros Motion Panel (*.json);;Tous les fichiers (*)</translation>
     </message>
@@ -1301,7 +1384,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+102"/>
+        <location filename="../../app/main_window.py" line="+105"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>Aucune commande d&apos;arrêt sur %1&#xa0;: ceci vide les commandes pas encore envoyées&#xa0;; un mouvement déjà en cours sur l&apos;appareil se termine (Échap)</translation>
     </message>
@@ -1321,7 +1404,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+107"/>
         <source>no session log: %1</source>
         <translation>pas de journal de session&#xa0;: %1</translation>
     </message>
@@ -1331,7 +1414,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>journal de session&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+9"/>
+        <source>no session log from now on</source>
+        <translation>plus de journal de session à partir de maintenant</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>Connection</source>
         <translation>Connexion</translation>
     </message>
@@ -1371,7 +1459,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Chronologie du trafic</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+26"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
@@ -1417,12 +1505,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     </message>
     <message>
         <location line="+1"/>
-        <location line="+351"/>
+        <location line="+357"/>
         <source>&amp;Stop</source>
         <translation>&amp;Arrêt</translation>
     </message>
     <message>
-        <location line="-346"/>
+        <location line="-352"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Limites de course…</translation>
     </message>
@@ -1492,7 +1580,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>déconnecté</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+36"/>
         <source>connected to %1 on %2</source>
         <translation>connecté à %1 sur %2</translation>
     </message>
@@ -1512,7 +1600,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>l&apos;appareil</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Go to the home position (0, 0, 0)</source>
         <translation>Aller à la position d&apos;origine (0, 0, 0)</translation>
     </message>
@@ -1532,7 +1620,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Vider la file d&apos;attente</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>port %1 appeared</source>
         <translation>port %1 apparu</translation>
     </message>
@@ -1597,7 +1685,8 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-393"/>
+        <location line="+397"/>
         <source>device: %1</source>
         <translation>appareil&#xa0;: %1</translation>
     </message>
@@ -1615,12 +1704,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/parameter_dock.py" line="+30"/>
+        <location filename="../../app/parameter_dock.py" line="+33"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>l&apos;appareil contient maintenant %1&#xa0;: le firmware l&apos;impose après chaque écriture</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+40"/>
         <source>Parameters</source>
         <translation>Paramètres</translation>
     </message>
@@ -1645,7 +1734,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>non envoyé</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <source>the device did not answer</source>
         <translation>l&apos;appareil n&apos;a pas répondu</translation>
     </message>
@@ -2146,29 +2235,36 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>dernière position connue&#xa0;: non connecté</translation>
     </message>
     <message>
-        <location line="+19"/>
         <source>Stage position in mm: from the device&apos;s home, and from the work zero</source>
-        <translation>Position de la platine en mm&#xa0;: depuis l&apos;origine de l&apos;appareil et depuis le zéro pièce</translation>
+        <translation type="vanished">Position de la platine en mm&#xa0;: depuis l&apos;origine de l&apos;appareil et depuis le zéro pièce</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+37"/>
         <source>Machine</source>
         <translation>Machine</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Millimetres from the device&apos;s home (its origin)</source>
-        <translation>Millimètres depuis l&apos;origine de l&apos;appareil (son point de référence)</translation>
+        <translation type="vanished">Millimètres depuis l&apos;origine de l&apos;appareil (son point de référence)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Work</source>
         <translation>Pièce</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Millimetres from the work zero the panel keeps (the device is not told)</source>
-        <translation>Millimètres depuis le zéro pièce conservé par le panneau (l&apos;appareil n&apos;en est pas informé)</translation>
+        <translation type="vanished">Millimètres depuis le zéro pièce conservé par le panneau (l&apos;appareil n&apos;en est pas informé)</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Distances from the device&apos;s home (its origin)</source>
+        <translation>Distances depuis l&apos;origine de l&apos;appareil (son point de référence)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Distances from the work zero the panel keeps (the device is not told)</source>
+        <translation>Distances depuis le zéro pièce conservé par le panneau (l&apos;appareil n&apos;en sait rien)</translation>
     </message>
     <message>
         <location line="+16"/>
@@ -2201,7 +2297,22 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Ramener le zéro pièce à l&apos;origine de l&apos;appareil (pièce = machine)</translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+197"/>
+        <source>millimetres</source>
+        <translation>millimètres</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>inches</source>
+        <translation>pouces</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stage position in %1: from the device&apos;s home, and from the work zero</source>
+        <translation>Position de la platine en %1&#xa0;: depuis l&apos;origine de l&apos;appareil, et depuis le zéro pièce</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>This device has no %1 axis</source>
         <translation>Cet appareil n&apos;a pas d&apos;axe %1</translation>
     </message>
@@ -2212,13 +2323,21 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     </message>
     <message>
         <location line="+6"/>
-        <source>%1 position in mm from the device&apos;s home</source>
-        <translation>Position %1 en mm depuis l&apos;origine de l&apos;appareil</translation>
+        <source>%1 position in %2 from the device&apos;s home</source>
+        <translation>Position %1 en %2 depuis l&apos;origine de l&apos;appareil</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>%1 position in %2 from the work zero</source>
+        <translation>Position %1 en %2 depuis le zéro pièce</translation>
+    </message>
+    <message>
+        <source>%1 position in mm from the device&apos;s home</source>
+        <translation type="vanished">Position %1 en mm depuis l&apos;origine de l&apos;appareil</translation>
+    </message>
+    <message>
         <source>%1 position in mm from the work zero</source>
-        <translation>Position %1 en mm depuis le zéro pièce</translation>
+        <translation type="vanished">Position %1 en mm depuis le zéro pièce</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2238,9 +2357,9 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+85"/>
+        <location filename="../../widgets/position_view_2d.py" line="+86"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
-        <translation>Platine vue de dessus : trace, position actuelle (point ; creux si estimée), cible (+), limites de course (pointillés)</translation>
+        <translation>Platine vue de dessus&#xa0;: trace, position actuelle (point&#xa0;; creux si estimée), cible (+), limites de course (pointillés)</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -2260,7 +2379,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     <message>
         <location line="+25"/>
         <source>X, Y and Z against time; dashed lines: target</source>
-        <translation>X, Y et Z en fonction du temps ; pointillés : cible</translation>
+        <translation>X, Y et Z en fonction du temps&#xa0;; pointillés&#xa0;: cible</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2278,7 +2397,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>position (mm)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>Clear trail</source>
         <translation>Effacer la trace</translation>
     </message>
@@ -2363,14 +2482,14 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     <message>
         <location filename="../../widgets/position_view_3d.py" line="+75"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
-        <translation>Nécessite OpenGL 2.1 ou plus récent (par ex. Mesa) sur un affichage ; voir le README.</translation>
+        <translation>Nécessite OpenGL 2.1 ou plus récent (par ex. Mesa) sur un affichage&#xa0;; voir le README.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>3D view unavailable: OpenGL could not be initialised.
 (%1)
 The 2D view shows the same positions.</source>
-        <translation>Vue 3D indisponible : OpenGL n&apos;a pas pu être initialisé.
+        <translation>Vue 3D indisponible&#xa0;: OpenGL n&apos;a pas pu être initialisé.
 (%1)
 La vue 2D montre les mêmes positions.</translation>
     </message>
@@ -2415,7 +2534,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>appuyer sur le bouton actif</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+51"/>
         <source>Poll while moving</source>
         <translation>Interrogation en mouvement</translation>
     </message>
@@ -2698,7 +2817,7 @@ La vue 2D montre les mêmes positions.</translation>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/traffic_console.py" line="+72"/>
+        <location filename="../../app/traffic_console.py" line="+76"/>
         <source>text</source>
         <translation>texte</translation>
     </message>
@@ -2748,14 +2867,14 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>Exporter le trafic</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+97"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
         <translation>Octets en texte (échappements \r \n \xNN), en hex (47 45 54) ou en mixte (texte, &lt;0A&gt; pour le reste)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Times: seconds since the session start, wall-clock time, or the gap since the line above</source>
-        <translation>Temps : secondes depuis le début de la session, heure de l&apos;horloge, ou écart avec la ligne précédente</translation>
+        <translation>Temps&#xa0;: secondes depuis le début de la session, heure de l&apos;horloge, ou écart avec la ligne précédente</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -2805,7 +2924,7 @@ La vue 2D montre les mêmes positions.</translation>
     <message>
         <location line="+4"/>
         <source>Show the idle position queries and their replies (hidden by default; counted below)</source>
-        <translation>Afficher les interrogations de position au repos et leurs réponses (masquées par défaut ; comptées ci-dessous)</translation>
+        <translation>Afficher les interrogations de position au repos et leurs réponses (masquées par défaut&#xa0;; comptées ci-dessous)</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -2825,7 +2944,7 @@ La vue 2D montre les mêmes positions.</translation>
     <message>
         <location line="+3"/>
         <source>New lines do not scroll the view: scroll to the bottom to follow</source>
-        <translation>Les nouvelles lignes ne font pas défiler la vue : faire défiler jusqu&apos;en bas pour suivre</translation>
+        <translation>Les nouvelles lignes ne font pas défiler la vue&#xa0;: faire défiler jusqu&apos;en bas pour suivre</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -2835,7 +2954,7 @@ La vue 2D montre les mêmes positions.</translation>
     <message>
         <location line="+4"/>
         <source>Highlight matching lines; Enter or F3: next, Shift+F3: previous</source>
-        <translation>Surligner les lignes correspondantes ; Entrée ou F3 : suivante, Maj+F3 : précédente</translation>
+        <translation>Surligner les lignes correspondantes&#xa0;; Entrée ou F3&#xa0;: suivante, Maj+F3&#xa0;: précédente</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -2875,15 +2994,24 @@ La vue 2D montre les mêmes positions.</translation>
     <message>
         <location line="+24"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
-        <translation>TX (bleu) : envoyé à l&apos;appareil ; RX (vert) : reçu ; gris : notes et texte propre à l&apos;appareil ; rouge : erreurs. Double-cliquer sur une ligne pour aller à sa requête, à sa réponse ou à sa première copie.</translation>
+        <translation>TX (bleu)&#xa0;: envoyé à l&apos;appareil&#xa0;; RX (vert)&#xa0;: reçu&#xa0;; gris&#xa0;: notes et texte propre à l&apos;appareil&#xa0;; rouge&#xa0;: erreurs. Double-cliquer sur une ligne pour aller à sa requête, à sa réponse ou à sa première copie.</translation>
     </message>
     <message>
-        <location line="+144"/>
+        <location line="+164"/>
+        <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
+        <translation>la console conserve les %1 lignes les plus récentes&#xa0;: les plus anciennes en sont retirées à mesure que de nouvelles arrivent&#xa0;; le journal de session conserve toutes les lignes</translation>
+    </message>
+    <message>
+        <location line="+198"/>
+        <source>line %1 is no longer in the console (its line limit dropped it); the session log has it</source>
+        <translation>la ligne %1 n&apos;est plus dans la console (retirée par sa limite de lignes)&#xa0;; le journal de session la contient</translation>
+    </message>
+    <message>
         <source>%1 lines reached the console&apos;s limit and were cleared; the session log keeps them</source>
-        <translation>%1 lignes ont atteint la limite de la console et ont été effacées ; le journal de session les conserve</translation>
+        <translation type="vanished">%1 lignes ont atteint la limite de la console et ont été effacées&#xa0;; le journal de session les conserve</translation>
     </message>
     <message>
-        <location line="+260"/>
+        <location line="+65"/>
         <source>%1 lines</source>
         <translation>%1 lignes</translation>
     </message>
@@ -2894,6 +3022,11 @@ La vue 2D montre les mêmes positions.</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>%1 older in the session log</source>
+        <translation>%1 plus anciennes dans le journal de session</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 poll hidden</source>
         <translation>%1 interrogations masquées</translation>
     </message>
@@ -2908,9 +3041,14 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>%1 correspondances</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+5"/>
+        <source>The console keeps the newest %1 lines (Settings): older lines are dropped from it, the session log on disk keeps every line</source>
+        <translation>La console conserve les %1 lignes les plus récentes (Réglages)&#xa0;: les plus anciennes en sont retirées, le journal de session sur disque conserve toutes les lignes</translation>
+    </message>
+    <message>
+        <location line="+89"/>
         <source>export failed: %1</source>
-        <translation>échec de l&apos;export : %1</translation>
+        <translation>échec de l&apos;export&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -3011,7 +3149,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>SettingsDialog</name>
     <message>
-        <location filename="../../widgets/settings_dialog.py" line="+87"/>
+        <location filename="../../widgets/settings_dialog.py" line="+77"/>
         <source>Settings</source>
         <translation>Réglages</translation>
     </message>
@@ -3111,9 +3249,13 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Conserver toutes les lignes</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines. The session log keeps every byte either way.</source>
-        <translation>Nombre maximal de lignes conservées par la console&#xa0;: 0 les conserve toutes (un fichier tampon sur disque et environ 33 octets par ligne en mémoire), sinon de %1 à %2 lignes. Le journal de session conserve chaque octet dans tous les cas.</translation>
+        <translation type="vanished">Nombre maximal de lignes conservées par la console&#xa0;: 0 les conserve toutes (un fichier tampon sur disque et environ 33 octets par ligne en mémoire), sinon de %1 à %2 lignes. Le journal de session conserve chaque octet dans tous les cas.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines, the oldest dropped as new ones come. The session log keeps every byte either way.</source>
+        <translation>Nombre maximal de lignes conservées par la console&#xa0;: 0 les conserve toutes (un fichier tampon sur disque et environ 33 octets par ligne en mémoire), sinon de %1 à %2 lignes, les plus anciennes étant retirées à mesure que de nouvelles arrivent. Dans tous les cas, le journal de session conserve chaque octet.</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -3453,7 +3595,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+35"/>
+        <location filename="../../widgets/speed_control.py" line="+39"/>
         <source>Speed:</source>
         <translation>Vitesse&#xa0;:</translation>
     </message>
@@ -3463,7 +3605,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Vitesse des prochains mouvements</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>Apply</source>
         <translation>Appliquer</translation>
     </message>
@@ -3479,17 +3621,32 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>La vitesse indiquée par l&apos;appareil (il peut l&apos;arrondir)</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+84"/>
+        <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
+        <translation>Vitesse, de %1 à %2 in/s&#xa0;; appuyer sur Entrée ou Appliquer pour envoyer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drag and release to send (%1 to %2 in/s)</source>
+        <translation>Faire glisser puis relâcher pour envoyer (%1 à %2 in/s)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Speed, %1 to %2 mm/s; press Enter or Apply to send</source>
         <translation>Vitesse, de %1 à %2 mm/s&#xa0;; appuyer sur Entrée ou Appliquer pour envoyer</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Drag and release to send (%1 to %2 mm/s)</source>
         <translation>Faire glisser puis relâcher pour envoyer (%1 à %2 mm/s)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
+        <source>device: %1 in/s</source>
+        <translation>appareil&#xa0;: %1 in/s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>device: %1 mm/s</source>
         <translation>appareil&#xa0;: %1 mm/s</translation>
     </message>
@@ -3508,12 +3665,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Connecting…</source>
         <translation>Connexion…</translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location line="-38"/>
         <source>Opening the port and asking the device who it is</source>
         <translation>Ouverture du port et identification de l&apos;appareil</translation>
     </message>
@@ -3582,6 +3739,34 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
 </context>
 <context>
+    <name>TrafficFormat</name>
+    <message>
+        <location filename="../../widgets/traffic_format.py" line="+38"/>
+        <source>\x needs two hex digits at column %1: %2</source>
+        <translation>\x nécessite deux chiffres hex à la colonne %1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>a lone backslash ends the line: write \\ for a backslash</source>
+        <translation>une barre oblique inverse seule termine la ligne&#xa0;: écrire \\ pour une barre oblique inverse</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>unknown escape \%1 at column %2 (use \r \n \t \0 \\ \xNN)</source>
+        <translation>échappement inconnu \%1 à la colonne %2 (utiliser \r \n \t \0 \\ \xNN)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>not hex: %1</source>
+        <translation>hex invalide&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>odd number of hex digits in %1: write 0%2 or pairs</source>
+        <translation>nombre impair de chiffres hex dans %1&#xa0;: écrire 0%2 ou des paires</translation>
+    </message>
+</context>
+<context>
     <name>TrafficModel</name>
     <message>
         <location filename="../../app/traffic_table.py" line="-19"/>
@@ -3614,19 +3799,19 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Réponse</translation>
     </message>
     <message>
-        <location line="+249"/>
+        <location line="+265"/>
         <source>line %1: %2</source>
-        <translation>ligne %1 : %2</translation>
+        <translation>ligne %1&#xa0;: %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>hex: %1</source>
-        <translation>hex : %1</translation>
+        <translation>hex&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>text: %1</source>
-        <translation>texte : %1</translation>
+        <translation>texte&#xa0;: %1</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -3654,12 +3839,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+4"/>
         <source>Keep the latest %1 s in view; zooming or panning stops it</source>
-        <translation>Garder à l&apos;écran les %1 s les plus récentes ; zoomer ou déplacer la vue l&apos;interrompt</translation>
+        <translation>Garder à l&apos;écran les %1 s les plus récentes&#xa0;; zoomer ou déplacer la vue l&apos;interrompt</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>Bytes per second each way, in one-second bins: TX (blue) sent to the device, RX (green) received. Click a bin to show its first line in the console.</source>
-        <translation>Octets par seconde dans chaque sens, par tranches d&apos;une seconde : TX (bleu) envoyés à l&apos;appareil, RX (vert) reçus. Cliquer sur une tranche pour afficher sa première ligne dans la console.</translation>
+        <translation>Octets par seconde dans chaque sens, par tranches d&apos;une seconde&#xa0;: TX (bleu) envoyés à l&apos;appareil, RX (vert) reçus. Cliquer sur une tranche pour afficher sa première ligne dans la console.</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -3679,7 +3864,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+3"/>
         <source>Time from a request to its reply, in ms: one point per answered request (drawn as dots when few are in view). Click a point to show its line in the console.</source>
-        <translation>Temps entre une requête et sa réponse, en ms : un point par requête ayant reçu une réponse (dessinés isolément quand peu sont visibles). Cliquer sur un point pour afficher sa ligne dans la console.</translation>
+        <translation>Temps entre une requête et sa réponse, en ms&#xa0;: un point par requête ayant reçu une réponse (dessinés isolément quand peu sont visibles). Cliquer sur un point pour afficher sa ligne dans la console.</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -3742,6 +3927,21 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
 </context>
 <context>
+    <name>UnitSpinBox</name>
+    <message>
+        <location filename="../../widgets/coordinate_entry.py" line="-434"/>
+        <source>in/s</source>
+        <comment>inches per second</comment>
+        <translation>in/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>in</source>
+        <comment>inches</comment>
+        <translation>in</translation>
+    </message>
+</context>
+<context>
     <name>ValueDelegate</name>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-95"/>
@@ -3772,7 +3972,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Macros</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+31"/>
         <source>&amp;Settings…</source>
         <translation>&amp;Réglages…</translation>
     </message>
@@ -3797,7 +3997,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>À &amp;propos de Motion Panel</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+55"/>
         <source>Jog X - / +</source>
         <translation>Déplacer X - / +</translation>
     </message>
@@ -3842,30 +4042,32 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>, %1/%2 pas</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+58"/>
+        <source>settings saved; the language from the next start</source>
+        <translation>réglages enregistrés&#xa0;; la langue s&apos;appliquera au prochain démarrage</translation>
+    </message>
+    <message>
         <source>the session log from the next start</source>
-        <translation>le journal de session change au prochain démarrage</translation>
+        <translation type="vanished">le journal de session change au prochain démarrage</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>the language from the next start</source>
-        <translation>la langue change au prochain démarrage</translation>
+        <translation type="vanished">la langue change au prochain démarrage</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>settings saved</source>
         <translation>réglages enregistrés</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>settings saved; %1</source>
-        <translation>réglages enregistrés&#xa0;; %1</translation>
+        <translation type="vanished">réglages enregistrés&#xa0;; %1</translation>
     </message>
 </context>
 <context>
     <name>WorkFrame</name>
     <message>
-        <location filename="../../app/work_frame.py" line="+58"/>
+        <location filename="../../app/work_frame.py" line="+59"/>
         <source>work coordinates: %1</source>
         <translation>coordonnées pièce&#xa0;: %1</translation>
     </message>
@@ -3875,9 +4077,13 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>zéro pièce non défini&#xa0;: la position est inconnue</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
+        <source>work zero set at %1 %2 (machine)</source>
+        <translation>zéro pièce défini à %1 %2 (machine)</translation>
+    </message>
+    <message>
         <source>work zero set at %1 mm (machine)</source>
-        <translation>zéro pièce défini à %1 mm (machine)</translation>
+        <translation type="vanished">zéro pièce défini à %1 mm (machine)</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -3888,6 +4094,2024 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+7"/>
         <source>work zero kept in place: %1</source>
         <translation>zéro pièce maintenu en place&#xa0;: %1</translation>
+    </message>
+</context>
+<context>
+    <name>messages</name>
+    <message>
+        <location filename="message_templates.py" line="+6"/>
+        <source>usage: {usage} (got {count} arguments)</source>
+        <translation>usage&#xa0;: {usage} ({count} arguments reçus)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>usage: {usage}</source>
+        <translation>usage&#xa0;: {usage}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>usage: {command} {axes} ({protocol} has {count} axes)</source>
+        <translation>usage&#xa0;: {command} {axes} ({protocol} a {count} axes)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--kind {kind} refused: {protocol} moves are {kinds}</source>
+        <translation>--kind {kind} refusé&#xa0;: les mouvements {protocol} sont de type {kinds}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s</source>
+        <translation>vitesse {speed:g} mm/s refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} mm/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused ({error})</source>
+        <translation>vitesse {speed:g} mm/s refusée ({error})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} ({count} step)</source>
+        <translation>macro {name} ({count} étape)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} ({count} steps)</source>
+        <translation>macro {name} ({count} étapes)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a macro needs a name</source>
+        <translation>une macro doit avoir un nom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro name {name!r}… is over {limit} characters</source>
+        <translation>le nom de macro {name!r}… dépasse {limit} caractères</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro name {name!r} holds a control character</source>
+        <translation>le nom de macro {name!r} contient un caractère de contrôle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} is for {protocol}, not {device}</source>
+        <translation>la macro {name} est pour {protocol}, pas pour {device}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} has no steps</source>
+        <translation>la macro {name} n&apos;a aucune étape</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} has {count} steps; at most {limit}</source>
+        <translation>la macro {name} a {count} étapes&#xa0;; {limit} au maximum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name}, step {number} ({step!r}): {error}</source>
+        <translation>macro {name}, étape {number} ({step!r})&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the step is over {limit} characters</source>
+        <translation>l&apos;étape dépasse {limit} caractères</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a step is one line (use one step per line)</source>
+        <translation>une étape tient sur une ligne (une étape par ligne)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the step is empty</source>
+        <translation>l&apos;étape est vide</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown command {command!r}; a step is one of: {commands}</source>
+        <translation>commande inconnue {command!r}&#xa0;; une étape est l&apos;une de&#xa0;: {commands}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} is a {owner} command</source>
+        <translation>{command} est une commande {owner}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>usage: wait SECONDS</source>
+        <translation>usage&#xa0;: wait SECONDES</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wait {seconds:g} s refused: from 0 to {limit:g} s</source>
+        <translation>wait {seconds:g} s refusé&#xa0;: de 0 à {limit:g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} stopped before step {number} ({step})</source>
+        <translation>{name}&#xa0;: arrêt avant l&apos;étape {number} ({step})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} stopped during step {number}</source>
+        <translation>{name}&#xa0;: arrêt pendant l&apos;étape {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: not a Motion Panel macro file (no &quot;format&quot;: &quot;{format}&quot;)</source>
+        <translation>{where}&#xa0;: pas un fichier de macros Motion Panel (pas de &quot;format&quot;: &quot;{format}&quot;)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: macro file version {version!r}; this reads {reads}</source>
+        <translation>{where}&#xa0;: fichier de macros en version {version!r}&#xa0;; cette version lit la {reads}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: &quot;macros&quot; is not a list</source>
+        <translation>{where}&#xa0;: &quot;macros&quot; n&apos;est pas une liste</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {count} macros; at most {limit}</source>
+        <translation>{where}&#xa0;: {count} macros&#xa0;; {limit} au maximum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: macro {number}</source>
+        <translation>{where}&#xa0;: macro {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: two {protocol} macros are named {name!r}</source>
+        <translation>{where}&#xa0;: deux macros {protocol} sont nommées {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} is not an object with name, protocol and steps</source>
+        <translation>{where} n&apos;est pas un objet avec name, protocol et steps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} has no name</source>
+        <translation>{where} n&apos;a pas de nom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} ({name!r}): unknown protocol {protocol!r}</source>
+        <translation>{where} ({name!r})&#xa0;: protocole inconnu {protocol!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} ({name!r}): &quot;steps&quot; is not a list of strings</source>
+        <translation>{where} ({name!r})&#xa0;: &quot;steps&quot; n&apos;est pas une liste de chaînes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} ({name!r}): over {limit} steps or a step too long</source>
+        <translation>{where} ({name!r})&#xa0;: plus de {limit} étapes ou une étape trop longue</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro file</source>
+        <translation>fichier de macros</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{path}: not JSON ({error})</source>
+        <translation>{path}&#xa0;: pas du JSON ({error})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} is not a JSON number</source>
+        <translation>{name} n&apos;est pas un nombre JSON</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>saved macros</source>
+        <translation>macros enregistrées</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>it cannot be read</source>
+        <translation>il est illisible</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>it is not an INI file Qt can read</source>
+        <translation>ce n&apos;est pas un fichier INI lisible par Qt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>settings file</source>
+        <translation>fichier de réglages</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot read the settings file {file}: {why}</source>
+        <translation>impossible de lire le fichier de réglages {file}&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} ({protocol}, {baud} baud)</source>
+        <translation>{url} ({protocol}, {baud} bauds)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the saved setup was refused: {error}</source>
+        <translation>la configuration enregistrée a été refusée&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{identity} on {url}</source>
+        <translation>{identity} sur {url}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} not changed: not connected</source>
+        <translation>{line} inchangé&#xa0;: non connecté</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no break sent: not connected</source>
+        <translation>aucun break envoyé&#xa0;: non connecté</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position went from ({position}) to (0, 0, 0) mm while nothing was sent: the device restarted</source>
+        <translation>la position est passée de ({position}) à (0, 0, 0) mm sans que rien n&apos;ait été envoyé&#xa0;: l&apos;appareil a redémarré</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; not sent: {jobs}; talking to it again</source>
+        <translation>{error}&#xa0;; non envoyé&#xa0;: {jobs}&#xa0;; reprise du dialogue avec l&apos;appareil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; talking to it again</source>
+        <translation>{error}&#xa0;; reprise du dialogue avec l&apos;appareil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not sent: the device is being reconnected</source>
+        <translation>non envoyé&#xa0;: reconnexion de l&apos;appareil en cours</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the connection was lost</source>
+        <translation>la connexion a été perdue</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>abandoned: disconnected while it was under way</source>
+        <translation>abandonné&#xa0;: déconnexion en cours d&apos;exécution</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown job {job!r}</source>
+        <translation>tâche inconnue {job!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; not sent: {jobs}</source>
+        <translation>{error}&#xa0;; non envoyé&#xa0;: {jobs}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device says: {text}</source>
+        <translation>l&apos;appareil dit&#xa0;: {text}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bridge to {device} is closed</source>
+        <translation>la passerelle vers {device} est fermée</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot create a pseudo-terminal for {device}: {error}</source>
+        <translation>impossible de créer un pseudo-terminal pour {device}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bridge is not open</source>
+        <translation>la passerelle n&apos;est pas ouverte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device on {device} failed: {error}</source>
+        <translation>l&apos;appareil sur {device} a échoué&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device on {device} went away: {error}</source>
+        <translation>l&apos;appareil sur {device} a disparu&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device on {device} went away (its port was closed)</source>
+        <translation>l&apos;appareil sur {device} a disparu (son port a été fermé)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the pseudo-terminal {path} failed: {error}</source>
+        <translation>le pseudo-terminal {path} a échoué&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to the device on {device} failed: {error}</source>
+        <translation>échec de l&apos;écriture vers l&apos;appareil sur {device}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to the pseudo-terminal {path} failed: {error}</source>
+        <translation>échec de l&apos;écriture vers le pseudo-terminal {path}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>abandoned: the connection is closing</source>
+        <translation>abandonné&#xa0;: la connexion se ferme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; still full after {seconds:.0f} s</source>
+        <translation>{error}&#xa0;; toujours pleine après {seconds:.0f} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} failed after {tries} tries; the last: {error}</source>
+        <translation>échec de {command} après {tries} tentatives&#xa0;; la dernière&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device restarted during {command} ({event}): its position and settings are lost</source>
+        <translation>l&apos;appareil a redémarré pendant {command} ({event})&#xa0;: sa position et ses réglages sont perdus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device restarted ({event}): its position and settings are lost</source>
+        <translation>l&apos;appareil a redémarré ({event})&#xa0;: sa position et ses réglages sont perdus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device did not finish its reply to {command} within {seconds:.3g} s</source>
+        <translation>l&apos;appareil n&apos;a pas terminé sa réponse à {command} en {seconds:.3g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device did not answer to {command} within {seconds:.3g} s</source>
+        <translation>l&apos;appareil n&apos;a pas répondu à {command} en {seconds:.3g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{message}; it sent {count} unexpected frame(s), the last: {frame}</source>
+        <translation>{message}&#xa0;; il a envoyé {count} trame(s) inattendue(s), la dernière&#xa0;: {frame}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{message} (it may still be moving: {protocol} answers nothing until a blocking move has ended; try again once it has stopped)</source>
+        <translation>{message} (il est peut-être encore en mouvement&#xa0;: {protocol} ne répond rien tant qu&apos;un mouvement bloquant n&apos;est pas terminé&#xa0;; réessayer une fois l&apos;appareil arrêté)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no modem control lines</source>
+        <translation>aucune ligne de contrôle modem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{dtr}, {rts}, {cts}, {dsr}, {cd}, {ri}</source>
+        <translation>{dtr}, {rts}, {cts}, {dsr}, {cd}, {ri}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} ?</source>
+        <translation>{line}&#xa0;?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} on</source>
+        <translation>{line} actif</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} off</source>
+        <translation>{line} inactif</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unreadable: {error}</source>
+        <translation>illisible&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error {code}: {message}</source>
+        <translation>erreur {code}&#xa0;: {message}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error: {message}</source>
+        <translation>erreur&#xa0;: {message}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>position ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position ({x:g}, {y:g}, {z:g}) mm (commanded, confirmed)</source>
+        <translation>position ({x:g}, {y:g}, {z:g}) mm (commandée, confirmée)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position ({x:g}, {y:g}, {z:g}) mm (commanded)</source>
+        <translation>position ({x:g}, {y:g}, {z:g}) mm (commandée)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback {code} ({meaning})</source>
+        <translation>retour {code} ({meaning})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback {code} {bytes}</source>
+        <translation>retour {code} {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback {code}</source>
+        <translation>retour {code}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the line {text!r}</source>
+        <translation>la ligne {text!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an unreadable frame ({reason}): {bytes}</source>
+        <translation>une trame illisible ({reason})&#xa0;: {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a directory</source>
+        <translation>un répertoire</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a named pipe (FIFO)</source>
+        <translation>un tube nommé (FIFO)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a character device</source>
+        <translation>un périphérique caractère</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a block device</source>
+        <translation>un périphérique bloc</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a socket</source>
+        <translation>un socket</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot read the {what} {file}: {why}</source>
+        <translation>impossible de lire le {what} {file}&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{kind}, not a regular file</source>
+        <translation>{kind}, pas un fichier ordinaire</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a special file</source>
+        <translation>un fichier spécial</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: larger than {limit} ({size:,} bytes), too large for a {what}</source>
+        <translation>{file}&#xa0;: plus de {limit} ({size:,} octets), trop grand pour un {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: larger than {limit}, too large for a {what}</source>
+        <translation>{file}&#xa0;: plus de {limit}, trop grand pour un {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: not UTF-8 text (line {line}), not a {what}</source>
+        <translation>{file}&#xa0;: pas du texte UTF-8 (ligne {line}), pas un {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: a NUL byte (line {line}), not a {what}</source>
+        <translation>{file}&#xa0;: un octet NUL (ligne {line}), pas un {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file} line {line}: longer than {limit:,} characters, not a {what} line</source>
+        <translation>{file} ligne {line}&#xa0;: plus de {limit:,} caractères, pas une ligne de {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a frame body is {expected} bytes, not {length}</source>
+        <translation>un corps de trame fait {expected} octets, pas {length}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>flag byte {byte:#04x}, expected 0xf0</source>
+        <translation>octet de drapeau {byte:#04x}, 0xf0 attendu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>checksum {got:#04x}, expected {expected:#04x}</source>
+        <translation>somme de contrôle {got:#04x}, {expected:#04x} attendu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0x90 followed by {byte:#04x} inside the data</source>
+        <translation>0x90 suivi de {byte:#04x} dans les données</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no tail within {most} bytes</source>
+        <translation>pas de fin de trame en {most} octets</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a SysEx message needs at least a command byte</source>
+        <translation>un message SysEx nécessite au moins un octet de commande</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SysEx data must be 7-bit; got {byte:#04x}</source>
+        <translation>les données SysEx doivent être sur 7 bits&#xa0;; reçu {byte:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: not a traffic log line: {line!r}</source>
+        <translation>{source} ligne {number}&#xa0;: pas une ligne de journal de trafic&#xa0;: {line!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no traffic in it (not a Motion Panel log)</source>
+        <translation>{source}&#xa0;: aucun trafic (pas un journal Motion Panel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>traffic log</source>
+        <translation>journal de trafic</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: not a Motion Panel log nor a pyserial spy:// capture: line {number} is not a traffic log line: {line!r}; for spy://, {hint}</source>
+        <translation>{file}&#xa0;: ni un journal Motion Panel ni une capture pyserial spy://&#xa0;: la ligne {number} n&apos;est pas une ligne de journal de trafic&#xa0;: {line!r}&#xa0;; pour spy://, {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: empty, not a Motion Panel log nor a pyserial spy:// capture (spy&apos;s raw format leaves its file empty); {hint}</source>
+        <translation>{file}&#xa0;: vide, ni un journal Motion Panel ni une capture pyserial spy:// (le format raw de spy laisse son fichier vide)&#xa0;; {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device reported: {reported}</source>
+        <translation>l&apos;appareil a signalé&#xa0;: {reported}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} device</source>
+        <translation>appareil {protocol}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device did not report a position (it answered {value})</source>
+        <translation>l&apos;appareil n&apos;a pas indiqué de position (il a répondu {value})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device is at ({x:g}, {y:g}, {z:g}) mm, not where its last move ended: its replies are no longer taken as arrival</source>
+        <translation>l&apos;appareil est à ({x:g}, {y:g}, {z:g}) mm, et non là où son dernier mouvement s&apos;est terminé&#xa0;: ses réponses ne valent plus confirmation d&apos;arrivée</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no speed limits to report</source>
+        <translation>{protocol} n&apos;a pas de limites de vitesse à indiquer</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} refused: the speed must be a positive number</source>
+        <translation>vitesse {speed:g} refusée&#xa0;: la vitesse doit être un nombre positif</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}</source>
+        <translation>vitesse {speed:g} {unit} refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>déplacement vers ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jog by ({dx:g}, {dy:g}, {dz:g}) {unit}</source>
+        <translation>déplacement relatif de ({dx:g}, {dy:g}, {dz:g}) {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no way to go home</source>
+        <translation>{protocol} n&apos;a aucun moyen de retourner à l&apos;origine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>go home</source>
+        <translation>retour à l&apos;origine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no set-home command</source>
+        <translation>{protocol} n&apos;a pas de commande pour définir l&apos;origine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} refused: home is outside the travel limits</source>
+        <translation>{what} refusé&#xa0;: l&apos;origine est hors des limites de course</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no arc moves</source>
+        <translation>{protocol} n&apos;a pas de mouvements en arc</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arc</source>
+        <translation>arc</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no dwell</source>
+        <translation>{protocol} n&apos;a pas de temporisation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped at ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>arrêté à ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the move to {target} did not end within {seconds:.1f} s</source>
+        <translation>le déplacement vers {target} ne s&apos;est pas terminé en {seconds:.1f} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
+        <translation>{what} {text!r} n&apos;est pas un nombre accepté par l&apos;appareil&#xa0;: utiliser des chiffres, avec un signe facultatif et un seul point décimal, par ex. -12.5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {value!r} is not a finite number</source>
+        <translation>{what} {value!r} n&apos;est pas un nombre fini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {value:g} is out of range: the device handles at most ±{limit:g}</source>
+        <translation>{what} {value:g} est hors plage&#xa0;: l&apos;appareil accepte au plus ±{limit:g}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not a parameter profile: {error}</source>
+        <translation>{source}&#xa0;: pas un profil de paramètres&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not a parameter profile: a number too long</source>
+        <translation>{source}&#xa0;: pas un profil de paramètres&#xa0;: nombre trop long</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not a parameter profile: nested too deeply</source>
+        <translation>{source}&#xa0;: pas un profil de paramètres&#xa0;: imbrication trop profonde</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: protocol must be a name in quotes</source>
+        <translation>{source}&#xa0;: protocol doit être un nom entre guillemets</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: a profile for {named!r}, not for {protocol!r}</source>
+        <translation>{source}&#xa0;: profil pour {named!r}, pas pour {protocol!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} (line {line}): unknown key {key!r}</source>
+        <translation>{source} (ligne {line})&#xa0;: clé inconnue {key!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: unknown key {key!r}</source>
+        <translation>{source}&#xa0;: clé inconnue {key!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no [parameters] table with values in it</source>
+        <translation>{source}&#xa0;: aucune table [parameters] contenant des valeurs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}</source>
+        <translation>{source} ligne {line}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: unknown parameter {name!r} for {protocol}</source>
+        <translation>{where}&#xa0;: paramètre inconnu {name!r} pour {protocol}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {error}</source>
+        <translation>{where}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name}: not a number the device takes ({range})</source>
+        <translation>{where}&#xa0;: {name}&#xa0;: pas un nombre accepté par l&apos;appareil ({range})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>profile</source>
+        <translation>profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot write the profile {path}: {error}</source>
+        <translation>impossible d&apos;écrire le profil {path}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{low} to {high} in steps of {step}</source>
+        <translation>de {low} à {high} par pas de {step}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{low} to {high} (whole numbers)</source>
+        <translation>de {low} à {high} (nombres entiers)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{low} to {high}</source>
+        <translation>de {low} à {high}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: {value!r} is not a number ({range})</source>
+        <translation>{name}&#xa0;: {value!r} n&apos;est pas un nombre ({range})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: {value} refused: {range}</source>
+        <translation>{name}&#xa0;: {value} refusé&#xa0;: {range}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: {value} refused: the device takes {range}</source>
+        <translation>{name}&#xa0;: {value} refusé&#xa0;: l&apos;appareil accepte {range}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this protocol has no parameters</source>
+        <translation>ce protocole n&apos;a pas de paramètres</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown parameter {name!r} (did you mean {close}?): use a name or an id 1..{count}; &apos;motionctl ... param list&apos; lists them</source>
+        <translation>paramètre inconnu {name!r} (vouliez-vous dire {close}&#xa0;?)&#xa0;: utiliser un nom ou un id 1..{count}&#xa0;; &apos;motionctl ... param list&apos; les liste</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown parameter {name!r}: use a name or an id 1..{count}; &apos;motionctl ... param list&apos; lists them</source>
+        <translation>paramètre inconnu {name!r}&#xa0;: utiliser un nom ou un id 1..{count}&#xa0;; &apos;motionctl ... param list&apos; les liste</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name} {value!r} is not a number</source>
+        <translation>{where}&#xa0;: {name} {value!r} n&apos;est pas un nombre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name} is not a finite float32 number</source>
+        <translation>{where}&#xa0;: {name} n&apos;est pas un nombre float32 fini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name} {value!r} is not a finite float32 number</source>
+        <translation>{where}&#xa0;: {name} {value!r} n&apos;est pas un nombre float32 fini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: speed {speed:g} mm/s must be above 0</source>
+        <translation>{where}&#xa0;: la vitesse {speed:g} mm/s doit être supérieure à 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: not CSV: {error}</source>
+        <translation>{source} ligne {line}&#xa0;: pas du CSV&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: the header must name x, y, z and speed (got nothing)</source>
+        <translation>{source} ligne {line}&#xa0;: l&apos;en-tête doit nommer x, y, z et speed (en-tête vide)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: the header must name x, y, z and speed (got {columns})</source>
+        <translation>{source} ligne {line}&#xa0;: l&apos;en-tête doit nommer x, y, z et speed (trouvé&#xa0;: {columns})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: {count} values, expected 4</source>
+        <translation>{source} ligne {line}&#xa0;: {count} valeurs, 4 attendues</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no header line (x,y,z,speed)</source>
+        <translation>{source}&#xa0;: pas de ligne d&apos;en-tête (x,y,z,speed)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no points</source>
+        <translation>{source}&#xa0;: aucun point</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: not JSON ({reason})</source>
+        <translation>{source} ligne {line}&#xa0;: pas du JSON ({reason})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not JSON the panel reads (a number too long)</source>
+        <translation>{source}&#xa0;: JSON illisible par le panneau (nombre trop long)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not JSON the panel reads (nested too deeply)</source>
+        <translation>{source}&#xa0;: JSON illisible par le panneau (imbrication trop profonde)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no &quot;points&quot; list</source>
+        <translation>{source}&#xa0;: pas de liste &quot;points&quot;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: expected [x, y, z, speed]</source>
+        <translation>{where}&#xa0;: [x, y, z, speed] attendu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} point {number}</source>
+        <translation>{source} point {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: more than {count} points</source>
+        <translation>{source}&#xa0;: plus de {count} points</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>program</source>
+        <translation>programme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot write the program {path}: {error}</source>
+        <translation>impossible d&apos;écrire le programme {path}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
+        <translation>{setting} {value} refusé&#xa0;: de {minimum:g} à {maximum:g} {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no setting {name!r}</source>
+        <translation>{protocol} n&apos;a pas de réglage {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no wire variants (got {name!r})</source>
+        <translation>{protocol} n&apos;a pas de variante de ligne (demandée&#xa0;: {name!r})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no variant {name!r} (variants: {known})</source>
+        <translation>{protocol} n&apos;a pas de variante {name!r} (variantes&#xa0;: {known})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} moves are linear only (got {kind!r})</source>
+        <translation>les mouvements {protocol} sont uniquement linéaires (reçu {kind!r})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} coordinate</source>
+        <translation>coordonnée {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} distance</source>
+        <translation>distance {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed</source>
+        <translation>vitesse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a coordinate</source>
+        <translation>une coordonnée</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the speed</source>
+        <translation>la vitesse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused: the speed must be positive</source>
+        <translation>vitesse {speed:g} mm/s refusée&#xa0;: la vitesse doit être positive</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw command refused: COXIRIS takes ASCII text only</source>
+        <translation>commande brute refusée&#xa0;: COXIRIS n&apos;accepte que du texte ASCII</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw command refused: one line at a time (it contains a line break)</source>
+        <translation>commande brute refusée&#xa0;: une ligne à la fois (elle contient un saut de ligne)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw command refused: it is empty, and the device ignores blank lines</source>
+        <translation>commande brute refusée&#xa0;: elle est vide, et l&apos;appareil ignore les lignes vides</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COXIRIS has no command for {command}</source>
+        <translation>COXIRIS n&apos;a pas de commande pour {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>command refused: {length} characters, the device takes at most {most} ({start}...)</source>
+        <translation>commande refusée&#xa0;: {length} caractères, l&apos;appareil en accepte au plus {most} ({start}...)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device reported {what} as {text!r}, which is not a number</source>
+        <translation>l&apos;appareil a renvoyé {text!r} pour {what}, ce qui n&apos;est pas un nombre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device reported {what} as {text!r}</source>
+        <translation>l&apos;appareil a renvoyé {text!r} pour {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device does not know the command {name!r}</source>
+        <translation>l&apos;appareil ne connaît pas la commande {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device refused the command: {error}</source>
+        <translation>l&apos;appareil a refusé la commande&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected DONE {command}, got {event}</source>
+        <translation>DONE {command} attendu, reçu {event}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position reply {data!r} does not hold three numbers</source>
+        <translation>la réponse de position {data!r} ne contient pas trois nombres</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speeds are reported rounded to whole mm/s</source>
+        <translation>les vitesses sont indiquées arrondies au mm/s entier</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>positions are reported to 0.01 mm</source>
+        <translation>les positions sont indiquées à 0.01 mm près</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>non-ASCII bytes in a COXIRIS line: {bytes}</source>
+        <translation>octets non ASCII dans une ligne COXIRIS&#xa0;: {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line refused: {length} characters, the device takes at most {most}</source>
+        <translation>ligne refusée&#xa0;: {length} caractères, l&apos;appareil en accepte au plus {most}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motor steps per turn</source>
+        <translation>Pas moteur par tour</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motor steps per millimetre</source>
+        <translation>Pas moteur par millimètre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motor control pin {pin} (-1: none)</source>
+        <translation>Broche de commande moteur {pin} (-1&#xa0;: aucune)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves back to 0 by a relative move: the board has no homing</source>
+        <translation>Revient à 0 par un mouvement relatif&#xa0;: la carte n&apos;a pas de prise d&apos;origine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no completion message: moves are estimated from speed and steps</source>
+        <translation>pas de message de fin&#xa0;: les mouvements sont estimés d&apos;après la vitesse et le nombre de pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the version and firmware name (is a Firmata board on this port?)</source>
+        <translation>la demande de version et de nom du firmware (une carte Firmata est-elle sur ce port&#xa0;?)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed (rpm)</source>
+        <translation>vitesse (rpm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steps per revolution</source>
+        <translation>pas par tour</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pin</source>
+        <translation>broche</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steps</source>
+        <translation>pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>capability response</source>
+        <translation>réponse des capacités</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>analog mapping</source>
+        <translation>correspondance analogique</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>version request</source>
+        <translation>demande de version</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>firmware name request</source>
+        <translation>demande du nom du firmware</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_LIBRARY_VERSION request</source>
+        <translation>demande STEPPER_LIBRARY_VERSION</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {value} refused: the stepper takes {low} to {high}</source>
+        <translation>{what}&#xa0;: {value} refusé, le moteur pas à pas accepte de {low} à {high}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the board answered: {error}</source>
+        <translation>la carte a répondu&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{distance:g} mm refused: the motor moves in steps of {step:g} mm ({per_mm:g} steps/mm)</source>
+        <translation>{distance:g} mm refusé&#xa0;: le moteur se déplace par pas de {step:g} mm ({per_mm:g} pas/mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the Firmata stepper is one axis (X): Y and Z must be 0</source>
+        <translation>le moteur pas à pas Firmata n&apos;a qu&apos;un axe (X)&#xa0;: Y et Z doivent valoir 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{count} pins refused: a stepper has 2 or 4 pins</source>
+        <translation>{count} broches refusées&#xa0;: un moteur pas à pas a 2 ou 4 broches</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Firmata has no message for {command}</source>
+        <translation>Firmata n&apos;a pas de message pour {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an empty Firmata message</source>
+        <translation>un message Firmata vide</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Firmata protocol {major}.{minor}</source>
+        <translation>protocole Firmata {major}.{minor}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>analog pin {pin}: {value}</source>
+        <translation>broche analogique {pin}&#xa0;: {value}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>digital port {port}: {bits:08b}</source>
+        <translation>port numérique {port}&#xa0;: {bits:08b}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>message {bytes}</source>
+        <translation>message {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SysEx {command:#04x}</source>
+        <translation>SysEx {command:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_CONFIGURE {steps} steps/rev, pins {pins}</source>
+        <translation>STEPPER_CONFIGURE {steps} pas/tour, broches {pins}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_STEP {rpm} rpm, {steps} steps forward</source>
+        <translation>STEPPER_STEP {rpm} rpm, {steps} pas en avant</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_STEP {rpm} rpm, {steps} steps reverse</source>
+        <translation>STEPPER_STEP {rpm} rpm, {steps} pas en arrière</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>framing</source>
+        <translation>trame</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>checksum</source>
+        <translation>somme de contrôle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown command</source>
+        <translation>commande inconnue</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bad arguments</source>
+        <translation>arguments invalides</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>queue full</source>
+        <translation>file pleine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>undocumented</source>
+        <translation>non documenté</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error {code} ({meaning}) for {command}</source>
+        <translation>erreur {code} ({meaning}) pour {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused: it must be above 0</source>
+        <translation>vitesse {speed:g} mm/s refusée&#xa0;: elle doit être supérieure à 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position reply holds {count} numbers, not 3</source>
+        <translation>la réponse de position contient {count} nombres, et non 3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the status reply holds {count} numbers, not 2</source>
+        <translation>la réponse d&apos;état contient {count} nombres, et non 2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>undocumented code {code}</source>
+        <translation>code {code} non documenté</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: the device answered error {code} ({meaning})</source>
+        <translation>{command}&#xa0;: l&apos;appareil a répondu par l&apos;erreur {code} ({meaning})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>moves are queued on the device; the position is read back while they run</source>
+        <translation>les mouvements sont mis en file sur l&apos;appareil&#xa0;; la position est relue pendant leur exécution</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The next queued frame&apos;s number (0: random)</source>
+        <translation>Numéro de la prochaine trame en file (0&#xa0;: aléatoire)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dwell {ms} ms refused: the field is an int16 (0 to 32767)</source>
+        <translation>temporisation de {ms} ms refusée&#xa0;: le champ est un int16 (0 à 32767)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a queued frame holds 1 to {most} queued instructions</source>
+        <translation>une trame en file contient de 1 à {most} instructions en file</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the laser link has no instruction for {command}</source>
+        <translation>la liaison laser n&apos;a pas d&apos;instruction pour {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>word {word:#04x}</source>
+        <translation>mot {word:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frame {number} ({words} ×{count})</source>
+        <translation>trame {number} ({words} ×{count})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frame {number} ({words})</source>
+        <translation>trame {number} ({words})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a field holds 1 to 255 values, not {count}</source>
+        <translation>un champ contient de 1 à 255 valeurs, et non {count}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{value!r} is not one ASCII character</source>
+        <translation>{value!r} n&apos;est pas un caractère ASCII unique</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{value} does not fit a float32</source>
+        <translation>{value} ne tient pas dans un float32</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{value} does not fit a {kind} ({low} to {high})</source>
+        <translation>{value} ne tient pas dans un {kind} ({low} à {high})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>command word {word:#04x} is outside 0x01..0x7F</source>
+        <translation>le mot de commande {word:#04x} est hors de 0x01..0x7F</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>byte {index}: {byte:#04x} where a command word was expected</source>
+        <translation>octet {index}&#xa0;: {byte:#04x} là où un mot de commande était attendu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>byte {index}: a {kind} field without its count</source>
+        <translation>octet {index}&#xa0;: un champ {kind} sans son nombre de valeurs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>byte {index}: {count} {kind} values run past the data</source>
+        <translation>octet {index}&#xa0;: {count} valeurs {kind} dépassent la fin des données</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Encoder ticks per millimetre</source>
+        <translation>Impulsions codeur par millimètre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves back to (0, 0, 0) with a Linear frame: the device has no homing</source>
+        <translation>Revient à (0, 0, 0) par une trame Linear&#xa0;: l&apos;appareil n&apos;a pas de prise d&apos;origine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write-only: positions are commanded, completion estimated from distance and speed</source>
+        <translation>écriture seule&#xa0;: les positions sont des consignes, la fin est estimée d&apos;après la distance et la vitesse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {axis}</source>
+        <translation>vitesse {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>centre {axis}</source>
+        <translation>centre {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>radius</source>
+        <translation>rayon</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>angular speed</source>
+        <translation>vitesse angulaire</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dwell</source>
+        <translation>temporisation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{field} {value:g} {unit} refused: a pi-frame field holds {low} to {high}</source>
+        <translation>{field}&#xa0;: {value:g} {unit} refusé, un champ pi-frame accepte de {low} à {high}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{field} {distance:g} mm refused: the device moves in ticks of {tick:g} mm ({per_mm:g} ticks/mm)</source>
+        <translation>{field}&#xa0;: {distance:g} mm refusé, l&apos;appareil se déplace par impulsions de {tick:g} mm ({per_mm:g} impulsions/mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{field} {distance:g} mm refused: {ticks} ticks do not fit 16 bits ({low:g} to {high:g} mm at {per_mm:g} ticks/mm)</source>
+        <translation>{field}&#xa0;: {distance:g} mm refusé, {ticks} impulsions ne tiennent pas sur 16 bits ({low:g} à {high:g} mm à {per_mm:g} impulsions/mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pi-frame has no frame for {command}</source>
+        <translation>pi-frame n&apos;a pas de trame pour {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a {length}-byte frame</source>
+        <translation>une trame de {length} octets</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Linear X={x} Y={y} Z={z} ticks at {sx}/{sy}/{sz} ticks/s</source>
+        <translation>Linear X={x} Y={y} Z={z} impulsions à {sx}/{sy}/{sz} impulsions/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Circular centre ({x}, {y}) radius {radius} ticks, {start:g}° to {end:g}° {turn} at {speed:g}°/s, Z to {z}</source>
+        <translation>Circular centre ({x}, {y}) rayon {radius} impulsions, de {start:g}° à {end:g}° {turn} à {speed:g}°/s, Z vers {z}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dwell {ms} ms</source>
+        <translation>Dwell {ms} ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>action {number}</source>
+        <translation>action {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move package confirmed</source>
+        <translation>paquet de mouvement confirmé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>action accomplished</source>
+        <translation>action accomplie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>package size mismatch</source>
+        <translation>taille de paquet incorrecte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid command type</source>
+        <translation>type de commande invalide</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid motion type</source>
+        <translation>type de mouvement invalide</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid direction for the X axis</source>
+        <translation>sens invalide pour l&apos;axe X</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid direction for the Y axis</source>
+        <translation>sens invalide pour l&apos;axe Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid set parameter ID</source>
+        <translation>ID de paramètre à écrire invalide</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>parse function error in the firmware</source>
+        <translation>erreur de la fonction d&apos;analyse du firmware</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid driving mechanism</source>
+        <translation>mécanisme d&apos;entraînement invalide</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an error code the documentation does not list</source>
+        <translation>un code d&apos;erreur absent de la documentation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{parameter} set</source>
+        <translation>{parameter} écrit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace.</source>
+        <translation>Écrit input_speed_steady_x et _y (paramètres 21 et 22). Cette révision du firmware cadence ses pas uniquement sur step_delay_instantaneous (15, 16)&#xa0;: les mouvements gardent donc leur allure.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted</source>
+        <translation>Visiomex n&apos;a pas de prise d&apos;origine dans cette révision&#xa0;: «&#xa0;Origine&#xa0;» revient à (0, 0) par un mouvement relatif depuis la position comptée par le panneau</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no read-back: the panel keeps what was last written</source>
+        <translation>pas de relecture&#xa0;: le panneau conserve la dernière valeur écrite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>positions are commanded, and confirmed by FA0001 when the move ends</source>
+        <translation>les positions sont des consignes, confirmées par FA0001 à la fin du mouvement</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a reply comes 1 s after a packet: the firmware waits for 1 s of silence</source>
+        <translation>une réponse arrive 1 s après un paquet&#xa0;: le firmware attend 1 s de silence</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>parameter {number} set</source>
+        <translation>paramètre {number} écrit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback code {code} is not documented</source>
+        <translation>le code de retour {code} n&apos;est pas documenté</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: the device answered {code} ({meaning}); this firmware revision runs the move anyway</source>
+        <translation>{command}&#xa0;: l&apos;appareil a répondu {code} ({meaning})&#xa0;; cette révision du firmware exécute quand même le mouvement</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: the device answered {code} ({meaning})</source>
+        <translation>{command}&#xa0;: l&apos;appareil a répondu {code} ({meaning})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: expected {wanted}, got {code}</source>
+        <translation>{command}&#xa0;: {wanted} attendu, reçu {code}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>18-character packets at 9600 baud, as the seed documents</source>
+        <translation>paquets de 18 caractères à 9600 bauds, comme documenté dans le seed</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the seed&apos;s packets; feedback lines start with &apos;&gt;&apos;</source>
+        <translation>les paquets du seed&#xa0;; les lignes de retour commencent par &apos;&gt;&apos;</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>12-character packets at 115200 baud, moves in mm, D goes home</source>
+        <translation>paquets de 12 caractères à 115200 bauds, mouvements en mm, D ramène à l&apos;origine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Visiomex moves are relative: the panel sends the distance to go</source>
+        <translation>les mouvements Visiomex sont relatifs&#xa0;: le panneau envoie la distance à parcourir</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the speed is parameters 21 and 22: it is sent as two sets</source>
+        <translation>la vitesse correspond aux paramètres 21 et 22&#xa0;: elle est envoyée en deux écritures</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Visiomex has no packet for {command}</source>
+        <translation>Visiomex n&apos;a pas de paquet pour {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move kind {kind!r} refused: Visiomex moves are {kinds}</source>
+        <translation>type de mouvement {kind!r} refusé&#xa0;: les mouvements Visiomex sont {kinds}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z {distance:g} mm refused: the Visiomex controller has X and Y only</source>
+        <translation>Z {distance:g} mm refusé&#xa0;: le contrôleur Visiomex n&apos;a que X et Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} {unit} refused: this device moves in 1 µm</source>
+        <translation>{axis} {value:g} {unit} refusé&#xa0;: cet appareil se déplace par incréments de 1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} {unit} refused: this device moves in whole {unit}</source>
+        <translation>{axis} {value:g} {unit} refusé&#xa0;: cet appareil se déplace par {unit} entiers</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} {unit} refused: one move goes at most {most} {unit} per axis ({digits} digits)</source>
+        <translation>{axis} {value:g} {unit} refusé&#xa0;: un mouvement va au plus à {most} {unit} par axe ({digits} chiffres)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet refused: Visiomex takes ASCII characters only</source>
+        <translation>paquet refusé&#xa0;: Visiomex n&apos;accepte que des caractères ASCII</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet refused: it is empty</source>
+        <translation>paquet refusé&#xa0;: il est vide</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet refused: {length} characters, a Visiomex packet has {most} (a line ending counts too)</source>
+        <translation>paquet refusé&#xa0;: {length} caractères, un paquet Visiomex en a {most} (une fin de ligne compte aussi)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>non-ASCII bytes in a Visiomex line: {bytes}</source>
+        <translation>octets non ASCII dans une ligne Visiomex&#xa0;: {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>that packet gets no reply: send it from the console instead</source>
+        <translation>ce paquet ne reçoit pas de réponse&#xa0;: l&apos;envoyer plutôt depuis la console</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet {packet}</source>
+        <translation>paquet {packet}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set {parameter} = {value}</source>
+        <translation>écriture {parameter} = {value}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move linear X {x} Y {y}</source>
+        <translation>mouvement linéaire X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move rotational X {x} Y {y}</source>
+        <translation>mouvement rotatif X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move steps X {x} Y {y}</source>
+        <translation>mouvement en pas X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move {kind} X {x} Y {y}</source>
+        <translation>mouvement {kind} X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet {packet!r}</source>
+        <translation>paquet {packet!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{packet} (set {parameter})</source>
+        <translation>{packet} (écriture de {parameter})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware forces driving_mechanism to 1 after every set</source>
+        <translation>le firmware impose driving_mechanism à 1 après chaque écriture</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision reads {parameter} only at boot (and keeps pulley values divided by 4): moves do not change until the firmware is fixed</source>
+        <translation>cette révision du firmware ne lit {parameter} qu&apos;au démarrage (et garde les valeurs de poulie divisées par 4)&#xa0;: les mouvements ne changent pas tant que le firmware n&apos;est pas corrigé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Note</source>
+        <translation>Remarque</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision moves by the cycle it computed at boot (10 mm lead screw), whatever 01-04 and 27 say</source>
+        <translation>cette révision du firmware se déplace selon le cycle calculé au démarrage (vis au pas de 10 mm), quelles que soient les valeurs de 01-04 et 27</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis}: the cycle ({cycle:g} mm) and the steps per turn ({steps:g}) must both be above 0</source>
+        <translation>{axis}&#xa0;: le cycle ({cycle:g} mm) et les pas par tour ({steps:g}) doivent tous deux être supérieurs à 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{times} (1 s silence included)</source>
+        <translation>{times} (1 s de silence inclus)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Microsteps per turn</source>
+        <translation>Micropas par tour</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Per step</source>
+        <translation>Par pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Steps per mm</source>
+        <translation>Pas par mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A 10 mm move</source>
+        <translation>Un mouvement de 10 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lead-screw pitch of the {axis} axis (mm per turn)</source>
+        <translation>Pas de vis de l&apos;axe {axis} (mm par tour)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Belt pulley diameter of the {axis} axis; sent as mm×10 (38.2 mm -&gt; 000382)</source>
+        <translation>Diamètre de la poulie de courroie de l&apos;axe {axis}&#xa0;; envoyé en mm×10 (38.2 mm -&gt; 000382)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Full steps per motor turn, {axis} axis</source>
+        <translation>Pas entiers par tour moteur, axe {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Microstepping factor of the {axis} driver</source>
+        <translation>Facteur de micropas du driver {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Highest speed allowed on the {axis} axis</source>
+        <translation>Vitesse maximale autorisée sur l&apos;axe {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step delay at the steady speed, {axis} axis (computed by the firmware)</source>
+        <translation>Délai entre pas à vitesse stable, axe {axis} (calculé par le firmware)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step delay at the lowest speed, {axis} axis</source>
+        <translation>Délai entre pas à la vitesse minimale, axe {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current step delay, {axis} axis (computed by the firmware; this revision times every step from it: one step is twice this delay)</source>
+        <translation>Délai entre pas actuel, axe {axis} (calculé par le firmware&#xa0;; cette révision cadence chaque pas sur lui&#xa0;: un pas dure deux fois ce délai)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mean step delay while accelerating, {axis} axis (computed by the firmware)</source>
+        <translation>Délai moyen entre pas pendant l&apos;accélération, axe {axis} (calculé par le firmware)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Steps spent accelerating, {axis} axis (computed by the firmware)</source>
+        <translation>Pas effectués en accélération, axe {axis} (calculé par le firmware)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Requested steady speed of the {axis} axis</source>
+        <translation>Vitesse stable demandée pour l&apos;axe {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Requested acceleration of the {axis} axis</source>
+        <translation>Accélération demandée pour l&apos;axe {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Duration of the last move, {axis} axis (computed by the firmware)</source>
+        <translation>Durée du dernier mouvement, axe {axis} (calculée par le firmware)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 belt pulley, 1 lead screw (this firmware forces 1 after every set)</source>
+        <translation>0 poulie et courroie, 1 vis (ce firmware impose 1 après chaque écriture)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>protocol {name!r} is not implemented yet</source>
+        <translation>le protocole {name!r} n&apos;est pas encore implémenté</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown protocol {name!r} (known: {known})</source>
+        <translation>protocole inconnu {name!r} (connus&#xa0;: {known})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>capture with spy&apos;s default hexdump format: spy://PORT?file=FILE, without raw</source>
+        <translation>capturer au format hexdump par défaut de spy&#xa0;: spy://PORT?file=FILE, sans raw</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>both directions run together, nothing tells TX from RX</source>
+        <translation>les deux sens sont mêlés, rien ne distingue TX de RX</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: spy&apos;s raw format is refused ({why}); {hint}</source>
+        <translation>{source} ligne {number}&#xa0;: le format raw de spy est refusé ({why})&#xa0;; {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: not a pyserial spy:// hexdump line: {line!r}</source>
+        <translation>{source} ligne {number}&#xa0;: pas une ligne hexdump pyserial spy://&#xa0;: {line!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: bytes at offset {offset:#06x} of a {direction} call whose earlier lines are missing</source>
+        <translation>{source} ligne {number}&#xa0;: octets à l&apos;offset {offset:#06x} d&apos;un appel {direction} dont les lignes précédentes manquent</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no traffic in it, only control-line events</source>
+        <translation>{source}&#xa0;: aucun trafic, seulement des événements de lignes de contrôle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no traffic in it (nor spy&apos;s raw format); {hint}</source>
+        <translation>{source}&#xa0;: aucun trafic (ni format raw de spy)&#xa0;; {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)</source>
+        <translation>{error} (après {rounds} séries de tentatives&#xa0;; {acknowledged} instructions sur {total} avaient été acquittées auparavant)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{pattern!r} is not a regular expression: {error}</source>
+        <translation>{pattern!r} n&apos;est pas une expression régulière&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{pattern!r} is not valid text</source>
+        <translation>{pattern!r} n&apos;est pas un texte valide</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{pattern!r}… is too large a regular expression: {error}</source>
+        <translation>{pattern!r}… est une expression régulière trop grande&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} is not open</source>
+        <translation>{url} n&apos;est pas ouvert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to {url} failed: {error}</source>
+        <translation>échec de l&apos;écriture sur {url}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to {url}: only {written} of {total} bytes sent</source>
+        <translation>écriture sur {url}&#xa0;: seuls {written} octets sur {total} ont été envoyés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reading from {url} failed: {error}</source>
+        <translation>échec de la lecture sur {url}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name!r} is not a line the host drives (DTR or RTS)</source>
+        <translation>{name!r} n&apos;est pas une ligne pilotée par l&apos;hôte (DTR ou RTS)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} cannot be set</source>
+        <translation>impossible de modifier {line}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>setting {line} on {url} failed: {error}</source>
+        <translation>échec de la modification de {line} sur {url}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a break lasts more than 0 and at most {most:g} s</source>
+        <translation>un break dure plus de 0 et au plus {most:g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no break can be sent</source>
+        <translation>impossible d&apos;envoyer un break</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sending a break on {url} failed: {error}</source>
+        <translation>échec de l&apos;envoi d&apos;un break sur {url}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>break {ms:.0f} ms</source>
+        <translation>break {ms:.0f} ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reading {line} on {url} failed: {error}</source>
+        <translation>échec de la lecture de {line} sur {url}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reading the control lines of {url} failed: {error}</source>
+        <translation>échec de la lecture des lignes de contrôle de {url}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a TCP socket</source>
+        <translation>un socket TCP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} has no modem control lines ({why}): {what}</source>
+        <translation>{url} n&apos;a pas de lignes de contrôle modem ({why})&#xa0;: {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a pseudo-terminal</source>
+        <translation>un pseudo-terminal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its driver has no modem-line control</source>
+        <translation>son pilote ne gère pas les lignes modem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no port given</source>
+        <translation>aucun port indiqué</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot open {url}: {error}</source>
+        <translation>impossible d&apos;ouvrir {url}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits need a range for each of x, y and z</source>
+        <translation>les limites de course exigent une plage pour chacun de x, y et z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits for {axis} ({low:g} to {high:g} mm) are not a range: the minimum must be at most the maximum</source>
+        <translation>les limites de course de {axis} ({low:g} à {high:g} mm) ne forment pas une plage&#xa0;: le minimum doit être inférieur ou égal au maximum</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the move</source>
+        <translation>le mouvement</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} mm is outside {low:g}..{high:g} mm</source>
+        <translation>{axis} {value:g} mm est hors de {low:g}..{high:g} mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} refused: {details} (travel limits)</source>
+        <translation>{what} refusé&#xa0;: {details} (limites de course)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} clamped to the travel limits: {details}; going to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>{what} borné aux limites de course&#xa0;: {details}&#xa0;; déplacement vers ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits {text!r}: write three ranges in mm, X0:X1,Y0:Y1,Z0:Z1 (e.g. -100:100,-50:50,0:20), or none</source>
+        <translation>limites de course {text!r}&#xa0;: indiquer trois plages en mm, X0:X1,Y0:Y1,Z0:Z1 (par ex. -100:100,-50:50,0:20), ou none</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits for {axis}: {part!r} is not MIN:MAX in mm (e.g. -100:100)</source>
+        <translation>limites de course de {axis}&#xa0;: {part!r} n&apos;est pas de la forme MIN:MAX en mm (par ex. -100:100)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} {value!r} is not a finite number</source>
+        <translation>{name} {value!r} n&apos;est pas un nombre fini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} {value:g} mm refused: the device works to {resolution:g} mm (the nearest it can do is {nearest} mm)</source>
+        <translation>{name} {value:g} mm refusé&#xa0;: l&apos;appareil a une résolution de {resolution:g} mm (la valeur possible la plus proche est {nearest} mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{earlier}; {later}</source>
+        <translation>{earlier}&#xa0;; {later}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected a sim:// URL, got {url!r}</source>
+        <translation>URL sim:// attendue, reçu {url!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown sim:// option {key!r}</source>
+        <translation>option sim:// inconnue {key!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>port must be configured before it can be used</source>
+        <translation>le port doit être configuré avant de pouvoir être utilisé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>port already open</source>
+        <translation>port déjà ouvert</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot open {port}: {error}</source>
+        <translation>impossible d&apos;ouvrir {port}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no axis {axis!r}: x, y or z</source>
+        <translation>pas d&apos;axe {axis!r}&#xa0;: x, y ou z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero at home (work = machine)</source>
+        <translation>zéro pièce à l&apos;origine (pièce = machine)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero at ({x:g}, {y:g}, {z:g}) mm machine</source>
+        <translation>zéro pièce à ({x:g}, {y:g}, {z:g}) mm machine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero {text!r} is not three numbers x,y,z</source>
+        <translation>le zéro pièce {text!r} n&apos;est pas formé de trois nombres x,y,z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero {text!r} is not three finite numbers x,y,z</source>
+        <translation>le zéro pièce {text!r} n&apos;est pas formé de trois nombres finis x,y,z</translation>
     </message>
 </context>
 </TS>

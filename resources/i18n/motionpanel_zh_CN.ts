@@ -67,22 +67,22 @@
 <context>
     <name>ArcEntry</name>
     <message>
-        <location filename="../../widgets/arc_entry.py" line="+126"/>
+        <location filename="../../widgets/arc_entry.py" line="+273"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
         <translation>圆弧圆心的 X 坐标，单位 mm，从原点起算</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Y of the arc&apos;s centre, in mm from home</source>
         <translation>圆弧圆心的 Y 坐标，单位 mm，从原点起算</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>Radius of the arc, in mm (more than 0)</source>
         <translation>圆弧半径，单位 mm（大于 0）</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-125"/>
         <source>Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above</source>
         <translation>起点角度，0 至 360°，俯视时自 +X 方向逆时针计</translation>
     </message>
@@ -94,14 +94,14 @@ the same as the start angle: a full circle</source>
 与起点角度相同：整圆</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+118"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
         <translation>圆弧终点处的 Z，单位 mm；Z 沿圆弧从当前 Z 匀速变化
 （与当前 Z 不同时即为螺旋线）</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-94"/>
         <source>Centre X:</source>
         <translation>圆心 X：</translation>
     </message>
@@ -131,7 +131,7 @@ the same as the start angle: a full circle</source>
         <translation>终点 Z：</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>CW</source>
         <translation>顺时针</translation>
     </message>
@@ -167,22 +167,59 @@ the same as the start angle: a full circle</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+130"/>
+        <location line="+182"/>
         <source>Move along the arc, from its start point to its end point</source>
         <translation>沿圆弧从起点移动到终点</translation>
     </message>
     <message>
-        <location line="-122"/>
+        <location line="-174"/>
         <source>Why the arc cannot run</source>
         <translation>圆弧无法执行的原因</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+36"/>
+        <source>X of the arc&apos;s centre, in inches from home</source>
+        <translation>圆弧圆心的 X 坐标，单位为英寸，从原点起算</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y of the arc&apos;s centre, in inches from home</source>
+        <translation>圆弧圆心的 Y 坐标，单位为英寸，从原点起算</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Radius of the arc, in inches (more than 0)</source>
+        <translation>圆弧半径，单位为英寸（大于 0）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Z at the end of the arc, in inches; Z moves evenly from the current Z along the arc
+(a helix when it differs)</source>
+        <translation>圆弧终点处的 Z，单位为英寸；Z 沿圆弧从当前 Z 匀速变化
+（与当前 Z 不同时即为螺旋线）</translation>
+    </message>
+    <message>
+        <location line="+142"/>
+        <source>The radius must be more than 0 in.</source>
+        <translation>半径必须大于 0 in。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>The radius must be more than 0 mm.</source>
         <translation>半径必须大于 0 mm。</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
+        <source>%1 %2 to %3 in (travel %4 to %5 in)</source>
+        <translation>%1 %2 至 %3 in（行程 %4 至 %5 in）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 %2 in (travel %3 to %4 in)</source>
+        <translation>%1 %2 in（行程 %3 至 %4 in）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 %2 to %3 mm (travel %4 to %5 mm)</source>
         <translation>%1 %2 至 %3 mm（行程 %4 至 %5 mm）</translation>
     </message>
@@ -192,7 +229,7 @@ the same as the start angle: a full circle</source>
         <translation>%1 %2 mm（行程 %3 至 %4 mm）</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+18"/>
         <source>The arc leaves the travel limits: %1.</source>
         <translation>圆弧超出行程限位：%1。</translation>
     </message>
@@ -200,7 +237,7 @@ the same as the start angle: a full circle</source>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/bridge_session.py" line="+82"/>
+        <location filename="../../app/bridge_session.py" line="+83"/>
         <source>the bridge failed: %1</source>
         <translation>桥接失败：%1</translation>
     </message>
@@ -464,7 +501,7 @@ the same as the start angle: a full circle</source>
 <context>
     <name>CoordinateEntry</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="+33"/>
+        <location filename="../../widgets/coordinate_entry.py" line="+35"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
         <translation>将当前位置设为新的原点 (0, 0, 0)？
@@ -476,7 +513,7 @@ All coordinates will be measured from here from now on.</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+205"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
         <translation>%1：</translation>
@@ -487,22 +524,22 @@ All coordinates will be measured from here from now on.</source>
         <translation>绝对</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+72"/>
         <source>Go to the typed coordinates (mm from home)</source>
         <translation>移动到输入的坐标（从原点起算，单位 mm）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-70"/>
         <source>Relative</source>
         <translation>相对</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+71"/>
         <source>Move by the typed distances (mm) from where the stage is</source>
         <translation>从平台当前位置按输入的距离（mm）移动</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-62"/>
         <source>Machine</source>
         <translation>机床</translation>
     </message>
@@ -512,12 +549,12 @@ All coordinates will be measured from here from now on.</source>
         <translation>工件</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+63"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
         <translation>输入坐标所用的坐标系：机床（从设备原点起算，单位 mm）或工件（从工件零点起算，单位 mm）；发送给设备的始终是机床坐标</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-58"/>
         <source>Go</source>
         <translation>移动</translation>
     </message>
@@ -558,12 +595,12 @@ All coordinates will be measured from here from now on.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+127"/>
+        <location line="+167"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-167"/>
         <source>Stop the stage now</source>
         <translation>立即停止平台</translation>
     </message>
@@ -573,12 +610,42 @@ All coordinates will be measured from here from now on.</source>
         <translation>立即停止平台（Esc）</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+26"/>
+        <source>Go to the typed coordinates (inches from home)</source>
+        <translation>移动到输入的坐标（从原点起算，单位为英寸）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move by the typed distances (inches) from where the stage is</source>
+        <translation>从平台当前位置按输入的距离（英寸）移动</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Which frame the typed coordinates are in: Machine (inches from the device&apos;s home) or Work (inches from the work zero); the device is always sent machine coordinates, in mm</source>
+        <translation>输入坐标所用的坐标系：机床（从设备原点起算，单位为英寸）或工件（从工件零点起算，单位为英寸）；发送给设备的始终是机床坐标，单位 mm</translation>
+    </message>
+    <message>
+        <location line="+137"/>
         <source>Drop queued</source>
         <translation>清空队列</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+21"/>
+        <source>%1 distance to move, %2 to %3 in (%4)</source>
+        <translation>%1 移动距离，%2 至 %3 in（%4）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 target coordinate, %2 to %3 in (%4)</source>
+        <translation>%1 目标坐标，%2 至 %3 in（%4）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 target coordinate in the work frame, %2 to %3 in (%4)</source>
+        <translation>%1 工件坐标系中的目标坐标，%2 至 %3 in（%4）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 distance to move, %2 to %3 mm (%4)</source>
         <translation>%1 移动距离，%2 至 %3 mm（%4）</translation>
     </message>
@@ -588,12 +655,12 @@ All coordinates will be measured from here from now on.</source>
         <translation>%1 目标坐标，%2 至 %3 mm（%4）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>%1 target coordinate in the work frame, %2 to %3 mm (%4)</source>
         <translation>%1 工件坐标系中的目标坐标，%2 至 %3 mm（%4）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>travel limits</source>
         <translation>行程限位</translation>
     </message>
@@ -634,7 +701,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/device_docks.py" line="+135"/>
+        <location filename="../../app/device_docks.py" line="+136"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>各轴 %1 至 %2 mm（16 位计数）</translation>
     </message>
@@ -910,7 +977,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+30"/>
+        <location filename="../../widgets/jog_panel.py" line="+33"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift ×10</translation>
     </message>
@@ -933,16 +1000,27 @@ All coordinates will be measured from here from now on.</source>
     </message>
     <message>
         <location line="+7"/>
+        <location line="+13"/>
         <source>Jog by %1 per press</source>
         <translation>每按一次点动 %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="-5"/>
+        <source>%1 in</source>
+        <translation>%1 in</translation>
+    </message>
+    <message>
+        <location line="+126"/>
+        <source>Any step size (%1 to %2 in)</source>
+        <translation>任意步长（%1 至 %2 in）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Any step size (0.001 to 1000 mm)</source>
         <translation>任意步长（0.001 至 1000 mm）</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="-83"/>
         <source>keys active</source>
         <translation>按键已启用</translation>
     </message>
@@ -965,7 +1043,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 按住按键可持续步进；按住 Shift 则步长放大十倍。</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+104"/>
+        <source>Jog %1 by %2 in (Shift: %3 in)</source>
+        <translation>%1 轴点动 %2 in（Shift：%3 in）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Jog %1 by %2 mm (Shift: %3 mm)</source>
         <translation>%1 轴点动 %2 mm（Shift：%3 mm）</translation>
     </message>
@@ -1046,7 +1129,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/log_viewer.py" line="+42"/>
+        <location filename="../../app/log_viewer.py" line="+43"/>
         <source>(undecoded)</source>
         <translation>（未解码）</translation>
     </message>
@@ -1109,7 +1192,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>MacroDock</name>
     <message>
-        <location filename="../../app/macro_dock.py" line="+28"/>
+        <location filename="../../app/macro_dock.py" line="+29"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
         <translation>Motion Panel 宏 (*.json);;所有文件 (*)</translation>
     </message>
@@ -1301,7 +1384,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+102"/>
+        <location filename="../../app/main_window.py" line="+105"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 没有停止命令：此操作会丢弃尚未发送的命令；设备上已在进行的移动会继续完成（Esc）</translation>
     </message>
@@ -1321,7 +1404,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+107"/>
         <source>no session log: %1</source>
         <translation>无会话日志：%1</translation>
     </message>
@@ -1331,7 +1414,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>会话日志：%1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+9"/>
+        <source>no session log from now on</source>
+        <translation>此后不再记录会话日志</translation>
+    </message>
+    <message>
+        <location line="+43"/>
         <source>Connection</source>
         <translation>连接</translation>
     </message>
@@ -1371,7 +1459,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>通信时间线</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+26"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
@@ -1417,12 +1505,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+351"/>
+        <location line="+357"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location line="-346"/>
+        <location line="-352"/>
         <source>&amp;Travel limits…</source>
         <translation>行程限位(&amp;T)…</translation>
     </message>
@@ -1492,7 +1580,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已断开连接</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+36"/>
         <source>connected to %1 on %2</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
@@ -1512,7 +1600,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>该设备</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Go to the home position (0, 0, 0)</source>
         <translation>移动到原点位置 (0, 0, 0)</translation>
     </message>
@@ -1532,7 +1620,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>清空命令队列(&amp;D)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+44"/>
         <source>port %1 appeared</source>
         <translation>端口 %1 已出现</translation>
     </message>
@@ -1597,7 +1685,8 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>设备报告错误：%1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-393"/>
+        <location line="+397"/>
         <source>device: %1</source>
         <translation>设备：%1</translation>
     </message>
@@ -1615,12 +1704,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/parameter_dock.py" line="+30"/>
+        <location filename="../../app/parameter_dock.py" line="+33"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>设备当前值为 %1：每次设置后固件都会强制使用该值</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+40"/>
         <source>Parameters</source>
         <translation>参数</translation>
     </message>
@@ -1645,7 +1734,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>未发送</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <source>the device did not answer</source>
         <translation>设备无应答</translation>
     </message>
@@ -2146,29 +2235,36 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>最后已知位置：未连接</translation>
     </message>
     <message>
-        <location line="+19"/>
         <source>Stage position in mm: from the device&apos;s home, and from the work zero</source>
-        <translation>平台位置（mm）：相对设备原点，以及相对工件零点</translation>
+        <translation type="vanished">平台位置（mm）：相对设备原点，以及相对工件零点</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+37"/>
         <source>Machine</source>
         <translation>机床</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Millimetres from the device&apos;s home (its origin)</source>
-        <translation>相对设备原点（其坐标原点）的毫米数</translation>
+        <translation type="vanished">相对设备原点（其坐标原点）的毫米数</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Work</source>
         <translation>工件</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Millimetres from the work zero the panel keeps (the device is not told)</source>
-        <translation>相对面板所记录工件零点的毫米数（不通知设备）</translation>
+        <translation type="vanished">相对面板所记录工件零点的毫米数（不通知设备）</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>Distances from the device&apos;s home (its origin)</source>
+        <translation>相对设备原点的距离（其坐标原点）</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Distances from the work zero the panel keeps (the device is not told)</source>
+        <translation>相对面板保存的工件零点的距离（不告知设备）</translation>
     </message>
     <message>
         <location line="+16"/>
@@ -2201,7 +2297,22 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>将工件零点恢复到设备原点（工件坐标 = 机床坐标）</translation>
     </message>
     <message>
-        <location line="+188"/>
+        <location line="+197"/>
+        <source>millimetres</source>
+        <translation>毫米</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>inches</source>
+        <translation>英寸</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stage position in %1: from the device&apos;s home, and from the work zero</source>
+        <translation>平台位置（%1）：相对设备原点，以及相对工件零点</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>This device has no %1 axis</source>
         <translation>此设备没有 %1 轴</translation>
     </message>
@@ -2212,13 +2323,21 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     </message>
     <message>
         <location line="+6"/>
-        <source>%1 position in mm from the device&apos;s home</source>
-        <translation>%1 位置，相对设备原点，单位 mm</translation>
+        <source>%1 position in %2 from the device&apos;s home</source>
+        <translation>%1 位置，相对设备原点，单位为%2</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>%1 position in %2 from the work zero</source>
+        <translation>%1 位置，相对工件零点，单位为%2</translation>
+    </message>
+    <message>
+        <source>%1 position in mm from the device&apos;s home</source>
+        <translation type="vanished">%1 位置，相对设备原点，单位 mm</translation>
+    </message>
+    <message>
         <source>%1 position in mm from the work zero</source>
-        <translation>%1 位置，相对工件零点，单位 mm</translation>
+        <translation type="vanished">%1 位置，相对工件零点，单位 mm</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2238,7 +2357,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+85"/>
+        <location filename="../../widgets/position_view_2d.py" line="+86"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>俯视平台：轨迹、当前位置（圆点；估算时为空心）、目标（+）、行程限位（虚线）</translation>
     </message>
@@ -2278,7 +2397,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>位置 (mm)</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>Clear trail</source>
         <translation>清除轨迹</translation>
     </message>
@@ -2415,7 +2534,7 @@ The 2D view shows the same positions.</source>
         <translation>按下当前焦点按钮</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+51"/>
         <source>Poll while moving</source>
         <translation>移动时轮询</translation>
     </message>
@@ -2698,7 +2817,7 @@ The 2D view shows the same positions.</source>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/traffic_console.py" line="+72"/>
+        <location filename="../../app/traffic_console.py" line="+76"/>
         <source>text</source>
         <translation>文本</translation>
     </message>
@@ -2748,7 +2867,7 @@ The 2D view shows the same positions.</source>
         <translation>导出通信记录</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+97"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
         <translation>字节显示方式：文本（\r \n \xNN 转义）、十六进制（47 45 54）或混合（文本，其余字节显示为 &lt;0A&gt;）</translation>
     </message>
@@ -2878,12 +2997,21 @@ The 2D view shows the same positions.</source>
         <translation>TX（蓝色）：发送到设备；RX（绿色）：已接收；灰色：说明及设备自身输出的文本；红色：错误。双击某行可跳转到其请求、应答或首次出现处。</translation>
     </message>
     <message>
-        <location line="+144"/>
-        <source>%1 lines reached the console&apos;s limit and were cleared; the session log keeps them</source>
-        <translation>%1 行因达到控制台上限而被清除；会话日志中仍保留这些行</translation>
+        <location line="+164"/>
+        <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
+        <translation>控制台只保留最新的 %1 行：新行到来时，较旧的行会从控制台中移除；会话日志保留所有行</translation>
     </message>
     <message>
-        <location line="+260"/>
+        <location line="+198"/>
+        <source>line %1 is no longer in the console (its line limit dropped it); the session log has it</source>
+        <translation>第 %1 行已不在控制台中（因行数上限被移除）；会话日志中仍有该行</translation>
+    </message>
+    <message>
+        <source>%1 lines reached the console&apos;s limit and were cleared; the session log keeps them</source>
+        <translation type="vanished">%1 行因达到控制台上限而被清除；会话日志中仍保留这些行</translation>
+    </message>
+    <message>
+        <location line="+65"/>
         <source>%1 lines</source>
         <translation>%1 行</translation>
     </message>
@@ -2894,6 +3022,11 @@ The 2D view shows the same positions.</source>
     </message>
     <message>
         <location line="+3"/>
+        <source>%1 older in the session log</source>
+        <translation>会话日志中另有较早的 %1 行</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 poll hidden</source>
         <translation>隐藏轮询 %1</translation>
     </message>
@@ -2908,7 +3041,12 @@ The 2D view shows the same positions.</source>
         <translation>匹配 %1</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+5"/>
+        <source>The console keeps the newest %1 lines (Settings): older lines are dropped from it, the session log on disk keeps every line</source>
+        <translation>控制台只保留最新的 %1 行（见“设置”）：较旧的行会从中移除，磁盘上的会话日志保留所有行</translation>
+    </message>
+    <message>
+        <location line="+89"/>
         <source>export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
@@ -3011,7 +3149,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>SettingsDialog</name>
     <message>
-        <location filename="../../widgets/settings_dialog.py" line="+87"/>
+        <location filename="../../widgets/settings_dialog.py" line="+77"/>
         <source>Settings</source>
         <translation>设置</translation>
     </message>
@@ -3111,9 +3249,13 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>保留所有行</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines. The session log keeps every byte either way.</source>
-        <translation>控制台最多保留的行数：0 表示保留所有行（磁盘上使用缓存文件，内存中每行约 33 字节），否则为 %1 至 %2 行。无论如何，会话日志都会保存每个字节。</translation>
+        <translation type="vanished">控制台最多保留的行数：0 表示保留所有行（磁盘上使用缓存文件，内存中每行约 33 字节），否则为 %1 至 %2 行。无论如何，会话日志都会保存每个字节。</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The most lines the console keeps: 0 keeps every line (a spool file on disk and about 33 bytes a line in memory), else %1 to %2 lines, the oldest dropped as new ones come. The session log keeps every byte either way.</source>
+        <translation>控制台最多保留的行数：0 表示保留所有行（磁盘上使用缓存文件，内存中每行约 33 字节），否则为 %1 至 %2 行，新行到来时移除最旧的行。无论如何，会话日志都会保存每个字节。</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -3453,7 +3595,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+35"/>
+        <location filename="../../widgets/speed_control.py" line="+39"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
@@ -3463,7 +3605,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>后续移动的速度</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
@@ -3479,17 +3621,32 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>设备报告的速度（可能经过取整）</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+84"/>
+        <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
+        <translation>速度，%1 至 %2 in/s；按 Enter 或“应用”发送</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Drag and release to send (%1 to %2 in/s)</source>
+        <translation>拖动后松开即发送（%1 至 %2 in/s）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Speed, %1 to %2 mm/s; press Enter or Apply to send</source>
         <translation>速度，%1 至 %2 mm/s；按 Enter 或“应用”发送</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Drag and release to send (%1 to %2 mm/s)</source>
         <translation>拖动后松开即发送（%1 至 %2 mm/s）</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
+        <source>device: %1 in/s</source>
+        <translation>设备：%1 in/s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>device: %1 mm/s</source>
         <translation>设备：%1 mm/s</translation>
     </message>
@@ -3508,12 +3665,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location line="-38"/>
         <source>Opening the port and asking the device who it is</source>
         <translation>正在打开端口并查询设备身份</translation>
     </message>
@@ -3582,6 +3739,34 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
 </context>
 <context>
+    <name>TrafficFormat</name>
+    <message>
+        <location filename="../../widgets/traffic_format.py" line="+38"/>
+        <source>\x needs two hex digits at column %1: %2</source>
+        <translation>第 %1 列的 \x 需要两位十六进制数字：%2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>a lone backslash ends the line: write \\ for a backslash</source>
+        <translation>行尾有单独的反斜杠：反斜杠本身请写作 \\</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>unknown escape \%1 at column %2 (use \r \n \t \0 \\ \xNN)</source>
+        <translation>第 %2 列有未知的转义 \%1（可用 \r \n \t \0 \\ \xNN）</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>not hex: %1</source>
+        <translation>不是十六进制：%1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>odd number of hex digits in %1: write 0%2 or pairs</source>
+        <translation>%1 中的十六进制数字个数为奇数：请写作 0%2 或两位一组</translation>
+    </message>
+</context>
+<context>
     <name>TrafficModel</name>
     <message>
         <location filename="../../app/traffic_table.py" line="-19"/>
@@ -3614,7 +3799,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>应答</translation>
     </message>
     <message>
-        <location line="+249"/>
+        <location line="+265"/>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>
@@ -3742,6 +3927,21 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
 </context>
 <context>
+    <name>UnitSpinBox</name>
+    <message>
+        <location filename="../../widgets/coordinate_entry.py" line="-434"/>
+        <source>in/s</source>
+        <comment>inches per second</comment>
+        <translation>in/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>in</source>
+        <comment>inches</comment>
+        <translation>in</translation>
+    </message>
+</context>
+<context>
     <name>ValueDelegate</name>
     <message>
         <location filename="../../widgets/parameter_table.py" line="-95"/>
@@ -3772,7 +3972,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>宏</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+31"/>
         <source>&amp;Settings…</source>
         <translation>设置(&amp;S)…</translation>
     </message>
@@ -3797,7 +3997,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>关于 Motion Panel(&amp;A)</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+55"/>
         <source>Jog X - / +</source>
         <translation>X 轴点动 - / +</translation>
     </message>
@@ -3842,30 +4042,32 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>，%1/%2 步长</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+58"/>
+        <source>settings saved; the language from the next start</source>
+        <translation>设置已保存；语言将在下次启动时生效</translation>
+    </message>
+    <message>
         <source>the session log from the next start</source>
-        <translation>会话日志设置将在下次启动时生效</translation>
+        <translation type="vanished">会话日志设置将在下次启动时生效</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>the language from the next start</source>
-        <translation>语言将在下次启动时生效</translation>
+        <translation type="vanished">语言将在下次启动时生效</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>settings saved</source>
         <translation>设置已保存</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>settings saved; %1</source>
-        <translation>设置已保存；%1</translation>
+        <translation type="vanished">设置已保存；%1</translation>
     </message>
 </context>
 <context>
     <name>WorkFrame</name>
     <message>
-        <location filename="../../app/work_frame.py" line="+58"/>
+        <location filename="../../app/work_frame.py" line="+59"/>
         <source>work coordinates: %1</source>
         <translation>工件坐标：%1</translation>
     </message>
@@ -3875,9 +4077,13 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>未设置工件零点：位置未知</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
+        <source>work zero set at %1 %2 (machine)</source>
+        <translation>工件零点已设于 %1 %2（机床坐标）</translation>
+    </message>
+    <message>
         <source>work zero set at %1 mm (machine)</source>
-        <translation>工件零点已设于 %1 mm（机床坐标）</translation>
+        <translation type="vanished">工件零点已设于 %1 mm（机床坐标）</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -3888,6 +4094,2024 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+7"/>
         <source>work zero kept in place: %1</source>
         <translation>工件零点保持不变：%1</translation>
+    </message>
+</context>
+<context>
+    <name>messages</name>
+    <message>
+        <location filename="message_templates.py" line="+6"/>
+        <source>usage: {usage} (got {count} arguments)</source>
+        <translation>用法：{usage}（收到 {count} 个参数）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>usage: {usage}</source>
+        <translation>用法：{usage}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>usage: {command} {axes} ({protocol} has {count} axes)</source>
+        <translation>用法：{command} {axes}（{protocol} 有 {count} 个轴）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--kind {kind} refused: {protocol} moves are {kinds}</source>
+        <translation>--kind {kind} 被拒绝：{protocol} 的移动类型为 {kinds}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s</source>
+        <translation>速度 {speed:g} mm/s 被拒绝：设备允许 {low:g} 至 {high:g} mm/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused ({error})</source>
+        <translation>速度 {speed:g} mm/s 被拒绝（{error}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} ({count} step)</source>
+        <translation>宏 {name}（{count} 步）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} ({count} steps)</source>
+        <translation>宏 {name}（{count} 步）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a macro needs a name</source>
+        <translation>宏需要名称</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro name {name!r}… is over {limit} characters</source>
+        <translation>宏名称 {name!r}… 超过 {limit} 个字符</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro name {name!r} holds a control character</source>
+        <translation>宏名称 {name!r} 含有控制字符</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} is for {protocol}, not {device}</source>
+        <translation>宏 {name} 适用于 {protocol}，而非 {device}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} has no steps</source>
+        <translation>宏 {name} 没有步骤</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} has {count} steps; at most {limit}</source>
+        <translation>宏 {name} 有 {count} 个步骤；最多 {limit} 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name}, step {number} ({step!r}): {error}</source>
+        <translation>宏 {name}，第 {number} 步（{step!r}）：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the step is over {limit} characters</source>
+        <translation>步骤超过 {limit} 个字符</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a step is one line (use one step per line)</source>
+        <translation>一个步骤只能占一行（每行一个步骤）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the step is empty</source>
+        <translation>步骤为空</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown command {command!r}; a step is one of: {commands}</source>
+        <translation>未知命令 {command!r}；步骤须为以下之一：{commands}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} is a {owner} command</source>
+        <translation>{command} 是 {owner} 的命令</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>usage: wait SECONDS</source>
+        <translation>用法：wait SECONDS（秒数）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>wait {seconds:g} s refused: from 0 to {limit:g} s</source>
+        <translation>等待 {seconds:g} s 被拒绝：应为 0 至 {limit:g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} stopped before step {number} ({step})</source>
+        <translation>{name} 在第 {number} 步（{step}）之前已停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} stopped during step {number}</source>
+        <translation>{name} 在第 {number} 步期间已停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: not a Motion Panel macro file (no &quot;format&quot;: &quot;{format}&quot;)</source>
+        <translation>{where}：不是 Motion Panel 宏文件（缺少 &quot;format&quot;: &quot;{format}&quot;）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: macro file version {version!r}; this reads {reads}</source>
+        <translation>{where}：宏文件版本为 {version!r}；本程序只能读取版本 {reads}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: &quot;macros&quot; is not a list</source>
+        <translation>{where}：&quot;macros&quot; 不是列表</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {count} macros; at most {limit}</source>
+        <translation>{where}：{count} 个宏；最多 {limit} 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: macro {number}</source>
+        <translation>{where}：第 {number} 个宏</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: two {protocol} macros are named {name!r}</source>
+        <translation>{where}：有两个 {protocol} 宏都名为 {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} is not an object with name, protocol and steps</source>
+        <translation>{where} 不是含 name、protocol 和 steps 的对象</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} has no name</source>
+        <translation>{where} 没有名称</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} ({name!r}): unknown protocol {protocol!r}</source>
+        <translation>{where}（{name!r}）：未知协议 {protocol!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} ({name!r}): &quot;steps&quot; is not a list of strings</source>
+        <translation>{where}（{name!r}）：&quot;steps&quot; 不是字符串列表</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} ({name!r}): over {limit} steps or a step too long</source>
+        <translation>{where}（{name!r}）：步骤超过 {limit} 个，或有步骤过长</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro file</source>
+        <translation>宏文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{path}: not JSON ({error})</source>
+        <translation>{path}：不是 JSON（{error}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} is not a JSON number</source>
+        <translation>{name} 不是 JSON 数字</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>saved macros</source>
+        <translation>已保存的宏</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>it cannot be read</source>
+        <translation>文件不可读</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>it is not an INI file Qt can read</source>
+        <translation>不是 Qt 可读取的 INI 文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>settings file</source>
+        <translation>设置文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot read the settings file {file}: {why}</source>
+        <translation>无法读取设置文件 {file}：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} ({protocol}, {baud} baud)</source>
+        <translation>{url}（{protocol}，{baud} 波特）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the saved setup was refused: {error}</source>
+        <translation>设备拒绝了已保存的设置：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{identity} on {url}</source>
+        <translation>{url} 上的 {identity}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} not changed: not connected</source>
+        <translation>{line} 未更改：未连接</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no break sent: not connected</source>
+        <translation>未发送中断信号：未连接</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position went from ({position}) to (0, 0, 0) mm while nothing was sent: the device restarted</source>
+        <translation>未发送任何内容时，位置从 ({position}) 变为 (0, 0, 0) mm：设备已重启</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; not sent: {jobs}; talking to it again</source>
+        <translation>{error}；未发送：{jobs}；正在重新与设备通信</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; talking to it again</source>
+        <translation>{error}；正在重新与设备通信</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not sent: the device is being reconnected</source>
+        <translation>未发送：正在重新连接设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the connection was lost</source>
+        <translation>连接已断开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>abandoned: disconnected while it was under way</source>
+        <translation>已放弃：执行期间连接已断开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown job {job!r}</source>
+        <translation>未知任务 {job!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; not sent: {jobs}</source>
+        <translation>{error}；未发送：{jobs}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device says: {text}</source>
+        <translation>设备消息：{text}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bridge to {device} is closed</source>
+        <translation>到 {device} 的桥接已关闭</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot create a pseudo-terminal for {device}: {error}</source>
+        <translation>无法为 {device} 创建伪终端：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the bridge is not open</source>
+        <translation>桥接未打开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device on {device} failed: {error}</source>
+        <translation>{device} 上的设备出错：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device on {device} went away: {error}</source>
+        <translation>{device} 上的设备已断开：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device on {device} went away (its port was closed)</source>
+        <translation>{device} 上的设备已断开（其端口已关闭）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the pseudo-terminal {path} failed: {error}</source>
+        <translation>伪终端 {path} 出错：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to the device on {device} failed: {error}</source>
+        <translation>写入 {device} 上的设备失败：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to the pseudo-terminal {path} failed: {error}</source>
+        <translation>写入伪终端 {path} 失败：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>abandoned: the connection is closing</source>
+        <translation>已放弃：连接正在关闭</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; still full after {seconds:.0f} s</source>
+        <translation>{error}；{seconds:.0f} s 后队列仍满</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} failed after {tries} tries; the last: {error}</source>
+        <translation>{command} 尝试 {tries} 次后失败；最后一次：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device restarted during {command} ({event}): its position and settings are lost</source>
+        <translation>设备在执行 {command} 期间重启（{event}）：其位置和设置已丢失</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device restarted ({event}): its position and settings are lost</source>
+        <translation>设备已重启（{event}）：其位置和设置已丢失</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device did not finish its reply to {command} within {seconds:.3g} s</source>
+        <translation>设备未在 {seconds:.3g} s 内完成对 {command} 的应答</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device did not answer to {command} within {seconds:.3g} s</source>
+        <translation>设备未在 {seconds:.3g} s 内应答 {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{message}; it sent {count} unexpected frame(s), the last: {frame}</source>
+        <translation>{message}；设备发送了 {count} 个意外的帧，最后一个：{frame}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{message} (it may still be moving: {protocol} answers nothing until a blocking move has ended; try again once it has stopped)</source>
+        <translation>{message}（设备可能仍在移动：{protocol} 在阻塞式移动结束前不作任何应答；请在其停止后重试）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no modem control lines</source>
+        <translation>没有调制解调器控制信号线</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{dtr}, {rts}, {cts}, {dsr}, {cd}, {ri}</source>
+        <translation>{dtr}，{rts}，{cts}，{dsr}，{cd}，{ri}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} ?</source>
+        <translation>{line} ?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} on</source>
+        <translation>{line} 开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} off</source>
+        <translation>{line} 关</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unreadable: {error}</source>
+        <translation>无法解读：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error {code}: {message}</source>
+        <translation>错误 {code}：{message}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error: {message}</source>
+        <translation>错误：{message}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>位置 ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position ({x:g}, {y:g}, {z:g}) mm (commanded, confirmed)</source>
+        <translation>位置 ({x:g}, {y:g}, {z:g}) mm（指令值，已确认）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position ({x:g}, {y:g}, {z:g}) mm (commanded)</source>
+        <translation>位置 ({x:g}, {y:g}, {z:g}) mm（指令值）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback {code} ({meaning})</source>
+        <translation>反馈 {code}（{meaning}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback {code} {bytes}</source>
+        <translation>反馈 {code} {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback {code}</source>
+        <translation>反馈 {code}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the line {text!r}</source>
+        <translation>文本行 {text!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an unreadable frame ({reason}): {bytes}</source>
+        <translation>无法解读的帧（{reason}）：{bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a directory</source>
+        <translation>目录</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a named pipe (FIFO)</source>
+        <translation>命名管道（FIFO）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a character device</source>
+        <translation>字符设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a block device</source>
+        <translation>块设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a socket</source>
+        <translation>套接字</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot read the {what} {file}: {why}</source>
+        <translation>无法读取{what} {file}：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{kind}, not a regular file</source>
+        <translation>是{kind}，而非普通文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a special file</source>
+        <translation>特殊文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: larger than {limit} ({size:,} bytes), too large for a {what}</source>
+        <translation>{file}：超过 {limit}（{size:,} 字节），作为{what}过大</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: larger than {limit}, too large for a {what}</source>
+        <translation>{file}：超过 {limit}，作为{what}过大</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: not UTF-8 text (line {line}), not a {what}</source>
+        <translation>{file}：不是 UTF-8 文本（第 {line} 行），不是{what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: a NUL byte (line {line}), not a {what}</source>
+        <translation>{file}：含有 NUL 字节（第 {line} 行），不是{what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file} line {line}: longer than {limit:,} characters, not a {what} line</source>
+        <translation>{file} 第 {line} 行：超过 {limit:,} 个字符，不是{what}行</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a frame body is {expected} bytes, not {length}</source>
+        <translation>帧体应为 {expected} 字节，而不是 {length} 字节</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>flag byte {byte:#04x}, expected 0xf0</source>
+        <translation>标志字节为 {byte:#04x}，应为 0xf0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>checksum {got:#04x}, expected {expected:#04x}</source>
+        <translation>校验和为 {got:#04x}，应为 {expected:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0x90 followed by {byte:#04x} inside the data</source>
+        <translation>数据中 0x90 之后跟随 {byte:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no tail within {most} bytes</source>
+        <translation>{most} 字节内没有帧尾</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a SysEx message needs at least a command byte</source>
+        <translation>SysEx 消息至少需要一个命令字节</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SysEx data must be 7-bit; got {byte:#04x}</source>
+        <translation>SysEx 数据必须为 7 位；收到 {byte:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: not a traffic log line: {line!r}</source>
+        <translation>{source} 第 {number} 行：不是通信日志行：{line!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no traffic in it (not a Motion Panel log)</source>
+        <translation>{source}：其中没有通信记录（不是 Motion Panel 日志）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>traffic log</source>
+        <translation>通信日志</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: not a Motion Panel log nor a pyserial spy:// capture: line {number} is not a traffic log line: {line!r}; for spy://, {hint}</source>
+        <translation>{file}：既不是 Motion Panel 日志，也不是 pyserial spy:// 捕获文件：第 {number} 行不是通信日志行：{line!r}；对于 spy://，{hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: empty, not a Motion Panel log nor a pyserial spy:// capture (spy&apos;s raw format leaves its file empty); {hint}</source>
+        <translation>{file}：文件为空，既不是 Motion Panel 日志，也不是 pyserial spy:// 捕获文件（spy 的 raw 格式会使其文件为空）；{hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device reported: {reported}</source>
+        <translation>设备报告：{reported}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} device</source>
+        <translation>{protocol} 设备</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device did not report a position (it answered {value})</source>
+        <translation>设备未报告位置（其应答为 {value}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device is at ({x:g}, {y:g}, {z:g}) mm, not where its last move ended: its replies are no longer taken as arrival</source>
+        <translation>设备位于 ({x:g}, {y:g}, {z:g}) mm，并非上次移动结束的位置：不再将其应答视为已到位</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no speed limits to report</source>
+        <translation>{protocol} 没有可报告的速度限值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} refused: the speed must be a positive number</source>
+        <translation>速度 {speed:g} 被拒绝：速度必须为正数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}</source>
+        <translation>速度 {speed:g} {unit} 被拒绝：设备允许 {low:g} 至 {high:g} {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>移动到 ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>jog by ({dx:g}, {dy:g}, {dz:g}) {unit}</source>
+        <translation>点动 ({dx:g}, {dy:g}, {dz:g}) {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no way to go home</source>
+        <translation>{protocol} 无法回原点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>go home</source>
+        <translation>回原点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no set-home command</source>
+        <translation>{protocol} 没有设置原点命令</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} refused: home is outside the travel limits</source>
+        <translation>已拒绝{what}：原点位于行程限位之外</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no arc moves</source>
+        <translation>{protocol} 不支持圆弧移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>arc</source>
+        <translation>圆弧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no dwell</source>
+        <translation>{protocol} 不支持延时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>stopped at ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>已停止于 ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the move to {target} did not end within {seconds:.1f} s</source>
+        <translation>前往 {target} 的移动未在 {seconds:.1f} s 内结束</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
+        <translation>{what} {text!r} 不是设备接受的数字：请使用数字，可带正负号和一个小数点，例如 -12.5</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {value!r} is not a finite number</source>
+        <translation>{what} {value!r} 不是有限数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {value:g} is out of range: the device handles at most ±{limit:g}</source>
+        <translation>{what} {value:g} 超出范围：设备最多支持 ±{limit:g}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not a parameter profile: {error}</source>
+        <translation>{source}：不是参数配置文件：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not a parameter profile: a number too long</source>
+        <translation>{source}：不是参数配置文件：数字过长</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not a parameter profile: nested too deeply</source>
+        <translation>{source}：不是参数配置文件：嵌套过深</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: protocol must be a name in quotes</source>
+        <translation>{source}：protocol 必须是带引号的名称</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: a profile for {named!r}, not for {protocol!r}</source>
+        <translation>{source}：这是 {named!r} 的参数配置文件，不适用于 {protocol!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} (line {line}): unknown key {key!r}</source>
+        <translation>{source}（第 {line} 行）：未知键 {key!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: unknown key {key!r}</source>
+        <translation>{source}：未知键 {key!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no [parameters] table with values in it</source>
+        <translation>{source}：没有含值的 [parameters] 表</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}</source>
+        <translation>{source} 第 {line} 行</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: unknown parameter {name!r} for {protocol}</source>
+        <translation>{where}：未知的 {protocol} 参数 {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {error}</source>
+        <translation>{where}：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name}: not a number the device takes ({range})</source>
+        <translation>{where}：{name}：不是设备接受的数字（{range}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>profile</source>
+        <translation>参数配置文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot write the profile {path}: {error}</source>
+        <translation>无法写入参数配置文件 {path}：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{low} to {high} in steps of {step}</source>
+        <translation>{low} 至 {high}，步进 {step}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{low} to {high} (whole numbers)</source>
+        <translation>{low} 至 {high}（整数）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{low} to {high}</source>
+        <translation>{low} 至 {high}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: {value!r} is not a number ({range})</source>
+        <translation>{name}：{value!r} 不是数字（{range}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: {value} refused: {range}</source>
+        <translation>{name}：{value} 被拒绝：允许 {range}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: {value} refused: the device takes {range}</source>
+        <translation>{name}：{value} 被拒绝：设备接受 {range}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this protocol has no parameters</source>
+        <translation>此协议没有参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown parameter {name!r} (did you mean {close}?): use a name or an id 1..{count}; &apos;motionctl ... param list&apos; lists them</source>
+        <translation>未知参数 {name!r}（是否指 {close}？）：请使用名称或 ID 1..{count}；&apos;motionctl ... param list&apos; 可列出全部参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown parameter {name!r}: use a name or an id 1..{count}; &apos;motionctl ... param list&apos; lists them</source>
+        <translation>未知参数 {name!r}：请使用名称或 ID 1..{count}；&apos;motionctl ... param list&apos; 可列出全部参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name} {value!r} is not a number</source>
+        <translation>{where}：{name} {value!r} 不是数字</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name} is not a finite float32 number</source>
+        <translation>{where}：{name} 不是有限的 float32 数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {name} {value!r} is not a finite float32 number</source>
+        <translation>{where}：{name} {value!r} 不是有限的 float32 数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: speed {speed:g} mm/s must be above 0</source>
+        <translation>{where}：速度 {speed:g} mm/s 必须大于 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: not CSV: {error}</source>
+        <translation>{source} 第 {line} 行：不是 CSV：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: the header must name x, y, z and speed (got nothing)</source>
+        <translation>{source} 第 {line} 行：表头必须包含 x、y、z 和 speed（实际为空）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: the header must name x, y, z and speed (got {columns})</source>
+        <translation>{source} 第 {line} 行：表头必须包含 x、y、z 和 speed（实际为 {columns}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: {count} values, expected 4</source>
+        <translation>{source} 第 {line} 行：有 {count} 个值，应为 4 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no header line (x,y,z,speed)</source>
+        <translation>{source}：没有表头行（x,y,z,speed）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no points</source>
+        <translation>{source}：没有点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {line}: not JSON ({reason})</source>
+        <translation>{source} 第 {line} 行：不是 JSON（{reason}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not JSON the panel reads (a number too long)</source>
+        <translation>{source}：不是面板可读取的 JSON（数字过长）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: not JSON the panel reads (nested too deeply)</source>
+        <translation>{source}：不是面板可读取的 JSON（嵌套过深）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no &quot;points&quot; list</source>
+        <translation>{source}：没有 &quot;points&quot; 列表</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: expected [x, y, z, speed]</source>
+        <translation>{where}：应为 [x, y, z, speed]</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} point {number}</source>
+        <translation>{source} 第 {number} 个点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: more than {count} points</source>
+        <translation>{source}：点数超过 {count} 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>program</source>
+        <translation>程序文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot write the program {path}: {error}</source>
+        <translation>无法写入程序 {path}：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
+        <translation>{setting} {value} 被拒绝：允许 {minimum:g} 至 {maximum:g} {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no setting {name!r}</source>
+        <translation>{protocol} 没有设置项 {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no wire variants (got {name!r})</source>
+        <translation>{protocol} 没有线路变体（收到 {name!r}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no variant {name!r} (variants: {known})</source>
+        <translation>{protocol} 没有变体 {name!r}（可用变体：{known}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} moves are linear only (got {kind!r})</source>
+        <translation>{protocol} 只支持直线移动（收到 {kind!r}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} coordinate</source>
+        <translation>{axis} 坐标</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} distance</source>
+        <translation>{axis} 距离</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a coordinate</source>
+        <translation>坐标</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused: the speed must be positive</source>
+        <translation>速度 {speed:g} mm/s 被拒绝：速度必须为正数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw command refused: COXIRIS takes ASCII text only</source>
+        <translation>原始命令被拒绝：COXIRIS 只接受 ASCII 文本</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw command refused: one line at a time (it contains a line break)</source>
+        <translation>原始命令被拒绝：每次只能发送一行（其中含有换行符）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw command refused: it is empty, and the device ignores blank lines</source>
+        <translation>原始命令被拒绝：命令为空，设备会忽略空行</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COXIRIS has no command for {command}</source>
+        <translation>COXIRIS 没有对应 {command} 的命令</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>command refused: {length} characters, the device takes at most {most} ({start}...)</source>
+        <translation>命令被拒绝：{length} 个字符，设备最多接受 {most} 个（{start}...）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device reported {what} as {text!r}, which is not a number</source>
+        <translation>设备报告的{what}为 {text!r}，不是数字</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device reported {what} as {text!r}</source>
+        <translation>设备报告的{what}为 {text!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device does not know the command {name!r}</source>
+        <translation>设备不认识命令 {name!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the device refused the command: {error}</source>
+        <translation>设备拒绝了该命令：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected DONE {command}, got {event}</source>
+        <translation>应为 DONE {command}，收到 {event}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position reply {data!r} does not hold three numbers</source>
+        <translation>位置应答 {data!r} 不包含三个数字</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speeds are reported rounded to whole mm/s</source>
+        <translation>报告的速度四舍五入到整数 mm/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>positions are reported to 0.01 mm</source>
+        <translation>报告的位置精确到 0.01 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>non-ASCII bytes in a COXIRIS line: {bytes}</source>
+        <translation>COXIRIS 行中含有非 ASCII 字节：{bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line refused: {length} characters, the device takes at most {most}</source>
+        <translation>行被拒绝：{length} 个字符，设备最多接受 {most} 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motor steps per turn</source>
+        <translation>电机每转步数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motor steps per millimetre</source>
+        <translation>电机每毫米步数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Motor control pin {pin} (-1: none)</source>
+        <translation>电机控制引脚 {pin}（-1：无）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves back to 0 by a relative move: the board has no homing</source>
+        <translation>通过相对移动回到 0：控制板没有回原点功能</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no completion message: moves are estimated from speed and steps</source>
+        <translation>没有完成消息：移动根据速度和步数估算</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the version and firmware name (is a Firmata board on this port?)</source>
+        <translation>版本和固件名称（此端口上是否连接了 Firmata 控制板？）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed (rpm)</source>
+        <translation>转速 (rpm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steps per revolution</source>
+        <translation>每转步数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pin</source>
+        <translation>引脚</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>steps</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>capability response</source>
+        <translation>能力响应</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>analog mapping</source>
+        <translation>模拟引脚映射</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>version request</source>
+        <translation>版本查询</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>firmware name request</source>
+        <translation>固件名称查询</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_LIBRARY_VERSION request</source>
+        <translation>STEPPER_LIBRARY_VERSION 查询</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} {value} refused: the stepper takes {low} to {high}</source>
+        <translation>{what} {value} 被拒绝：步进电机接受 {low} 至 {high}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the board answered: {error}</source>
+        <translation>控制板应答：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{distance:g} mm refused: the motor moves in steps of {step:g} mm ({per_mm:g} steps/mm)</source>
+        <translation>{distance:g} mm 被拒绝：电机每步移动 {step:g} mm（{per_mm:g} steps/mm）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the Firmata stepper is one axis (X): Y and Z must be 0</source>
+        <translation>Firmata 步进电机只有一个轴 (X)：Y 和 Z 必须为 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{count} pins refused: a stepper has 2 or 4 pins</source>
+        <translation>{count} 个引脚被拒绝：步进电机有 2 个或 4 个引脚</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Firmata has no message for {command}</source>
+        <translation>Firmata 没有对应 {command} 的消息</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an empty Firmata message</source>
+        <translation>空的 Firmata 消息</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Firmata protocol {major}.{minor}</source>
+        <translation>Firmata 协议 {major}.{minor}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>analog pin {pin}: {value}</source>
+        <translation>模拟引脚 {pin}：{value}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>digital port {port}: {bits:08b}</source>
+        <translation>数字端口 {port}：{bits:08b}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>message {bytes}</source>
+        <translation>消息 {bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SysEx {command:#04x}</source>
+        <translation>SysEx {command:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_CONFIGURE {steps} steps/rev, pins {pins}</source>
+        <translation>STEPPER_CONFIGURE {steps} steps/rev，引脚 {pins}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_STEP {rpm} rpm, {steps} steps forward</source>
+        <translation>STEPPER_STEP {rpm} rpm，正转 {steps} 步</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>STEPPER_STEP {rpm} rpm, {steps} steps reverse</source>
+        <translation>STEPPER_STEP {rpm} rpm，反转 {steps} 步</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>framing</source>
+        <translation>帧格式错误</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>checksum</source>
+        <translation>校验和错误</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown command</source>
+        <translation>未知命令</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bad arguments</source>
+        <translation>参数错误</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>queue full</source>
+        <translation>队列已满</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>undocumented</source>
+        <translation>文档未记录</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error {code} ({meaning}) for {command}</source>
+        <translation>{command} 出错 {code}（{meaning}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} mm/s refused: it must be above 0</source>
+        <translation>速度 {speed:g} mm/s 被拒绝：必须大于 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the position reply holds {count} numbers, not 3</source>
+        <translation>位置应答包含 {count} 个数字，而不是 3 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the status reply holds {count} numbers, not 2</source>
+        <translation>状态应答包含 {count} 个数字，而不是 2 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>undocumented code {code}</source>
+        <translation>文档未记录的代码 {code}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: the device answered error {code} ({meaning})</source>
+        <translation>{command}：设备应答错误 {code}（{meaning}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>moves are queued on the device; the position is read back while they run</source>
+        <translation>移动在设备上排队执行；执行期间会回读位置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The next queued frame&apos;s number (0: random)</source>
+        <translation>下一个排队帧的编号（0：随机）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dwell {ms} ms refused: the field is an int16 (0 to 32767)</source>
+        <translation>延时 {ms} ms 被拒绝：该字段为 int16（0 至 32767）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a queued frame holds 1 to {most} queued instructions</source>
+        <translation>一个排队帧包含 1 至 {most} 条排队指令</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the laser link has no instruction for {command}</source>
+        <translation>激光链路没有对应 {command} 的指令</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>word {word:#04x}</source>
+        <translation>字 {word:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frame {number} ({words} ×{count})</source>
+        <translation>帧 {number}（{words} ×{count}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>frame {number} ({words})</source>
+        <translation>帧 {number}（{words}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a field holds 1 to 255 values, not {count}</source>
+        <translation>一个字段包含 1 至 255 个值，而不是 {count} 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{value!r} is not one ASCII character</source>
+        <translation>{value!r} 不是单个 ASCII 字符</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{value} does not fit a float32</source>
+        <translation>{value} 超出 float32 的范围</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{value} does not fit a {kind} ({low} to {high})</source>
+        <translation>{value} 超出 {kind} 的范围（{low} 至 {high}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>command word {word:#04x} is outside 0x01..0x7F</source>
+        <translation>命令字 {word:#04x} 不在 0x01..0x7F 范围内</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>byte {index}: {byte:#04x} where a command word was expected</source>
+        <translation>字节 {index}：应为命令字，却是 {byte:#04x}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>byte {index}: a {kind} field without its count</source>
+        <translation>字节 {index}：{kind} 字段缺少其计数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>byte {index}: {count} {kind} values run past the data</source>
+        <translation>字节 {index}：{count} 个 {kind} 值超出了数据末尾</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Encoder ticks per millimetre</source>
+        <translation>每毫米编码器计数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Moves back to (0, 0, 0) with a Linear frame: the device has no homing</source>
+        <translation>用 Linear 帧回到 (0, 0, 0)：设备没有回原点功能</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>write-only: positions are commanded, completion estimated from distance and speed</source>
+        <translation>只写：位置为指令值，完成时间根据距离和速度估算</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {axis}</source>
+        <translation>速度 {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>centre {axis}</source>
+        <translation>圆心 {axis}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>radius</source>
+        <translation>半径</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>angular speed</source>
+        <translation>角速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>dwell</source>
+        <translation>延时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{field} {value:g} {unit} refused: a pi-frame field holds {low} to {high}</source>
+        <translation>{field} {value:g} {unit} 被拒绝：pi-frame 字段的取值为 {low} 至 {high}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{field} {distance:g} mm refused: the device moves in ticks of {tick:g} mm ({per_mm:g} ticks/mm)</source>
+        <translation>{field} {distance:g} mm 被拒绝：设备每个计数移动 {tick:g} mm（{per_mm:g} ticks/mm）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{field} {distance:g} mm refused: {ticks} ticks do not fit 16 bits ({low:g} to {high:g} mm at {per_mm:g} ticks/mm)</source>
+        <translation>{field} {distance:g} mm 被拒绝：{ticks} 个计数超出 16 位范围（{per_mm:g} ticks/mm 时为 {low:g} 至 {high:g} mm）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>pi-frame has no frame for {command}</source>
+        <translation>pi-frame 没有对应 {command} 的帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a {length}-byte frame</source>
+        <translation>一个 {length} 字节的帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Linear X={x} Y={y} Z={z} ticks at {sx}/{sy}/{sz} ticks/s</source>
+        <translation>Linear X={x} Y={y} Z={z} 计数，速度 {sx}/{sy}/{sz} ticks/s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Circular centre ({x}, {y}) radius {radius} ticks, {start:g}° to {end:g}° {turn} at {speed:g}°/s, Z to {z}</source>
+        <translation>Circular 圆心 ({x}, {y}) 半径 {radius} 计数，{start:g}° 至 {end:g}° {turn}，速度 {speed:g}°/s，Z 至 {z}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dwell {ms} ms</source>
+        <translation>延时 {ms} ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>action {number}</source>
+        <translation>动作 {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move package confirmed</source>
+        <translation>移动数据包已确认</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>action accomplished</source>
+        <translation>动作已完成</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>package size mismatch</source>
+        <translation>数据包长度不符</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid command type</source>
+        <translation>无效的命令类型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid motion type</source>
+        <translation>无效的运动类型</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid direction for the X axis</source>
+        <translation>X 轴方向无效</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid direction for the Y axis</source>
+        <translation>Y 轴方向无效</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid set parameter ID</source>
+        <translation>无效的设置参数 ID</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>parse function error in the firmware</source>
+        <translation>固件中的解析函数出错</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>invalid driving mechanism</source>
+        <translation>无效的驱动机构</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an error code the documentation does not list</source>
+        <translation>文档未列出的错误代码</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{parameter} set</source>
+        <translation>{parameter} 已设置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace.</source>
+        <translation>设置 input_speed_steady_x 和 _y（参数 21 和 22）。此固件版本仅根据 step_delay_instantaneous（15、16）确定步进时序，因此移动速度保持不变。</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted</source>
+        <translation>此版本的 Visiomex 没有回原点功能：回原点时从面板累计的位置通过相对移动回到 (0, 0)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no read-back: the panel keeps what was last written</source>
+        <translation>无法回读：面板保存上次写入的值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>positions are commanded, and confirmed by FA0001 when the move ends</source>
+        <translation>位置为指令值，移动结束时由 FA0001 确认</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a reply comes 1 s after a packet: the firmware waits for 1 s of silence</source>
+        <translation>应答在数据包发出 1 s 后到达：固件要等待 1 s 的静默</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>parameter {number} set</source>
+        <translation>参数 {number} 已设置</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>feedback code {code} is not documented</source>
+        <translation>反馈代码 {code} 在文档中没有记录</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: the device answered {code} ({meaning}); this firmware revision runs the move anyway</source>
+        <translation>{command}：设备应答 {code}（{meaning}）；此固件版本仍会执行该移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: the device answered {code} ({meaning})</source>
+        <translation>{command}：设备应答 {code}（{meaning}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command}: expected {wanted}, got {code}</source>
+        <translation>{command}：应为 {wanted}，收到 {code}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>18-character packets at 9600 baud, as the seed documents</source>
+        <translation>18 字符数据包，9600 波特，与原始资料所述一致</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the seed&apos;s packets; feedback lines start with &apos;&gt;&apos;</source>
+        <translation>原始资料中的数据包；反馈行以 &apos;&gt;&apos; 开头</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>12-character packets at 115200 baud, moves in mm, D goes home</source>
+        <translation>12 字符数据包，115200 波特，移动单位为 mm，D 回原点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Visiomex moves are relative: the panel sends the distance to go</source>
+        <translation>Visiomex 的移动为相对移动：面板发送待移动的距离</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the speed is parameters 21 and 22: it is sent as two sets</source>
+        <translation>速度即参数 21 和 22：分两次设置发送</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Visiomex has no packet for {command}</source>
+        <translation>Visiomex 没有对应 {command} 的数据包</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move kind {kind!r} refused: Visiomex moves are {kinds}</source>
+        <translation>移动类型 {kind!r} 被拒绝：Visiomex 的移动类型为 {kinds}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Z {distance:g} mm refused: the Visiomex controller has X and Y only</source>
+        <translation>Z {distance:g} mm 被拒绝：Visiomex 控制器只有 X 和 Y 轴</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} {unit} refused: this device moves in 1 µm</source>
+        <translation>{axis} {value:g} {unit} 被拒绝：此设备的移动单位为 1 µm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} {unit} refused: this device moves in whole {unit}</source>
+        <translation>{axis} {value:g} {unit} 被拒绝：此设备只能按整数{unit}移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} {unit} refused: one move goes at most {most} {unit} per axis ({digits} digits)</source>
+        <translation>{axis} {value:g} {unit} 被拒绝：单次移动每轴最多 {most} {unit}（{digits} 位数字）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet refused: Visiomex takes ASCII characters only</source>
+        <translation>数据包被拒绝：Visiomex 只接受 ASCII 字符</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet refused: it is empty</source>
+        <translation>数据包被拒绝：数据包为空</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet refused: {length} characters, a Visiomex packet has {most} (a line ending counts too)</source>
+        <translation>数据包被拒绝：{length} 个字符，Visiomex 数据包为 {most} 个（行结束符也计算在内）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>non-ASCII bytes in a Visiomex line: {bytes}</source>
+        <translation>Visiomex 行中含有非 ASCII 字节：{bytes}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>that packet gets no reply: send it from the console instead</source>
+        <translation>该数据包没有应答：请改从控制台发送</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet {packet}</source>
+        <translation>数据包 {packet}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>set {parameter} = {value}</source>
+        <translation>设置 {parameter} = {value}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move linear X {x} Y {y}</source>
+        <translation>直线移动 X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move rotational X {x} Y {y}</source>
+        <translation>旋转移动 X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move steps X {x} Y {y}</source>
+        <translation>按步数移动 X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>move {kind} X {x} Y {y}</source>
+        <translation>移动 {kind} X {x} Y {y}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>packet {packet!r}</source>
+        <translation>数据包 {packet!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{packet} (set {parameter})</source>
+        <translation>{packet}（设置 {parameter}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware forces driving_mechanism to 1 after every set</source>
+        <translation>每次设置后固件都会将 driving_mechanism 强制设为 1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision reads {parameter} only at boot (and keeps pulley values divided by 4): moves do not change until the firmware is fixed</source>
+        <translation>此固件版本仅在启动时读取 {parameter}（且保存的带轮数值被除以 4）：在固件修复之前，移动不会改变</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Note</source>
+        <translation>注意</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision moves by the cycle it computed at boot (10 mm lead screw), whatever 01-04 and 27 say</source>
+        <translation>此固件版本按启动时计算的周期（10 mm 丝杠）移动，与 01-04 和 27 的设置无关</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis}: the cycle ({cycle:g} mm) and the steps per turn ({steps:g}) must both be above 0</source>
+        <translation>{axis}：周期（{cycle:g} mm）和每转步数（{steps:g}）都必须大于 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{times} (1 s silence included)</source>
+        <translation>{times}（含 1 s 静默）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Microsteps per turn</source>
+        <translation>每转微步数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Per step</source>
+        <translation>每步</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Steps per mm</source>
+        <translation>每毫米步数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A 10 mm move</source>
+        <translation>移动 10 mm 耗时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Lead-screw pitch of the {axis} axis (mm per turn)</source>
+        <translation>{axis} 轴丝杠导程（每转 mm）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Belt pulley diameter of the {axis} axis; sent as mm×10 (38.2 mm -&gt; 000382)</source>
+        <translation>{axis} 轴皮带轮直径；以 mm×10 发送（38.2 mm -&gt; 000382）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Full steps per motor turn, {axis} axis</source>
+        <translation>{axis} 轴电机每转整步数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Microstepping factor of the {axis} driver</source>
+        <translation>{axis} 驱动器的细分倍数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Highest speed allowed on the {axis} axis</source>
+        <translation>{axis} 轴允许的最高速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step delay at the steady speed, {axis} axis (computed by the firmware)</source>
+        <translation>{axis} 轴匀速时的步进延时（由固件计算）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step delay at the lowest speed, {axis} axis</source>
+        <translation>{axis} 轴最低速度时的步进延时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Current step delay, {axis} axis (computed by the firmware; this revision times every step from it: one step is twice this delay)</source>
+        <translation>{axis} 轴当前步进延时（由固件计算；此版本的每一步都按它计时：一步为此延时的两倍）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Mean step delay while accelerating, {axis} axis (computed by the firmware)</source>
+        <translation>{axis} 轴加速期间的平均步进延时（由固件计算）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Steps spent accelerating, {axis} axis (computed by the firmware)</source>
+        <translation>{axis} 轴加速所用步数（由固件计算）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Requested steady speed of the {axis} axis</source>
+        <translation>{axis} 轴请求的匀速速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Requested acceleration of the {axis} axis</source>
+        <translation>{axis} 轴请求的加速度</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Duration of the last move, {axis} axis (computed by the firmware)</source>
+        <translation>{axis} 轴上次移动的持续时间（由固件计算）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>0 belt pulley, 1 lead screw (this firmware forces 1 after every set)</source>
+        <translation>0 皮带轮，1 丝杠（每次设置后此固件都会强制设为 1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>protocol {name!r} is not implemented yet</source>
+        <translation>协议 {name!r} 尚未实现</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown protocol {name!r} (known: {known})</source>
+        <translation>未知协议 {name!r}（已知：{known}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>capture with spy&apos;s default hexdump format: spy://PORT?file=FILE, without raw</source>
+        <translation>请用 spy 的默认 hexdump 格式捕获：spy://PORT?file=FILE，不加 raw</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>both directions run together, nothing tells TX from RX</source>
+        <translation>两个方向的数据混在一起，无法区分 TX 和 RX</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: spy&apos;s raw format is refused ({why}); {hint}</source>
+        <translation>{source} 第 {number} 行：不接受 spy 的 raw 格式（{why}）；{hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: not a pyserial spy:// hexdump line: {line!r}</source>
+        <translation>{source} 第 {number} 行：不是 pyserial spy:// hexdump 行：{line!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source} line {number}: bytes at offset {offset:#06x} of a {direction} call whose earlier lines are missing</source>
+        <translation>{source} 第 {number} 行：位于 {direction} 调用偏移 {offset:#06x} 处的字节，但该调用前面的行缺失</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no traffic in it, only control-line events</source>
+        <translation>{source}：其中没有通信数据，只有控制信号线事件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{source}: no traffic in it (nor spy&apos;s raw format); {hint}</source>
+        <translation>{source}：其中没有通信数据（也不是 spy 的 raw 格式）；{hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)</source>
+        <translation>{error}（经过 {rounds} 轮重试；此前 {total} 条指令中已有 {acknowledged} 条得到确认）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{pattern!r} is not a regular expression: {error}</source>
+        <translation>{pattern!r} 不是正则表达式：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{pattern!r} is not valid text</source>
+        <translation>{pattern!r} 不是有效的文本</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{pattern!r}… is too large a regular expression: {error}</source>
+        <translation>{pattern!r}… 正则表达式过大：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} is not open</source>
+        <translation>{url} 未打开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to {url} failed: {error}</source>
+        <translation>写入 {url} 失败：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>writing to {url}: only {written} of {total} bytes sent</source>
+        <translation>写入 {url}：{total} 字节中仅发送了 {written} 字节</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reading from {url} failed: {error}</source>
+        <translation>从 {url} 读取失败：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name!r} is not a line the host drives (DTR or RTS)</source>
+        <translation>{name!r} 不是由主机驱动的信号线（DTR 或 RTS）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line} cannot be set</source>
+        <translation>无法设置 {line}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>setting {line} on {url} failed: {error}</source>
+        <translation>设置 {url} 的 {line} 失败：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a break lasts more than 0 and at most {most:g} s</source>
+        <translation>中断信号的持续时间须大于 0 且不超过 {most:g} s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no break can be sent</source>
+        <translation>无法发送中断信号</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>sending a break on {url} failed: {error}</source>
+        <translation>在 {url} 上发送中断信号失败：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>break {ms:.0f} ms</source>
+        <translation>中断 {ms:.0f} ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reading {line} on {url} failed: {error}</source>
+        <translation>读取 {url} 的 {line} 失败：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>reading the control lines of {url} failed: {error}</source>
+        <translation>读取 {url} 的控制信号线失败：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a TCP socket</source>
+        <translation>TCP 套接字</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} has no modem control lines ({why}): {what}</source>
+        <translation>{url} 没有调制解调器控制线（{why}）：{what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a pseudo-terminal</source>
+        <translation>伪终端</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its driver has no modem-line control</source>
+        <translation>其驱动程序不支持调制解调器控制线</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no port given</source>
+        <translation>未指定端口</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot open {url}: {error}</source>
+        <translation>无法打开 {url}：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits need a range for each of x, y and z</source>
+        <translation>行程限位需要为 x、y 和 z 各指定一个范围</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits for {axis} ({low:g} to {high:g} mm) are not a range: the minimum must be at most the maximum</source>
+        <translation>{axis} 的行程限位（{low:g} 至 {high:g} mm）不是有效范围：最小值不得大于最大值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the move</source>
+        <translation>移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} {value:g} mm is outside {low:g}..{high:g} mm</source>
+        <translation>{axis} {value:g} mm 超出 {low:g}..{high:g} mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} refused: {details} (travel limits)</source>
+        <translation>{what}被拒绝：{details}（行程限位）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what} clamped to the travel limits: {details}; going to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>{what}已限制在行程限位内：{details}；改为移动到 ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits {text!r}: write three ranges in mm, X0:X1,Y0:Y1,Z0:Z1 (e.g. -100:100,-50:50,0:20), or none</source>
+        <translation>行程限位 {text!r}：请输入三个以 mm 为单位的范围 X0:X1,Y0:Y1,Z0:Z1（例如 -100:100,-50:50,0:20），或 none</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>travel limits for {axis}: {part!r} is not MIN:MAX in mm (e.g. -100:100)</source>
+        <translation>{axis} 的行程限位：{part!r} 不是以 mm 为单位的 MIN:MAX（例如 -100:100）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} {value!r} is not a finite number</source>
+        <translation>{name} {value!r} 不是有限数值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} {value:g} mm refused: the device works to {resolution:g} mm (the nearest it can do is {nearest} mm)</source>
+        <translation>{name} {value:g} mm 被拒绝：设备精度为 {resolution:g} mm（最接近的可用值为 {nearest} mm）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{earlier}; {later}</source>
+        <translation>{earlier}；{later}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>expected a sim:// URL, got {url!r}</source>
+        <translation>应为 sim:// URL，收到 {url!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown sim:// option {key!r}</source>
+        <translation>未知的 sim:// 选项 {key!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>port must be configured before it can be used</source>
+        <translation>端口必须先配置才能使用</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>port already open</source>
+        <translation>端口已打开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>cannot open {port}: {error}</source>
+        <translation>无法打开 {port}：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no axis {axis!r}: x, y or z</source>
+        <translation>没有轴 {axis!r}：应为 x、y 或 z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero at home (work = machine)</source>
+        <translation>工件零点位于原点（工件坐标 = 机床坐标）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero at ({x:g}, {y:g}, {z:g}) mm machine</source>
+        <translation>工件零点位于机床坐标 ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero {text!r} is not three numbers x,y,z</source>
+        <translation>工件零点 {text!r} 不是三个数字 x,y,z</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>work zero {text!r} is not three finite numbers x,y,z</source>
+        <translation>工件零点 {text!r} 不是三个有限数值 x,y,z</translation>
     </message>
 </context>
 </TS>
