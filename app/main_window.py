@@ -703,7 +703,7 @@ class MainWindow(QMainWindow):
 
     def _on_device_ready(self, info: DeviceInfo) -> None:
         self.info = info
-        connected = fill(self.tr("connected to %1 on %2"), info.identity, info.port)
+        connected = fill(self.tr("connected to %1 on %2"), localized(info.identity), info.port)
         self.console.append_note(connected)
         self._say(connected, note=False)
         if self._link_failed:  # after a lost link or a restart: what is the position now?
@@ -714,7 +714,8 @@ class MainWindow(QMainWindow):
                 )
                 if self._position_lost
                 else fill(
-                    self.tr("connected again to %1: the position was read again"), info.identity
+                    self.tr("connected again to %1: the position was read again"),
+                    localized(info.identity),
                 ),
                 status.WARNING if self._position_lost else status.INFO,
             )

@@ -35,11 +35,28 @@ FORCED_NOTE = QT_TRANSLATE_NOOP(
 )  # translated at use, %1 the value
 
 
+# The one unit of the parameters that is a word (the others are symbols: mm, µs, ×).
+UNIT_WORDS = {"steps": QT_TRANSLATE_NOOP("ParameterDock", "steps")}
+
+
+def unit_shown(unit: str) -> str:
+    """A parameter's unit as the editor shows it (a word in the interface's language)."""
+    word = UNIT_WORDS.get(unit)
+    return QCoreApplication.translate("ParameterDock", word) if word else unit
+
+
 def editor_rows(parameters: tuple[Parameter, ...]) -> list[ParameterRow]:
     """The editor's plain rows for a protocol's parameters."""
     return [
         ParameterRow(
-            p.id, p.name, p.unit, p.minimum, p.maximum, p.step, p.output, localized(p.description)
+            p.id,
+            p.name,
+            unit_shown(p.unit),
+            p.minimum,
+            p.maximum,
+            p.step,
+            p.output,
+            localized(p.description),
         )
         for p in parameters
     ]

@@ -353,6 +353,8 @@ class TrafficIndex:
         self._counted = 0  # lines before this one have had their kinds added up in `counts`
         self.new_latencies = array("i")  # replies paired since the caller last took them
         self.wall_offset: float | None = None  # wall-clock time minus record time
+        self.meaning_text: Callable[[str], str] = str
+        """What a decoded frame's meaning reads as in the index (the window: its language)."""
         self.set_protocol(protocol)
 
     def set_protocol(self, protocol: Protocol | None) -> None:
@@ -364,8 +366,6 @@ class TrafficIndex:
         self._last_kind = _KIND_CODE["query"]  # of the last frame sent, for a reply unpaired
         self._sent: dict[bytes, tuple[int, bool]] = {}  # frame → kind code, expects a reply
         self._scripts = _Scripts()
-        self.meaning_text: Callable[[str], str] = str
-        """What a decoded frame's meaning reads as in the index (the window: its language)."""
 
     def close(self) -> None:
         """Release the spool."""

@@ -7,6 +7,7 @@ import os
 from collections.abc import Iterator
 
 # Qt tests run headless unless a display is there (Xvfb in CI, for the OpenGL tests).
+_PLATFORM = os.environ.get("QT_QPA_PLATFORM")  # as the run was started
 if "DISPLAY" not in os.environ and "WAYLAND_DISPLAY" not in os.environ:
     os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")
 
@@ -119,6 +120,14 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     if os.environ.get("CI") and has_gl_tests and "DISPLAY" not in os.environ:
         raise pytest.UsageError(
             "CI must run the tests under Xvfb (no DISPLAY): see resources/setup.sh"
+        )
+    platform = os.environ.get("QT_QPA_PLATFORM")
+    if "DISPLAY" in os.environ and platform == "offscreen" and platform != _PLATFORM:
+        # conftest leaves a display alone: a test module set offscreen when it was imported,
+        # and every test of the session would run without the display (no OpenGL, no focus)
+        raise pytest.UsageError(
+            "QT_QPA_PLATFORM=offscreen was set while collecting, with a display there: a test "
+            "module must not set it (tests/conftest.py chooses the platform)"
         )
 
 

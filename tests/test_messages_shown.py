@@ -96,3 +96,17 @@ def test_a_refused_connection_reaches_the_worker_state_translated(
     qtbot.waitUntil(lambda: any(state == "error" for state, _ in states))
     errors = [detail for state, detail in states if state == "error"]
     assert "UNKNOWN SIM:// OPTION 'bogus'" in errors[0]
+
+
+def test_the_console_shows_decoded_meanings_translated(qtbot, upper) -> None:
+    from app.traffic_console import RawConsole
+    from drivers.registry import create_protocol
+
+    console = RawConsole()
+    qtbot.addWidget(console)
+    console.set_protocol(create_protocol("visiomex"))  # a new connection keeps the language
+    console.append_traffic("rx", b"FP0001\r\nChecking 2\r\n", 1.0)
+    console.flush()
+    text = console.text()
+    assert "FEEDBACK FP0001 (MOVE PACKAGE CONFIRMED)" in text
+    assert "feedback" not in text

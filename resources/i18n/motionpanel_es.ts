@@ -1505,12 +1505,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     </message>
     <message>
         <location line="+1"/>
-        <location line="+357"/>
+        <location line="+358"/>
         <source>&amp;Stop</source>
         <translation>&amp;Detener</translation>
     </message>
     <message>
-        <location line="-352"/>
+        <location line="-353"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Límites de recorrido…</translation>
     </message>
@@ -1595,7 +1595,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>reconectado a %1: se ha vuelto a leer la posición</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>the device</source>
         <translation>el dispositivo</translation>
     </message>
@@ -1685,8 +1685,8 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
-        <location line="-393"/>
-        <location line="+397"/>
+        <location line="-394"/>
+        <location line="+398"/>
         <source>device: %1</source>
         <translation>dispositivo: %1</translation>
     </message>
@@ -1709,7 +1709,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>el dispositivo tiene ahora %1: el firmware lo impone tras cada escritura</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+6"/>
+        <source>steps</source>
+        <translation>pasos</translation>
+    </message>
+    <message>
+        <location line="+51"/>
         <source>Parameters</source>
         <translation>Parámetros</translation>
     </message>

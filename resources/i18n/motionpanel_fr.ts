@@ -1505,12 +1505,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     </message>
     <message>
         <location line="+1"/>
-        <location line="+357"/>
+        <location line="+358"/>
         <source>&amp;Stop</source>
         <translation>&amp;Arrêt</translation>
     </message>
     <message>
-        <location line="-352"/>
+        <location line="-353"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Limites de course…</translation>
     </message>
@@ -1595,7 +1595,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>reconnecté à %1&#xa0;: la position a été relue</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>the device</source>
         <translation>l&apos;appareil</translation>
     </message>
@@ -1685,8 +1685,8 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="-393"/>
-        <location line="+397"/>
+        <location line="-394"/>
+        <location line="+398"/>
         <source>device: %1</source>
         <translation>appareil&#xa0;: %1</translation>
     </message>
@@ -1709,7 +1709,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>l&apos;appareil contient maintenant %1&#xa0;: le firmware l&apos;impose après chaque écriture</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+6"/>
+        <source>steps</source>
+        <translation>pas</translation>
+    </message>
+    <message>
+        <location line="+51"/>
         <source>Parameters</source>
         <translation>Paramètres</translation>
     </message>

@@ -1505,12 +1505,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+357"/>
+        <location line="+358"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location line="-352"/>
+        <location line="-353"/>
         <source>&amp;Travel limits…</source>
         <translation>行程限位(&amp;T)…</translation>
     </message>
@@ -1595,7 +1595,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已重新连接到 %1：已重新读取位置</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>the device</source>
         <translation>该设备</translation>
     </message>
@@ -1685,8 +1685,8 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>设备报告错误：%1</translation>
     </message>
     <message>
-        <location line="-393"/>
-        <location line="+397"/>
+        <location line="-394"/>
+        <location line="+398"/>
         <source>device: %1</source>
         <translation>设备：%1</translation>
     </message>
@@ -1709,7 +1709,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>设备当前值为 %1：每次设置后固件都会强制使用该值</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+6"/>
+        <source>steps</source>
+        <translation>步</translation>
+    </message>
+    <message>
+        <location line="+51"/>
         <source>Parameters</source>
         <translation>参数</translation>
     </message>
