@@ -4104,7 +4104,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+6"/>
+        <location filename="message_templates.py" line="+4"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>uso: {usage} (se recibieron {count} argumentos)</translation>
     </message>

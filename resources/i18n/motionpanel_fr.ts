@@ -4104,7 +4104,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+6"/>
+        <location filename="message_templates.py" line="+4"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>usage&#xa0;: {usage} ({count} arguments reçus)</translation>
     </message>

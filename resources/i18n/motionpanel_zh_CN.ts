@@ -4104,7 +4104,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+6"/>
+        <location filename="message_templates.py" line="+4"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>用法：{usage}（收到 {count} 个参数）</translation>
     </message>
