@@ -19,6 +19,8 @@ from pathlib import Path
 
 from PySide6.QtCore import QCoreApplication, QLibraryInfo, QLocale, QTranslator
 
+from widgets._i18n import number_text
+
 log = logging.getLogger(__name__)
 
 SOURCE_LANGUAGE = "en"
@@ -166,10 +168,7 @@ def install_translations(
 
 def format_number(value: float, decimals: int, locale: QLocale | None = None) -> str:
     """`value` with `decimals` decimals in the locale's digits and decimal point, no grouping."""
-    shown = QLocale(locale) if locale is not None else QLocale()
-    shown.setNumberOptions(shown.numberOptions() | QLocale.NumberOption.OmitGroupSeparator)
-    text = shown.toString(float(value), "f", max(int(decimals), 0))
-    return text
+    return number_text(value, decimals, trim=False, locale=locale)
 
 
 def format_quantity(value: float, decimals: int, unit: str, locale: QLocale | None = None) -> str:

@@ -21,9 +21,8 @@ from PySide6.QtWidgets import (
 
 from widgets._axes import Box, decimals_for
 from widgets._buttons import make_button
-from widgets._i18n import fill
-from widgets.coordinate_entry import UnitSpinBox, check_units, number_text
-from widgets.position_readout import INCH, MM
+from widgets._i18n import fill, number_text
+from widgets._units import INCH, MM, UnitSpinBox, check_units
 
 log = logging.getLogger(__name__)
 

@@ -20,9 +20,8 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._axes import AXES, decimals_for, modifier_bits, normalize_axes
-from widgets._i18n import fill
-from widgets.coordinate_entry import UnitSpinBox, check_units, number_text
-from widgets.position_readout import INCH, MM, MM_PER_INCH
+from widgets._i18n import fill, number_text
+from widgets._units import INCH, MM, MM_PER_INCH, UnitSpinBox, check_units
 
 log = logging.getLogger(__name__)
 

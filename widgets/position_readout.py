@@ -18,11 +18,10 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._axes import AXES, decimals_for, normalize_axes
-from widgets._i18n import fill
+from widgets._i18n import fill, number_text
+from widgets._units import INCH, MM, MM_PER_INCH, check_units
 
 UNKNOWN = "—"
-MM, INCH = "mm", "in"
-MM_PER_INCH = 25.4
 # Translated at use, in the PositionReadout context.
 NOT_MEASURED_TEXT = QT_TRANSLATE_NOOP("PositionReadout", "commanded, not measured")
 CONFIRMED_TEXT = QT_TRANSLATE_NOOP("PositionReadout", "commanded, move confirmed")
@@ -199,11 +198,9 @@ class PositionReadout(QWidget):
     def _number(self, value: float) -> str:
         """A value with the decimals shown, in the interface's locale (12,34 in French), no
         thousands separator."""
-        locale = QLocale()
-        locale.setNumberOptions(QLocale.NumberOption.OmitGroupSeparator)
         if self._units == INCH:
             value = value / MM_PER_INCH
-        return locale.toString(round(float(value), self._decimals) + 0.0, "f", self._decimals)
+        return number_text(value, self._decimals, trim=False)
 
     def set_work_zero(self, zero: tuple[float, float, float]) -> None:
         """The work zero in machine mm ((0, 0, 0): the work frame is the machine frame)."""
@@ -282,8 +279,7 @@ class PositionReadout(QWidget):
     def set_display(self, units: str, decimals: int = -1) -> None:
         """Show positions in "mm" or "in" (the device is always sent mm), with `decimals`
         decimals (-1: as many as the device resolves, in those units)."""
-        if units not in (MM, INCH):
-            raise ValueError(f"units must be {MM!r} or {INCH!r}, not {units!r}")
+        check_units(units)
         self._units, self._fixed_decimals = units, decimals
         self._set_decimals()
         self._render()

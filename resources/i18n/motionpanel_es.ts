@@ -67,7 +67,7 @@
 <context>
     <name>ArcEntry</name>
     <message>
-        <location filename="../../widgets/arc_entry.py" line="+273"/>
+        <location filename="../../widgets/arc_entry.py" line="+272"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
         <translation>X del centro del arco, en mm desde el origen</translation>
     </message>
@@ -501,7 +501,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
 <context>
     <name>CoordinateEntry</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="+35"/>
+        <location filename="../../widgets/coordinate_entry.py" line="+33"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
         <translation>¿Convertir la posición actual en el nuevo origen (0, 0, 0)?
@@ -513,7 +513,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+205"/>
+        <location line="+42"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
         <translation>%1:</translation>
@@ -977,7 +977,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+33"/>
+        <location filename="../../widgets/jog_panel.py" line="+32"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>Teclas: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</translation>
     </message>
@@ -2205,7 +2205,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>PositionReadout</name>
     <message>
-        <location filename="../../widgets/position_readout.py" line="+27"/>
+        <location filename="../../widgets/position_readout.py" line="+26"/>
         <source>commanded, not measured</source>
         <translation>ordenada, no medida</translation>
     </message>
@@ -2302,7 +2302,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Devolver el cero de pieza al origen del dispositivo (trabajo = máquina)</translation>
     </message>
     <message>
-        <location line="+197"/>
+        <location line="+194"/>
         <source>millimetres</source>
         <translation>milímetros</translation>
     </message>
@@ -3600,7 +3600,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+39"/>
+        <location filename="../../widgets/speed_control.py" line="+38"/>
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -3934,7 +3934,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>UnitSpinBox</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="-434"/>
+        <location filename="../../widgets/_units.py" line="+19"/>
         <source>in/s</source>
         <comment>inches per second</comment>
         <translation>in/s</translation>

@@ -67,7 +67,7 @@
 <context>
     <name>ArcEntry</name>
     <message>
-        <location filename="../../widgets/arc_entry.py" line="+273"/>
+        <location filename="../../widgets/arc_entry.py" line="+272"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
         <translation>X du centre de l&apos;arc, en mm depuis l&apos;origine</translation>
     </message>
@@ -501,7 +501,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 <context>
     <name>CoordinateEntry</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="+35"/>
+        <location filename="../../widgets/coordinate_entry.py" line="+33"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
         <translation>Faire de la position actuelle la nouvelle origine (0, 0, 0)&#xa0;?
@@ -513,7 +513,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+205"/>
+        <location line="+42"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
         <translation>%1&#xa0;:</translation>
@@ -977,7 +977,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+33"/>
+        <location filename="../../widgets/jog_panel.py" line="+32"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>Touches&#xa0;: ←/→ X, ↑/↓ Y, Page préc/Page suiv Z, Maj ×10</translation>
     </message>
@@ -2205,7 +2205,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>PositionReadout</name>
     <message>
-        <location filename="../../widgets/position_readout.py" line="+27"/>
+        <location filename="../../widgets/position_readout.py" line="+26"/>
         <source>commanded, not measured</source>
         <translation>commandée, non mesurée</translation>
     </message>
@@ -2302,7 +2302,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Ramener le zéro pièce à l&apos;origine de l&apos;appareil (pièce = machine)</translation>
     </message>
     <message>
-        <location line="+197"/>
+        <location line="+194"/>
         <source>millimetres</source>
         <translation>millimètres</translation>
     </message>
@@ -3600,7 +3600,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+39"/>
+        <location filename="../../widgets/speed_control.py" line="+38"/>
         <source>Speed:</source>
         <translation>Vitesse&#xa0;:</translation>
     </message>
@@ -3934,7 +3934,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>UnitSpinBox</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="-434"/>
+        <location filename="../../widgets/_units.py" line="+19"/>
         <source>in/s</source>
         <comment>inches per second</comment>
         <translation>in/s</translation>

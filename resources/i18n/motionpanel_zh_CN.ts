@@ -67,7 +67,7 @@
 <context>
     <name>ArcEntry</name>
     <message>
-        <location filename="../../widgets/arc_entry.py" line="+273"/>
+        <location filename="../../widgets/arc_entry.py" line="+272"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
         <translation>圆弧圆心的 X 坐标，单位 mm，从原点起算</translation>
     </message>
@@ -501,7 +501,7 @@ the same as the start angle: a full circle</source>
 <context>
     <name>CoordinateEntry</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="+35"/>
+        <location filename="../../widgets/coordinate_entry.py" line="+33"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
         <translation>将当前位置设为新的原点 (0, 0, 0)？
@@ -513,7 +513,7 @@ All coordinates will be measured from here from now on.</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+205"/>
+        <location line="+42"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
         <translation>%1：</translation>
@@ -977,7 +977,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+33"/>
+        <location filename="../../widgets/jog_panel.py" line="+32"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift ×10</translation>
     </message>
@@ -2205,7 +2205,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>PositionReadout</name>
     <message>
-        <location filename="../../widgets/position_readout.py" line="+27"/>
+        <location filename="../../widgets/position_readout.py" line="+26"/>
         <source>commanded, not measured</source>
         <translation>指令值，非实测</translation>
     </message>
@@ -2302,7 +2302,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>将工件零点恢复到设备原点（工件坐标 = 机床坐标）</translation>
     </message>
     <message>
-        <location line="+197"/>
+        <location line="+194"/>
         <source>millimetres</source>
         <translation>毫米</translation>
     </message>
@@ -3600,7 +3600,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+39"/>
+        <location filename="../../widgets/speed_control.py" line="+38"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
@@ -3934,7 +3934,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>UnitSpinBox</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="-434"/>
+        <location filename="../../widgets/_units.py" line="+19"/>
         <source>in/s</source>
         <comment>inches per second</comment>
         <translation>in/s</translation>

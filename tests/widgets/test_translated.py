@@ -66,6 +66,7 @@ WRAPPED = [
     "widgets/history_line_edit.py",
     "widgets/_buttons.py",
     "widgets/coordinate_entry.py",
+    "widgets/_units.py",
     "widgets/position_readout.py",
     "widgets/macro_panel.py",
     "widgets/macro_editor.py",

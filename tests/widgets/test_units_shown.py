@@ -7,8 +7,10 @@ import pytest
 from PySide6.QtCore import QLocale, Qt
 from PySide6.QtWidgets import QPushButton
 
+from widgets._i18n import number_text
+from widgets._units import UnitSpinBox
 from widgets.arc_entry import ArcEntry
-from widgets.coordinate_entry import CoordinateEntry, UnitSpinBox, number_text
+from widgets.coordinate_entry import CoordinateEntry
 from widgets.jog_panel import INCH_STEP_PRESETS, STEP_PRESETS, JogPanel
 from widgets.speed_control import SLIDER_STEPS, SpeedControl
 
