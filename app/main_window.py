@@ -24,7 +24,7 @@ from app.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
 from app.keyboard_jog import KeyboardJog
 from app.messages import localized
 from app.ports import PortWatcher
-from app.preferences import read_preferences, session_log_folder
+from app.preferences import session_log_folder
 from app.session_log import log_folder, open_session_log
 from app.settings import (
     DEFAULT_PORT,
@@ -242,7 +242,7 @@ class MainWindow(QMainWindow):
 
     def _start_session_log(self) -> Path | None:
         """Every byte of this session to a file in the log folder (on unless turned off)."""
-        prefs = read_preferences(self.settings)
+        prefs = self.tools.prefs  # read once, by the tools; kept current by Settings
         if not prefs.session_log:
             return None
         try:
