@@ -305,15 +305,16 @@ class Bridge:
         except BlockingIOError:
             return
         except OSError as exc:
-            raise DeviceVanished(
-                Message(
-                    "writing to the device on {device} failed: {error}",
-                    device=self.device,
-                    error=exc,
-                )
-            ) from exc
+            raise self._write_failed(exc) from exc
         del self._to_device[:written]
         self.bytes_to_device += written
+
+    def _write_failed(self, exc: Exception) -> DeviceVanished:
+        return DeviceVanished(
+            Message(
+                "writing to the device on {device} failed: {error}", device=self.device, error=exc
+            )
+        )
 
     def _write_device_port(self) -> None:
         assert self._link is not None
@@ -322,13 +323,7 @@ class Bridge:
             written = self._link.port.write(data)
             self._link.port.flush()
         except (serial.SerialException, OSError, ValueError) as exc:
-            raise DeviceVanished(
-                Message(
-                    "writing to the device on {device} failed: {error}",
-                    device=self.device,
-                    error=exc,
-                )
-            ) from exc
+            raise self._write_failed(exc) from exc
         written = len(data) if written is None else written
         del self._to_device[:written]
         self.bytes_to_device += written

@@ -17,8 +17,10 @@ from widgets.position_view_3d import share_opengl_contexts
 share_opengl_contexts()  # as the application does: several GL views over the session
 
 from app.traffic_console import RawConsole  # noqa: E402
+from widgets.arc_entry import ArcEntry  # noqa: E402
 from widgets.coordinate_entry import CoordinateEntry  # noqa: E402
 from widgets.position_readout import PositionReadout  # noqa: E402
+from widgets.speed_control import SpeedControl  # noqa: E402
 
 
 @pytest.fixture
@@ -62,4 +64,23 @@ def console(qtbot) -> RawConsole:
     widget.show()
     widget.set_time_origin(0.0)
     widget.set_protocol(create_protocol("coxiris"))
+    return widget
+
+
+@pytest.fixture
+def speed(qtbot) -> SpeedControl:
+    """A shown speed control over 0 to 50 mm/s."""
+    widget = SpeedControl()
+    qtbot.addWidget(widget)
+    widget.set_range(0.0, 50.0)
+    widget.show()
+    return widget
+
+
+@pytest.fixture
+def arc(qtbot) -> ArcEntry:
+    """A shown arc entry."""
+    widget = ArcEntry()
+    qtbot.addWidget(widget)
+    widget.show()
     return widget

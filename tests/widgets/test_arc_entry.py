@@ -15,14 +15,6 @@ from widgets.dwell_entry import DwellEntry
 LEFT = Qt.MouseButton.LeftButton
 
 
-@pytest.fixture
-def arc(qtbot) -> ArcEntry:
-    widget = ArcEntry()
-    qtbot.addWidget(widget)
-    widget.show()
-    return widget
-
-
 def _angle(point: tuple[float, float, float], cx: float = 0.0, cy: float = 0.0) -> float:
     return math.degrees(math.atan2(point[1] - cy, point[0] - cx)) % 360.0
 

@@ -8,15 +8,6 @@ from PySide6.QtCore import QPoint, Qt
 from widgets.speed_control import SLIDER_STEPS, SpeedControl
 
 
-@pytest.fixture
-def speed(qtbot) -> SpeedControl:
-    widget = SpeedControl()
-    qtbot.addWidget(widget)
-    widget.set_range(0.0, 50.0)
-    widget.show()
-    return widget
-
-
 def test_object_name_and_units(speed: SpeedControl) -> None:
     assert speed.objectName() == "speedControl"
     assert speed.spin.suffix() == " mm/s"

@@ -12,7 +12,7 @@ from widgets._units import UnitSpinBox
 from widgets.arc_entry import ArcEntry
 from widgets.coordinate_entry import CoordinateEntry
 from widgets.jog_panel import INCH_STEP_PRESETS, STEP_PRESETS, JogPanel
-from widgets.speed_control import SLIDER_STEPS, SpeedControl
+from widgets.speed_control import SLIDER_STEPS
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -31,23 +31,6 @@ def english_numbers() -> object:
 @pytest.fixture
 def jog(qtbot) -> JogPanel:
     widget = JogPanel()
-    qtbot.addWidget(widget)
-    widget.show()
-    return widget
-
-
-@pytest.fixture
-def speed(qtbot) -> SpeedControl:
-    widget = SpeedControl()
-    qtbot.addWidget(widget)
-    widget.set_range(0.0, 50.0)
-    widget.show()
-    return widget
-
-
-@pytest.fixture
-def arc(qtbot) -> ArcEntry:
-    widget = ArcEntry()
     qtbot.addWidget(widget)
     widget.show()
     return widget
