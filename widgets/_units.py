@@ -8,6 +8,8 @@ import math
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QDoubleSpinBox, QWidget
 
+from widgets._i18n import number_text
+
 MM, INCH = "mm", "in"
 MM_PER_INCH = 25.4
 
@@ -50,6 +52,13 @@ class UnitSpinBox(QDoubleSpinBox):
     def units(self) -> str:
         """The units shown: "mm" or "in"."""
         return self._units
+
+    def range_texts(self) -> tuple[str, str]:
+        """The field's range as shown (in its units and decimals, the locale's digits)."""
+        return (
+            number_text(self.minimum(), self.decimals()),
+            number_text(self.maximum(), self.decimals()),
+        )
 
     def set_units(self, units: str) -> None:
         """Show the same length in "mm" or "in"; emits nothing."""

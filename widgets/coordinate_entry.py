@@ -20,7 +20,7 @@ from PySide6.QtWidgets import (
 
 from widgets._axes import AXES, Box, decimals_for, normalize_axes
 from widgets._buttons import make_button
-from widgets._i18n import fill, number_text
+from widgets._i18n import fill
 from widgets._units import INCH, MM, UnitSpinBox, check_units
 
 log = logging.getLogger(__name__)
@@ -339,9 +339,7 @@ class CoordinateEntry(QWidget):
             else:
                 limits = self.tr("no travel limits set")
             state = "" if axis in self._axes else "\n" + self.tr("(this device has no such axis)")
-            low, high = (
-                number_text(v, field.decimals()) for v in (field.minimum(), field.maximum())
-            )
+            low, high = field.range_texts()
             field.setToolTip(fill(tip, axis.upper(), low, high, limits) + state)
 
     def set_axes_enabled(self, axes: Iterable[str]) -> None:

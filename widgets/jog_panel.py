@@ -249,8 +249,7 @@ class JogPanel(QWidget):
 
     def _step_tip(self) -> None:
         if self._units == INCH:
-            spin = self.step_spin
-            low, high = (number_text(v, spin.decimals()) for v in (spin.minimum(), spin.maximum()))
+            low, high = self.step_spin.range_texts()
             self.step_spin.setToolTip(fill(self.tr("Any step size (%1 to %2 in)"), low, high))
         else:
             self.step_spin.setToolTip(self.tr("Any step size (0.001 to 1000 mm)"))

@@ -142,8 +142,7 @@ class SpeedControl(QWidget):
     def _range_tips(self) -> None:
         """The field's and the slider's tooltips, with the range in the unit shown."""
         if self._units == INCH:
-            spin = self.spin
-            low, high = (number_text(v, spin.decimals()) for v in (spin.minimum(), spin.maximum()))
+            low, high = self.spin.range_texts()
             tip = self.tr("Speed, %1 to %2 in/s; press Enter or Apply to send")
             drag = self.tr("Drag and release to send (%1 to %2 in/s)")
         else:
