@@ -9,7 +9,6 @@ may be hundreds of MiB: it is read a chunk at a time and its records go straight
 from __future__ import annotations
 
 import logging
-import re
 import threading
 from itertools import islice
 from pathlib import Path
@@ -31,6 +30,7 @@ from PySide6.QtWidgets import (
 from app.messages import localized
 from app.traffic_console import RawConsole, localized_index
 from app.traffic_feed import TimelineFeed
+from drivers.decoding import PartProtocols, connection_protocol
 from drivers.errors import MotionError
 from drivers.log_reader import LogRecord, open_any_log
 from drivers.registry import create_protocol, protocol_names
@@ -43,17 +43,16 @@ log = logging.getLogger(__name__)
 RAW = QT_TRANSLATE_NOOP("LogViewer", "(undecoded)")  # the key; shown translated
 LOOKAHEAD = 10_000  # records searched for the connection note (a session log's second line)
 BATCH = 65_536  # records handed to the index at a time
-_CONNECTION = re.compile(r"(?:connected to|bridge) .*\(([\w-]+)(?: ([\w-]+))?[,)]")
 
 
 def detect_protocol(records: list[LogRecord]) -> tuple[str, str] | None:
-    """(protocol, variant) named by a log's connection note, e.g. `connected to … (coxiris, …)`."""
-    names = set(protocol_names())
+    """(protocol, variant) named by a log's first connection note, e.g. `connected to …
+    (coxiris, …)`."""
     for record in records:
         if record.note:
-            hit = _CONNECTION.search(record.note)
-            if hit and hit.group(1) in names:
-                return hit.group(1), hit.group(2) or ""
+            named = connection_protocol(record.note)
+            if named is not None:
+                return named
     return None
 
 
@@ -151,15 +150,24 @@ class LogViewer(QMainWindow):
             )
             protocol = create_protocol(name, variant or None) if name and name != RAW else None
             index = localized_index(protocol)
+            parts = PartProtocols(protocol)
+            follow = chosen != RAW  # undecoded when chosen so; else each part by its note's
             while batch:
-                index.add_records(batch)
+                start = 0
+                for at, record in enumerate(batch):
+                    if follow and record.note and parts.follow(record):
+                        index.add_records(batch[start:at])
+                        index.set_protocol(parts.current)
+                        start = at
+                index.add_records(batch[start:] if start else batch)
                 batch = list(islice(records, BATCH))
         except (MotionError, LookupError, OSError) as exc:
             if index is not None:
                 index.close()
             self._loaded.emit(localized(exc))
             return
-        self._loaded.emit((path, kind, name or RAW, variant, index))
+        used = ", ".join(f"{n} {v}".strip() for n, v in parts.used)
+        self._loaded.emit((path, kind, name or RAW, used, index))
 
     @Slot(object)
     def _on_loaded(self, result: object) -> None:
@@ -167,13 +175,13 @@ class LogViewer(QMainWindow):
         if isinstance(result, str):
             self._show(result, error=True)
             return
-        path, kind, name, variant, index = result
+        path, kind, name, used, index = result
         found = self.protocol_combo.findData(name or RAW)
         if found >= 0:
             self.protocol_combo.setCurrentIndex(found)
         self.console.load(index)
         self.setWindowTitle(fill(self.tr("%1 — traffic log"), path.name))
-        shown = self.tr(RAW) if name == RAW else f"{name} {variant}".strip()
+        shown = used or self.tr(RAW)
         text = self.tr("%1 (%2): %3 lines, decoded as %4")
         self._show(fill(text, path, kind, f"{len(index):,}", shown), error=False)
 

@@ -860,7 +860,8 @@ class RawConsole(QWidget):
         return len(self._model.rows)
 
     def export_csv(self, path: str | Path) -> int:
-        """Write the shown lines as CSV (CSV_COLUMNS: line, time, direction, kind, bytes, …)."""
+        """Write the shown lines as CSV (CSV_COLUMNS: line, time, direction, kind, bytes, …, and
+        the wall-clock time_iso last)."""
         self.flush()
         model = self._model
         with Path(path).open("w", encoding="utf-8", newline="") as out:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import time
+from datetime import datetime
 from operator import methodcaller
 
 import numpy as np
@@ -37,7 +38,7 @@ COLUMNS = (  # the headers, translated at use (TrafficModel context)
 )
 CSV_COLUMNS = (
     "line", "time_s", "direction", "kind", "hex", "text", "meaning", "pair", "latency_ms",
-    "first_copy",
+    "first_copy", "time_iso",
 )  # fmt: skip
 LINE, TIME, DIRECTION, BYTES, MEANING, REPLY = range(len(COLUMNS))
 KIND_NAMES = {  # the kinds' names shown (RawConsole context); the keys stay as they are
@@ -73,14 +74,27 @@ def shown_bytes(data: bytes, mode: str) -> str:
     return escape(data)
 
 
-def stamp(seconds: float, mode: str, wall_offset: float | None, previous: float | None) -> str:
-    """A time as seconds since the origin, a wall-clock time, or the gap since `previous`."""
+def stamp(
+    when: float, mode: str, origin: float, wall_offset: float | None, previous: float | None
+) -> str:
+    """A record time `when` as seconds since `origin`, as the wall-clock time (`when` plus
+    `wall_offset`: the record clock's own times, not times since the origin), or as the gap
+    since the record time `previous`."""
     if mode == ABSOLUTE and wall_offset is not None:
-        wall = seconds + wall_offset
-        return time.strftime("%H:%M:%S", time.localtime(wall)) + f".{int(wall * 1000) % 1000:03d}"
+        return wall_text(when + wall_offset)
     if mode == DELTA:
-        return "+0.000" if previous is None else f"+{seconds - previous:.3f}"
-    return f"{seconds:010.3f}"
+        return "+0.000" if previous is None else f"+{when - previous:.3f}"
+    return f"{when - origin:010.3f}"
+
+
+def wall_text(wall: float) -> str:
+    """A wall-clock time (epoch seconds) as local `HH:MM:SS.mmm`."""
+    return time.strftime("%H:%M:%S", time.localtime(wall)) + f".{int(wall * 1000) % 1000:03d}"
+
+
+def iso_text(wall: float) -> str:
+    """A wall-clock time (epoch seconds) as local ISO 8601 with milliseconds and the offset."""
+    return datetime.fromtimestamp(wall).astimezone().isoformat(timespec="milliseconds")
 
 
 def reply_text(line: TrafficLine) -> str:
@@ -240,7 +254,7 @@ class TrafficModel(QAbstractTableModel):
         shown = shown_bytes(data[:SHOWN_BYTES], self.mode)
         cells = (
             str(number),
-            stamp(when - self.origin, self.time_mode, self.index_.wall_offset, previous),
+            stamp(when, self.time_mode, self.origin, self.index_.wall_offset, previous),
             direction.upper() or "--",
             shown + ("…" if len(data) > SHOWN_BYTES else ""),
             meaning,
@@ -279,7 +293,7 @@ class TrafficModel(QAbstractTableModel):
 
     def csv_row(self, row: int) -> list[object]:
         """A shown line's CSV fields, as CSV_COLUMNS names them."""
-        line = self.line_at(row)
+        line, wall_offset = self.line_at(row), self.index_.wall_offset
         return [
             line.number,
             f"{line.time - self.origin:.3f}",
@@ -291,6 +305,7 @@ class TrafficModel(QAbstractTableModel):
             line.pair if line.pair >= 0 else "",
             "" if math.isnan(line.latency_ms) else f"{line.latency_ms:.1f}",
             line.first_copy if line.first_copy >= 0 else "",
+            "" if wall_offset is None else iso_text(line.time + wall_offset),
         ]
 
     def tooltip(self, row: int) -> str:

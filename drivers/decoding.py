@@ -2,23 +2,33 @@
 
 The same decoders serve the driver, the log reader and `motionctl log decode`: replies through
 the protocol's framer and `decode`, what was sent through its TX framer and `describe_sent`.
+A log that changed device is decoded part by part: each part by the protocol its connection
+note names (`PartProtocols`), the part before any note by the protocol chosen.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import logging
+import re
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
-from drivers.errors import FrameError
+from drivers.errors import FrameError, MotionError
 from drivers.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.framers.base import Framer
 from drivers.framers.lines import LineFramer
 from drivers.log_reader import LogRecord
 from drivers.messages import Message, message_of
 from drivers.protocols.base import Protocol
+from drivers.registry import create_protocol, protocol_names
+
+log = logging.getLogger(__name__)
 
 CACHE_SIZE = 4096  # distinct frames remembered per direction, with their meaning
 RECORD_FRAMES = 4  # a record of at most this many frames, each known, is remembered whole
+# The session log's `connected to URL (protocol [variant], N baud)`, the bridge's `bridge A <-> B
+# (protocol)`: the protocol and variant that the traffic after the note speaks.
+_CONNECTION = re.compile(r"(?:connected to|bridge) .*\(([\w-]+)(?: ([\w-]+))?[,)]")
 
 
 @dataclass(slots=True)
@@ -217,7 +227,60 @@ class StreamDecoder:
         return self._pending[direction]
 
 
-def decode_records(protocol: Protocol, records: list[LogRecord]) -> list[DecodedFrame]:
-    """Every frame of the records, in order, with its meaning."""
+def connection_protocol(note: str) -> tuple[str, str] | None:
+    """(protocol, variant) that a connection note names, e.g. `connected to … (coxiris, …)`;
+    None for another note or an unknown protocol."""
+    hit = _CONNECTION.search(note)
+    if hit is None or hit.group(1) not in protocol_names():
+        return None
+    return hit.group(1), hit.group(2) or ""
+
+
+def _name_of(protocol: Protocol) -> tuple[str, str]:
+    return protocol.name, protocol.variant.name if protocol.variant else ""
+
+
+class PartProtocols:
+    """The protocol each part of a log is decoded with: the one chosen (or None: undecoded)
+    until a connection note names one, then that one until the next such note."""
+
+    def __init__(self, chosen: Protocol | None) -> None:
+        self.chosen = chosen
+        self.current = chosen
+        self.used: list[tuple[str, str]] = [_name_of(chosen)] if chosen is not None else []
+
+    def follow(self, record: LogRecord) -> bool:
+        """Whether `record` is a connection note that changes the protocol (then `current`)."""
+        if not record.note:
+            return False
+        named = connection_protocol(record.note)
+        if named is None:
+            return False
+        try:
+            protocol = create_protocol(named[0], named[1] or None)  # ("": the first variant)
+        except MotionError as exc:  # a variant this version does not know
+            log.warning("log note %r: %s; the protocol so far goes on", record.note, exc)
+            return False
+        key = _name_of(protocol)
+        current, chosen = self.current, self.chosen
+        if current is not None and _name_of(current) == key:
+            return False
+        if chosen is not None and _name_of(chosen) == key:
+            protocol = chosen  # the one chosen, with its settings (ticks/mm, …)
+        self.current = protocol
+        if key not in self.used:
+            self.used.append(key)
+        return True
+
+
+def decode_records(protocol: Protocol, records: Iterable[LogRecord]) -> list[DecodedFrame]:
+    """Every frame of the records, in order, with its meaning: by `protocol` until a connection
+    note names another protocol, then by that one (a log of a session that changed device)."""
+    parts = PartProtocols(protocol)
     decoder = StreamDecoder(protocol)
-    return [frame for record in records for frame in decoder.feed(record)]
+    frames: list[DecodedFrame] = []
+    for record in records:
+        if parts.follow(record) and parts.current is not None:
+            decoder = StreamDecoder(parts.current)
+        frames.extend(decoder.feed(record))
+    return frames
