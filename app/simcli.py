@@ -89,6 +89,13 @@ def build_parser() -> argparse.ArgumentParser:
         + "; ".join(f"{name}: {what}" for name, what in FAULT_COMMANDS.items())
         + "; vanish: close the port and exit",
     )
+    parser.add_argument(
+        "--link",
+        metavar="PATH",
+        help="keep PATH a symlink to the pty while serving (made at start, replacing what is "
+        "there; removed at exit), like socat's link=: a device served again is found under "
+        "the same name",
+    )
     parser.add_argument("-v", "--verbose", action="store_true", help="log on stderr")
     return parser
 
@@ -133,7 +140,15 @@ def main(argv: Sequence[str] | None = None) -> int:
             seed=options.seed or 0,
         )
     record = open(options.record, "a", encoding="utf-8") if options.record else None  # noqa: SIM115
-    server = PtyServer(faulty or device, TrafficLogWriter(record) if record else None)  # type: ignore[arg-type]
+    try:
+        server = PtyServer(
+            faulty or device,  # type: ignore[arg-type]
+            TrafficLogWriter(record) if record else None,
+            link=options.link,
+        )
+    except OSError as exc:  # the link cannot be made there
+        print(f"motionsim: cannot link {options.link}: {exc}", file=sys.stderr)
+        return 2
 
     def stop(signum: int, frame: FrameType | None) -> None:
         server.stop()

@@ -64,3 +64,7 @@ class QueueFull(DeviceError):
 class NoControlLines(MotionError):
     """The port has no modem control lines (a pseudo-terminal, a TCP socket): DTR and RTS cannot
     be set, the inputs cannot be read, no break can be sent."""
+
+
+class PortBusy(PortError):
+    """Another program holds the port open (an exclusive lock, or Windows' sharing rule)."""

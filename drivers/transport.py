@@ -20,7 +20,7 @@ if os.name == "posix":
     from serial import serialposix
 
 from drivers.control_lines import BREAK_S, OUTPUTS, ControlLines
-from drivers.errors import BadInput, NoControlLines, PortError
+from drivers.errors import BadInput, NoControlLines, PortBusy, PortError
 from drivers.messages import Message
 from drivers.traffic import RX, TX, Traffic
 
@@ -345,11 +345,32 @@ def open_link(url: str, baud: int, *, dtr: bool | None = None, rts: bool | None 
         raise PortError(Message("no port given"))
     try:
         port = serial.serial_for_url(url, baudrate=baud, timeout=POLL_INTERVAL, do_not_open=True)
+        if os.name == "posix" and isinstance(port, serial.Serial):
+            port.exclusive = True  # flock: a second program's open fails (spy:// included)
         if dtr is not None:
             port.dtr = dtr
         if rts is not None:
             port.rts = rts
         port.open()
     except (serial.SerialException, OSError, ValueError) as exc:
+        if _busy(exc):
+            raise PortBusy(
+                Message("{url} is in use by another program", url=_port_name(url))
+            ) from exc
         raise PortError(Message("cannot open {url}: {error}", url=url, error=exc)) from exc
     return Link(port, url)
+
+
+def _busy(exc: Exception) -> bool:
+    """Whether an open failed because another program holds the port: the exclusive lock
+    taken (POSIX), or the port opened elsewhere (Windows: access denied)."""
+    if getattr(exc, "errno", None) in (errno.EWOULDBLOCK, errno.EAGAIN):
+        return True
+    return os.name == "nt" and "PermissionError(13" in str(exc)
+
+
+def _port_name(url: str) -> str:
+    """The port a URL opens: `/dev/ttyUSB0` for `spy:///dev/ttyUSB0?file=x`, else the URL."""
+    if url.startswith("spy://"):
+        return url.removeprefix("spy://").split("?", 1)[0]
+    return url

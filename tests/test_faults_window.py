@@ -219,15 +219,21 @@ def test_a_reply_to_another_command_never_leaves_a_false_position(
 
 
 @pytest.mark.parametrize("protocol", ("coxiris", "laser-frame", "visiomex", "firmata", "pi-frame"))
-def test_a_vanished_device_is_an_error_and_reconnects_when_back(
+def test_a_vanished_device_is_an_error_and_reconnects_when_back_slot_only(
     qtbot, window: MainWindow, protocol: str
 ) -> None:
+    """Only the window's slot for a port the port list shows again; the worker's own watch for
+    a lost port is tested with real processes in test_reconnect_real.py."""
     states = States(window)
     with device(qtbot, window, protocol) as sim:
         jog(qtbot, window, 2.0)
         sim.fault("vanish")
         first_error(qtbot, states)
         assert not window.jog_panel.isEnabled()
+        last = window._last_connection
+        window.disconnect_device()  # the worker watches no more: only the slot reconnects
+        qtbot.waitUntil(lambda: window.worker._watch is None, timeout=WAIT_MS)
+        window._last_connection = last
         back = SimProcess(protocol, "--instant")
         try:
             # A new pty may get another number: announce it as the lost port's return.

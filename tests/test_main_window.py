@@ -219,7 +219,9 @@ def test_window_adapts_to_a_two_axis_commanded_only_protocol(qtbot, window: Main
 
 
 @pytest.mark.e2e
-def test_reconnects_when_the_lost_port_comes_back(qtbot, window: MainWindow) -> None:
+def test_reconnects_when_the_lost_port_comes_back_slot_only(qtbot, window: MainWindow) -> None:
+    """Only the window's slot for a port the port list shows again; the worker's own watch for
+    a lost port is tested with real processes in test_reconnect_real.py."""
     from tests.simproc import SimProcess
 
     sim = SimProcess("coxiris", "--speed", "100")
@@ -230,6 +232,8 @@ def test_reconnects_when_the_lost_port_comes_back(qtbot, window: MainWindow) -> 
         qtbot.waitUntil(lambda: window.readout.position() == (3.0, 0.0, 0.0), timeout=5000)
         sim.kill()
         qtbot.waitUntil(lambda: window.connection_bar.state() == "error", timeout=5000)
+        window.disconnect_device()  # the worker watches no more: only the slot reconnects
+        qtbot.waitUntil(lambda: window.worker._watch is None, timeout=5000)
         sim = SimProcess("coxiris", "--speed", "100")  # a new device process
         # The kernel may hand out another pty number: the port that "comes back" is the old one
         # only when the numbers match, so announce the new path as the lost port's return.

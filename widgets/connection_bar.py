@@ -38,6 +38,14 @@ DESCRIPTION_WIDTH = 120  # px, fixed: a longer description is elided (whole in t
 STATE_MAX_WIDTH = 360  # px: a longer state text is elided (whole in the tooltip)
 
 
+def sim_protocol(port: str) -> str:
+    """The protocol a `sim://NAME` port names ("" for any other port)."""
+    scheme, _, rest = port.strip().partition("://")
+    if scheme.lower() != "sim":
+        return ""
+    return rest.split("?", 1)[0].split("/", 1)[0].lower()
+
+
 def _restore_edit(edit: QLineEdit, text: str, cursor: int, start: int, length: int) -> None:
     """Put back a line edit's text, cursor and selection (e.g. an inline completion)."""
     if edit.text() != text:
@@ -81,8 +89,10 @@ class ConnectionBar(QWidget):
             )
         )
         self.port_combo.currentTextChanged.connect(self._port_text_changed)
-        # Enter connects; an event filter, as the combo box hands an ignored Return back to its
-        # line edit (returnPressed would come twice)
+        # Enter connects. An editable combo box keeps the keyboard focus itself, so a key from
+        # the keyboard reaches the combo, not its line edit: the filter is on both, and the
+        # first to see Return takes it (the line edit's returnPressed would come twice or never).
+        self.port_combo.installEventFilter(self)
         self.port_combo.lineEdit().installEventFilter(self)
         self.description_label = QLabel()
         self.description_label.setObjectName("portDescription")
@@ -157,7 +167,7 @@ class ConnectionBar(QWidget):
         lines_row.addStretch(1)
         rows.addLayout(lines_row)
         for text, widget in (
-            (self.tr("Port:"), self.port_combo),
+            (self.tr("&Port:"), self.port_combo),
             (None, self.description_label),
             (None, self.refresh_button),
             (self.tr("Protocol:"), self.protocol_combo),
@@ -225,6 +235,10 @@ class ConnectionBar(QWidget):
         return self._descriptions.get(port.split("?", 1)[0], "")  # sim://coxiris?mute=1
 
     def _port_text_changed(self, text: str) -> None:
+        named = sim_protocol(text)  # a simulated device speaks its own protocol
+        index = self.protocol_combo.findText(named) if named else -1
+        if index >= 0 and index != self.protocol_combo.currentIndex():
+            self.protocol_combo.setCurrentIndex(index)  # protocol_changed: the window adapts
         description = self.port_description(text)
         label = self.description_label
         width = DESCRIPTION_WIDTH - 4  # fixed: also right before the first layout
@@ -235,7 +249,7 @@ class ConnectionBar(QWidget):
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """Enter (Return) in the port field connects, as the Connect button does, when idle."""
         if (
-            watched is self.port_combo.lineEdit()
+            watched in (self.port_combo, self.port_combo.lineEdit())
             and event.type() == QEvent.Type.KeyPress
             and isinstance(event, QKeyEvent)
             and event.key() in (Qt.Key.Key_Return, Qt.Key.Key_Enter)

@@ -37,7 +37,10 @@ class PtyServer:
         device: SimulatedDevice,
         recorder: TrafficListener | None = None,
         usb_frame: float = USB_FRAME,
+        link: str | None = None,
     ) -> None:
+        """`link`: a path kept as a symlink to the pty while serving (like socat's `link=`),
+        so that a device served again later is found under the same name."""
         self.device = device
         self.recorder = recorder
         self.usb_frame = usb_frame
@@ -57,6 +60,14 @@ class PtyServer:
         self._wake_r, self._wake_w = os.pipe()
         os.set_blocking(self._wake_w, False)
         self._unsent = bytearray()
+        self.link: str | None = None
+        if link is not None:
+            try:
+                make_link(self.path, link)
+            except OSError:
+                self.close()
+                raise
+            self.link = link
 
     def stop(self) -> None:
         """Ask `serve_forever` to return (safe from a signal handler or another thread)."""
@@ -153,7 +164,34 @@ class PtyServer:
             self.recorder(Traffic(direction, data, time.monotonic()))
 
     def close(self) -> None:
-        """Close every descriptor."""
+        """Close every descriptor; remove the link if it still points to this pty."""
+        if self.link is not None:
+            remove_link(self.path, self.link)
+            self.link = None
         for fd in (self.master, self.slave, self._wake_r, self._wake_w):
             with contextlib.suppress(OSError):
                 os.close(fd)
+
+
+def make_link(target: str, link: str) -> None:
+    """Make `link` a symlink to `target`, replacing what is there at once (never missing, never
+    half made: a new link beside it, renamed over it)."""
+    temporary = f"{link}.{os.getpid()}.tmp"
+    with contextlib.suppress(FileNotFoundError):
+        os.unlink(temporary)
+    os.symlink(target, temporary)
+    try:
+        os.replace(temporary, link)
+    except OSError:
+        with contextlib.suppress(OSError):
+            os.unlink(temporary)
+        raise
+
+
+def remove_link(target: str, link: str) -> None:
+    """Remove `link` if it is still a symlink to `target` (another server may have taken it)."""
+    try:
+        if os.readlink(link) == target:
+            os.unlink(link)
+    except OSError as exc:
+        log.debug("leaving %s: %s", link, exc)
