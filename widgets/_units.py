@@ -6,9 +6,9 @@ from __future__ import annotations
 import math
 
 from PySide6.QtCore import QCoreApplication
-from PySide6.QtWidgets import QDoubleSpinBox, QWidget
+from PySide6.QtWidgets import QWidget
 
-from widgets._i18n import number_text
+from widgets._number_field import NumberSpinBox
 
 MM, INCH = "mm", "in"
 MM_PER_INCH = 25.4
@@ -29,7 +29,7 @@ def check_units(units: str) -> None:
         raise ValueError(f"units must be {MM!r} or {INCH!r}, not {units!r}")
 
 
-class UnitSpinBox(QDoubleSpinBox):
+class UnitSpinBox(NumberSpinBox):
     """A length field (or a speed: `per_second`) shown in mm or inches, set and read in mm.
 
     The mm API (`set_mm_value`, `mm_value`, `set_mm_range`, `set_mm_decimals`) is what the rest
@@ -37,7 +37,10 @@ class UnitSpinBox(QDoubleSpinBox):
     more than in mm (at most 4), its range is the mm range rounded inwards, and `mm_value()` is
     on the mm grid (`10**-mm_decimals`, the device's resolution) and within the mm range; a
     value set in mm and not edited since is read back from that mm value, not from the inches
-    shown (no drift through their rounding)."""
+    shown (no drift through their rounding).
+
+    What is typed is kept as typed (NumberSpinBox): out of range or unreadable, it is shown in
+    red, `problem()` says why, and the value stays the last usable one."""
 
     def __init__(self, per_second: bool = False, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -52,13 +55,6 @@ class UnitSpinBox(QDoubleSpinBox):
     def units(self) -> str:
         """The units shown: "mm" or "in"."""
         return self._units
-
-    def range_texts(self) -> tuple[str, str]:
-        """The field's range as shown (in its units and decimals, the locale's digits)."""
-        return (
-            number_text(self.minimum(), self.decimals()),
-            number_text(self.maximum(), self.decimals()),
-        )
 
     def set_units(self, units: str) -> None:
         """Show the same length in "mm" or "in"; emits nothing."""

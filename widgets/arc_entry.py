@@ -10,7 +10,6 @@ from PySide6.QtCore import Signal
 from PySide6.QtWidgets import (
     QButtonGroup,
     QCheckBox,
-    QDoubleSpinBox,
     QGridLayout,
     QHBoxLayout,
     QLabel,
@@ -22,6 +21,7 @@ from PySide6.QtWidgets import (
 from widgets._axes import Box, decimals_for
 from widgets._buttons import make_button
 from widgets._i18n import fill, number_text
+from widgets._number_field import NumberSpinBox, label_name
 from widgets._units import INCH, MM, UnitSpinBox, check_units
 
 log = logging.getLogger(__name__)
@@ -90,9 +90,9 @@ def arc_extent(
     return (min(xs), max(xs)), (min(ys), max(ys))
 
 
-def _spin(name: str, suffix: str, low: float, high: float, decimals: int) -> QDoubleSpinBox:
+def _spin(name: str, suffix: str, low: float, high: float, decimals: int) -> NumberSpinBox:
     """A field with its unit; the value is taken on Enter, arrow steps or when focus leaves."""
-    field = QDoubleSpinBox()
+    field = NumberSpinBox()
     field.setObjectName(name)
     field.setDecimals(decimals)
     field.setRange(low, high)
@@ -166,9 +166,9 @@ class ArcEntry(QWidget):
             self.radius_field,
             self.z_field,
         )
-        self.labels: dict[QDoubleSpinBox, QLabel] = {}  # each field's label, by field
+        self.labels: dict[NumberSpinBox, QLabel] = {}  # each field's label, by field
         self._unit_tips()
-        self.fields: dict[str, QDoubleSpinBox] = {
+        self.fields: dict[str, NumberSpinBox] = {
             "cx": self.cx_field,
             "cy": self.cy_field,
             "radius": self.radius_field,
@@ -188,6 +188,7 @@ class ArcEntry(QWidget):
         )
         for index, (text, field) in enumerate(labels):
             label = QLabel(text)
+            field.set_what(label_name(text))
             label.setBuddy(field)
             label.setToolTip(field.toolTip())
             self.labels[field] = label
@@ -251,6 +252,7 @@ class ArcEntry(QWidget):
 
         for field in self.fields.values():
             field.valueChanged.connect(self._changed)
+            field.lineEdit().textChanged.connect(self._check)  # a typed value out of range
         self.ccw_radio.toggled.connect(self._changed)
         self.preview_check.toggled.connect(self._changed)
         self._changed()
@@ -305,9 +307,14 @@ class ArcEntry(QWidget):
 
     def values(self) -> dict:
         """{"cx", "cy", "radius", "start", "end", "z"} as floats (mm, degrees), "ccw" a bool."""
+        for field in self.fields.values():
+            field.interpretText()  # the typed text, if it can be used
+        return self._taken()
+
+    def _taken(self) -> dict:
+        """The values the fields hold, without taking what is being typed."""
         out: dict = {}
         for key, field in self.fields.items():
-            field.interpretText()
             if isinstance(field, UnitSpinBox):
                 out[key] = field.mm_value()
             else:
@@ -392,8 +399,9 @@ class ArcEntry(QWidget):
         shown = self._points if self.preview_check.isChecked() else []
         self.preview_changed.emit(list(shown))
 
-    def _check(self) -> None:
-        problem = self._find_problem()
+    def _check(self, *_: object) -> None:
+        typed = [field.problem() for field in self.fields.values() if field.problem()]
+        problem = "; ".join(typed) if typed else self._find_problem()
         self.problem_label.setText(problem)
         self.problem_label.setVisible(bool(problem))
         self.run_button.setEnabled(not problem)
@@ -401,7 +409,7 @@ class ArcEntry(QWidget):
         self.run_button.setToolTip(f"{tip}\n{problem}" if problem else tip)
 
     def _find_problem(self) -> str:
-        v = self.values()
+        v = self._taken()
         inch = self._units == INCH
         if not v["radius"] > 0:
             if inch:

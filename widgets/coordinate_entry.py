@@ -55,6 +55,7 @@ class _AxisSpinBox(UnitSpinBox):
     def __init__(self, axis: str, parent: QWidget | None = None) -> None:
         super().__init__(parent=parent)
         self.setObjectName(f"coord{axis.upper()}")
+        self.set_what(axis.upper())
         self.set_mm_decimals(3)
         self.set_single_steps(1.0, 0.1)
         self.setKeyboardTracking(False)
@@ -69,6 +70,7 @@ class CoordinateEntry(QWidget):
     home_requested = Signal()
     set_home_requested = Signal()
     stop_requested = Signal()
+    refused = Signal(str)  # why Go (or Enter) sent nothing: a field's text cannot be used
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -83,7 +85,7 @@ class CoordinateEntry(QWidget):
         grid = QGridLayout()
         self.fields: dict[str, UnitSpinBox] = {}
         for column, axis in enumerate(AXES):
-            label = QLabel(fill(self.tr("%1:", "an axis field's label"), axis.upper()))
+            label = QLabel(fill(self.tr("&%1:", "an axis field's label; Alt+axis"), axis.upper()))
             field = _AxisSpinBox(axis)
             field.lineEdit().returnPressed.connect(self._go)
             label.setBuddy(field)
@@ -238,8 +240,18 @@ class CoordinateEntry(QWidget):
             raise ValueError(f"mode must be {ABSOLUTE!r} or {RELATIVE!r}, not {mode!r}")
         (self.relative_radio if mode == RELATIVE else self.absolute_radio).setChecked(True)
 
+    def problems(self) -> list[str]:
+        """Why the typed coordinates cannot be sent, one message a field ([] when they can)."""
+        relative = self.mode() == RELATIVE
+        return [
+            field.problem()
+            for axis, field in self.fields.items()
+            if field.problem() and not (relative and axis not in self._axes)
+        ]
+
     def values(self) -> tuple[float, float, float]:
-        """The typed (x, y, z) in mm; a disabled axis is 0 in relative mode."""
+        """The typed (x, y, z) in mm; a disabled axis is 0 in relative mode (a field whose
+        text cannot be used gives its last usable value: see `problems()`)."""
         relative = self.mode() == RELATIVE
         out = []
         for axis in AXES:
@@ -364,6 +376,12 @@ class CoordinateEntry(QWidget):
 
     def _go(self) -> None:
         if not self.isEnabled() or not self.go_button.isEnabled():
+            return
+        problems = self.problems()
+        if problems:
+            why = fill(self.tr("%1; nothing sent"), "; ".join(problems))
+            log.info("go refused: %s", why)
+            self.refused.emit(why)
             return
         mode, target = self.mode(), self.machine_target()
         log.debug("go %s %s (machine)", mode, target)

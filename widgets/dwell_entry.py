@@ -5,10 +5,11 @@ from __future__ import annotations
 import logging
 
 from PySide6.QtCore import Signal
-from PySide6.QtWidgets import QHBoxLayout, QLabel, QSpinBox, QWidget
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QWidget
 
 from widgets._buttons import make_button
 from widgets._i18n import fill
+from widgets._number_field import WholeSpinBox, label_name
 
 log = logging.getLogger(__name__)
 
@@ -19,13 +20,15 @@ class DwellEntry(QWidget):
     """A milliseconds field and a Dwell button; `dwell_requested(ms)` on the button or Enter."""
 
     dwell_requested = Signal(int)
+    refused = Signal(str)  # why Dwell (or Enter) sent nothing: the field's text cannot be used
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("dwellEntry")
         label = QLabel(self.tr("Dwell:"))
-        self.spin = QSpinBox()
+        self.spin = WholeSpinBox()
         self.spin.setObjectName("dwellMs")
+        self.spin.set_what(label_name(label.text()))
         self.spin.setRange(0, MAX_DWELL_MS)
         self.spin.setSuffix(" ms")
         self.spin.setValue(500)
@@ -53,8 +56,12 @@ class DwellEntry(QWidget):
         layout.addWidget(self.dwell_button)
         QWidget.setTabOrder(self.spin, self.dwell_button)
 
+    def problem(self) -> str:
+        """Why the typed dwell cannot be sent ("" when it can)."""
+        return self.spin.problem()
+
     def value(self) -> int:
-        """The dwell in the field, in ms."""
+        """The dwell in the field, in ms (the last usable one: see `problem()`)."""
         self.spin.interpretText()
         return int(self.spin.value())
 
@@ -64,6 +71,11 @@ class DwellEntry(QWidget):
 
     def _dwell(self) -> None:
         if not self.isEnabled() or not self.dwell_button.isEnabled():
+            return
+        if self.problem():
+            why = fill(self.tr("%1; nothing sent"), self.problem())
+            log.info("dwell refused: %s", why)
+            self.refused.emit(why)
             return
         ms = self.value()
         log.debug("dwell requested: %d ms", ms)

@@ -360,7 +360,9 @@ class ValueDelegate(QStyledItemDelegate):
         row: ParameterRow = index.data(ROW_ROLE)
         if editor.text() == index.data(Qt.ItemDataRole.EditRole):
             return  # untouched: nothing to check or store
-        if model.setData(index, editor.text(), Qt.ItemDataRole.EditRole):
+        number, _why = check_value(row, editor.text(), editor.locale())  # 38,2 in Spanish
+        typed = editor.text() if number is None else number  # refused: the model says why
+        if model.setData(index, typed, Qt.ItemDataRole.EditRole):
             shown = with_unit(index.data(Qt.ItemDataRole.EditRole), row.unit)
             message = self.tr("%1 = %2, not yet written to the device")
             self.feedback.emit(fill(message, row.name, shown), False)
@@ -379,7 +381,7 @@ class ValueDelegate(QStyledItemDelegate):
 
     def _check(self, editor: QLineEdit, row: ParameterRow) -> bool:
         """Colour the editor and say what is wrong (or what Enter will keep)."""
-        value, why = check_value(row, editor.text())
+        value, why = check_value(row, editor.text(), editor.locale())
         style = "" if value is not None else REFUSED_STYLE
         if editor.styleSheet() != style:
             editor.setStyleSheet(style)

@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 from decimal import Decimal
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QLocale
 
 from widgets._i18n import fill
 
@@ -91,9 +91,14 @@ def format_value(row: ParameterRow, value: float) -> str:
     return f"{value:.{decimals(row.step)}f}"
 
 
-def check_value(row: ParameterRow, text: str) -> tuple[float | None, str]:
-    """(value on the step grid, "") for acceptable text, else (None, why it is refused)."""
+def check_value(
+    row: ParameterRow, text: str, locale: QLocale | None = None
+) -> tuple[float | None, str]:
+    """(value on the step grid, "") for acceptable text, else (None, why it is refused).
+
+    The decimal point is "." or the decimal mark of `locale` (default: the interface's)."""
     typed = text.strip()
+    mark = (QLocale(locale) if locale is not None else QLocale()).decimalPoint()
 
     def refuse(shown: str, reason: str) -> tuple[None, str]:
         why = QCoreApplication.translate("ParameterValues", "%1: %2 refused (%3): %4")
@@ -101,12 +106,15 @@ def check_value(row: ParameterRow, text: str) -> tuple[float | None, str]:
 
     if not typed:
         return refuse('""', QCoreApplication.translate("ParameterValues", "empty"))
-    if "," in typed and "." not in typed:
+    number_text = typed
+    if mark not in ("", ".") and mark in typed and "." not in typed:
+        number_text = typed.replace(mark, ".")  # 38,2 in Spanish or French
+    elif "," in typed and "." not in typed:
         return refuse(
             f'"{typed}"', QCoreApplication.translate("ParameterValues", "use a point for decimals")
         )
     try:
-        number = float(typed)
+        number = float(number_text)
     except ValueError:
         return refuse(f'"{typed}"', QCoreApplication.translate("ParameterValues", "not a number"))
     shown = with_unit(typed, row.unit)

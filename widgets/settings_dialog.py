@@ -37,6 +37,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._i18n import fill
+from widgets._number_field import NumberSpinBox, TypedNumber, WholeSpinBox, mark_invalid
 
 CONSOLE_BYTES_PER_LINE = 33  # the console's memory per line (drivers/traffic_index.py)
 PORTABLE = QKeySequence.SequenceFormat.PortableText
@@ -178,7 +179,8 @@ class SettingsDialog(QDialog):
         return low, high
 
     def _double(self, name: str, suffix: str, tip: str) -> QDoubleSpinBox:
-        spin = QDoubleSpinBox()
+        spin = NumberSpinBox()
+        spin.set_what(self._label(name))
         spin.setDecimals(2)
         spin.setRange(*self._range(name))
         spin.setSingleStep(1.0 if self._specs[name].high > 10 else 0.1)
@@ -188,7 +190,8 @@ class SettingsDialog(QDialog):
         return spin
 
     def _integer(self, name: str, suffix: str, special: str, step: int, tip: str) -> QSpinBox:
-        spin = QSpinBox()
+        spin = WholeSpinBox()
+        spin.set_what(self._label(name))
         low, high = self._range(name)
         spin.setRange(int(low), int(high))
         spin.setSingleStep(step)
@@ -464,7 +467,10 @@ class SettingsDialog(QDialog):
         problems = self._field_problems()
         bad = {name for name, _ in problems}
         for name, widget in self.fields.items():
-            widget.setStyleSheet(INVALID_STYLE if name in bad else "")
+            if isinstance(widget, TypedNumber):
+                mark_invalid(widget.lineEdit(), name in bad)  # its own mark, and a range error
+            else:
+                widget.setStyleSheet(INVALID_STYLE if name in bad else "")
         self.problem_label.setText("\n".join(message for _, message in problems))
         self.problem_label.setVisible(bool(problems))
         self.ok_button.setEnabled(not problems)

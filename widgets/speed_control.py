@@ -15,6 +15,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._i18n import fill, number_text
+from widgets._number_field import label_name
 from widgets._units import INCH, MM, MM_PER_INCH, UnitSpinBox, check_units
 
 log = logging.getLogger(__name__)
@@ -27,6 +28,7 @@ class SpeedControl(QWidget):
     in mm/s; `speed_requested` (mm/s) on slider release, Enter or Apply only."""
 
     speed_requested = Signal(float)
+    refused = Signal(str)  # why Apply (or Enter) sent nothing: the field's text cannot be used
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -47,6 +49,7 @@ class SpeedControl(QWidget):
 
         self.spin = UnitSpinBox(per_second=True)
         self.spin.setObjectName("speedSpin")
+        self.spin.set_what(label_name(label.text()))
         self.spin.set_mm_decimals(2)
         self.spin.setKeyboardTracking(False)
         self.spin.setMinimumWidth(100)
@@ -98,8 +101,12 @@ class SpeedControl(QWidget):
         self.spin.set_mm_decimals(decimals)
         self._range_tips()
 
+    def problem(self) -> str:
+        """Why the typed speed cannot be sent ("" when it can)."""
+        return self.spin.problem()
+
     def value(self) -> float:
-        """The speed shown in the field, in mm/s."""
+        """The speed in the field, in mm/s (the last usable one: see `problem()`)."""
         return self.spin.mm_value()
 
     def set_value(self, speed: float) -> None:
@@ -170,7 +177,13 @@ class SpeedControl(QWidget):
     # -- user actions --------------------------------------------------------------------
 
     def apply(self) -> None:
-        """Send the speed in the field (what Enter and Apply do)."""
+        """Send the speed in the field (what Enter and Apply do); if it cannot be used, say why
+        (`refused`) and send nothing."""
+        if self.problem():
+            why = fill(self.tr("%1; nothing sent"), self.problem())
+            log.info("speed refused: %s", why)
+            self.refused.emit(why)
+            return
         self.spin.interpretText()
         speed = self.value()
         log.debug("speed requested: %g mm/s", speed)

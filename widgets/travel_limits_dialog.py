@@ -6,7 +6,6 @@ from PySide6.QtWidgets import (
     QCheckBox,
     QDialog,
     QDialogButtonBox,
-    QDoubleSpinBox,
     QGridLayout,
     QLabel,
     QRadioButton,
@@ -16,6 +15,7 @@ from PySide6.QtWidgets import (
 
 from widgets._axes import AXES, Box
 from widgets._i18n import fill
+from widgets._number_field import NumberSpinBox
 
 SPIN_LIMIT_MM = 99999.0
 DEFAULT_BOX: Box = ((-100.0, 100.0), (-100.0, 100.0), (0.0, 50.0))
@@ -49,7 +49,7 @@ class TravelLimitsDialog(QDialog):
         grid = QGridLayout()
         grid.addWidget(QLabel(self.tr("min")), 0, 1)
         grid.addWidget(QLabel(self.tr("max")), 0, 2)
-        self.spins: dict[str, tuple[QDoubleSpinBox, QDoubleSpinBox]] = {}
+        self.spins: dict[str, tuple[NumberSpinBox, NumberSpinBox]] = {}
         shown = box or DEFAULT_BOX
         for row, (axis, (low, high)) in enumerate(zip(AXES, shown, strict=True), start=1):
             grid.addWidget(
@@ -57,6 +57,8 @@ class TravelLimitsDialog(QDialog):
             )
             name = f"travel{axis.upper()}"
             pair = (self._spin(f"{name}Min", low), self._spin(f"{name}Max", high))
+            pair[0].set_what(fill(self.tr("%1 min", "an axis' lower travel limit"), axis.upper()))
+            pair[1].set_what(fill(self.tr("%1 max", "an axis' upper travel limit"), axis.upper()))
             grid.addWidget(pair[0], row, 1)
             grid.addWidget(pair[1], row, 2)
             self.spins[axis] = pair
@@ -83,14 +85,15 @@ class TravelLimitsDialog(QDialog):
             layout.addWidget(widget)
         self._sync()
 
-    def _spin(self, name: str, value: float) -> QDoubleSpinBox:
-        spin = QDoubleSpinBox()
+    def _spin(self, name: str, value: float) -> NumberSpinBox:
+        spin = NumberSpinBox()
         spin.setObjectName(name)
         spin.setRange(-SPIN_LIMIT_MM, SPIN_LIMIT_MM)
         spin.setDecimals(2)
         spin.setSuffix(" mm")
         spin.setValue(value)
         spin.valueChanged.connect(self._sync)
+        spin.lineEdit().textChanged.connect(self._sync)  # typed text that cannot be used, too
         return spin
 
     def _sync(self) -> None:
@@ -107,6 +110,9 @@ class TravelLimitsDialog(QDialog):
 
     def problem(self) -> str:
         """Why the box cannot be used ("" when it can)."""
+        typed = [spin.problem() for pair in self.spins.values() for spin in pair if spin.problem()]
+        if typed:
+            return "\n".join(typed)
         for axis, (low, high) in self.spins.items():
             if low.value() >= high.value():
                 why = self.tr("%1: the minimum must be below the maximum")
