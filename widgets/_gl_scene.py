@@ -257,6 +257,20 @@ def overlay_buttons(parent: QWidget) -> list[QToolButton]:
     return buttons
 
 
+def segment_vertices(xyz: np.ndarray, unchanged: int = 0) -> tuple[np.ndarray, int]:
+    """The line through the (n, 3) points in order, as segment end pairs (GL "lines" mode),
+    with no segment to or from a NaN point (a break in the trail); and how many of these
+    vertices depend only on the first `unchanged` points (so are the same as before)."""
+    finite = np.isfinite(xyz).all(axis=1)
+    joined = finite[:-1] & finite[1:]
+    starts = np.flatnonzero(joined)
+    vertices = np.empty((2 * len(starts), 3), dtype=np.float32)
+    vertices[0::2] = xyz[starts]
+    vertices[1::2] = xyz[starts + 1]
+    same = 2 * int(np.count_nonzero(joined[: max(unchanged - 1, 0)]))
+    return vertices, same
+
+
 def preview_array(points: object) -> np.ndarray:
     """A planned path's points as (n, 3) float64 mm; None or [] give (0, 3).
 

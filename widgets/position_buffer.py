@@ -5,6 +5,10 @@ Clear trail); with a capacity it is a ring that drops the oldest rows. `TrailLOD
 is what the views draw: the older rows decimated per block to their first, last and extreme
 points, the recent ones all, so a frame costs about the same for a million points as for ten
 thousand, and the drawn trail keeps its shape, its bounding box and its newest point.
+
+A row of NaN positions is a break: the trail is drawn in segments, none joining the rows on
+either side of it (a new connection: the stage was not watched meanwhile). Breaks are never
+decimated away.
 """
 
 from __future__ import annotations
@@ -40,6 +44,9 @@ class PositionBuffer:
         self._version = 0
         self._generation = 0  # changes when kept rows change or go (clear, shift, a ring's drop)
         self._lod: TrailLOD | None = None
+        self._break = False  # the next row starts a new segment (a NaN row goes before it)
+        self._appended = 0  # rows appended so far (breaks included), less those dropped
+        self._provisional: tuple[int, bool] | None = None  # _appended and _break at its start
 
     @property
     def capacity(self) -> int | None:
@@ -67,9 +74,47 @@ class PositionBuffer:
         """The number of rows kept."""
         return self._len
 
+    def break_trail(self) -> None:
+        """The next row starts a new segment: no line joins it to the rows before (a NaN row
+        goes between them when it comes; nothing when the trail is empty)."""
+        self._break = self._len > 0
+
+    def begin_provisional(self) -> None:
+        """The rows from now on are an estimate: `drop_provisional` takes them back."""
+        self._provisional = (self._appended, self._break)
+
+    def keep_provisional(self) -> None:
+        """The rows since `begin_provisional` are kept (the estimate came true)."""
+        self._provisional = None
+
+    def drop_provisional(self) -> None:
+        """Take back the rows appended since `begin_provisional` (the estimate did not come
+        true: the move failed); a ring's oldest rows dropped meanwhile do not come back."""
+        if self._provisional is None:
+            return
+        mark, pending = self._provisional
+        self._provisional = None
+        count = min(self._appended - mark, self._len)
+        self._appended = mark
+        self._break = self._break or pending
+        if count <= 0:
+            return
+        self._len -= count
+        if self._capacity is not None:
+            self._next = (self._next - count) % self._capacity
+        self._version += 1
+        self._generation += 1
+
     def append(self, t: float, x: float, y: float, z: float) -> None:
-        """Add a row (a ring drops the oldest one when full)."""
-        row = (t, x, y, z)
+        """Add a row (a ring drops the oldest one when full); after `break_trail`, a NaN row
+        first."""
+        if self._break:
+            self._break = False
+            self._append_row((t, np.nan, np.nan, np.nan))
+        self._append_row((t, x, y, z))
+        self._version += 1
+
+    def _append_row(self, row: tuple[float, float, float, float]) -> None:
         if self._capacity is None:
             if self._len == len(self._data):
                 self._grow(self._len + 1)
@@ -82,11 +127,15 @@ class PositionBuffer:
             if self._len == self._capacity:
                 self._generation += 1  # the oldest row went
             self._len = min(self._len + 1, self._capacity)
-        self._version += 1
+        self._appended += 1
 
     def extend(self, rows: np.ndarray) -> None:
         """Add many (t, x, y, z) rows at once, oldest first (as `append` for each)."""
         rows = np.asarray(rows, dtype=np.float64).reshape(-1, 4)
+        if self._break and len(rows):
+            self._break = False
+            gap = np.array([[rows[0, 0], np.nan, np.nan, np.nan]])
+            rows = np.concatenate([gap, rows])
         if self._capacity is not None:
             for row in rows[-self._capacity :]:
                 self.append(*row)
@@ -96,6 +145,7 @@ class PositionBuffer:
             self._grow(end)
         self._data[self._len : end] = rows
         self._len = end
+        self._appended += len(rows)
         self._version += 1
 
     def _grow(self, needed: int) -> None:
@@ -149,8 +199,10 @@ class PositionBuffer:
         self._generation += 1
 
     def clear(self, keep_last: bool = False) -> None:
-        """Drop all rows (all but the newest with `keep_last`, so a marker can stay)."""
+        """Drop all rows (all but the newest with `keep_last`, so a marker can stay); a break
+        asked for still applies to the next row."""
         last = self.last() if keep_last else None
+        pending, self._break = self._break, False
         self._next = 0
         self._len = 0
         if self._capacity is None and len(self._data) > INITIAL_ROWS:
@@ -159,17 +211,22 @@ class PositionBuffer:
         self._generation += 1
         if last is not None:
             self.append(*last)
+        self._break = pending and self._len > 0
+        if self._provisional is not None:
+            self._provisional = (self._appended, self._break)  # what is kept stays
 
 
 def _block_picks(xyz: np.ndarray) -> np.ndarray:
     """For (blocks, size, 3) points: the offsets (blocks, 8) of each block's first and last
-    point and of its lowest and highest x, y and z (NaN counts as lowest and highest)."""
+    point and of its lowest and highest x, y and z (among its finite values; breaks, the NaN
+    rows, are kept apart: see `TrailLOD`)."""
     blocks, size, _ = xyz.shape
+    missing = np.isnan(xyz)
     picks = np.empty((blocks, 8), dtype=np.int64)
     picks[:, 0] = 0
     picks[:, 1] = size - 1
-    picks[:, 2:5] = np.argmin(xyz, axis=1)
-    picks[:, 5:8] = np.argmax(xyz, axis=1)
+    picks[:, 2:5] = np.argmin(np.where(missing, np.inf, xyz), axis=1)
+    picks[:, 5:8] = np.argmax(np.where(missing, -np.inf, xyz), axis=1)
     return picks
 
 
@@ -177,9 +234,10 @@ class TrailLOD:
     """A buffer's trail as drawn: older rows min/max-decimated per block, the recent ones all.
 
     Rows older than the newest `recent` are decimated in blocks: each block keeps its first and
-    last row and its rows of lowest and highest x, y and z, in order, so every extreme of the
-    whole is kept. Blocks start at `first_block` rows (longer when many rows come at once, as
-    after a restart); whenever the decimated part would exceed `max_rows` rows, neighbouring
+    last row, its rows of lowest and highest x, y and z, and every break (NaN row), in order, so
+    every extreme of the whole is kept and no segment joins what a break separates. Blocks
+    start at `first_block` rows (longer when many rows come at once, as after a restart);
+    whenever the decimated part would exceed `max_rows` rows, neighbouring
     blocks are merged (the extremes of two blocks are among their kept rows, so nothing is read
     twice) and new blocks are twice as long. Updating costs only the rows appended since the
     last update; a clear, a shift or a ring's dropped row makes it start again from the buffer.
@@ -253,7 +311,13 @@ class TrailLOD:
         picks = _block_picks(xyz) + (np.arange(count, dtype=np.int64)[:, None] * block + start)
         first_group = int(self._groups[-1]) + 1 if len(self._groups) else 0
         groups = np.repeat(np.arange(first_group, first_group + count, dtype=np.int64), 8)
-        picks = np.sort(picks, axis=1).ravel()
+        picks = picks.ravel()
+        breaks = np.flatnonzero(np.isnan(xyz[:, :, 0]).ravel())  # every one is kept
+        if len(breaks):
+            picks = np.concatenate([picks, breaks + start])
+            groups = np.concatenate([groups, first_group + breaks // block])
+        order = np.argsort(picks, kind="stable")
+        picks, groups = picks[order], groups[order]
         new = np.ones(len(picks), dtype=bool)
         new[1:] = picks[1:] != picks[:-1]
         added = picks[new]
@@ -262,8 +326,11 @@ class TrailLOD:
         self._done = start + count * block
         merged = False
         while len(self._kept) > self.max_rows:
+            before = len(self._kept)
             self._merge_pairs(data)
             merged = True
+            if len(self._kept) >= before:
+                break  # nothing left to merge (only breaks, ends and extremes)
         if merged:
             self._decimated = data[self._kept]
             self.epoch += 1  # rows already drawn changed
@@ -279,13 +346,17 @@ class TrailLOD:
         chosen[0] = chosen[-1] = True
         chosen[edges] = chosen[edges - 1] = True  # the first and last row of each block
         xyz = data[kept, 1:4]
+        missing = np.isnan(xyz)
+        chosen |= missing[:, 0]  # the breaks
         for axis in range(3):
-            order = np.lexsort((xyz[:, axis], groups))  # by block, then by value (NaN last)
-            sorted_groups = groups[order]
+            values = xyz[:, axis]
+            lowest = np.lexsort((np.where(missing[:, axis], np.inf, values), groups))
+            highest = np.lexsort((np.where(missing[:, axis], -np.inf, values), groups))
+            sorted_groups = groups[lowest]  # by block, then by value: the same blocks in order
             starts = np.flatnonzero(np.r_[True, sorted_groups[1:] != sorted_groups[:-1]])
-            ends = np.r_[starts[1:], len(order)] - 1
-            chosen[order[starts]] = True  # lowest
-            chosen[order[ends]] = True  # highest
+            ends = np.r_[starts[1:], len(lowest)] - 1
+            chosen[lowest[starts]] = True
+            chosen[highest[ends]] = True
         self._kept, self._groups = kept[chosen], groups[chosen]
         self.block *= 2
 

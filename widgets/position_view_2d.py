@@ -103,7 +103,8 @@ class PositionView2D(BufferedViewMixin, QWidget):
         )
         self.preview_curve.setVisible(False)
         xy.addItem(self.preview_curve, ignoreBounds=True)  # fitted by _follow_xy, not auto
-        self.trail = xy.plot(pen=pg.mkPen(TRAIL_COLOUR, width=1.5), name="trail")
+        # connect="finite": a NaN row (a break: a new connection) joins nothing.
+        self.trail = xy.plot(pen=pg.mkPen(TRAIL_COLOUR, width=1.5), name="trail", connect="finite")
         self.current_marker = pg.ScatterPlotItem(
             size=12, brush=pg.mkBrush(CURRENT_COLOUR), pen=pg.mkPen("k", width=1)
         )
@@ -127,7 +128,9 @@ class PositionView2D(BufferedViewMixin, QWidget):
         tp.setClipToView(True)
         tp.setDownsampling(auto=True, mode="peak")
         self.curves = {
-            axis: tp.plot(pen=pg.mkPen(AXIS_COLOURS[axis], width=1.5), name=axis.upper())
+            axis: tp.plot(
+                pen=pg.mkPen(AXIS_COLOURS[axis], width=1.5), name=axis.upper(), connect="finite"
+            )
             for axis in AXES
         }
         self.legend = self._legend_row(tp)

@@ -42,6 +42,7 @@ from widgets._gl_scene import (
     overlay_buttons,
     preview_array,
     preview_tuples,
+    segment_vertices,
 )
 from widgets._gl_scene import (  # here for its callers of before; it imports no OpenGL
     share_opengl_contexts as share_opengl_contexts,
@@ -289,15 +290,17 @@ class PositionView3D(BufferedViewMixin, QWidget):
         # The trail: the older part decimated (buffer.lod), drawn 1 px wide without antialiasing
         # (with software OpenGL antialiasing cost 12 ms a frame for a million-point raster that
         # covers the view, and 1.5 px 1.5 ms more); the recent part, every point, antialiased.
+        # Both as separate segments ("lines"), so that a break in the trail (a NaN row: a new
+        # connection) joins nothing: OpenGL leaves a NaN vertex undefined.
         self.trail_history = _lines(
             TRAIL_COLOUR,
             1.0,
-            mode="line_strip",
+            mode="lines",
             kind=_trail_class(),
             antialias=False,
             glOptions=_blended_without_depth(),
         )
-        self.trail = _lines(TRAIL_COLOUR, 1.5, mode="line_strip", kind=_trail_class())
+        self.trail = _lines(TRAIL_COLOUR, 1.5, mode="lines", kind=_trail_class())
         self._trail_token: tuple[int, int, int] | None = None
         self.current_marker = gl.GLScatterPlotItem(
             pos=np.zeros((1, 3), dtype=np.float32), color=CURRENT_COLOUR, size=12.0
@@ -331,10 +334,12 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._trail_token = lod.token()
         old = lod.decimated_count
         start = max(old - 1, 0)  # the recent line starts where the history ends
-        self.trail_history.set_vertices(rows[:old, 1:4], min(unchanged, old))
-        self.trail_history.setVisible(old >= 2)
-        self.trail.set_vertices(rows[start:, 1:4], max(0, unchanged - start))
-        self.trail.setVisible(len(rows) - start >= 2)
+        history, same = segment_vertices(rows[:old, 1:4], min(unchanged, old))
+        self.trail_history.set_vertices(history, same)
+        self.trail_history.setVisible(len(history) >= 2)
+        recent, same = segment_vertices(rows[start:, 1:4], max(0, unchanged - start))
+        self.trail.set_vertices(recent, same)
+        self.trail.setVisible(len(recent) >= 2)
         self.current_marker.setVisible(bool(len(rows)))
         if len(rows):
             current = rows[-1, 1:4].astype(np.float32)
