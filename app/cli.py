@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 from typing import Any
 
+from app.cli_interrupt import MoveTracker, after_interrupt
 from app.cli_log import decode_log
 from app.cli_macro import find_macro, macro_offline, macro_text, run_macro
 from app.cli_params import param_rows, param_table
@@ -95,6 +96,12 @@ def build_parser() -> argparse.ArgumentParser:
         default="linear",
         choices=("linear", "rotational", "steps"),
         help="jog: distances in mm (linear), degrees (rotational) or motor steps (visiomex)",
+    )
+    parser.add_argument(
+        "--force",
+        action="store_true",
+        help="raw: send bytes the protocol cannot read even though travel limits are set "
+        "(they cannot be checked against them)",
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="log progress on stderr")
     parser.add_argument("command", choices=COMMANDS, metavar="COMMAND", help=" | ".join(COMMANDS))
@@ -217,7 +224,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         protocol = create_protocol(options.protocol, options.variant)
         protocol.configure(_protocol_settings(options, protocol))
         travel = _travel(options)
-        validate_offline(options.command, options.args, protocol, travel, options.kind)
+        if options.force and options.command != "raw":
+            raise UsageError("--force is for raw only")
+        validate_offline(
+            options.command, options.args, protocol, travel, options.kind, options.force
+        )
         if options.timeout <= 0:
             raise UsageError("--timeout must be positive")
         if options.baud is not None and options.baud <= 0:
@@ -248,6 +259,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     def remember(values: dict[str, float]) -> None:
         write_parameters(settings, options.protocol, options.port, values)
 
+    motion: Motion | None = None  # (what Ctrl-C stops: see after_interrupt)
+    moves = MoveTracker()
     with ExitStack() as stack:
         try:
             if options.log:
@@ -266,12 +279,15 @@ def main(argv: Sequence[str] | None = None) -> int:
             motion = Motion(Client(link, protocol, timeout=options.timeout))
             motion.travel = travel
             motion.notice_listeners.append(report.notice)
+            motion.move_listeners.append(moves)
             if options.command != "config":
                 motion.start()  # e.g. the saved Firmata config: the board reset when opened
             if macro is not None:
                 result = run_macro(motion, macro)
             else:
-                result = run_command(motion, options.command, options.args, options.kind, remember)
+                result = run_command(
+                    motion, options.command, options.args, options.kind, remember, options.force
+                )
             if options.command == "config":
                 saved = {s.name: protocol.values[s.name] for s in protocol.settings}
                 write_protocol_settings(settings, options.protocol, options.port, saved)
@@ -283,8 +299,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             return report.fail(exc, EXIT_NO_DEVICE)
         except MotionError as exc:
             return report.fail(exc, EXIT_DEVICE_ERROR)
-        except KeyboardInterrupt:
-            return report.fail("interrupted; the device may still be moving", EXIT_INTERRUPTED)
+        except KeyboardInterrupt:  # the protocol's stop where it has one, else what goes on
+            return report.fail(after_interrupt(motion, options.command, moves), EXIT_INTERRUPTED)
     return report.done(result)
 
 

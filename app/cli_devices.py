@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import logging
 import sys
 import time
 from typing import Any
@@ -14,12 +15,15 @@ from drivers.program import ProgramPoint, read_program
 from drivers.protocols.base import Protocol
 from drivers.protocols.firmata import (
     StepperConfig,
+    StepperStep,
     StepperVersion,
     configure_stepper,
     step_parts,
 )
 from drivers.protocols.laser import GetStatus, move_instruction
 from drivers.streaming import Streamer, StreamProgress
+
+log = logging.getLogger(__name__)
 
 DEVICE_COMMANDS = {
     "config": ("firmata", "config --steps-per-rev N --pins P1 P2 [P3 P4]"),
@@ -100,12 +104,11 @@ def _run_program(motion: Motion, points: list[ProgramPoint]) -> dict[str, Any]:
             flush=True,
         )
 
-    streamer = Streamer(motion.client, points, progress=progress)
+    streamer = Streamer(motion.client, points, progress=progress, guard=motion.guard)
     try:
         state = streamer.run()
     except KeyboardInterrupt:
-        streamer.stop()
-        motion.client.execute(cmd.Stop())  # the device's queue is flushed
+        streamer.stop()  # motionctl then sends the device's stop (app/cli_interrupt.py)
         raise
     return {
         "instructions": state.total,
@@ -167,6 +170,7 @@ def run_device(motion: Motion, command: str, args: list[str]) -> dict[str, Any]:
         return {"version": int(str(client.execute(StepperVersion()).value))}
     if command == "step":
         parts = step_parts(_whole(args[0], "speed (rpm)"), _whole(args[1], "steps"))
+        _guard_steps(motion, parts)
         seconds = 0.0
         for index, part in enumerate(parts, start=1):
             client.send_only(part)
@@ -194,3 +198,18 @@ def run_device(motion: Motion, command: str, args: list[str]) -> dict[str, Any]:
         return _run_program(motion, points)
     report = motion.arc(_arc(args))
     return {"position": [report.x, report.y, report.z], "measured": False}
+
+
+def _guard_steps(motion: Motion, parts: list[StepperStep]) -> None:
+    """Pass every step message through the motion guard before the first is sent: read back
+    with the protocol's decoder, each is checked from where the one before it ends."""
+    protocol = motion.client.protocol
+    here = motion.position()
+    start = (here.x, here.y, here.z)
+    for part in parts:
+        move = motion.guard.read_raw(protocol, protocol.encode(part))
+        if move is not None:
+            planned = motion.guard.raw_move(
+                protocol, move, start, motion.capabilities.resolution, log.warning
+            )
+            start = planned.target

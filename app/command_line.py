@@ -14,6 +14,7 @@ from drivers.errors import BadInput
 from drivers.events import PositionReport
 from drivers.messages import Message
 from drivers.motion import Motion
+from drivers.motion_guard import MotionGuard
 from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
 from drivers.traffic import RX, Traffic
@@ -77,9 +78,15 @@ def position_result(report: PositionReport) -> dict[str, Any]:
 
 
 def run_command(
-    motion: Motion, command: str, args: list[str], kind: str = "linear", remember: Any = None
+    motion: Motion,
+    command: str,
+    args: list[str],
+    kind: str = "linear",
+    remember: Any = None,
+    force: bool = False,
 ) -> dict[str, Any]:
-    """Carry out one motionctl command; returns the JSON-able result."""
+    """Carry out one motionctl command; returns the JSON-able result (`force`: `raw` bytes the
+    protocol cannot read go even where a travel box is set)."""
     if command == "param":
         return run_param(motion, args, remember or (lambda values: None))
     if command in DEVICE_COMMANDS:
@@ -117,7 +124,7 @@ def run_command(
 
     link.listeners.append(keep)
     try:
-        motion.raw(args[0].encode("utf-8"))
+        motion.raw(args[0].encode("utf-8"), force)  # through the motion guard
     finally:
         link.listeners.remove(keep)
     text = b"".join(received).decode("ascii", errors="backslashreplace")
@@ -125,7 +132,12 @@ def run_command(
 
 
 def validate_offline(
-    command: str, args: list[str], protocol: Protocol, travel: TravelLimits | None, kind: str
+    command: str,
+    args: list[str],
+    protocol: Protocol,
+    travel: TravelLimits | None,
+    kind: str,
+    force: bool = False,
 ) -> None:
     """Refuse what can be refused before the port is even opened."""
     check_arity(command, args)
@@ -185,7 +197,14 @@ def validate_offline(
                     Message("speed {speed:g} mm/s refused ({error})", speed=speed, error=exc)
                 ) from None
     elif command == "raw":
-        protocol.encode(cmd.Raw(args[0].encode("utf-8")))
+        frame = protocol.encode(cmd.Raw(args[0].encode("utf-8")))
+        guard = MotionGuard(travel)
+        move = guard.read_raw(protocol, frame, force)  # unreadable with a box: refused here
+        if isinstance(move, cmd.MoveTo):  # like `move`: an absolute target is checked now
+            target = (move.x, move.y, move.z)
+            check_resolution(target, ("x", "y", "z"), caps.resolution)
+            what = Message("raw move to ({x:g}, {y:g}, {z:g}) mm", x=move.x, y=move.y, z=move.z)
+            guard.exact(target, what)
     elif command == "param":
         check_param_offline(protocol, args)
     elif command == "log":

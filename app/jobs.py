@@ -198,9 +198,11 @@ class StreamJob(Job):
 
 @dataclass(frozen=True)
 class RawJob(Job):
-    """Send raw bytes typed in the console."""
+    """Send raw bytes typed in the console (through the motion guard; `force`: the operator
+    confirmed bytes the protocol cannot read while a travel box is set)."""
 
     data: bytes
+    force: bool = False
 
     def describe(self) -> str:
         """E.g. `send "GET_ID\\n"`, with the console's escapes."""

@@ -136,11 +136,12 @@ class Client:
         self.protocol.on_sent(command)
         self._last_reply = self.clock()
 
-    def send_raw(self, data: bytes) -> Reply | None:
+    def send_raw(self, data: bytes, extra: float = 0.0) -> Reply | None:
         """Write console bytes as they are (after the protocol's check).
 
         Where the protocol can follow them as one command, wait for its reply like `execute`
-        (a device error is raised); otherwise return None at once and replies come unasked.
+        (a device error is raised; `extra`: seconds the device is expected to be busy, a move);
+        otherwise return None at once and replies come unasked.
         """
         self.protocol.check_raw(data)
         exchange = self.protocol.raw_exchange(data)
@@ -148,7 +149,7 @@ class Client:
         self._pace()
         self._write(data)
         if exchange is not None:
-            self._await(exchange, exchange.timeout or self.timeout, exchange.extra)
+            self._await(exchange, exchange.timeout or self.timeout, max(extra, exchange.extra))
         self._last_reply = self.clock()
         return exchange.result() if exchange is not None else None
 

@@ -16,14 +16,16 @@ from drivers.client import ABANDONED, Client
 from drivers.errors import Aborted, BadInput, DeviceError, DeviceTimeout
 from drivers.events import ErrorReport, Event, PositionReport
 from drivers.messages import Message
+from drivers.motion_guard import MotionGuard, RawMove, arc_point, arc_points
 from drivers.parameters import ParameterWritten
-from drivers.protocols.base import Reply
+from drivers.protocols.base import Protocol, Reply
 from drivers.travel import Point, TravelLimits, check_resolution
 
 log = logging.getLogger(__name__)
 
 POSITION_TOLERANCE = 0.011  # positions are printed with two decimals from 32-bit floats
 POLL_INTERVAL = 0.1  # seconds between position polls while waiting for a move to end
+LISTEN_SLICE = 0.05  # s: a wait on a write-only device's move reads its errors this often
 ESTIMATE_MARGIN = 1.5  # a move may take this much longer than distance / speed
 EVIDENCE_MIN_S = 0.05
 """A move shows whether its device replies once it has ended only if it takes this long (by
@@ -56,24 +58,22 @@ class MoveStart:
         return (x, y, z)
 
 
+def _raw_timing(
+    protocol: Protocol, command: cmd.Command, start: Point, target: Point
+) -> tuple[float, float] | None:
+    """The protocol's timing of a move read from raw bytes (None: distance over speed)."""
+    try:
+        return protocol.move_timing(command, start, target)
+    except BadInput:  # e.g. a pi-frame speed the encoder would write otherwise
+        return None
+
+
 def _at(report: PositionReport, point: PositionReport | Point) -> bool:
     """Whether a position is `point`, to the precision positions are reported with."""
     if isinstance(point, PositionReport):
         point = (point.x, point.y, point.z)
     here = (report.x, report.y, report.z)
     return all(abs(a - b) <= POSITION_TOLERANCE for a, b in zip(here, point, strict=True))
-
-
-def arc_point(arc: cmd.Arc, z0: float, fraction: float) -> Point:
-    """The point a fraction 0..1 along an arc, Z going linearly from `z0` to the arc's Z."""
-    sweep = arc.sweep() if arc.ccw else -arc.sweep()
-    x, y = arc.point(arc.start + sweep * fraction)
-    return (x, y, z0 + (arc.z - z0) * fraction)
-
-
-def arc_points(arc: cmd.Arc, z0: float, count: int) -> list[Point]:
-    """`count` + 1 points along an arc, its ends included."""
-    return [arc_point(arc, z0, i / count) for i in range(count + 1)]
 
 
 class Motion:
@@ -85,8 +85,8 @@ class Motion:
         self.poll_interval = POLL_INTERVAL
         self.wait = wait or self._listen
         """Waits the given seconds; returns True when the wait was aborted."""
-        self.travel: TravelLimits | None = None
-        """Where moves may go; None: anywhere the device accepts."""
+        self.guard = MotionGuard()
+        """Checks every move before it is sent (travel box, resolution, raw bytes)."""
         self.move_listeners: list[Callable[[MoveStart], None]] = []
         self.stop_requested = threading.Event()
         """Set from any thread: a move being waited on is stopped (where the device can stop)."""
@@ -112,22 +112,35 @@ class Motion:
             self.last_position = PositionReport(0.0, 0.0, 0.0, measured=False)
 
     @property
+    def travel(self) -> TravelLimits | None:
+        """Where moves may go (the guard's box); None: anywhere the device accepts."""
+        return self.guard.travel
+
+    @travel.setter
+    def travel(self, limits: TravelLimits | None) -> None:
+        self.guard.travel = limits
+
+    @property
     def capabilities(self) -> Capabilities:
         """The protocol's capabilities as they are now (settings may change them)."""
         return self.client.protocol.capabilities
 
     def _listen(self, seconds: float) -> bool:
         """Wait while reading the port: an error the device reports meanwhile (Firmata's
-        STRING_DATA) is raised; True when the wait was abandoned."""
-        try:
-            events = self.client.listen(seconds)
-        except Aborted:
-            return True
-        errors = [e for e in events if isinstance(e, ErrorReport)]
-        if errors:
-            reported = "; ".join(e.message for e in errors)
-            raise DeviceError(Message("the device reported: {reported}", reported=reported))
-        return False
+        STRING_DATA) ends the wait at once and is raised; True when the wait was abandoned."""
+        clock = self.client.clock
+        end = clock() + seconds
+        while True:
+            try:
+                events = self.client.listen(min(LISTEN_SLICE, max(end - clock(), 0.0)))
+            except Aborted:
+                return True
+            errors = [e for e in events if isinstance(e, ErrorReport)]
+            if errors:
+                reported = "; ".join(e.message for e in errors)
+                raise DeviceError(Message("the device reported: {reported}", reported=reported))
+            if clock() >= end:
+                return False
 
     def start(self) -> None:
         """Send what the device needs once identified (the protocol's startup commands)."""
@@ -383,10 +396,31 @@ class Motion:
         """Run the device's diagnostics; DeviceError lists what it reported."""
         self.client.execute(cmd.CheckErrors())
 
-    def raw(self, data: bytes) -> Reply | None:
-        """Send a raw command (the protocol adds what ends it, e.g. COXIRIS's line feed) and
-        return its reply; None where the device answers nothing to it (Visiomex `G`)."""
-        return self.client.send_raw(self.client.protocol.encode(cmd.Raw(data)))
+    def raw(self, data: bytes, force: bool = False) -> Reply | PositionReport | None:
+        """Send a raw command (the protocol adds what ends it, e.g. COXIRIS's line feed) through
+        the guard, as `send_raw`."""
+        return self.send_raw(self.client.protocol.encode(cmd.Raw(data)), force)
+
+    def send_raw(self, data: bytes, force: bool = False) -> Reply | PositionReport | None:
+        """Send console bytes as they are, once the guard has read them with the protocol's
+        decoder: a move is checked like a typed one and followed like one (its timeout, its
+        end, the position after it: returned); bytes that cannot be read go only where no
+        travel box is set, or with `force`. Otherwise the reply (None: none is followed)."""
+        protocol = self.client.protocol
+        protocol.check_raw(data)
+        move = self.guard.read_raw(protocol, data, force)
+        if move is None:
+            return self.client.send_raw(data)
+        here = self._current()
+        start = (here.x, here.y, here.z)
+        planned = self.guard.raw_move(
+            protocol, move, start, self.capabilities.resolution, self._notify
+        )
+        return self._run_move(move, start, planned.target, planned.path, raw=(data, planned))
+
+    def _notify(self, text: str) -> None:
+        for listener in list(self.notice_listeners):
+            listener(text)
 
     def _move(
         self,
@@ -402,18 +436,18 @@ class Motion:
         target = target_of(here)
         command = command_of(here, target) if command_of is not None else check
         protocol.encode(command)
-        if self.travel is not None:
-            limited, note = self.travel.apply(target, what)
-            if note is not None:
-                if command_of is None:
-                    raise BadInput(
-                        Message("{what} refused: home is outside the travel limits", what=what)
-                    )
-                target, command = limited, command_of(here, limited)
-                protocol.encode(command)
-                for listener in list(self.notice_listeners):
-                    listener(note)
-        return self._run_move(command, (here.x, here.y, here.z), target)
+        start = (here.x, here.y, here.z)
+        limited, note = self.guard.target(target, what, start)
+        if limited != target:
+            if command_of is None:
+                raise BadInput(
+                    Message("{what} refused: home is outside the travel limits", what=what)
+                )
+            target, command = limited, command_of(here, limited)
+            protocol.encode(command)
+        if note is not None:
+            self._notify(note)
+        return self._run_move(command, start, target)
 
     def _with_speed(self, command: cmd.Command) -> cmd.Command:
         """Where the speed goes with every move (pi-frame, Firmata): the speed set, filled in."""
@@ -428,12 +462,18 @@ class Motion:
         start: Point,
         target: Point,
         path: Callable[[float], Point] | None = None,
+        raw: tuple[bytes, RawMove] | None = None,
     ) -> PositionReport:
-        """Send a move whose target is known, wait for its end, and report the position."""
+        """Send a move whose target is known, wait for its end, and report the position.
+
+        `raw`: the move is console bytes (sent as they are) the guard read as `command`."""
         protocol = self.client.protocol
-        command = self._with_speed(command)
-        protocol.encode(command)
-        timing = protocol.move_timing(command, start, target)
+        if raw is None:
+            command = self._with_speed(command)
+            protocol.encode(command)
+            timing = protocol.move_timing(command, start, target)
+        else:
+            timing = raw[1].timing or _raw_timing(protocol, command, start, target)
         if timing is None:
             speed = self._speed if self._speed is not None else self.speed()
             delay, duration = 0.0, math.dist(start, target) / max(speed, 1e-9)
@@ -446,7 +486,12 @@ class Motion:
             move_listener(started)
         heard, sent, self._reply_times = self._heard, time.monotonic(), []
         try:
-            if completion is Completion.ESTIMATE:
+            if raw is not None:
+                self.client.send_raw(raw[0], extra=(delay + duration) * ESTIMATE_MARGIN)
+                protocol.on_sent(command)  # a write-only device's commanded position follows
+                if completion is Completion.ESTIMATE and self.wait(delay + duration):
+                    raise Aborted(ABANDONED)
+            elif completion is Completion.ESTIMATE:
                 # The device never says when it is done (PROTOCOLS.md §4, §5): each part is
                 # sent once the previous one should have ended (Firmata splits long moves).
                 parts = protocol.expand(command)
@@ -501,9 +546,7 @@ class Motion:
             here = self.move_to(sx, sy, here.z)
         ex, ey = arc.point(arc.end)
         target = (ex, ey, arc.z)
-        if self.travel is not None:
-            for point in arc_points(arc, here.z, 72):
-                self.travel.apply(point, Message("arc"))  # refuses an arc that leaves the box
+        self.guard.path(arc_points(arc, here.z, 72), Message("arc"))  # never clamped
         z0 = here.z
         return self._run_move(
             arc, (here.x, here.y, here.z), target, lambda f: arc_point(arc, z0, f)

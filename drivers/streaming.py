@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from drivers.client import ABANDONED, Client
 from drivers.errors import Aborted, DeviceTimeout, Retransmit
 from drivers.messages import Message
+from drivers.motion_guard import MotionGuard
 from drivers.program import ProgramPoint
 from drivers.protocols.laser import (
     GROUP,
@@ -46,6 +47,8 @@ class StreamProgress:
     retransmissions: int = 0
     started: float = field(default_factory=time.monotonic)
     finished: bool = False
+    paused_s: float = 0.0
+    """Seconds spent paused so far (no instruction sent)."""
 
     @property
     def seconds(self) -> float:
@@ -61,7 +64,7 @@ class StreamProgress:
         """Time to the last execution at the rate so far (None: not known yet)."""
         if not self.executed:
             return None
-        per = self.seconds / self.executed
+        per = max(self.seconds - self.paused_s, 0.0) / self.executed
         return per * (self.total - self.executed)
 
 
@@ -74,9 +77,12 @@ class Streamer:
         points: list[ProgramPoint],
         group: int = GROUP,
         progress: Callable[[StreamProgress], None] | None = None,
+        guard: MotionGuard | None = None,
     ) -> None:
         self.client = client
         self.points = points
+        self.guard = guard
+        """Checks every point against the travel box before the first is sent."""
         self.group = max(1, min(group, GROUP))
         self.progress = progress or (lambda p: None)
         self.state = StreamProgress(len(points))
@@ -104,13 +110,23 @@ class Streamer:
         return self._stopped.is_set()
 
     def run(self) -> StreamProgress:
-        """Send every point, then wait until the device has executed them; the final progress."""
+        """Send every point, then wait until the device has executed them; the final progress.
+        A point outside the travel box refuses the whole program before anything is sent."""
+        if self.guard is not None:
+            self.guard.program(self.points)
         retransmissions_before = self.client.retransmissions
         start = 0
         size, clean = self.group, 0
         while start < len(self.points):
-            while not self._running.wait(0.05):
+            since = time.monotonic()
+            while not self._running.wait(DRAIN_POLL):
+                # The device works through its queue meanwhile: the count and the position
+                # (the caller's progress reads it) follow it.
                 self._check_status(force=True)
+                now = time.monotonic()
+                self.state.paused_s += now - since
+                since = now
+                self.progress(self.state)
             if self._stopped.is_set():
                 break
             chunk = self.points[start : start + size]

@@ -1,7 +1,8 @@
 """Travel limits (a box the stage must stay in) and the device's coordinate resolution.
 
 Both are checked before a move is sent: a target outside the box is refused (or clamped to its
-edge, as the user chooses), and a value finer than the device can represent is refused.
+edge, as the user chooses), unless the stage is outside the box and the move brings it closer;
+a value finer than the device can represent is refused.
 """
 
 from __future__ import annotations
@@ -55,17 +56,36 @@ class TravelLimits:
         """Whether `point` is inside the box (edges included)."""
         return all(lo <= v <= hi for v, (lo, hi) in zip(point, self.box, strict=True))
 
-    def apply(self, target: Point, what: str | None = None) -> tuple[Point, str | None]:
-        """The target to send and a note when it was clamped; BadInput when it is refused.
-
-        `what` names the move for people (a Message; default "the move")."""
-        if what is None:
-            what = Message("the move")
-        outside = [
+    def outside(self, point: Point) -> list[tuple[str, float, float, float]]:
+        """The axes of `point` outside the box: (axis, value, low, high) each."""
+        return [
             (axis, value, lo, hi)
-            for axis, value, (lo, hi) in zip(AXIS_NAMES, target, self.box, strict=True)
+            for axis, value, (lo, hi) in zip(AXIS_NAMES, point, self.box, strict=True)
             if not lo <= value <= hi
         ]
+
+    def comes_back(self, target: Point, here: Point) -> bool:
+        """Whether a move from `here` (outside the box) to `target` ends closer to the box on
+        every axis where `target` is outside it (on the same side), and inside on the others."""
+        for value, start, (lo, hi) in zip(target, here, self.box, strict=True):
+            over, was = _beyond(value, lo, hi), _beyond(start, lo, hi)
+            if over == 0:
+                continue
+            if was == 0 or (over > 0) != (was > 0) or abs(over) >= abs(was):
+                return False
+        return True
+
+    def apply(
+        self, target: Point, what: str | None = None, here: Point | None = None
+    ) -> tuple[Point, str | None]:
+        """The target to send and a note when it was clamped; BadInput when it is refused.
+
+        `what` names the move for people (a Message; default "the move"). `here` is where the
+        stage is: a stage outside the box may move towards it (a move that ends closer to the
+        box on every axis it is outside of, and inside on the others), with a note saying so."""
+        if what is None:
+            what = Message("the move")
+        outside = self.outside(target)
         if not outside:
             return target, None
         details = joined(
@@ -80,6 +100,13 @@ class TravelLimits:
                 for a, v, lo, hi in outside
             ]
         )
+        if here is not None and self.comes_back(target, here):
+            note = Message(
+                "the stage is outside its travel limits: {what} brings it closer ({details})",
+                what=what,
+                details=details,
+            )
+            return target, note
         if not self.clamp:
             raise BadInput(
                 Message("{what} refused: {details} (travel limits)", what=what, details=details)
@@ -159,6 +186,15 @@ def joined(parts: list[Message]) -> Message:
     for part in parts[1:]:
         said = Message("{earlier}; {later}", earlier=said, later=part)
     return said
+
+
+def _beyond(value: float, low: float, high: float) -> float:
+    """How far `value` is past the range: positive above it, negative below, 0 inside."""
+    if value > high:
+        return value - high
+    if value < low:
+        return value - low
+    return 0.0
 
 
 def _decimals(resolution: float) -> int:

@@ -27,6 +27,7 @@ from drivers.motion import Motion
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.traffic import Traffic
 from drivers.transport import Link, open_link
+from tests.simproc import SimProcess
 
 
 class Recorder:
@@ -150,3 +151,19 @@ def upper(qapp) -> Iterator[None]:
     QCoreApplication.installTranslator(translator)
     yield
     QCoreApplication.removeTranslator(translator)
+
+
+@pytest.fixture
+def record(tmp_path: Path) -> Path:
+    """Where a motionsim process keeps its `--record` of what it received and sent."""
+    return tmp_path / "device.log"
+
+
+@pytest.fixture
+def sim(request: pytest.FixtureRequest, record: Path) -> Iterator[SimProcess]:
+    """`motionsim coxiris --record` in another process, with `@pytest.mark.sim_args(...)`."""
+    marker = request.node.get_closest_marker("sim_args")
+    process = SimProcess("coxiris", "--record", str(record), *(marker.args if marker else ()))
+    yield process
+    if process.proc.poll() is None:
+        assert process.stop() == 0

@@ -321,6 +321,25 @@ def test_firmata_config_asks_the_library_version_once(start_sim, host_log: Path)
     assert tx_messages(host_log) == [CONFIG_200, VERSION_REQUEST]
 
 
+@pytest.mark.e2e
+@pytest.mark.timeout(20)
+def test_firmata_step_beyond_the_travel_box_is_refused_before_any_is_sent(
+    start_sim, tmp_path: Path
+) -> None:
+    sim, record = start_sim("firmata", "--reset-delay", "0.2", "--instant")
+    config = firmata(sim.path, "config", "--steps-per-rev", "200", "--pins", "8", "9")
+    assert config.returncode == 0, config.stderr
+    box = ("--travel", "-10:10,-10:10,-10:10")
+    # 20000 steps at 80 steps/mm: 250 mm, in two messages, the first alone already 204.8 mm.
+    refused = motionctl("firmata", sim.path, "step", "6000", "20000", options=box)
+    assert refused.returncode == 2, refused.stderr
+    assert "outside -10..10 mm" in refused.stderr
+    assert STEP_300_500[:3] not in device_received(record)[len(CONFIG_200) :]
+    within = motionctl("firmata", sim.path, "step", "300", "500", options=box)  # 6.25 mm
+    assert within.returncode == 0, within.stderr
+    assert STEP_300_500 in device_received(record)
+
+
 # -- 7. a long move is split into messages of at most 16383 steps -------------------------------
 @pytest.mark.e2e
 @pytest.mark.timeout(20)

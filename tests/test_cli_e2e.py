@@ -9,7 +9,6 @@ import signal
 import subprocess
 import sys
 import time
-from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -39,20 +38,6 @@ def motionctl(port: str, *args: str, timeout: float = 2.0, log: Path | None = No
 @pytest.fixture(autouse=True)
 def _own_settings(settings_file: Path) -> None:
     """motionctl reads and writes the panel's settings: a file of the test's own."""
-
-
-@pytest.fixture
-def record(tmp_path: Path) -> Path:
-    return tmp_path / "device.log"
-
-
-@pytest.fixture
-def sim(request: pytest.FixtureRequest, record: Path) -> Iterator[SimProcess]:
-    marker = request.node.get_closest_marker("sim_args")
-    process = SimProcess("coxiris", "--record", str(record), *(marker.args if marker else ()))
-    yield process
-    if process.proc.poll() is None:
-        assert process.stop() == 0
 
 
 def received_by_device(record: Path) -> str:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QLocale, Qt, Signal
 from PySide6.QtGui import QColor, QFont, QFontDatabase, QPalette
@@ -172,12 +172,31 @@ class PositionReadout(QWidget):
         self.status_label.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Maximum)
         self.status_label.setVisible(False)
 
+        self.outside_label = QLabel()
+        self.outside_label.setObjectName("positionOutsideTravel")
+        self.outside_label.setWordWrap(True)
+        self.outside_label.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        self.outside_label.setStyleSheet(
+            "color: #b71c1c; background: #fff3e0; border: 1px solid #ef6c00;"
+            " border-radius: 3px; padding: 2px 6px;"
+        )
+        self.outside_label.setToolTip(
+            self.tr(
+                "The stage is outside the travel limits set for this device: only moves that "
+                "bring it closer to them are sent, until it is back inside"
+            )
+        )
+        self.outside_label.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Maximum)
+        self.outside_label.setVisible(False)
+        self._outside: list[tuple[str, float, float, float]] = []
+
         layout = QVBoxLayout(self)
         layout.addLayout(grid)
         layout.addWidget(self.zero_label)
         layout.addLayout(zeros)
         layout.addWidget(self.measured_label)
         layout.addWidget(self.status_label)
+        layout.addWidget(self.outside_label)
         self._render_status()
         self._render()
 
@@ -254,6 +273,27 @@ class PositionReadout(QWidget):
     def position(self) -> tuple[float, float, float] | None:
         """The position last shown, or None."""
         return self._position
+
+    def show_outside(self, outside: Sequence[tuple[str, float, float, float]]) -> None:
+        """Say the stage is outside its travel limits: (axis, value, low, high) per axis
+        outside, in mm; empty: inside (or no limits), the line is hidden."""
+        self._outside = list(outside)
+        self._render_outside()
+
+    def outside_text(self) -> str:
+        """The outside-the-travel-limits line ("" when hidden)."""
+        return self.outside_label.text() if self._outside else ""
+
+    def _render_outside(self) -> None:
+        parts = [
+            f"{axis.upper()} {self._number(value)} {self._units} "
+            f"({self._number(low)}..{self._number(high)})"
+            for axis, value, low, high in self._outside
+        ]
+        text = fill(self.tr("outside the travel limits: %1"), ", ".join(parts)) if parts else ""
+        if text != self.outside_label.text():
+            self.outside_label.setText(text)
+        self.outside_label.setVisible(bool(parts))
 
     def set_measured(self, measured: bool, confirmed: bool | None = None) -> None:
         """False: the position is only commanded; say so visibly, and whether the device
@@ -373,3 +413,5 @@ class PositionReadout(QWidget):
             else fill(self.tr("work zero at (%1) %2 (machine)"), shown, self._units)
         )
         self.clear_zero_button.setEnabled(not at_home)
+        if self._outside:
+            self._render_outside()  # in the units and decimals shown

@@ -96,6 +96,9 @@ class SendLine(QWidget):
 
         row = QHBoxLayout()
         row.setContentsMargins(0, 0, 0, 0)
+        label = QLabel(self.tr("Sen&d:"))  # Alt+D: the keyboard's way into the line
+        label.setBuddy(self.edit)
+        row.addWidget(label)
         row.addWidget(self.edit, 1)
         row.addWidget(self.mode_combo)
         row.addWidget(self.ending_combo)

@@ -18,6 +18,13 @@ Point = tuple[float, float, float]
 
 
 @dataclass(frozen=True)
+class MoveSequence(Command):
+    """Moves one sent frame holds, in order (the laser link queues up to 7 in a frame)."""
+
+    moves: tuple[Command, ...]
+
+
+@dataclass(frozen=True)
 class Setting:
     """A number the panel keeps for a protocol (e.g. pi-frame ticks per mm), with its range."""
 
@@ -305,3 +312,26 @@ class Protocol(ABC):
     def command_name(self, command: Command) -> str:
         """The command's name as the device knows it (e.g. `GET_POSITION`), for messages."""
         return type(command).__name__
+
+    def sent_command(self, frame: bytes) -> Command | None:
+        """What one frame the host sends makes the device do, read as the device reads it: the
+        move (MoveTo, MoveBy, Home, Arc, MoveSequence), or None where it moves nothing (a query,
+        a setting, a command the device refuses). FrameError where it cannot be read."""
+        raise FrameError(Message("{protocol} cannot read sent frames", protocol=self.name))
+
+    def sent_commands(self, data: bytes) -> list[Command | None]:
+        """Every frame in bytes the host sends, each as `sent_command` reads it; FrameError for
+        bytes that are not whole frames (the device would wait for the rest)."""
+        framer = self.new_tx_framer()
+        frames, rest = ([data], b"") if framer is None else framer.split(data)
+        if rest:
+            raise FrameError(
+                Message(
+                    "the last {count} bytes are not a whole frame: the device would wait "
+                    "for the rest",
+                    count=len(rest),
+                )
+            )
+        if not frames:
+            raise FrameError(Message("no whole frame in {count} bytes", count=len(data)))
+        return [self.sent_command(frame) for frame in frames]

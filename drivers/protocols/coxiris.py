@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 from drivers.capabilities import Capabilities, Completion
 from drivers.commands import (
     CheckErrors,
@@ -29,6 +31,9 @@ from drivers.protocols.base import Exchange, Protocol
 MAX_COMMAND_LENGTH = 63  # the firmware's 64-byte buffer keeps 63 characters and a NUL
 HELP_LINE_COUNT = 12
 UNKNOWN_COMMAND = "Unknown command - "
+LINE_ENDS = b"\r\n\0"  # the firmware ends a command at CR, LF or NUL
+NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)")  # what the firmware takes as a number
+MOVES = ("ABSOLUTE_MOVE", "DELTA_MOVE")
 TOO_LONG = "Command too long"
 # What a number is, for format_number's and parse_reply_number's refusals: made once, so that
 # encoding a move builds no message unless it is refused.
@@ -315,6 +320,47 @@ class CoxirisProtocol(Protocol):
             return None
         text = line.decode("ascii")
         return CoxirisExchange(Raw(line), expected_name(text))
+
+    def sent_commands(self, data: bytes) -> list[Command | None]:
+        """Every line in console bytes (CR, LF and NUL end one, as in the firmware)."""
+        for end in b"\r\0":
+            data = data.replace(bytes((end,)), b"\n")
+        lines = data.split(b"\n")
+        if lines[-1]:
+            raise FrameError(
+                Message(
+                    "{line!r} has no line end: the device would wait for the rest",
+                    line=lines[-1].decode("latin-1"),
+                )
+            )
+        commands = [self.sent_command(line) for line in lines[:-1] if line.strip()]
+        if not commands:
+            raise FrameError(Message("an empty line: the device ignores it"))
+        return commands
+
+    def sent_command(self, frame: bytes) -> Command | None:
+        """`ABSOLUTE_MOVE x y z`, `DELTA_MOVE dx dy dz` and `GO_HOME` move (any case, as the
+        firmware upper-cases the line); a move without exactly three numbers cannot be read."""
+        try:
+            line = frame.decode("ascii").strip(" \t\r\n\v\f").upper()
+        except UnicodeDecodeError as exc:
+            raise FrameError(Message("non-ASCII bytes: COXIRIS takes ASCII text only")) from exc
+        name, _, rest = line.partition(" ")
+        params = [p for p in rest.split(" ") if p]
+        if name == "GO_HOME":
+            return Home()
+        if name not in MOVES:
+            return None
+        if len(params) != 3 or not all(NUMBER.fullmatch(p) for p in params):
+            raise FrameError(
+                Message(
+                    "{name} {params!r} is not three numbers as the firmware reads them",
+                    name=name,
+                    params=rest.strip(),
+                )
+            )
+        x, y, z = (float(p) for p in params)
+        return MoveTo(x, y, z) if name == "ABSOLUTE_MOVE" else MoveBy(x, y, z)
 
     def command_name(self, command: Command) -> str:
         """The name the device echoes in ACK/DONE, e.g. `GET_POSITION`."""

@@ -351,6 +351,21 @@ class FirmataProtocol(Protocol):
                 return _LIBRARY_VERSION_REQUEST
         return super().describe_sent(frame)
 
+    def sent_command(self, frame: bytes) -> Command | None:
+        """STEPPER_STEP moves X by its steps (at the steps per mm set); the rest moves nothing."""
+        if frame[:3] != bytes((START, STEPPER_DATA, STEP)):
+            return None
+        data = frame[3:-1]
+        if len(data) != 6 or frame[-1] != END:
+            raise FrameError(
+                Message("a STEPPER_STEP of {count} data bytes, not 6", count=len(data))
+            )
+        rpm = data[0] | data[1] << 7 | data[2] << 14
+        steps = (data[3] | data[4] << 7) * (1 if data[5] else -1)
+        per_mm = self.values["steps_per_mm"]
+        speed = rpm * self.values["steps_per_rev"] / 60 / per_mm
+        return MoveBy(steps / per_mm, 0.0, 0.0, speed=speed or None)
+
     def sent_kind(self, frame: bytes) -> str:
         """STEPPER_STEP is motion, STEPPER_CONFIGURE a setting, the requests queries."""
         if frame[:2] == bytes((START, STEPPER_DATA)) and len(frame) >= 3:

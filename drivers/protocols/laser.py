@@ -30,7 +30,7 @@ from drivers.errors import BadInput, DeviceError, FrameError, QueueFull, Retrans
 from drivers.events import Event, PositionReport, Undecodable
 from drivers.framers.stuffed import StuffedFramer
 from drivers.messages import Message, message_of
-from drivers.protocols.base import Exchange, Protocol, Setting
+from drivers.protocols.base import Exchange, MoveSequence, Protocol, Setting
 from drivers.protocols.laser_codec import (
     CHAR,
     FLOAT,
@@ -310,6 +310,28 @@ class LaserProtocol(Protocol):
         if SET_HOME in words:
             return "setting"
         return "poll" if words == {GET_POSITION} else "query"
+
+    def sent_command(self, frame: bytes) -> Command | None:
+        """A frame's MOVE_LINEAR and GO_HOME instructions, in order (several: a
+        MoveSequence); None where it holds none (queries, SET_HOME, STOP, DWELL)."""
+        moves: list[Command] = []
+        for instruction in decode_instructions(frame):
+            if instruction.word == GO_HOME:
+                moves.append(Home())
+            elif instruction.word == MOVE_LINEAR:
+                values = instruction.values(FLOAT)
+                if len(values) != 4:
+                    raise FrameError(
+                        Message(
+                            "MOVE_LINEAR with {count} float values, not x, y, z and speed",
+                            count=len(values),
+                        )
+                    )
+                x, y, z, speed = (float(v) for v in values)
+                moves.append(MoveTo(x, y, z, speed))
+        if not moves:
+            return None
+        return moves[0] if len(moves) == 1 else MoveSequence(tuple(moves))
 
     def raw_exchange(self, data: bytes) -> LaserExchange | None:
         """A whole frame is followed by its first instruction's word (and frame number)."""

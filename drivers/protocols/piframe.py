@@ -15,7 +15,7 @@ import struct
 
 from drivers.capabilities import Capabilities, Completion
 from drivers.commands import Arc, Command, Dwell, Home, MoveTo, Raw, SetHome
-from drivers.errors import BadInput
+from drivers.errors import BadInput, FrameError
 from drivers.events import Event, Feedback
 from drivers.framers.fixed import FixedFramer
 from drivers.messages import Message
@@ -255,6 +255,33 @@ class PiFrameProtocol(Protocol):
         if action == SET_HOME:
             return "SetHome"
         return Message("action {number}", number=action)
+
+    def sent_command(self, frame: bytes) -> Command | None:
+        """Linear and Circular frames move, in mm at the ticks per mm set; Dwell and SetHome
+        move nothing; any other action cannot be read."""
+        if len(frame) != 25 or frame[:2] != HEADER or frame[-1:] != END:
+            raise FrameError(Message("a {length}-byte frame", length=len(frame)))
+        action, x, y, z, sx, sy, sz, radius, angular, a0, a1, direction = struct.unpack(
+            ">B3h7HB", frame[2:-1]
+        )
+        tpm = self.ticks_per_mm
+        if action == LINEAR:
+            speed = math.sqrt(sx * sx + sy * sy + sz * sz) / tpm
+            return MoveTo(x / tpm, y / tpm, z / tpm, speed or None)
+        if action == CIRCULAR:
+            return Arc(
+                x / tpm,
+                y / tpm,
+                radius / tpm,
+                a0 / 100,
+                a1 / 100,
+                bool(direction),
+                z / tpm,
+                math.radians(angular / 100) * radius / tpm or None,
+            )
+        if action in (DWELL, SET_HOME):
+            return None
+        raise FrameError(Message("action {number}", number=action))
 
     def sent_kind(self, frame: bytes) -> str:
         """Every action moves (or waits) but SetHome, a setting."""

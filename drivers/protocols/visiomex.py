@@ -428,6 +428,33 @@ class VisiomexProtocol(Protocol):
             return _GO_HOME
         return Message("packet {packet!r}", packet=text)
 
+    def sent_command(self, frame: bytes) -> Command | None:
+        """`M` packets move by their distances and `D` goes home (board12); a move packet not
+        exactly as documented cannot be read (the seed's firmware runs some of those anyway)."""
+        if frame[:1] == b"D" and self.format.home:
+            return Home()
+        if frame[:1] != b"M":
+            return None  # sets, `G`, and what the firmware answers EP0002
+        text = frame.decode("latin-1")
+        d = self.format.digits
+        kinds = {letter: kind for kind, letter in MOVE_TYPES.items()}
+        x, y = text[3 : 3 + d], text[4 + d : 4 + 2 * d]
+        if (
+            len(text) != self.format.length
+            or text[1:2] not in kinds
+            or text[2:3] not in ("P", "N")
+            or text[3 + d : 4 + d] not in ("P", "N")
+            or not (x.isascii() and x.isdecimal() and y.isascii() and y.isdecimal())
+        ):
+            raise FrameError(
+                Message("move packet {packet!r} is not as the protocol documents", packet=text)
+            )
+        kind = kinds[text[1]]
+        per = self.format.per_mm if kind == "linear" else 1
+        dx = (-1 if text[2] == "N" else 1) * int(x) / per
+        dy = (-1 if text[3 + d] == "N" else 1) * int(y) / per
+        return MoveBy(dx, dy, 0.0, kind)
+
     def sent_kind(self, frame: bytes) -> str:
         """`M…` moves and `D` (home) are motion, `S…` sets a parameter; the rest queries."""
         head = frame[:1]
