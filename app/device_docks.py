@@ -75,6 +75,14 @@ class DeviceDocks(QObject):
         dock.hide()
         return dock
 
+    def set_motion_allowed(self, allowed: bool, reason: str = "") -> None:
+        """Arcs, dwells and a program's Run on or off (off while a program, a macro or a
+        parameter write runs: `reason` says which); a program's Pause and Stop stay on."""
+        for widget in (self.arc, self.dwell):
+            widget.setEnabled(allowed)
+            widget.setToolTip("" if allowed else fill(self.tr("Not now: %1"), reason))
+        self.program.set_allowed(allowed, reason)
+
     def set_speed(self, speed: float) -> None:
         """The device's speed (mm/s), for the panels that show it."""
         self.firmata.set_speed_mm_s(speed)
@@ -89,6 +97,7 @@ class DeviceDocks(QObject):
         self.arc.preview_changed.connect(self._preview)
         self.arc.arc_requested.connect(self._run_arc)
         self.dwell.dwell_requested.connect(lambda ms: self.window.submit_job(jobs.DwellJob(ms)))
+        self.dwell.refused.connect(self.window.say)  # a typed dwell that cannot be sent
         self.window.worker.job_finished.connect(self._on_job_finished)
         self.window.worker.job_failed.connect(self._on_job_failed)
         self.window.worker.stream_progress.connect(self._on_stream_progress)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 from functools import cache
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QEvent, QObject
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QEvent, QObject, Signal
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QApplication, QWidget
 
@@ -70,7 +70,12 @@ class KeyboardJog(QObject):
     application event filter makes PySide wrap every object an event is sent to, before the
     paint (tens of milliseconds at start-up). `refresh()` sets the panel's hint meanwhile (the
     window calls it when it enables or disables the panel).
+
+    While the window has turned motion off for a job under way (`set_motion_blocker`), a jog
+    key pressed where it would jog is refused out loud (`refused`, with the reason).
     """
+
+    refused = Signal(str)  # why a jog key pressed now does not jog
 
     def __init__(self, window: QWidget, panel: JogPanel) -> None:
         super().__init__(window)
@@ -78,6 +83,7 @@ class KeyboardJog(QObject):
         self.panel = panel
         self._attached = False
         self._detached = False  # for good: the window closed
+        self._motion_blocker = ""  # why motion is off while the panel is disabled ("": no link)
 
     def attach(self) -> None:
         """Start filtering the application's events (once; never after `detach()`)."""
@@ -98,10 +104,20 @@ class KeyboardJog(QObject):
             app.removeEventFilter(self)
             app.focusChanged.disconnect(self._focus_changed)  # type: ignore[attr-defined]
 
+    def set_motion_blocker(self, reason: str) -> None:
+        """Why the window turned motion off although connected ("": it did not); the hint says
+        it while the panel is disabled."""
+        self._motion_blocker = reason
+        self.refresh()
+
     def blocker(self) -> str:
         """Why the jog keys do not act now ("" when they do)."""
         if not self.panel.isEnabled():
-            return self.tr("not connected")
+            return self._motion_blocker or self.tr("not connected")
+        return self._place_blocker()
+
+    def _place_blocker(self) -> str:
+        """Why the keys do not reach the jog here: a popup, dialog, window or field has them."""
         if QApplication.activePopupWidget() is not None:
             return self.tr("a menu or list is open")
         if QApplication.activeModalWidget() is not None:
@@ -123,6 +139,7 @@ class KeyboardJog(QObject):
             if self.blocker():
                 if not event.isAutoRepeat():
                     self.panel.release()  # a popup opened over a held key: stop stepping
+                    self._refuse(event.key())
                 return False
             return self.panel.handle_key(
                 event.key(), event.modifiers(), auto_repeat=event.isAutoRepeat()
@@ -133,6 +150,13 @@ class KeyboardJog(QObject):
         elif kind == QEvent.Type.WindowActivate and watched is self.window:
             self._focus_changed()
         return False
+
+    def _refuse(self, key: int) -> None:
+        """A jog key pressed where it would jog, while motion is off for a job: say why."""
+        reason = self._motion_blocker
+        jogs = int(getattr(key, "value", key)) in self.panel.key_map
+        if reason and jogs and not self.panel.isEnabled() and not self._place_blocker():
+            self.refused.emit(reason)
 
     def refresh(self) -> None:
         """Say again where the keys act (the jog panel was enabled or disabled)."""

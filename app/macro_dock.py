@@ -86,9 +86,9 @@ class MacroDock(QObject):
         self.dock.setWindowTitle(fill(self.tr("Macros (%1)"), name))
         self._show()
 
-    def set_runnable(self, runnable: bool) -> None:
-        """Run buttons on (connected, motion allowed) or off."""
-        self.panel.set_runnable(runnable)
+    def set_runnable(self, runnable: bool, reason: str = "") -> None:
+        """Run buttons on (connected, motion allowed) or off, and why (shown in the panel)."""
+        self.panel.set_runnable(runnable, reason)
 
     def _show(self) -> None:
         self.panel.set_macros([(m.name, m.steps) for m in self.macros])

@@ -43,7 +43,7 @@ from drivers.errors import BadInput, MotionError
 from drivers.registry import create_protocol, get_protocol_class, has_variants, protocol_names
 from widgets import status_line as status
 from widgets._i18n import fill
-from widgets.connection_bar import ConnectionBar
+from widgets.connection_bar import ConnectionBar, sim_protocol
 from widgets.coordinate_entry import CoordinateEntry
 from widgets.jog_panel import JogPanel
 from widgets.lazy_view import DeferredViews, LazyPart, built
@@ -88,7 +88,12 @@ CONSOLE_CALLS = frozenset(
         "set_send_enabled",
     }
 )
-BUFFER_CALLS = frozenset({"append", "shift"})
+BUFFER_CALLS = frozenset(
+    {"append", "shift", "break_trail", "begin_provisional", "keep_provisional", "drop_provisional"}
+)
+JOG_TAP_S = 0.3
+"""A jog press released sooner is a tap: its step is not stopped (as QAbstractButton's
+default auto-repeat delay)."""
 PARAMETER_CALLS = frozenset({"device_ready", "disconnected", "forget"})
 DEVICE_CALLS = frozenset({"device_ready", "disconnected", "adapt", "set_speed"})
 
@@ -117,6 +122,25 @@ def _is_macro(job: object) -> bool:
     from app import jobs
 
     return isinstance(job, jobs.MacroJob)
+
+
+def _runs_alone(job: object) -> bool:
+    """Whether `job` turns motion off until it ends: a program, a macro, a parameter write."""
+    from app import jobs
+
+    return isinstance(job, (jobs.StreamJob, jobs.MacroJob, jobs.SetParameterJob))
+
+
+def _may_run_beside(job: object, running: list[jobs.Job]) -> bool:
+    """Whether `job` may be queued while the jobs that run alone in `running` are under way:
+    reading the device, or more parameter writes beside parameter writes; nothing that moves."""
+    from app import jobs
+
+    if isinstance(job, (jobs.RefreshJob, jobs.StepperVersionJob)):
+        return True
+    return isinstance(job, jobs.SetParameterJob) and all(
+        isinstance(other, jobs.SetParameterJob) for other in running
+    )
 
 
 def sim_ports() -> list[tuple[str, str]]:
@@ -160,13 +184,20 @@ class MainWindow(QMainWindow):
         self._log_start: float | None = None
         self.ask_log_path: Callable[[], str] = self._ask_log_path
         self._last_position: tuple[float, float, float] | None = None
+        self._true_position: tuple[float, float, float] | None = None  # reported, not estimated
+        self._unconfirmed_move = False  # a move started whose end no position has confirmed
+        self._trail_device: tuple[str, str, str] | None = None  # port, protocol, identity
         self._busy_job: jobs.Job | None = None
         self._moving = False
         self._failed = False
         self._link_failed = False  # the connection failed since the device was last ready
         self._position_lost = False  # a device with no position feedback lost track of it
         self._jog_job: jobs.MoveByJob | None = None
-        self._jog_next: tuple[str, float] | None = None  # a tap during a step: the next step
+        self._jog_repeat = False  # the step under way was sent because the jog was held
+        self._jog_pressed_at = 0.0  # time.monotonic() of the last jog press
+        self._jog_ended: jobs.Job | None = None  # a step whose end awaits the next decision
+        self._running_alone: list[jobs.Job] = []  # programs, macros, parameter writes queued
+        self._controls_on = False  # connected to a device (not a bridge)
         self._home_from: tuple[float, float, float] | None = None
         self._saved_step: float | None = None  # the jog step as last saved
         self.estimate: MoveEstimate | None = None  # built with the worker
@@ -522,11 +553,15 @@ class MainWindow(QMainWindow):
         bar.refresh_requested.connect(self.port_watcher.refresh)
 
         self.jog_panel.jog_requested.connect(self._on_jog)
+        self.jog_panel.jog_released.connect(self._on_jog_released)
+        self.keyboard_jog.refused.connect(self._on_jog_refused)
         self.coordinates.go_requested.connect(self._on_go)
         self.coordinates.home_requested.connect(self._go_home)
         self.coordinates.set_home_requested.connect(self._set_home)
         self.coordinates.stop_requested.connect(self.stop)
         self.speed.speed_requested.connect(self._set_speed)
+        for part in (self.jog_panel, self.coordinates, self.speed):  # a typed number refused
+            part.refused.connect(lambda why: self._say(why, status.WARNING))
 
     # -- connection --------------------------------------------------------------------------
     def connect_device(
@@ -535,7 +570,13 @@ class MainWindow(QMainWindow):
         """Ask the worker to open `port`; the result arrives as signals.
 
         `variant`: the protocol's wire variant (None: the one chosen in the bar, else saved).
+        A `sim://NAME` port names its protocol: NAME is used (at its default baud rate).
         """
+        named = sim_protocol(port)
+        if named != protocol and named in protocol_names():
+            self._say(fill(self.tr("%1 names its protocol: connecting as %2"), port, named))
+            protocol, variant = named, None
+            baud = get_protocol_class(named).default_baud()
         self.settings.setValue("port", port)
         self.settings.setValue("protocol", protocol)
         self.settings.setValue("baud", baud)
@@ -676,12 +717,20 @@ class MainWindow(QMainWindow):
                 note=False,
             )
         if not self.connected:
+            if self._unconfirmed_move:
+                self._undo_move()
+            self.buffer.break_trail()  # the next connection's positions: a new segment
+            self._on_target(None)
             self._set_controls_enabled(False)
             self.parameters.disconnected()
             self.devices.disconnected()
             self._end_move()
             self.jog_panel.release()
-            self._jog_job = self._jog_next = None
+            self._jog_job = None
+            self._busy_job = None  # the worker dropped what was queued: nothing runs after this
+            if self._running_alone:  # ended with the link (or dropped unreported)
+                self._running_alone.clear()
+                self._show_motion_allowed()
             if self._last_position is not None:
                 self.readout.set_status("stale")
         elif not was_connected:
@@ -703,6 +752,10 @@ class MainWindow(QMainWindow):
 
     def _on_device_ready(self, info: DeviceInfo) -> None:
         self.info = info
+        device = (info.port, info.protocol, info.identity)
+        if self._trail_device is not None and device != self._trail_device:
+            self.buffer.clear(keep_last=True)  # another device: a trail of its own
+        self._trail_device = device
         connected = fill(self.tr("connected to %1 on %2"), localized(info.identity), info.port)
         self.console.append_note(connected)
         self._say(connected, note=False)
@@ -836,6 +889,7 @@ class MainWindow(QMainWindow):
     # -- travel limits -----------------------------------------------------------------------
     def _apply_travel(self, limits: TravelLimits | None) -> None:
         self.travel = limits
+        self._show_outside()
         box = limits.box if limits is not None else None
         self._to_worker(lambda thread: thread.set_travel(limits))
         self.coordinates.set_box(box)
@@ -869,6 +923,9 @@ class MainWindow(QMainWindow):
 
     # -- operator actions --------------------------------------------------------------------
     def _submit(self, job: jobs.Job) -> bool:
+        """Queue `job` for the worker; refused out loud (False) when not connected, or when a
+        program, a macro or a parameter write is under way and `job` may not run beside it:
+        the one check every control, key, macro and the console go through."""
         if not self.connected:
             self._say(
                 fill(self.tr("not connected: %1 not sent"), job.describe()),
@@ -876,22 +933,81 @@ class MainWindow(QMainWindow):
                 note=False,
             )
             return False
+        running = list(self._running_alone)
+        if running and not _may_run_beside(job, running):
+            self._say(
+                fill(
+                    self.tr("%1 refused: %2 is under way; wait for its end or press Stop"),
+                    job.describe(),
+                    running[0].describe(),
+                ),
+                status.WARNING,
+            )
+            return False
         self._busy_job = job
+        if _runs_alone(job):
+            self._running_alone.append(job)
+            if not running:
+                self._show_motion_allowed()
+                self._say(
+                    fill(
+                        self.tr("motion controls are off until %1 ends (Stop ends it now)"),
+                        job.describe(),
+                    ),
+                    note=False,
+                )
         self.worker.submit(job)
         self._show_machine_state()
         return True
 
+    def jobs_dropped(self, dropped: list[jobs.Job]) -> None:
+        """Jobs taken off the worker's queue unrun (by a dock's Cancel): motion may be on again."""
+        kept = [job for job in self._running_alone if all(job is not d for d in dropped)]
+        if len(kept) != len(self._running_alone):
+            self._running_alone = kept
+            self._show_motion_allowed()
+
+    def _motion_blocker(self) -> str:
+        """Why motion is off while connected ("" when it is on)."""
+        if not self._running_alone:
+            return ""
+        return fill(self.tr("%1 is under way"), self._running_alone[0].describe())
+
+    def _show_motion_allowed(self) -> None:
+        """Motion controls on while connected and nothing runs alone; Stop always on."""
+        reason = self._motion_blocker()
+        allowed = self._controls_on and not reason
+        if not allowed:
+            self.jog_panel.release()
+        for widget in (self.jog_panel, self.speed):
+            widget.setEnabled(allowed)
+        self.coordinates.setEnabled(self._controls_on)  # its Stop button too
+        for button in (
+            self.coordinates.go_button,
+            self.coordinates.home_button,
+            self.coordinates.set_home_button,
+        ):
+            button.setEnabled(not reason)
+        self.keyboard_jog.set_motion_blocker(reason if self._controls_on else "")
+        if self._controls_on:  # (when off, the tools turned the macros off themselves)
+            self.tools.macros.set_runnable(allowed, reason)
+        if built(self.devices):
+            self.devices.set_motion_allowed(not reason, reason)
+
+    def _on_jog_refused(self, reason: str) -> None:
+        self._say(fill(self.tr("jog refused: %1"), reason), status.WARNING, note=False)
+
     def _on_jog(self, axis: str, distance: float) -> None:
-        """A jog key or button was pressed: one step now (or after the step under way, never
-        more than one step ahead of the stage); more while it is held."""
+        """A jog key or button was pressed: one step now, unless a step is under way (its end
+        sends the next one only if the key or button is still held: a press never queues)."""
         step = self.jog_panel.step()
         if step != self._saved_step:  # written when it changes, not at every jog (a disk write)
             self._saved_step = step
             self.settings.setValue("jog_step", step)
+        self._jog_pressed_at = time.monotonic()
         if self._jog_job is None:
+            self._jog_repeat = False
             self._jog_step(axis, distance)
-        else:
-            self._jog_next = (axis, distance)
 
     def _jog_step(self, axis: str, distance: float) -> None:
         from app import jobs
@@ -900,13 +1016,37 @@ class MainWindow(QMainWindow):
         deltas[axis] = distance
         job = jobs.MoveByJob(deltas["x"], deltas["y"], deltas["z"])
         self._jog_job = job if self._submit(job) else None
+        if self._jog_job is None:
+            self.jog_panel.release()  # refused: nothing to repeat
 
-    def _next_jog_step(self) -> None:
-        """After a jog step: a tap made meanwhile, else the next one while still held."""
-        self._jog_job = None
-        step, self._jog_next = self._jog_next or self.jog_panel.held(), None
-        if step is not None:
-            self._jog_step(*step)
+    def _jog_step_ended(self, job: jobs.Job) -> None:
+        """A jog step ended: decide on the next one after the input events already received
+        (a release waiting in the queue counts), one turn of the event loop later; a press
+        meanwhile steps at once."""
+        self._jog_job, self._jog_ended = None, job
+        QTimer.singleShot(0, self, lambda: self._next_jog_step(job))
+
+    def _next_jog_step(self, job: jobs.Job) -> None:
+        """After the jog step `job`: the next one only if the jog is still held now."""
+        if self._jog_job is not None or self._jog_ended is not job:
+            return  # a press stepped meanwhile, or a later step ended
+        self._jog_ended = None
+        held = self.jog_panel.held()
+        if held is not None and self.connected:
+            self._jog_repeat = True
+            self._jog_step(*held)
+
+    def _on_jog_released(self) -> None:
+        """A jog key or button was let go: where the device has a stop, the step under way
+        halts now if the jog was held (a repeated step, or a press longer than a tap); a tap
+        moves its whole step."""
+        serial, caps = self._serial, self.info.capabilities if self.info is not None else None
+        if self._jog_job is None or serial is None:
+            return
+        if not self._jog_repeat and time.monotonic() - self._jog_pressed_at < JOG_TAP_S:
+            return
+        if caps is not None and caps.stop:
+            serial.worker.stop_now()
 
     def _on_go(self, mode: str, values: tuple[float, float, float]) -> None:
         from app import jobs
@@ -933,16 +1073,43 @@ class MainWindow(QMainWindow):
         self._submit(jobs.SetSpeedJob(speed))
 
     def _send_raw(self, data: bytes) -> None:
-        """The console's send line: bytes for the device as they are."""
+        """The console's send line: bytes for the device as they are, through the motion guard
+        (a move checked and followed like a typed one); bytes the protocol cannot read go,
+        while a travel box is set, only once the operator confirms them."""
         from app import jobs
+        from drivers.motion_guard import unreadable
 
-        self._submit(jobs.RawJob(data))
+        reason = unreadable(self.console.index.protocol, data) if self.travel else None
+        if reason is not None:
+            from PySide6.QtWidgets import QMessageBox
+
+            answer = QMessageBox.question(
+                self,
+                self.tr("Send unchecked bytes?"),
+                fill(
+                    self.tr(
+                        "These bytes cannot be read as a command (%1), so they cannot be checked "
+                        "against the travel limits (%2): they might move the stage outside "
+                        "them.\n\nSend them anyway?"
+                    ),
+                    localized(reason),
+                    self.travel.describe() if self.travel else "",
+                ),
+                QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+                QMessageBox.StandardButton.No,
+            )
+            if answer != QMessageBox.StandardButton.Yes:
+                self._say(
+                    self.tr("not sent: the bytes could not be checked against the travel limits"),
+                    status.WARNING,
+                )
+                return
+        self._submit(jobs.RawJob(data, force=reason is not None))
 
     def stop(self) -> None:
         """Cancel what is queued and say what was not sent; where the device can stop, stop
         the move (or program) under way too."""
         self.jog_panel.release()
-        self._jog_next = None
         serial = self._serial  # (before the worker is built, nothing is queued or moving)
         dropped = serial.worker.cancel_pending() if serial is not None else []
         self._report_dropped(dropped)
@@ -968,13 +1135,13 @@ class MainWindow(QMainWindow):
         )
         if any(job is self._jog_job for job in dropped):
             self._jog_job = None
+        self.jobs_dropped(dropped)
 
     def _set_controls_enabled(self, enabled: bool) -> None:
-        for widget in (self.jog_panel, self.coordinates, self.speed):
-            widget.setEnabled(enabled)
-        self.keyboard_jog.refresh()  # the hint follows: "keys off: not connected", or not
+        self._controls_on = enabled
         self.console.set_send_enabled(enabled)
         self.tools.controls_enabled(enabled)
+        self._show_motion_allowed()  # the jog hint follows: "keys off: not connected", or not
 
     # -- worker results ----------------------------------------------------------------------
     def _on_traffic(self, records: list[Traffic]) -> None:
@@ -982,6 +1149,9 @@ class MainWindow(QMainWindow):
             self.console.append_traffic(record.direction, record.data, record.time, record.wall)
 
     def _on_position(self, report: PositionReport) -> None:
+        self._true_position = (report.x, report.y, report.z)
+        self._unconfirmed_move = False
+        self.buffer.keep_provisional()  # the estimate so far was the stage's way
         if self._home_from is not None and (report.x, report.y, report.z) == (0.0, 0.0, 0.0):
             # Set Home: the trail moves into the new coordinates, with no false jump.
             x, y, z = self._home_from
@@ -1005,6 +1175,13 @@ class MainWindow(QMainWindow):
         if self.info is not None:  # measured, or where the last move's reply said it ended
             self.readout.set_measured(report.measured, report.confirmed or None)
         self._show_position(report.x, report.y, report.z)
+        self._show_outside()
+
+    def _show_outside(self) -> None:
+        """The readout says so while the position reported is outside the travel limits."""
+        here, travel = self._last_position, self.travel
+        outside = travel.outside(here) if here is not None and travel is not None else []
+        self.readout.show_outside(outside)
 
     def _show_position(self, x: float, y: float, z: float) -> None:
         self._last_position = (x, y, z)
@@ -1016,9 +1193,30 @@ class MainWindow(QMainWindow):
 
     def _on_move_started(self, move: MoveStart) -> None:
         self._moving = True
+        self._unconfirmed_move = True
         self._show_machine_state()
         if move.duration > 0 and self.estimate is not None:
+            self.buffer.begin_provisional()  # taken back should the move fail
             self.estimate.start(move)
+
+    def _undo_move(self) -> None:
+        """A move failed (or its link went) before a position confirmed it: its estimate is
+        taken back from the trail, its target mark goes, and the readout shows the last
+        position reported again."""
+        self._unconfirmed_move = False
+        if self.estimate is not None:
+            self.estimate.stop()
+        self.buffer.drop_provisional()
+        self._on_target(None)
+        if self.readout.status() == "estimated":
+            self._mark_estimated(False)
+        true = self._true_position
+        if true is not None and true != self._last_position:
+            self._last_position = true
+            if self.connected and not self._position_lost:
+                self.tools.position(true)
+            self.readout.set_position(*true)
+            self.coordinates.set_known_position(*true)
 
     def _on_estimate(self, x: float, y: float, z: float) -> None:
         if self.readout.status() != "estimated":
@@ -1079,13 +1277,18 @@ class MainWindow(QMainWindow):
             self._end_move()
         if isinstance(job, jobs.SetHomeJob):
             self._home_from = None
+        if any(job is other for other in self._running_alone):
+            self._running_alone = [other for other in self._running_alone if other is not job]
+            if not self._running_alone:
+                self._show_motion_allowed()
         if job is self._jog_job:
-            self._next_jog_step()
+            self._jog_step_ended(job)
 
     def _on_job_failed(self, job: jobs.Job, message: str) -> None:
+        if self._unconfirmed_move:
+            self._undo_move()
         if job is self._jog_job:
             self.jog_panel.release()  # e.g. refused at the travel limits: stop stepping
-            self._jog_next = None
         self._failed = True
         self._say(fill(self.tr("%1 failed: %2"), job.describe(), message), status.FAILURE)
         self._job_ended(job)

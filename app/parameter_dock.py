@@ -174,6 +174,7 @@ class ParameterDock(QObject):
             self.window.worker.submit(job)  # only the parameter writes are cancelled
         cancelled = [job for job in dropped if isinstance(job, jobs.SetParameterJob)]
         self.forget(cancelled)
+        self.window.jobs_dropped(cancelled)  # motion is on again once none is left
         self.window.say(fill(self.tr("parameter writing cancelled: %1 not sent"), len(cancelled)))
 
     def forget(self, dropped: list[jobs.Job]) -> None:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import logging
+import os
 import queue
 import threading
 import time
@@ -33,11 +34,12 @@ from drivers.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.messages import Message
 from drivers.motion import Motion, MoveStart
 from drivers.parameters import Parameter
-from drivers.protocols.base import Setting
+from drivers.protocol_sniff import looks_like
+from drivers.protocols.base import Reply, Setting
 from drivers.protocols.firmata import StepperVersion, configure_stepper
 from drivers.registry import create_protocol
 from drivers.streaming import Streamer, StreamProgress
-from drivers.traffic import Traffic, TrafficLogWriter
+from drivers.traffic import RX, Traffic, TrafficLogWriter
 from drivers.transport import Link, open_link
 from drivers.travel import TravelLimits
 
@@ -49,6 +51,8 @@ TRAFFIC_BATCH_S = 0.05  # traffic is handed to the GUI at most this often (20 Hz
 RECOVER_S = 1.0  # s between attempts to talk again to a device that stopped answering
 POSITION_TOLERANCE = 1e-6  # mm: readings closer than this are the same position
 CONTROL_POLL_S = 0.25  # s between reads of the modem lines (CTS, DSR, CD, RI) while idle
+PORT_WATCH_S = 0.5  # s between looks for a lost port's path coming back
+PORT_RETRY_S = 5.0  # s after which a lost port's path that never went away is tried again
 
 
 @dataclass(frozen=True)
@@ -77,6 +81,35 @@ class ConnectOptions:
     """Values written earlier and kept by the panel (the device may have no read-back)."""
     dtr: bool | None = None  # DTR when the port opens (None: the protocol's default)
     rts: bool | None = None  # RTS when the port opens (None: as the port opens it, asserted)
+
+
+@dataclass
+class _PortWatch:
+    """A lost port's path, watched for its return (a USB adapter plugged in again, a
+    `motionsim --link` started again) to connect again as before."""
+
+    url: str
+    protocol: str
+    baud: int
+    options: ConnectOptions
+    node: tuple[int, int] | None  # the device file when the port was lost (None: gone)
+    gone: bool = False  # the path was seen missing since
+    next_look: float = 0.0
+    retry_at: float = 0.0  # the same device file is tried again from then on
+
+
+def _device_node(path: str) -> tuple[int, int] | None:
+    """(device number, inode) of the file `path` names, a symlink followed; None if missing."""
+    try:
+        info = os.stat(path)
+    except OSError:
+        return None
+    return info.st_rdev, info.st_ino
+
+
+def _is_path(url: str) -> bool:
+    """Whether a port is a file path (a device, a pty, a link to one), not a pyserial URL."""
+    return "://" not in url
 
 
 class SerialWorker(QObject):
@@ -131,6 +164,10 @@ class SerialWorker(QObject):
         self._idle_stable: tuple[float, float, float] | None = None  # the reading before
         self._lines: ControlLines | None = None  # as last reported
         self._next_lines_poll = 0.0
+        self._baud = 0  # of the connection asked for
+        self._ready_once = False  # the connection asked for reached the device at least once
+        self._watch: _PortWatch | None = None  # a lost port, watched for its return
+        self._received = bytearray()  # what came while identifying (to name another protocol)
 
     # -- thread-safe API ---------------------------------------------------------------------
     def submit(self, job: jobs.Job) -> None:
@@ -222,8 +259,14 @@ class SerialWorker(QObject):
         self, url: str, protocol_name: str, baud: int, options: ConnectOptions | None = None
     ) -> None:
         """Open the port, identify the device and read its state."""
-        options = options or ConnectOptions()
         self.close_port()
+        self._ready_once = False
+        self._open(url, protocol_name, baud, options or ConnectOptions())
+
+    def _open(self, url: str, protocol_name: str, baud: int, options: ConnectOptions) -> None:
+        """Open the port and talk to the device (asked for, or a lost port come back)."""
+        self._close_link()
+        self._baud = baud
         connecting = Message(
             "{url} ({protocol}, {baud} baud)", url=url, protocol=protocol_name, baud=baud
         )
@@ -235,7 +278,10 @@ class SerialWorker(QObject):
             dtr = protocol.capabilities.dtr if options.dtr is None else options.dtr
             link = open_link(url, baud, dtr=dtr, rts=options.rts)
         except MotionError as exc:
-            self.state_changed.emit("error", localized(exc))
+            failed: object = exc
+            if self._watch is not None:  # back, but not usable yet (busy, permissions)
+                failed = Message("{error}; waiting for {url}", error=exc, url=url)
+            self.state_changed.emit("error", localized(failed))
             return
         link.listeners.append(self._on_traffic)
         link.note_listeners.append(self._on_link_note)
@@ -258,11 +304,21 @@ class SerialWorker(QObject):
         self._connection = (url, protocol_name, options)
         self._recovering = ""
         self._lines = None
+        self._received.clear()
+        link.listeners.append(self._keep_received)
         try:
             self._report_lines(note=True)
             self._handshake()
         except MotionError as exc:
             self._fail_connection(exc)
+        finally:
+            if self._keep_received in link.listeners:
+                link.listeners.remove(self._keep_received)
+
+    def _keep_received(self, record: Traffic) -> None:
+        """Keep what the device sends while it is identified (bounded)."""
+        if record.direction == RX and len(self._received) < 4096:
+            self._received += record.data
 
     def _handshake(self) -> None:
         """Identify the device, send the saved setup, read its state; then report it ready."""
@@ -294,6 +350,8 @@ class SerialWorker(QObject):
         )
         self._idle_position = self._idle_stable = None
         self._next_poll = time.monotonic() + self.poll_idle_s
+        self._ready_once = True
+        self._watch = None
         self._report_lines(force=True)  # again: the window enables the lines once connected
 
     @Slot(float, float)
@@ -375,7 +433,11 @@ class SerialWorker(QObject):
 
     @Slot()
     def close_port(self) -> None:
-        """Close the port if open."""
+        """Close the port if open; a lost port is no longer watched for."""
+        self._watch = None
+        self._close_link()
+
+    def _close_link(self) -> None:
         if self._link is None:
             return
         self._flush_traffic()
@@ -402,6 +464,7 @@ class SerialWorker(QObject):
     # -- the loop ----------------------------------------------------------------------------
     def _tick(self) -> None:
         if self._motion is None:
+            self._watch_port()
             return
         try:
             if time.monotonic() >= self._next_lines_poll:
@@ -554,8 +617,9 @@ class SerialWorker(QObject):
             self.speed_changed.emit(speed)
             return speed
         if isinstance(job, jobs.RawJob):
-            reply = motion.client.send_raw(job.data)
-            return None if reply is None else reply.value
+            # Through the motion guard: a move is checked and followed like a typed one.
+            reply = motion.send_raw(job.data, job.force)
+            return reply.value if isinstance(reply, Reply) else reply
         if isinstance(job, jobs.SetParameterJob):
             return motion.set_parameter(job.param_id, job.value)
         if isinstance(job, jobs.ArcJob):
@@ -599,7 +663,9 @@ class SerialWorker(QObject):
                 motion.position()  # the live position moves along the program
             self._flush_traffic_if_due()
 
-        self._streamer = Streamer(motion.client, list(job.points), progress=progress)
+        self._streamer = Streamer(
+            motion.client, list(job.points), progress=progress, guard=motion.guard
+        )
         try:
             state = self._streamer.run()
         finally:
@@ -622,20 +688,51 @@ class SerialWorker(QObject):
             self.speed_changed.emit(motion.speed())
 
     def _fail_connection(self, exc: Exception) -> None:
+        """The port failed (or the device was never reached): close it, say why; a port lost
+        after the device was reached is watched for its return."""
         dropped = self.cancel_pending()
+        error: object = exc
+        url, protocol_name, options = self._connection or ("", "", ConnectOptions())
+        if not self._ready_once:  # never reached: does it speak another protocol?
+            hint = looks_like(bytes(self._received), protocol_name)
+            if hint is not None:
+                error = Message("{hint} ({error})", hint=hint, error=exc)
         if dropped:
-            failed = Message("{error}; not sent: {jobs}", error=exc, jobs=_described(dropped))
-            detail = localized(failed)
-        else:
-            detail = localized(exc)
+            error = Message("{error}; not sent: {jobs}", error=error, jobs=_described(dropped))
         self._recovering = ""
         self._flush_traffic()
         if self._link is not None:
             self._link.close()
         self._link = None
         self._motion = None
+        if self._ready_once and url and _is_path(url):
+            if self._watch is None:
+                now = time.monotonic()
+                self._watch = _PortWatch(
+                    url, protocol_name, self._baud, options, _device_node(url),
+                    next_look=now + PORT_WATCH_S, retry_at=now + PORT_RETRY_S,
+                )  # fmt: skip
+            error = Message("{error}; connecting again when {url} is back", error=error, url=url)
         self.target_changed.emit(None)
-        self.state_changed.emit("error", detail)
+        self.state_changed.emit("error", localized(error))
+
+    def _watch_port(self) -> None:
+        """Every PORT_WATCH_S: if the lost port's path is back (it went away and came again,
+        names another device file, or PORT_RETRY_S passed), connect again as before."""
+        watch, now = self._watch, time.monotonic()
+        if watch is None or now < watch.next_look:
+            return
+        watch.next_look = now + PORT_WATCH_S
+        node = _device_node(watch.url)
+        if node is None:
+            watch.gone = True
+            return
+        if not (watch.gone or node != watch.node or now >= watch.retry_at):
+            return
+        watch.gone, watch.node, watch.retry_at = False, node, now + PORT_RETRY_S
+        log.info("%s is back: connecting again", watch.url)
+        self.notice.emit(localized(Message("{url} is back: connecting again", url=watch.url)))
+        self._open(watch.url, watch.protocol, watch.baud, watch.options)
 
     # -- listeners (worker thread) -----------------------------------------------------------
     def _on_traffic(self, record: Traffic) -> None:

@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
 
 from widgets._axes import AXES, decimals_for, modifier_bits, normalize_axes
 from widgets._i18n import fill, number_text
+from widgets._number_field import label_name
 from widgets._units import INCH, MM, MM_PER_INCH, UnitSpinBox, check_units
 
 log = logging.getLogger(__name__)
@@ -68,6 +69,7 @@ class JogPanel(QWidget):
 
     jog_requested = Signal(str, float)
     jog_released = Signal()
+    refused = Signal(str)  # why a press jogged nothing: the step field's text cannot be used
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -88,6 +90,7 @@ class JogPanel(QWidget):
         self.key_hint = self.tr(KEY_HINT)
         self._held: tuple[str, float] | None = None
         self._held_key: int | None = None
+        self._held_button: QPushButton | None = None
         self.buttons: dict[tuple[str, float], QPushButton] = {}
 
         pad = QGridLayout()
@@ -99,6 +102,7 @@ class JogPanel(QWidget):
             button.setMinimumSize(52, 40)
             button.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Preferred)
             button.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # clicks focus the panel, for keys
+            button.setAutoRepeat(False)  # held: the window steps while it is down, no clicks
             button.pressed.connect(lambda a=axis, d=direction: self._button_pressed(a, d))
             button.released.connect(self.release)
             pad.addWidget(button, row, column)
@@ -140,6 +144,7 @@ class JogPanel(QWidget):
 
         self.step_spin = UnitSpinBox()
         self.step_spin.setObjectName("jogStepSpin")
+        self.step_spin.set_what(label_name(step_label.text()))
         self.step_spin.set_mm_decimals(3)
         self.step_spin.set_mm_range(*STEP_RANGE_MM)
         self.step_spin.set_single_steps(1.0, 0.1)
@@ -326,8 +331,9 @@ class JogPanel(QWidget):
         axis, direction = target
         if axis not in self._axes:
             return False
-        if not auto_repeat:
+        if not auto_repeat:  # an auto-repeat, even one queued before the release, starts nothing
             self._held_key = key
+            self._held_button = None
             self._jog(axis, direction, bool(bits & _SHIFT))
         return True
 
@@ -357,7 +363,11 @@ class JogPanel(QWidget):
             super().keyReleaseEvent(event)
 
     def held(self) -> tuple[str, float] | None:
-        """The (axis, distance) being held, or None."""
+        """The (axis, distance) being held now, or None: a key counts as held from its press
+        to its release (auto-repeated events change nothing), a button while it is down."""
+        button = self._held_button
+        if button is not None and not (button.isDown() and button.isEnabled()):
+            return None  # let go (its release may not have been delivered yet)
         return self._held
 
     def held_by_key(self) -> bool:
@@ -367,6 +377,7 @@ class JogPanel(QWidget):
     def release(self) -> None:
         """End the held jog (a key or button released, or the window lost the keyboard)."""
         self._held_key = None
+        self._held_button = None
         if self._held is not None:
             self._held = None
             self.jog_released.emit()
@@ -374,9 +385,15 @@ class JogPanel(QWidget):
     def _button_pressed(self, axis: str, direction: float) -> None:
         shift = bool(modifier_bits(QApplication.keyboardModifiers()) & _SHIFT)
         self._held_key = None
+        self._held_button = self.buttons[(axis, direction)]
         self._jog(axis, direction, shift)
 
     def _jog(self, axis: str, direction: float, shift: bool) -> None:
+        if self.step_spin.problem():  # a step typed out of range is never replaced by another
+            why = fill(self.tr("%1; no jog"), self.step_spin.problem())
+            log.info("jog refused: %s", why)
+            self.refused.emit(why)
+            return
         distance = direction * self.step() * (SHIFT_FACTOR if shift else 1.0)
         log.debug("jog %s by %g mm", axis, distance)
         self._held = (axis, distance)

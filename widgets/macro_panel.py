@@ -37,6 +37,11 @@ class MacroPanel(QWidget):
         self.empty = QLabel(self.tr("No macros yet: New… writes one, Import… reads a file."))
         self.empty.setObjectName("macroEmpty")
         self.empty.setWordWrap(True)
+        self.blocked = QLabel()  # why the macros cannot run now, while motion is off for a job
+        self.blocked.setObjectName("macroBlocked")
+        self.blocked.setWordWrap(True)
+        self.blocked.setStyleSheet("color: #616161;")
+        self.blocked.setVisible(False)
         self.grid = QGridLayout()
         self.new_button = self._tool(self.tr("New…"), "macroNew", self.tr("Write a new macro"))
         self.new_button.clicked.connect(self.new_requested)
@@ -63,6 +68,7 @@ class MacroPanel(QWidget):
         tools.addStretch(1)
         layout = QVBoxLayout(self)
         layout.addWidget(self.empty)
+        layout.addWidget(self.blocked)
         layout.addLayout(self.grid)
         layout.addLayout(tools)
         layout.addStretch(1)
@@ -99,11 +105,15 @@ class MacroPanel(QWidget):
         self.edit_button.setEnabled(bool(macros))
         self.export_button.setEnabled(bool(macros))
 
-    def set_runnable(self, runnable: bool) -> None:
-        """Enable the run buttons (connected, motion allowed) or not."""
+    def set_runnable(self, runnable: bool, reason: str = "") -> None:
+        """Enable the run buttons (connected, motion allowed) or not; `reason`, shown while
+        they are off, says why (e.g. a program is running)."""
         self._runnable = runnable
         for button in self.buttons.values():
             button.setEnabled(runnable)
+        shown = reason if not runnable else ""
+        self.blocked.setText(fill(self.tr("Macros off: %1"), shown) if shown else "")
+        self.blocked.setVisible(bool(shown))
 
     def _run_clicked(self) -> None:
         button = self.sender()

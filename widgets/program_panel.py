@@ -34,6 +34,10 @@ class ProgramPanel(QWidget):
         super().__init__(parent)
         self.setObjectName("programPanel")
         self._loaded = False
+        self._running = False
+        self._stopping = False  # Stop was pressed: the program is ending
+        self._figures: tuple[int, int, int, float, float | None, int] | None = None
+        self._blocked = ""  # why a program cannot start now ("": it can)
         self.file_label = QLabel(self.tr(NO_PROGRAM))
         self.file_label.setObjectName("programFile")
         self.file_label.setWordWrap(True)
@@ -47,11 +51,8 @@ class ProgramPanel(QWidget):
             "programSave",
             self.tr("Save the loaded program as JSON (x, y, z, speed per point)"),
         )
-        self.run_button = make_button(
-            self.tr("Run"),
-            "programRun",
-            self.tr("Stream the program to the device, 7 moves a frame"),
-        )
+        self._run_tip = self.tr("Stream the program to the device, 7 moves a frame")
+        self.run_button = make_button(self.tr("Run"), "programRun", self._run_tip)
         self.pause_button = make_button(
             self.tr("Pause"),
             "programPause",
@@ -73,7 +74,7 @@ class ProgramPanel(QWidget):
         self.save_button.clicked.connect(self._save)
         self.run_button.clicked.connect(self.run_requested)
         self.pause_button.clicked.connect(self._pause_clicked)
-        self.stop_button.clicked.connect(self.stop_requested)
+        self.stop_button.clicked.connect(self._stop_clicked)
         buttons = QHBoxLayout()
         for button in (
             self.load_button,
@@ -119,6 +120,11 @@ class ProgramPanel(QWidget):
         if path:
             self.load_requested.emit(path)
 
+    def _stop_clicked(self) -> None:
+        self._stopping = True  # no time left is shown any more: the program ends now
+        self._show_figures()
+        self.stop_requested.emit()
+
     def _pause_clicked(self) -> None:
         if self._paused:
             self.resume_requested.emit()
@@ -135,27 +141,44 @@ class ProgramPanel(QWidget):
         self.progress.setRange(0, max(points, 1))
         self.progress.setValue(0)
         self.progress.setFormat(self.tr("%v / %m executed") if name else self.tr("no program"))
-        self.run_button.setEnabled(bool(name))
+        self._show_run()
         self.save_button.setEnabled(bool(name))
 
     def show_error(self, text: str) -> None:
-        """A load or run problem, in red."""
+        """A load or run problem, in red (it stays until the next progress)."""
+        self._figures = None
         self.figures.setStyleSheet("color: #c62828;")
         self.figures.setText(text)
 
     def set_running(self, running: bool) -> None:
         """While streaming: Run and Load off, Pause and Stop on."""
+        self._running = running
+        self._stopping = False
         self.load_button.setEnabled(not running)
-        self.run_button.setEnabled(not running and self._loaded)
+        self._show_run()
         self.pause_button.setEnabled(running)
         self.stop_button.setEnabled(running)
         if not running:
             self.set_paused(False)
 
+    def set_allowed(self, allowed: bool, reason: str = "") -> None:
+        """Whether a program may start now (not while a macro or a parameter write runs), and
+        why not: said in Run's tooltip."""
+        self._blocked = "" if allowed else reason or self.tr("motion is off")
+        self._show_run()
+
+    def _show_run(self) -> None:
+        self.run_button.setEnabled(self._loaded and not self._running and not self._blocked)
+        tip = self._run_tip
+        if self._blocked:
+            tip = fill(self.tr("%1\nNot now: %2"), tip, self._blocked)
+        self.run_button.setToolTip(tip)
+
     def set_paused(self, paused: bool) -> None:
-        """Show Pause or Resume."""
+        """Show Pause or Resume (and "paused" instead of the time left)."""
         self._paused = paused
         self.pause_button.setText(self.tr("Resume") if paused else self.tr("Pause"))
+        self._show_figures()
 
     def show_progress(
         self,
@@ -166,9 +189,21 @@ class ProgramPanel(QWidget):
         seconds_left: float | None,
         retransmissions: int,
     ) -> None:
-        """Counts, rate, time left."""
+        """Counts, rate, and the time left while the program runs ("paused" while paused;
+        nothing once it is stopped or has ended)."""
         self.progress.setValue(executed)
-        if seconds_left is not None:
+        self._figures = (sent, acknowledged, executed, rate, seconds_left, retransmissions)
+        self._show_figures()
+
+    def _show_figures(self) -> None:
+        if self._figures is None:
+            return
+        sent, acknowledged, executed, rate, seconds_left, retransmissions = self._figures
+        if not self._running or self._stopping:
+            left = ""
+        elif self._paused:
+            left = self.tr(", paused")
+        elif seconds_left is not None:
             left = fill(self.tr(", about %1 s left"), f"{seconds_left:.0f}")
         else:
             left = ""
