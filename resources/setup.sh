@@ -15,8 +15,10 @@ DEBIAN_PACKAGES=(
   libxcb-shape0 libxcb-render-util0 libxcb-image0 libxcb-xinerama0 libxcb-randr0
   libfontconfig1 libdbus-1-3 libglib2.0-0
   fonts-droid-fallback desktop-file-utils
+  openbox xdotool x11-utils imagemagick
 )  # fonts-droid-fallback: Chinese glyphs for the zh_CN interface; desktop-file-utils: the
-   # launcher file's check
+   # launcher file's check; openbox, xdotool, x11-utils (xprop), imagemagick (import): the
+   # real-input acceptance tier (tests/acceptance)
 
 say() { printf 'setup: %s\n' "$*" >&2; }
 
