@@ -92,8 +92,8 @@ def _received(protocol: Protocol, frame: bytes) -> tuple[str, str, tuple[Event, 
 class Frame:
     """One decoded frame, shared by every time its bytes cross again (do not change it).
 
-    `raw` is what crossed (its `wire`, else its `data`); `memo` is free for a consumer to keep
-    what it derives from the frame (the traffic index keeps its spool line there).
+    `raw` is what crossed (its `wire`, else its `data`); `memo` is free for the traffic index to
+    keep what it derives from the frame: (its code, the raw size, its spool line).
     """
 
     __slots__ = ("data", "events", "kind", "meaning", "memo", "raw", "wire")
@@ -107,7 +107,7 @@ class Frame:
         self.meaning = meaning
         self.kind = kind
         self.events = events
-        self.memo: object = None
+        self.memo: tuple[int, int, bytes] | None = None
 
     def __repr__(self) -> str:
         return f"Frame({self.raw!r}, {self.kind}, {self.meaning!r})"
@@ -176,13 +176,14 @@ class StreamDecoder:
         pending = self._pending[direction]
         records = self._records[direction]
         if not pending:
-            known = records.get(data)
-            if known is not None:
-                frames, self._pending[direction] = known
+            recorded = records.get(data)
+            if recorded is not None:
+                frames, self._pending[direction] = recorded
                 return frames
         framer = self._framers[direction]
+        split: tuple[list[bytes], list[bytes], bytes] | None
         if framer is None:  # the record is the frame (packets ended by silence)
-            split: tuple[list[bytes], list[bytes], bytes] | None = ([data], [data], b"")
+            split = ([data], [data], b"")
         else:
             buffer = pending + data if pending else data
             split = framer.split_wired(buffer) if isinstance(framer, LineFramer) else None

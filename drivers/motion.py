@@ -213,16 +213,21 @@ class Motion:
         """The speed as the device reports it (or as last set, where it cannot be read back)."""
         if not self.capabilities.speed_readback:
             return self._speed if self._speed is not None else self.capabilities.default_speed
-        value = float(self.client.execute(cmd.GetSpeed()).value)  # type: ignore[arg-type]
+        value = self._number(cmd.GetSpeed())
         self._speed = value
         return value
+
+    def _number(self, command: cmd.Command) -> float:
+        """A query's reply value, as a float (float's error where it is not a number)."""
+        # Reply.value is an object: which query gets a number is each protocol's to say.
+        return float(self.client.execute(command).value)  # type: ignore[arg-type]
 
     def speed_limits(self) -> tuple[float, float]:
         """The lowest and highest speed the device allows."""
         if self._limits is None:
             if self.capabilities.speed_limits_queryable:
-                low = float(self.client.execute(cmd.GetMinSpeed()).value)  # type: ignore[arg-type]
-                high = float(self.client.execute(cmd.GetMaxSpeed()).value)  # type: ignore[arg-type]
+                low = self._number(cmd.GetMinSpeed())
+                high = self._number(cmd.GetMaxSpeed())
                 self._limits = (low, high)
             elif self.capabilities.speed_range is not None:
                 return self.capabilities.speed_range  # not kept: settings may change it
@@ -451,9 +456,11 @@ class Motion:
 
     def _with_speed(self, command: cmd.Command) -> cmd.Command:
         """Where the speed goes with every move (pi-frame, Firmata): the speed set, filled in."""
-        if self.capabilities.speed_in_moves and getattr(command, "speed", 0.0) is None:
+        if not self.capabilities.speed_in_moves:
+            return command
+        if isinstance(command, cmd.MoveTo | cmd.MoveBy | cmd.Arc) and command.speed is None:
             speed = self._speed if self._speed is not None else self.speed()
-            return dataclasses.replace(command, speed=speed)  # type: ignore[type-var]
+            return dataclasses.replace(command, speed=speed)
         return command
 
     def _run_move(
@@ -509,7 +516,8 @@ class Motion:
         if not self.capabilities.position_feedback:
             confirmed = completion is Completion.FEEDBACK  # the device said the move ended
             self._set_position(PositionReport(*target, measured=False, confirmed=confirmed))
-            return self.last_position  # type: ignore[return-value]
+            assert self.last_position is not None
+            return self.last_position
         if completion is not Completion.REPLY:
             return self.position()
         undisturbed = heard == self._heard and not self.stop_requested.is_set()
@@ -518,7 +526,8 @@ class Motion:
             at = self._as_reported(target)
             self._set_position(PositionReport(*at, measured=False, confirmed=True))
             self._known()
-            return self.last_position  # type: ignore[return-value]
+            assert self.last_position is not None
+            return self.last_position
         report, first_at = self._wait_until_at(target, duration)
         if undisturbed and first_at is not None and duration >= EVIDENCE_MIN_S:
             # The first poll found the stage at the target. The reply meant arrival if the

@@ -37,7 +37,7 @@ class Parameter:
     @property
     def maximum(self) -> float:
         """The highest value that fits the wire's digits after scaling (or a tighter bound)."""
-        fits = (10**self.digits - 1) / self.scale
+        fits: float = (10**self.digits - 1) / self.scale  # (int ** int is typed Any)
         return fits if self.maximum_value is None else min(fits, self.maximum_value)
 
     @property

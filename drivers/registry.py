@@ -48,7 +48,8 @@ def get_protocol_class(name: str) -> type[Protocol]:
         raise UnknownProtocol(
             Message("unknown protocol {name!r} (known: {known})", name=name, known=known)
         ) from None
-    return getattr(importlib.import_module(module_name), class_name)
+    protocol_class: type[Protocol] = getattr(importlib.import_module(module_name), class_name)
+    return protocol_class
 
 
 def create_protocol(name: str, variant: str | None = None) -> Protocol:

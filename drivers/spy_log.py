@@ -127,6 +127,7 @@ def spy_records(lines: Iterable[str], source: str) -> Iterator[LogRecord]:
             offset, data = int(hit.group(3), 16), _row_bytes(hit.group(4))
             if data is None:
                 raise _refusal(source, number, line)
+            call: _Call | None  # the open call these bytes continue, checked below
             if offset == 0:
                 call = calls[direction] = _Call(stamp, direction, bytearray(data))
                 waiting.append(call)

@@ -8,6 +8,7 @@ from typing import TextIO
 
 TX = "tx"
 RX = "rx"
+_wall_clock = time.time  # `time` is also a field name below, which hides the module in the class
 
 
 @dataclass(frozen=True)
@@ -17,7 +18,7 @@ class Traffic:
     direction: str
     data: bytes
     time: float
-    wall: float = field(default_factory=time.time)
+    wall: float = field(default_factory=_wall_clock)
 
 
 def hexdump_lines(record: Traffic, start: float, width: int = 16) -> list[str]:

@@ -246,7 +246,7 @@ _HOLE_BLOCK = 1 << 20  # bytes: the spool's dropped bytes are given back a megab
 
 
 @functools.cache
-def _fallocate() -> ctypes._CFuncPtr | None:  # type: ignore[name-defined]
+def _fallocate() -> Callable[[int, int, int, int], int] | None:
     """libc's fallocate (Linux), to punch holes in the spool; None where there is none."""
     if not sys.platform.startswith("linux"):
         return None
@@ -549,8 +549,10 @@ class TrafficIndex:
 
     def _tracker(self, raw: bytes) -> Exchange | None:
         """The protocol's reply tracker for a request (None: it pairs by order)."""
+        if self.protocol is None:  # (no request waits without one: see _add_sent)
+            return None
         try:
-            return self.protocol.raw_exchange(raw)  # type: ignore[union-attr]
+            return self.protocol.raw_exchange(raw)
         except Exception:  # a tracker for a frame that makes no sense: pair by order instead
             log.debug("no reply tracker for %r", raw, exc_info=True)
             return None
@@ -588,7 +590,8 @@ class TrafficIndex:
                 step = steps.get((waiting.state, frame.raw))
                 if step is not None:
                     taken, done, waiting.state = step
-                    waiting.offered.append(frame)  # type: ignore[union-attr]
+                    assert waiting.offered is not None  # kept while replaying
+                    waiting.offered.append(frame)
                     if taken:
                         if done:
                             self._waiting.remove(waiting)
@@ -597,7 +600,7 @@ class TrafficIndex:
                 self._go_live(waiting)
                 if waiting.exchange is None:
                     continue
-            taken, done = self._offer(waiting, frame)
+            taken, done = self._offer(waiting, waiting.exchange, frame)
             if taken:
                 if done:
                     self._waiting.remove(waiting)
@@ -618,23 +621,22 @@ class TrafficIndex:
             return
         state, waiting.state = waiting.state, -1
         for frame in offered:
-            self._offer(waiting, frame)
+            self._offer(waiting, exchange, frame)
         waiting.state = state
 
-    def _offer(self, waiting: _Waiting, frame: Frame) -> tuple[bool, bool]:
-        """Feed a frame's events to a request's live tracker: (taken, the reply is complete),
-        learnt by the script where it follows."""
-        exchange = waiting.exchange
+    def _offer(self, waiting: _Waiting, exchange: Exchange, frame: Frame) -> tuple[bool, bool]:
+        """Feed a frame's events to a request's live tracker (`exchange`, the waiting one's):
+        (taken, the reply is complete), learnt by the script where it follows."""
         events = frame.events
         try:
             if len(events) == 1:
-                taken = exchange.on_event(events[0])  # type: ignore[union-attr]
+                taken = exchange.on_event(events[0])
             else:
-                taken = any(exchange.on_event(event) for event in events)  # type: ignore[union-attr]
+                taken = any(exchange.on_event(event) for event in events)
         except Exception:  # a tracker confused by foreign traffic: not this request's
             log.debug("reply tracker failed on %r", frame.data, exc_info=True)
             taken = False
-        done = taken and exchange.finished and not exchange.wants_more  # type: ignore[union-attr]
+        done = taken and exchange.finished and not exchange.wants_more
         if waiting.state >= 0:
             waiting.state = self._scripts.learn(waiting.state, frame.raw, taken, done)
         return taken, done

@@ -69,7 +69,8 @@ class Link:
             return None
         if not self.port.is_open:
             raise PortError(Message("{url} is not open", url=self.url))
-        return self.port.fd  # type: ignore[no-any-return]
+        descriptor: int = self.port.fd  # (pyserial has no type hints)
+        return descriptor
 
     def write(self, data: bytes) -> None:
         """Write all of `data`, and wait until the port has sent it.
@@ -241,7 +242,8 @@ class Link:
             return None
         if not self.port.is_open:
             raise PortError(Message("{url} is not open", url=self.url))
-        return self.port.fd  # type: ignore[no-any-return]
+        descriptor: int = self.port.fd  # (pyserial has no type hints)
+        return descriptor
 
     def _modem_bits(self, fd: int) -> int | None:
         """TIOCMGET's bits; None when the tty has no modem lines (remembered)."""

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Motion Panel set-up: `bash resources/setup.sh run` starts the panel on the simulated device;
-# `bash resources/setup.sh test` runs lint and the whole test suite (under Xvfb with Mesa).
+# `bash resources/setup.sh test` runs lint (ruff, mypy on drivers/) and the whole test suite
+# (under Xvfb with Mesa).
 # Both create .venv and install the project into it when needed; as root, `test` also installs
 # the Debian packages for Xvfb, Mesa and Qt's xcb platform where they are missing.
 set -euo pipefail
@@ -59,6 +60,7 @@ run_tests() {
   install_venv "[test]"
   "$VENV/bin/ruff" check .
   "$VENV/bin/ruff" format --check .
+  "$VENV/bin/mypy" drivers
   export LIBGL_ALWAYS_SOFTWARE=1
   if command -v xvfb-run >/dev/null 2>&1; then
     exec xvfb-run -a -s "-screen 0 1600x1000x24 +extension GLX" "$VENV/bin/python" -m pytest "$@"

@@ -33,3 +33,96 @@ def test_layer_imports(package: str, forbidden: tuple[str, ...]) -> None:
     bad = {(path, name) for path, name in _imports(package) if name.split(".")[0] in forbidden}
     assert not bad, f"{package} must not import {forbidden}: {sorted(bad)}"
     assert _imports(package), f"no imports found under {package}: the check would prove nothing"
+
+
+def _module_name(path: Path) -> str:
+    parts = path.relative_to(ROOT).with_suffix("").parts
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _is_type_checking(test: ast.expr) -> bool:
+    return (isinstance(test, ast.Name) and test.id == "TYPE_CHECKING") or (
+        isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING"
+    )
+
+
+def _load_time_imports(body: list[ast.stmt]) -> list[ast.Import | ast.ImportFrom]:
+    """The imports a module runs as it loads: top-level, in classes and in if/try/with blocks,
+    not in functions (called later) nor under `if TYPE_CHECKING:`."""
+    found: list[ast.Import | ast.ImportFrom] = []
+    for node in body:
+        if isinstance(node, ast.Import | ast.ImportFrom):
+            found.append(node)
+        elif isinstance(node, ast.If):
+            if not _is_type_checking(node.test):
+                found += _load_time_imports(node.body)
+            found += _load_time_imports(node.orelse)
+        elif isinstance(node, ast.Try):
+            for block in (node.body, node.orelse, node.finalbody):
+                found += _load_time_imports(block)
+            for handler in node.handlers:
+                found += _load_time_imports(handler.body)
+        elif isinstance(node, ast.With | ast.ClassDef):
+            found += _load_time_imports(node.body)
+    return found
+
+
+def _import_graph(package: str) -> dict[str, set[str]]:
+    """Each module of `package` and the modules of `package` it imports as it loads."""
+    paths = {_module_name(path): path for path in (ROOT / package).rglob("*.py")}
+    graph: dict[str, set[str]] = {}
+    for module, path in paths.items():
+        is_package = path.name == "__init__.py"
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        targets: set[str] = set()
+        for node in _load_time_imports(tree.body):
+            if isinstance(node, ast.Import):
+                targets.update(alias.name for alias in node.names)
+                continue
+            base = node.module or ""
+            if node.level:  # relative: from the module's own package upwards
+                parts = module.split(".")[: len(module.split(".")) - node.level + is_package]
+                base = ".".join([*parts, *([base] if base else [])])
+            targets.add(base)
+            targets.update(f"{base}.{alias.name}" for alias in node.names)  # submodules
+        graph[module] = {target for target in targets if target in paths and target != module}
+    return graph
+
+
+def _find_cycle(graph: dict[str, set[str]]) -> list[str] | None:
+    """One import cycle of `graph` (its modules, the first repeated at the end), or None."""
+    done: set[str] = set()
+    path: list[str] = []
+
+    def visit(module: str) -> list[str] | None:
+        if module in path:
+            return [*path[path.index(module) :], module]
+        if module in done:
+            return None
+        path.append(module)
+        for target in sorted(graph.get(module, ())):
+            cycle = visit(target)
+            if cycle is not None:
+                return cycle
+        path.pop()
+        done.add(module)
+        return None
+
+    for module in sorted(graph):
+        cycle = visit(module)
+        if cycle is not None:
+            return cycle
+    return None
+
+
+def test_the_cycle_finder_finds_a_cycle() -> None:
+    assert _find_cycle({"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}) == ["a", "b", "c", "a"]
+    assert _find_cycle({"a": {"b", "c"}, "b": {"c"}, "c": set()}) is None
+
+
+def test_drivers_have_no_import_cycle() -> None:
+    graph = _import_graph("drivers")
+    assert graph["drivers.spy_log"] >= {"drivers.log_reader", "drivers.messages"}
+    assert "drivers.framers.base" in graph["drivers.framers"]  # the package's own import
+    cycle = _find_cycle(graph)
+    assert cycle is None, "drivers/ modules import each other as they load: " + " -> ".join(cycle)

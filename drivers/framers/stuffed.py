@@ -16,7 +16,7 @@ ESCAPE = 0x90
 TAIL_SECOND = 0x82
 
 
-def checksum(data: bytes) -> int:
+def checksum(data: bytes | bytearray) -> int:
     """Sum of the bytes mod 256."""
     return sum(data) & 0xFF
 

@@ -393,10 +393,11 @@ class FirmataProtocol(Protocol):
     ) -> tuple[float, float] | None:
         """Steps at rpm × steps per revolution / 60 steps a second."""
         parts = self.expand(command) if isinstance(command, MoveBy) else [command]
-        if not all(isinstance(p, StepperStep) for p in parts):
+        steps = [p for p in parts if isinstance(p, StepperStep)]
+        if len(steps) < len(parts):
             return None
         spr = self.values["steps_per_rev"]
-        return 0.0, sum(abs(p.steps) * 60 / (p.rpm * spr) for p in parts)  # type: ignore[attr-defined]
+        return 0.0, sum(abs(p.steps) * 60 / (p.rpm * spr) for p in steps)
 
 
 def configure_stepper(client: Client, steps_per_rev: int, pins: tuple[int, ...]) -> int:

@@ -173,12 +173,13 @@ class PiFrameProtocol(Protocol):
         direction = 0
         if isinstance(command, MoveTo):
             action = LINEAR
-            target = tuple(
-                self._ticks(v, a)
-                for a, v in zip("XYZ", (command.x, command.y, command.z), strict=True)
+            target = (
+                self._ticks(command.x, "X"),
+                self._ticks(command.y, "Y"),
+                self._ticks(command.z, "Z"),
             )
             fields[0:3] = target
-            fields[3:6] = self._linear_speeds(target, command.speed or DEFAULT_SPEED)  # type: ignore[arg-type]
+            fields[3:6] = self._linear_speeds(target, command.speed or DEFAULT_SPEED)
         elif isinstance(command, Home):
             return self.frame(MoveTo(0.0, 0.0, 0.0))
         elif isinstance(command, Arc):

@@ -8,6 +8,8 @@ firmware holds at power-on, as the simulator has them (a move of 10 mm is 400 st
 
 from __future__ import annotations
 
+from typing import TypedDict, Unpack
+
 from drivers.messages import Message, message_template
 from drivers.parameters import Parameter
 
@@ -16,22 +18,32 @@ SPEED_IDS = (21, 22)
 _AXIS_WORD = {"x": "X", "y": "Y"}
 
 
+class _Options(TypedDict, total=False):
+    """Parameter's fields a pair may set besides its default."""
+
+    scale: int
+    digits: int
+    output: bool
+    maximum_value: float | None
+
+
 def _pair(
-    first_id: int, name: str, unit: str, text: str, default: float, **options: object
+    first_id: int, name: str, unit: str, text: str, default: float, **options: Unpack[_Options]
 ) -> tuple[Parameter, Parameter]:
     """The X and Y parameters of one kind: ids `first_id` and `first_id + 1`; `text` is a
     message_template whose `{axis}` each gets its axis in."""
-    return tuple(  # type: ignore[return-value]
+    x, y = (
         Parameter(
             first_id + index,
             f"{name}_{axis}",
             unit,
             Message(text, axis=_AXIS_WORD[axis]),
             default=default,
-            **options,  # type: ignore[arg-type]
+            **options,
         )
         for index, axis in enumerate("xy")
     )
+    return x, y
 
 
 PARAMETERS: tuple[Parameter, ...] = (

@@ -34,7 +34,7 @@ class SimulatedDevice(ABC):
     """
 
     protocol: ClassVar[str]
-    default_baud: ClassVar[int] = 115200
+    default_baud: int = 115200  # per instance where a variant has its own (Visiomex)
     rx_capacity: ClassVar[int] = 63  # Arduino's 64-byte ring buffer holds 63
     resets_on_open: ClassVar[bool] = False  # an Arduino resets when its port opens (DTR)
 

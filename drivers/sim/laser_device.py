@@ -104,7 +104,7 @@ class LaserDevice(SimulatedDevice):
         self.rng = random.Random(seed)
         self.framer = StuffedFramer(max_length=MAX_DATA)
         self.stage = Stage(3, speed=DEFAULT_SPEED, instant=instant)
-        self.executed: list[tuple[int, tuple]] = []
+        self.executed: list[tuple[int, Values]] = []
         self.executed_at: list[float] = []
         self.frames_ok = 0
         self.frames_bad = 0

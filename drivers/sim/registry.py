@@ -32,5 +32,5 @@ def create_device(
     except KeyError:
         known = ", ".join(simulator_names())
         raise UnknownProtocol(f"no simulator for {name!r} (simulators: {known})") from None
-    cls = getattr(importlib.import_module(module_name), class_name)
-    return cls(clock, baud, **options)
+    device_class: type[SimulatedDevice] = getattr(importlib.import_module(module_name), class_name)
+    return device_class(clock, baud, **options)

@@ -78,6 +78,8 @@ def with_sim_variant(url: str, variant: str) -> str:
 class Serial(SerialBase):
     """A pyserial port whose other end is a simulated device running on the real clock."""
 
+    is_open: bool  # SerialBase's (pyserial has no type hints)
+
     def open(self) -> None:
         """Create and boot the device named by the URL."""
         if self._port is None:
