@@ -42,7 +42,7 @@ class ProgramPanel(QWidget):
         self.file_label.setObjectName("programFile")
         self.file_label.setWordWrap(True)
         self.load_button = make_button(
-            self.tr("Load…"),
+            self.tr("&Load…"),
             "programLoad",
             self.tr("Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON"),
         )
@@ -52,14 +52,14 @@ class ProgramPanel(QWidget):
             self.tr("Save the loaded program as JSON (x, y, z, speed per point)"),
         )
         self._run_tip = self.tr("Stream the program to the device, 7 moves a frame")
-        self.run_button = make_button(self.tr("Run"), "programRun", self._run_tip)
+        self.run_button = make_button(self.tr("&Run"), "programRun", self._run_tip)
         self.pause_button = make_button(
-            self.tr("Pause"),
+            self.tr("P&ause"),
             "programPause",
             self.tr("Send nothing more until Resume (queued moves go on)"),
         )
         self.stop_button = make_button(
-            self.tr("Stop"),
+            self.tr("&Stop"),
             "programStop",
             self.tr("Send nothing more and flush the device's queue (STOP)"),
         )
@@ -177,7 +177,7 @@ class ProgramPanel(QWidget):
     def set_paused(self, paused: bool) -> None:
         """Show Pause or Resume (and "paused" instead of the time left)."""
         self._paused = paused
-        self.pause_button.setText(self.tr("Resume") if paused else self.tr("Pause"))
+        self.pause_button.setText(self.tr("Resume") if paused else self.tr("P&ause"))
         self._show_figures()
 
     def show_progress(

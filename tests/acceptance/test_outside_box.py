@@ -2,12 +2,10 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
 
 from tests.acceptance.conftest import Rig
 from tests.acceptance.xsession import (
-    SCREENS,
     XServer,
     colour_count,
     motionctl,
@@ -21,12 +19,12 @@ OUTSIDE_NOTICE = 0xFFF3E0  # the readout's "outside its travel limits" notice (b
 
 
 def test_jog_back_towards_the_box_is_allowed(
-    x_server_of: Callable[[tuple[int, int]], XServer], rig: Rig, tmp_path: Path, shots: Path
+    any_screen: XServer, rig: Rig, tmp_path: Path, shots: Path
 ) -> None:
     """Stage at X 100, box ±50, step 10: Left jogs to 90 (the readout says the stage is
-    outside), Right is refused, Left again goes on to 80. On the largest screen, where the
-    Position panel shows the notice without scrolling."""
-    x_server = x_server_of(SCREENS[2])
+    outside, at the top of the Position panel, seen at every screen size), Right is refused,
+    Left again goes on to 80."""
+    x_server = any_screen
     sim = rig.sim("coxiris", "--speed", "100")
     placed = motionctl("--port", sim.path, "--protocol", "coxiris", "move", "100", "0", "0")
     assert placed.returncode == 0, placed.stderr
@@ -43,8 +41,9 @@ def test_jog_back_towards_the_box_is_allowed(
 
     panel.key("Left")
     wait_for(lambda: jogs() == [[-10.0, 0.0, 0.0]], 10.0, "DELTA_MOVE -10 0 0 at the device")
+    shot = shots / "outside-{}x{}.png".format(*x_server.size)
     wait_for(
-        lambda: colour_count(x_server.grab(shots / "outside.png"), OUTSIDE_NOTICE) > 200,
+        lambda: colour_count(x_server.grab(shot), OUTSIDE_NOTICE) > 200,
         10.0,
         "the readout's notice that the stage is outside its box",
         interval=0.2,

@@ -332,6 +332,53 @@ def numbers(line: Line) -> list[float]:
     return [float(part) for part in line.text.split()[1:]]
 
 
+@dataclass(frozen=True)
+class Frame:
+    """A frame of the traffic as the panel saw it: `direction` "tx" (the panel sent it) or
+    "rx" (it received it), and its meaning by the protocol's own decoder."""
+
+    time: float
+    direction: str
+    meaning: str
+
+
+def decode_frames(entries: Iterable[Entry], protocol: str) -> list[Frame]:
+    """`entries` of a session log (the panel's directions), decoded by `protocol`'s decoder."""
+    from drivers.decoding import StreamDecoder
+    from drivers.registry import create_protocol
+
+    decoder = StreamDecoder(create_protocol(protocol))
+    frames: list[Frame] = []
+    for entry in entries:
+        if entry.direction:
+            for frame in decoder.feed_bytes(entry.direction, entry.data, entry.time):
+                frames.append(Frame(frame.time, entry.direction, str(frame.meaning)))
+    return frames
+
+
+_SEQUENCE = re.compile(r"^SEQUENCE \[(-?\d+)")
+_MOVE_LINEAR = re.compile(r"MOVE_LINEAR \[([^\]]*)\]")
+
+
+def laser_moves(meanings: Iterable[str]) -> list[tuple[float, ...]]:
+    """The MOVE_LINEAR targets (x, y, z, speed) that laser-frame frames sent carry, in order;
+    a queued frame sent again with its SEQUENCE number (a retransmission) counted once."""
+    seen: set[int] = set()
+    moves: list[tuple[float, ...]] = []
+    for meaning in meanings:
+        sequence = _SEQUENCE.match(meaning)
+        if sequence is not None:
+            number = int(sequence.group(1))
+            if number in seen:
+                continue
+            seen.add(number)
+        moves += [
+            tuple(float(v) for v in hit.group(1).split(","))
+            for hit in _MOVE_LINEAR.finditer(meaning)
+        ]
+    return moves
+
+
 class SessionLog:
     """The panel's session logs (MOTIONPANEL_LOG_DIR): every byte of every connection."""
 
@@ -382,6 +429,10 @@ class SessionLog:
         """The lines the panel sent, every connection."""
         return split_lines(self.entries(), "tx")
 
+    def frames(self, protocol: str) -> list[Frame]:
+        """Every frame of every connection, both ways, decoded by `protocol`."""
+        return decode_frames(self.entries(), protocol)
+
 
 def motionctl(*args: str, timeout: float = 30.0) -> subprocess.CompletedProcess:
     """Run `motionctl ARGS` to its end; its exit status and output."""
@@ -417,6 +468,7 @@ class Sim:
         if control:
             extra.append("--control")
         self.record = DeviceRecord(record)
+        self.link = link
         self.proc = subprocess.Popen(
             [sys.executable, "-m", "app.simcli", protocol, "--record", str(record), *extra],
             stdin=subprocess.PIPE if control else subprocess.DEVNULL,
@@ -450,6 +502,14 @@ class Sim:
         if self.proc.poll() is None:
             self.proc.kill()
         self.proc.wait(10)
+
+    def vanish(self) -> None:
+        """Kill the device at once and remove its --link, as a USB adapter's node disappears
+        when it is pulled (a stale link could lead to another process's pty, once its number
+        is given out again)."""
+        self.kill()
+        if self.link is not None:
+            self.link.unlink(missing_ok=True)
 
     def stop(self) -> None:
         """End the simulator (SIGTERM, then SIGKILL)."""
@@ -485,6 +545,13 @@ def write_settings(
     for key, value in (extra or {}).items():
         settings.setValue(key, value)
     settings.sync()
+    return path
+
+
+def write_program(path: Path, points: Iterable[tuple[float, float, float, float]]) -> Path:
+    """A program file (CSV: x, y, z, speed) of `points`."""
+    rows = "".join(f"{x:g},{y:g},{z:g},{speed:g}\n" for x, y, z, speed in points)
+    path.write_text("x,y,z,speed\n" + rows, encoding="utf-8")
     return path
 
 
@@ -549,11 +616,18 @@ class Panel:
         return self.stderr_path.read_text(errors="replace")
 
     def geometry(self) -> tuple[int, int, int, int]:
-        """The window's x, y, width, height on the screen."""
-        text = self.x.xdotool("getwindowgeometry", self.window)
-        x, y = re.search(r"Position: (-?\d+),(-?\d+)", text).groups()  # type: ignore[union-attr]
-        w, h = re.search(r"Geometry: (\d+)x(\d+)", text).groups()  # type: ignore[union-attr]
-        return int(x), int(y), int(w), int(h)
+        """The window's x, y, width, height on the screen (its content, without the window
+        manager's frame; xdotool's position is relative to that frame, so xwininfo's absolute
+        one is used)."""
+        info = self.x.run("xwininfo", "-id", self.window).stdout
+        found = [
+            re.search(rf"{label}:\s+(-?\d+)", info)
+            for label in ("Absolute upper-left X", "Absolute upper-left Y", "Width", "Height")
+        ]
+        if not all(found):
+            raise AssertionError(f"no geometry in xwininfo's answer: {info}")
+        x, y, w, h = (int(match.group(1)) for match in found if match is not None)
+        return x, y, w, h
 
     def fit_to_screen(self) -> None:
         """Move and resize the window to fill the screen, as an operator would (the window
@@ -565,6 +639,20 @@ class Panel:
             lambda: self.geometry()[2:] != (0, 0) and self.geometry()[2] <= width,
             10.0,
             "window resized to the screen",
+        )
+        self.fit_inside_screen()  # the title bar pushes the bottom (the status bar) off it
+
+    def fit_inside_screen(self) -> None:
+        """Shrink the window so that all of it, status bar included, is on the screen below the
+        window manager's title bar (`fit_to_screen` makes the window as big as the screen: its
+        bottom goes off the screen when openbox decorates it, as at 1600x1000)."""
+        left, top = self.geometry()[:2]
+        width, height = self.x.size[0] - max(left, 0), self.x.size[1] - max(top, 0)
+        self.x.xdotool("windowsize", self.window, str(width), str(height))
+        wait_for(
+            lambda: self.geometry()[2:] == (width, height),
+            10.0,
+            f"window resized to {width}x{height}",
         )
 
     def activate(self) -> None:
@@ -595,6 +683,52 @@ class Panel:
         """Release `key`."""
         self.x.xdotool("keyup", key)
 
+    def load_program(self, path: Path) -> None:
+        """Load a program file as an operator does with the keyboard: the Program panel's Load
+        (Alt+L), its path typed in the file dialog, Return."""
+        self.key("alt+l")
+        self.answer_file_dialog("^Load a program$", path)
+
+    def dialog(self, title: str, timeout: float = 15.0) -> str:
+        """The panel's visible window titled `title` (a regular expression), once it is shown."""
+
+        def find() -> str:
+            self.alive()
+            found = self.x.run(
+                "xdotool",
+                "search",
+                "--onlyvisible",
+                "--pid",
+                str(self.proc.pid),
+                "--name",
+                title,
+                check=False,
+            )
+            return next((w for w in found.stdout.split() if w != self.window), "")
+
+        return wait_for(find, timeout, f"the window {title!r}", interval=0.05)
+
+    def answer_file_dialog(self, title: str, path: Path, timeout: float = 15.0) -> None:
+        """In the file dialog titled `title`, replace the file name by `path` and press Return
+        (as an operator types a path); wait until the dialog has closed."""
+        window = self.dialog(title, timeout)
+        self.x.xdotool("windowactivate", "--sync", window)
+        wait_for(
+            lambda: self.x.xdotool("getactivewindow").strip() == window,
+            5.0,
+            f"the window {title!r} active",
+        )
+        self.x.xdotool("key", "--delay", "30", "ctrl+a")
+        self.x.xdotool("type", "--delay", "30", "--", str(path))
+        self.x.xdotool("key", "Return")
+
+        def closed() -> bool:
+            self.alive()
+            shown = self.x.run("xdotool", "search", "--onlyvisible", "--name", title, check=False)
+            return window not in shown.stdout.split()
+
+        wait_for(closed, timeout, f"the window {title!r} closed", interval=0.05)
+
     def wait_handshake(self, reply: bytes, timeout: float = 30.0, count: int = 1) -> None:
         """Wait until the session log shows `count` connections answered with `reply`."""
         wait_for(
@@ -623,6 +757,8 @@ class Panel:
         """The machine state the status bar's badge shows (by its colour), "" if none."""
         x, y, w, h = self.geometry()
         strip = (max(x, 0), max(y + h - 40, 0), min(w, 300), 40)  # the status bar's left end
+        if strip[1] + strip[3] > self.x.size[1]:  # `import` would grab the whole screen
+            raise AssertionError(f"the status bar ({strip}) is off the {self.x.size} screen")
         image = self.x.grab(self.shots / "state.png", strip)
         counts = {name: colour_count(image, rgb) for name, rgb in STATE_COLOURS.items()}
         name, count = max(counts.items(), key=lambda item: item[1])
