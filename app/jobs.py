@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, ClassVar
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
@@ -44,6 +44,9 @@ _TEMPLATES = (
 class Job:
     """Base of every job; `describe()` is what the user is told about it."""
 
+    moves: ClassVar[bool] = False
+    """Whether the job may move the stage (a stop asked after it was queued drops it)."""
+
     def describe(self) -> str:
         """A short human description."""
         return type(self).__name__
@@ -52,6 +55,8 @@ class Job:
 @dataclass(frozen=True)
 class MoveToJob(Job):
     """Absolute move (mm)."""
+
+    moves = True
 
     x: float
     y: float
@@ -65,6 +70,8 @@ class MoveToJob(Job):
 @dataclass(frozen=True)
 class MoveByJob(Job):
     """Relative move (mm)."""
+
+    moves = True
 
     dx: float
     dy: float
@@ -80,6 +87,8 @@ class MoveByJob(Job):
 @dataclass(frozen=True)
 class HomeJob(Job):
     """Go to (0, 0, 0)."""
+
+    moves = True
 
     def describe(self) -> str:
         """`go home`."""
@@ -125,6 +134,8 @@ class SetParameterJob(Job):
 @dataclass(frozen=True, eq=False)
 class ArcJob(Job):
     """An arc move (pi-frame)."""
+
+    moves = True
 
     arc: Arc
 
@@ -188,6 +199,8 @@ class StepperVersionJob(Job):
 class StreamJob(Job):
     """Stream a program to the device's queue."""
 
+    moves = True
+
     points: tuple[ProgramPoint, ...]
     name: str = "program"
 
@@ -200,6 +213,8 @@ class StreamJob(Job):
 class RawJob(Job):
     """Send raw bytes typed in the console (through the motion guard; `force`: the operator
     confirmed bytes the protocol cannot read while a travel box is set)."""
+
+    moves = True
 
     data: bytes
     force: bool = False
@@ -223,6 +238,8 @@ class RefreshJob(Job):
 @dataclass(frozen=True)
 class MacroJob(Job):
     """Run a macro's steps in order, each waiting for the device."""
+
+    moves = True
 
     macro: Macro
 

@@ -107,9 +107,11 @@ def _device_node(path: str) -> tuple[int, int] | None:
     return info.st_rdev, info.st_ino
 
 
-def _is_path(url: str) -> bool:
-    """Whether a port is a file path (a device, a pty, a link to one), not a pyserial URL."""
-    return "://" not in url
+def _watchable(url: str) -> bool:
+    """Whether a lost port is watched for its return: a file path (a device, a link to one),
+    not a pyserial URL, nor a pseudo-terminal's own /dev/pts/N, whose number the system gives
+    the next pty opened by any program (`motionsim --link` gives a pty a name that lasts)."""
+    return "://" not in url and not url.startswith("/dev/pts/")
 
 
 class SerialWorker(QObject):
@@ -145,7 +147,10 @@ class SerialWorker(QObject):
         super().__init__()
         self.poll_moving_hz = poll_moving_hz
         self.poll_idle_s = poll_idle_s
-        self._jobs: queue.Queue[jobs.Job] = queue.Queue()
+        self._jobs: queue.Queue[tuple[int, jobs.Job]] = queue.Queue()
+        self._submit_lock = threading.Lock()
+        self._submitted = 0  # jobs submitted so far (each numbered in turn)
+        self._stop_covers = 0  # the jobs numbered up to this were submitted before a stop
         self._link: Link | None = None
         self._motion: Motion | None = None
         self._timer: QTimer | None = None
@@ -172,14 +177,16 @@ class SerialWorker(QObject):
     # -- thread-safe API ---------------------------------------------------------------------
     def submit(self, job: jobs.Job) -> None:
         """Queue a job (any thread)."""
-        self._jobs.put(job)
+        with self._submit_lock:
+            self._submitted += 1
+            self._jobs.put((self._submitted, job))
 
     def cancel_pending(self) -> list[jobs.Job]:
         """Drop every queued job that has not started; return them (any thread)."""
         dropped = []
         while True:
             try:
-                dropped.append(self._jobs.get_nowait())
+                dropped.append(self._jobs.get_nowait()[1])
             except queue.Empty:
                 return dropped
 
@@ -197,7 +204,10 @@ class SerialWorker(QObject):
                 streamer.resume()
 
     def stop_now(self) -> None:
-        """Stop the move or program under way, where the device has a stop (any thread)."""
+        """Stop the move or program under way, where the device has a stop (any thread); a
+        move submitted before the stop and not yet started is not sent."""
+        with self._submit_lock:
+            self._stop_covers = self._submitted
         motion = self._motion
         if motion is not None:
             motion.stop_requested.set()
@@ -473,12 +483,12 @@ class SerialWorker(QObject):
                 self._recover()
             else:
                 try:
-                    job = self._jobs.get_nowait()
+                    number, job = self._jobs.get_nowait()
                 except queue.Empty:
                     job = None
                 if job is not None:
                     self._idle_position = self._idle_stable = None
-                    self._run(job)
+                    self._run(job, number)
                     self._rest_after(job)
                 else:
                     self._motion.client.poll()
@@ -570,9 +580,14 @@ class SerialWorker(QObject):
             return
         self._recovering = ""
 
-    def _run(self, job: jobs.Job) -> None:
+    def _run(self, job: jobs.Job, number: int) -> None:
         motion = self._motion
         assert motion is not None
+        if number <= self._stop_covers and job.moves:
+            # Queued when a stop was asked (a held jog let go during a step): not sent.
+            motion.stop_requested.clear()
+            self.job_failed.emit(job, localized(Message("stopped before it was sent")))
+            return
         motion.stop_requested.clear()  # a stop asked before this job is not for it
         self.busy_changed.emit(True)
         try:
@@ -705,7 +720,7 @@ class SerialWorker(QObject):
             self._link.close()
         self._link = None
         self._motion = None
-        if self._ready_once and url and _is_path(url):
+        if self._ready_once and url and _watchable(url):
             if self._watch is None:
                 now = time.monotonic()
                 self._watch = _PortWatch(

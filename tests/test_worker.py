@@ -110,3 +110,27 @@ def test_disconnect_mid_move_is_a_disconnection_not_an_error(
     assert "abandoned" in failed.args[1]
     qtbot.waitUntil(lambda: "disconnected" in states, timeout=5000)
     assert "error" not in states
+
+
+def test_a_move_queued_before_a_stop_is_not_sent(qtbot, worker_thread: WorkerThread) -> None:
+    """A held jog let go while its next step is queued behind the step under way: the stop
+    halts the move under way and the queued step never goes (laser-frame has a stop)."""
+    worker = worker_thread.worker
+    with wait_in_gui(qtbot, worker.device_ready):
+        worker_thread.open("sim://laser-frame", "laser-frame", 115200)
+    traffic: list = []
+    worker.traffic.connect(traffic.extend)
+    failed: list = []
+    worker.job_failed.connect(lambda job, why: failed.append((job, why)))
+    with wait_in_gui(qtbot, worker.busy_changed):
+        worker.submit(jobs.MoveByJob(30, 0, 0))  # 3 s at the default 10 mm/s
+    queued = jobs.MoveByJob(0, 30, 0)
+    worker.submit(queued)
+    worker.stop_now()
+    qtbot.waitUntil(lambda: any(job is queued for job, _ in failed), timeout=10000)
+    assert dict((id(j), w) for j, w in failed)[id(queued)] == "stopped before it was sent"
+    with wait_in_gui(qtbot, worker.job_finished):
+        worker.submit(jobs.RefreshJob())  # the worker went on to the next job
+    protocol = worker._motion.client.protocol
+    moves = [r.data for r in traffic if r.direction == "tx" and protocol.sent_commands(r.data)[0]]
+    assert len(moves) == 1, moves  # the first move only
