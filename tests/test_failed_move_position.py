@@ -12,6 +12,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QPushButton
 
 from app.main_window import MainWindow
+from tests.relay import wait_in_gui
 from tests.simproc import SimProcess
 
 pytestmark = pytest.mark.timeout(60)
@@ -23,13 +24,12 @@ def _connect(qtbot, win: MainWindow, port: str) -> None:
 
 
 def _jog_x_plus_fails(qtbot, win: MainWindow) -> list[str]:
-    """Click X+ (10 mm) and wait until the jog has failed; the failures' messages."""
-    failures: list[str] = []
-    win.worker.job_failed.connect(lambda job, message: failures.append(message))
+    """Click X+ (10 mm) and wait until the window has been told the jog failed (received in the
+    GUI thread after the window's own slot); the failure's message."""
     win.jog_panel.set_step(10)
-    qtbot.mouseClick(win.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
-    qtbot.waitUntil(lambda: bool(failures), timeout=10000)
-    return failures
+    with wait_in_gui(qtbot, win.worker.job_failed, timeout=10000) as failed:
+        qtbot.mouseClick(win.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
+    return [str(failed.args[1])]
 
 
 def _assert_at_origin(win: MainWindow) -> None:

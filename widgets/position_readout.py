@@ -191,12 +191,12 @@ class PositionReadout(QWidget):
         self._outside: list[tuple[str, float, float, float]] = []
 
         layout = QVBoxLayout(self)
+        layout.addWidget(self.outside_label)  # first: seen even where the panel scrolls
         layout.addLayout(grid)
         layout.addWidget(self.zero_label)
         layout.addLayout(zeros)
         layout.addWidget(self.measured_label)
         layout.addWidget(self.status_label)
-        layout.addWidget(self.outside_label)
         self._render_status()
         self._render()
 

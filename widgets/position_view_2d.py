@@ -208,7 +208,8 @@ class PositionView2D(BufferedViewMixin, QWidget):
         the first, last and extreme points of each block of older ones, so a long trail keeps its
         shape and extent at the cost of a few thousand points.
         """
-        if self._refresh_xy():
+        if self._refresh_xy() or self._time_timer.isActive():  # a time plot due, drawn now
+            self._time_timer.stop()
             self._refresh_time_plot()
 
     def _timed_refresh(self) -> None:
