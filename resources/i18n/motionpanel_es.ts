@@ -67,7 +67,7 @@
 <context>
     <name>ArcEntry</name>
     <message>
-        <location filename="../../widgets/arc_entry.py" line="+272"/>
+        <location filename="../../widgets/arc_entry.py" line="+274"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
         <translation>X del centro del arco, en mm desde el origen</translation>
     </message>
@@ -82,7 +82,7 @@
         <translation>Radio del arco, en mm (mayor que 0)</translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-127"/>
         <source>Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above</source>
         <translation>Ángulo del punto inicial, de 0 a 360°, en sentido antihorario desde +X visto desde arriba</translation>
     </message>
@@ -94,14 +94,14 @@ the same as the start angle: a full circle</source>
 igual al ángulo inicial: una circunferencia completa</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+120"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
         <translation>Z al final del arco, en mm; Z avanza de forma uniforme desde la Z actual a lo largo del arco
 (una hélice si es distinta)</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-96"/>
         <source>Centre X:</source>
         <translation>Centro X:</translation>
     </message>
@@ -131,7 +131,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>Z final:</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>CW</source>
         <translation>Horario</translation>
     </message>
@@ -167,17 +167,17 @@ igual al ángulo inicial: una circunferencia completa</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+182"/>
+        <location line="+189"/>
         <source>Move along the arc, from its start point to its end point</source>
         <translation>Moverse a lo largo del arco, desde su punto inicial hasta su punto final</translation>
     </message>
     <message>
-        <location line="-174"/>
+        <location line="-181"/>
         <source>Why the arc cannot run</source>
         <translation>Por qué no se puede ejecutar el arco</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>X of the arc&apos;s centre, in inches from home</source>
         <translation>X del centro del arco, en pulgadas desde el origen</translation>
     </message>
@@ -199,7 +199,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
 (una hélice si es distinta)</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+148"/>
         <source>The radius must be more than 0 in.</source>
         <translation>El radio debe ser mayor que 0 in.</translation>
     </message>
@@ -270,7 +270,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>Error</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+50"/>
         <source>/dev/ttyUSB0, COM3 or a URL</source>
         <translation>/dev/ttyUSB0, COM3 o una URL</translation>
     </message>
@@ -280,7 +280,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>Puerto serie, o cualquier URL de pyserial (p. ej. sim://coxiris, socket://host:port, loop://)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>Look for serial ports again</source>
         <translation>Volver a buscar puertos serie</translation>
     </message>
@@ -317,31 +317,35 @@ igual al ángulo inicial: una circunferencia completa</translation>
     <message>
         <location line="+6"/>
         <location line="+6"/>
-        <location line="+224"/>
+        <location line="+228"/>
         <source>Connect</source>
         <translation>Conectar</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+223"/>
+        <location line="-228"/>
+        <location line="+227"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+223"/>
+        <location line="-227"/>
+        <location line="+227"/>
         <source>Disconnect</source>
         <translation>Desconectar</translation>
     </message>
     <message>
-        <location line="-213"/>
+        <location line="-217"/>
         <source>Lines:</source>
         <translation>Líneas:</translation>
     </message>
     <message>
         <location line="+13"/>
+        <source>&amp;Port:</source>
+        <translation>&amp;Puerto:</translation>
+    </message>
+    <message>
         <source>Port:</source>
-        <translation>Puerto:</translation>
+        <translation type="vanished">Puerto:</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -354,7 +358,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>Baudios:</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+72"/>
         <source>No description for this port</source>
         <translation>Sin descripción para este puerto</translation>
     </message>
@@ -513,13 +517,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+42"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation>%1:</translation>
+        <translation type="vanished">%1:</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+52"/>
         <source>Absolute</source>
         <translation>Absoluto</translation>
     </message>
@@ -559,7 +562,13 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Ir</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-25"/>
+        <source>&amp;%1:</source>
+        <comment>an axis field&apos;s label; Alt+axis</comment>
+        <translation>&amp;%1:</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Start the move (Enter in a field)</source>
         <translation>Iniciar el movimiento (Enter en un campo)</translation>
     </message>
@@ -595,12 +604,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+167"/>
+        <location line="+177"/>
         <source>Stop</source>
         <translation>Detener</translation>
     </message>
     <message>
-        <location line="-167"/>
+        <location line="-177"/>
         <source>Stop the stage now</source>
         <translation>Detener la platina ahora</translation>
     </message>
@@ -625,7 +634,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Sistema de las coordenadas introducidas: Máquina (pulgadas desde el origen del dispositivo) o Trabajo (pulgadas desde el cero de pieza); al dispositivo siempre se le envían coordenadas de máquina, en mm</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+147"/>
         <source>Drop queued</source>
         <translation>Descartar cola</translation>
     </message>
@@ -674,11 +683,16 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <source>(this device has no such axis)</source>
         <translation>(este dispositivo no tiene ese eje)</translation>
     </message>
+    <message>
+        <location line="+29"/>
+        <source>%1; nothing sent</source>
+        <translation>%1; no se ha enviado nada</translation>
+    </message>
 </context>
 <context>
     <name>DerivedValues</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="+445"/>
+        <location filename="../../widgets/parameter_table.py" line="+447"/>
         <source>Derived values</source>
         <translation>Valores derivados</translation>
     </message>
@@ -701,7 +715,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/device_docks.py" line="+136"/>
+        <location filename="../../app/device_docks.py" line="+83"/>
+        <source>Not now: %1</source>
+        <translation>Ahora no: %1</translation>
+    </message>
+    <message>
+        <location line="+62"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>%1 a %2 mm en cada eje (cuentas de 16 bits)</translation>
     </message>
@@ -762,12 +781,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DwellEntry</name>
     <message>
-        <location filename="../../widgets/dwell_entry.py" line="+26"/>
+        <location filename="../../widgets/dwell_entry.py" line="+28"/>
         <source>Dwell:</source>
         <translation>Espera:</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>How long the device waits, 0 to %1 ms; press Enter or Dwell to send</source>
         <translation>Tiempo de espera del dispositivo, de 0 a %1 ms; pulsar Enter o Esperar para enviar</translation>
     </message>
@@ -780,6 +799,11 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <location line="+2"/>
         <source>Make the device wait this long before its next command</source>
         <translation>Hacer que el dispositivo espere este tiempo antes de su siguiente comando</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1; nothing sent</source>
+        <translation>%1; no se ha enviado nada</translation>
     </message>
 </context>
 <context>
@@ -977,19 +1001,19 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+32"/>
+        <location filename="../../widgets/jog_panel.py" line="+33"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>Teclas: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
         <translation>Mover la platina un paso; mantener pulsado un botón o una tecla para seguir avanzando.
 %1 (la indicación de abajo dice dónde funcionan las teclas).</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+35"/>
         <source>Step:</source>
         <translation>Paso:</translation>
     </message>
@@ -1020,7 +1044,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Cualquier tamaño de paso (de 0.001 a 1000 mm)</translation>
     </message>
     <message>
-        <location line="-83"/>
+        <location line="+133"/>
+        <source>%1; no jog</source>
+        <translation>%1; sin desplazamiento</translation>
+    </message>
+    <message>
+        <location line="-215"/>
         <source>keys active</source>
         <translation>teclas activas</translation>
     </message>
@@ -1043,7 +1072,7 @@ Hacer clic en las vistas o en este panel para devolver las teclas al desplazamie
 Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+103"/>
         <source>Jog %1 by %2 in (Shift: %3 in)</source>
         <translation>Desplazar %1 %2 in (Shift: %3 in)</translation>
     </message>
@@ -1101,12 +1130,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>las pestañas</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+69"/>
         <source>not connected</source>
         <translation>no conectado</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>a menu or list is open</source>
         <translation>hay un menú o una lista abiertos</translation>
     </message>
@@ -1134,7 +1163,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>(sin decodificar)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Open traffic log</source>
         <translation>Abrir registro de tráfico</translation>
     </message>
@@ -1179,7 +1208,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>leyendo %1…</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+52"/>
         <source>%1 — traffic log</source>
         <translation>%1 — registro de tráfico</translation>
     </message>
@@ -1334,7 +1363,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Aún no hay macros: Nueva… crea una, Importar… lee un archivo.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>New…</source>
         <translation>Nueva…</translation>
     </message>
@@ -1374,17 +1403,22 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Escribir las macros de este protocolo en un archivo</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>Run %1:
 %2</source>
         <translation>Ejecutar %1:
 %2</translation>
     </message>
+    <message>
+        <location line="+19"/>
+        <source>Macros off: %1</source>
+        <translation>Macros inactivas: %1</translation>
+    </message>
 </context>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+105"/>
+        <location filename="../../app/main_window.py" line="+110"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 no tiene comando de parada: esto descarta los comandos aún no enviados; un movimiento ya en curso en el dispositivo termina (Esc)</translation>
     </message>
@@ -1394,7 +1428,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Detener la platina ahora: interrumpe el movimiento en curso y descarta lo que está en cola (Esc)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+35"/>
         <source>simulated %1 device</source>
         <translation>dispositivo %1 simulado</translation>
     </message>
@@ -1404,7 +1438,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+114"/>
         <source>no session log: %1</source>
         <translation>sin registro de sesión: %1</translation>
     </message>
@@ -1505,12 +1539,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     </message>
     <message>
         <location line="+1"/>
-        <location line="+358"/>
+        <location line="+380"/>
         <source>&amp;Stop</source>
         <translation>&amp;Detener</translation>
     </message>
     <message>
-        <location line="-353"/>
+        <location line="-375"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Límites de recorrido…</translation>
     </message>
@@ -1535,7 +1569,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Borrar trayectoria</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+126"/>
+        <source>%1 names its protocol: connecting as %2</source>
+        <translation>%1 indica su protocolo: conectando como %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>connecting to %1 (%2, %3 baud)</source>
         <translation>conectando con %1 (%2, %3 baudios)</translation>
     </message>
@@ -1580,7 +1619,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>desconectado</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+48"/>
         <source>connected to %1 on %2</source>
         <translation>conectado a %1 en %2</translation>
     </message>
@@ -1635,7 +1674,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>desapareció el puerto %1</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>%1 on %2</source>
         <translation>%1 en %2</translation>
     </message>
@@ -1650,12 +1689,51 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>límites de recorrido: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>not connected: %1 not sent</source>
         <translation>no conectado: %1 sin enviar</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+9"/>
+        <source>%1 refused: %2 is under way; wait for its end or press Stop</source>
+        <translation>se rechaza %1: %2 está en curso; esperar a que termine o pulsar Detener</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>motion controls are off until %1 ends (Stop ends it now)</source>
+        <translation>los controles de movimiento están desactivados hasta que termine %1 (Detener lo termina ahora)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 is under way</source>
+        <translation>%1 está en curso</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>jog refused: %1</source>
+        <translation>desplazamiento rechazado: %1</translation>
+    </message>
+    <message>
+        <location line="+90"/>
+        <source>Send unchecked bytes?</source>
+        <translation>¿Enviar bytes sin comprobar?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>These bytes cannot be read as a command (%1), so they cannot be checked against the travel limits (%2): they might move the stage outside them.
+
+Send them anyway?</source>
+        <translation>Estos bytes no se pueden interpretar como un comando (%1), así que no se pueden comprobar con los límites de recorrido (%2): podrían mover la platina fuera de ellos.
+
+¿Enviarlos de todos modos?</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>not sent: the bytes could not be checked against the travel limits</source>
+        <translation>sin enviar: los bytes no se pudieron comprobar con los límites de recorrido</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>stopping the macro under way</source>
         <translation>deteniendo la macro en curso</translation>
     </message>
@@ -1675,23 +1753,23 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>detenido: %1 comando(s) sin enviar: %2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nuevo origen: la trayectoria se desplaza (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+103"/>
         <source>the device reported an error: %1</source>
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
-        <location line="-394"/>
-        <location line="+398"/>
+        <location line="-551"/>
+        <location line="+555"/>
         <source>device: %1</source>
         <translation>dispositivo: %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+23"/>
         <source>%1 failed: %2</source>
         <translation>%1 falló: %2</translation>
     </message>
@@ -1699,6 +1777,39 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <location line="+21"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>la velocidad %1 mm/s se relee como %2 mm/s (el dispositivo redondea)</translation>
+    </message>
+</context>
+<context>
+    <name>NumberField</name>
+    <message>
+        <location filename="../../widgets/_number_field.py" line="+34"/>
+        <source>a number is needed, %1 to %2%3</source>
+        <translation>se necesita un número, de %1 a %2%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%2 is not a whole number</source>
+        <translation>%1%2 no es un número entero</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>“%1” is not a number (%2 to %3%4)</source>
+        <translation>“%1” no es un número (de %2 a %3%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%4 is outside %2 to %3%4</source>
+        <translation>%1%4 está fuera del rango de %2 a %3%4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%2 has more than %3 decimals</source>
+        <translation>%1%2 tiene más de %3 decimales</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -1729,7 +1840,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>%1 en %2</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>parameter writing cancelled: %1 not sent</source>
         <translation>escritura de parámetros cancelada: %1 sin enviar</translation>
     </message>
@@ -1940,7 +2051,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>ParameterModel</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-411"/>
+        <location filename="../../widgets/parameter_table.py" line="-413"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -2048,7 +2159,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>ParameterTableView</name>
     <message>
-        <location line="+157"/>
+        <location line="+159"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
         <translation>Para editar, hacer doble clic en un valor, o seleccionar una fila y pulsar Enter o escribir</translation>
     </message>
@@ -2101,7 +2212,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>de %1 a %2 en pasos de %3</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+19"/>
         <source>%1: %2 refused (%3): %4</source>
         <translation>%1: %2 rechazado (%3): %4</translation>
     </message>
@@ -2111,7 +2222,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>vacío</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>use a point for decimals</source>
         <translation>usar punto como separador decimal</translation>
     </message>
@@ -2302,7 +2413,17 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Devolver el cero de pieza al origen del dispositivo (trabajo = máquina)</translation>
     </message>
     <message>
-        <location line="+194"/>
+        <location line="+42"/>
+        <source>The stage is outside the travel limits set for this device: only moves that bring it closer to them are sent, until it is back inside</source>
+        <translation>La platina está fuera de los límites de recorrido definidos para este dispositivo: solo se envían los movimientos que la acercan a ellos, hasta que vuelva a estar dentro</translation>
+    </message>
+    <message>
+        <location line="+108"/>
+        <source>outside the travel limits: %1</source>
+        <translation>fuera de los límites de recorrido: %1</translation>
+    </message>
+    <message>
+        <location line="+84"/>
         <source>millimetres</source>
         <translation>milímetros</translation>
     </message>
@@ -2382,7 +2503,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Y (mm)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y y Z en función del tiempo; líneas discontinuas: destino</translation>
     </message>
@@ -2402,7 +2523,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>posición (mm)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>Clear trail</source>
         <translation>Borrar trayectoria</translation>
     </message>
@@ -2485,7 +2606,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Mantener la cámara sobre la posición actual</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+75"/>
+        <location filename="../../widgets/position_view_3d.py" line="+76"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Requiere OpenGL 2.1 o posterior (p. ej. Mesa) en una pantalla; ver el README.</translation>
     </message>
@@ -2504,7 +2625,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>Arrastrar para girar, rueda para hacer zoom, arrastrar con el botón central para mover la vista</translation>
     </message>
     <message>
-        <location line="+364"/>
+        <location line="+368"/>
         <source>grid %1 mm</source>
         <translation>cuadrícula %1 mm</translation>
     </message>
@@ -2712,12 +2833,11 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>ningún programa cargado</translation>
     </message>
     <message>
-        <location line="+21"/>
         <source>Load…</source>
-        <translation>Cargar…</translation>
+        <translation type="vanished">Cargar…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+27"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
         <translation>Cargar un programa: CSV con x,y,z,speed (mm, mm/s) o JSON</translation>
     </message>
@@ -2732,9 +2852,8 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>Guardar el programa cargado como JSON (x, y, z, speed por punto)</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Run</source>
-        <translation>Ejecutar</translation>
+        <translation type="vanished">Ejecutar</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2742,20 +2861,38 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>Enviar el programa al dispositivo en flujo continuo, 7 movimientos por trama</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+102"/>
         <source>Pause</source>
-        <translation>Pausa</translation>
+        <translation type="vanished">Pausa</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="+5"/>
         <source>Send nothing more until Resume (queued moves go on)</source>
         <translation>No enviar nada más hasta Reanudar (los movimientos en cola continúan)</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Stop</source>
-        <translation>Detener</translation>
+        <translation type="vanished">Detener</translation>
+    </message>
+    <message>
+        <location line="-14"/>
+        <source>&amp;Load…</source>
+        <translation>&amp;Cargar…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Ejecutar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+123"/>
+        <source>P&amp;ause</source>
+        <translation>Pa&amp;usa</translation>
+    </message>
+    <message>
+        <location line="-118"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Detener</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2769,12 +2906,12 @@ La vista 2D muestra las mismas posiciones.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+69"/>
+        <location line="+74"/>
         <source>%v / %m executed</source>
         <translation>%v / %m ejecutadas</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-55"/>
         <source>Program:</source>
         <translation>Programa:</translation>
     </message>
@@ -2794,7 +2931,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>JSON (*.json)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+29"/>
         <source>%1 (%2 points)</source>
         <translation>%1 (%2 puntos)</translation>
     </message>
@@ -2804,12 +2941,29 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>sin programa</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+24"/>
+        <source>motion is off</source>
+        <translation>el movimiento está desactivado</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1
+Not now: %2</source>
+        <translation>%1
+Ahora no: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+25"/>
+        <source>, paused</source>
+        <translation>, en pausa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>, about %1 s left</source>
         <translation>, quedan unos %1 s</translation>
     </message>
@@ -3051,7 +3205,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>La consola conserva las %1 líneas más recientes (Ajustes): las más antiguas se descartan; el registro de sesión en disco conserva todas las líneas</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>export failed: %1</source>
         <translation>exportación fallida: %1</translation>
     </message>
@@ -3061,7 +3215,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>%1 líneas exportadas a %2</translation>
     </message>
     <message>
-        <location filename="../../app/traffic_table.py" line="+44"/>
+        <location filename="../../app/traffic_table.py" line="+45"/>
         <source>motion</source>
         <translation>movimiento</translation>
     </message>
@@ -3136,7 +3290,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Enviar la línea al dispositivo (Enter)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+9"/>
+        <source>Sen&amp;d:</source>
+        <translation>E&amp;nviar:</translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>hex bytes, e.g. 48 45 4C 4C 4F (Up/Down: history)</source>
         <translation>bytes hex, p. ej. 48 45 4C 4C 4F (Arriba/Abajo: historial)</translation>
     </message>
@@ -3154,7 +3313,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>SettingsDialog</name>
     <message>
-        <location filename="../../widgets/settings_dialog.py" line="+77"/>
+        <location filename="../../widgets/settings_dialog.py" line="+78"/>
         <source>Settings</source>
         <translation>Ajustes</translation>
     </message>
@@ -3204,7 +3363,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Cerrar sin guardar</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+103"/>
         <source>Position polling</source>
         <translation>Consulta de posición</translation>
     </message>
@@ -3544,7 +3703,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>%1: %2 no es un número de %3 a %4 %5</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>Memory grows with the session: about 33 MB a million lines.</source>
         <translation>La memoria crece con la sesión: unos 33 MB por millón de líneas.</translation>
     </message>
@@ -3600,7 +3759,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+38"/>
+        <location filename="../../widgets/speed_control.py" line="+40"/>
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -3610,7 +3769,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Velocidad de los próximos movimientos</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Apply</source>
         <translation>Aplicar</translation>
     </message>
@@ -3626,7 +3785,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>La velocidad que indica el dispositivo (puede redondearla)</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+87"/>
         <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
         <translation>Velocidad, de %1 a %2 in/s; pulsar Enter o Aplicar para enviar</translation>
     </message>
@@ -3654,6 +3813,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+3"/>
         <source>device: %1 mm/s</source>
         <translation>dispositivo: %1 mm/s</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1; nothing sent</source>
+        <translation>%1; no se ha enviado nada</translation>
     </message>
 </context>
 <context>
@@ -3804,7 +3968,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Respuesta</translation>
     </message>
     <message>
-        <location line="+265"/>
+        <location line="+279"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
@@ -3916,7 +4080,19 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>%1:</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+4"/>
+        <source>%1 min</source>
+        <comment>an axis&apos; lower travel limit</comment>
+        <translation>%1 mín</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 max</source>
+        <comment>an axis&apos; upper travel limit</comment>
+        <translation>%1 máx</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Refuse a move that would leave the box</source>
         <translation>Rechazar un movimiento que saldría de la caja</translation>
     </message>
@@ -3926,7 +4102,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Ajustarlo: ir hasta el borde e indicarlo</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+50"/>
         <source>%1: the minimum must be below the maximum</source>
         <translation>%1: el mínimo debe ser menor que el máximo</translation>
     </message>
@@ -3934,7 +4110,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>UnitSpinBox</name>
     <message>
-        <location filename="../../widgets/_units.py" line="+19"/>
+        <location filename="../../widgets/_units.py" line="+21"/>
         <source>in/s</source>
         <comment>inches per second</comment>
         <translation>in/s</translation>
@@ -3949,7 +4125,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>ValueDelegate</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-95"/>
+        <location filename="../../widgets/parameter_table.py" line="-97"/>
         <source>%1: edit cancelled, value unchanged</source>
         <translation>%1: edición cancelada, valor sin cambios</translation>
     </message>
@@ -3959,7 +4135,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>%1 es una salida. %2</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>%1 = %2, not yet written to the device</source>
         <translation>%1 = %2, aún no escrito en el dispositivo</translation>
     </message>
@@ -4105,6 +4281,81 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     <name>messages</name>
     <message>
         <location filename="message_templates.py" line="+4"/>
+        <source>to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>hacia ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>to its target</source>
+        <translation>hacia su destino</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: COXIRIS has no stop command; the device finishes the move under way {target} (a blocking sketch answers nothing until then) and then carries out what it had already received; motionctl sent nothing more</source>
+        <translation>interrumpido: COXIRIS no tiene comando de parada; el dispositivo termina el movimiento en curso {target} (un sketch bloqueante no responde nada hasta entonces) y después ejecuta lo que ya había recibido; motionctl no envió nada más</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: Visiomex has no stop command; the device carries out the move packet it was sent {target} (FP0001, its steps, then FA0001); motionctl sent nothing more</source>
+        <translation>interrumpido: Visiomex no tiene comando de parada; el dispositivo ejecuta el paquete de movimiento que se le envió {target} (FP0001, sus pasos y luego FA0001); motionctl no envió nada más</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: pi-frame has no stop command and sends no replies; the device carries out the frame it was sent {target}; motionctl sent nothing more</source>
+        <translation>interrumpido: pi-frame no tiene comando de parada y no envía respuestas; el dispositivo ejecuta la trama que se le envió {target}; motionctl no envió nada más</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: Firmata has no stop command; the board finishes the step message under way (at most 16383 steps) and stops there; the move&apos;s later messages, if it had more, were not sent</source>
+        <translation>interrumpido: Firmata no tiene comando de parada; la placa termina el mensaje de pasos en curso (como máximo 16383 pasos) y se detiene ahí; los mensajes posteriores del movimiento, si los tenía, no se enviaron</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: {protocol} has no stop command; the device finishes what it was sent; motionctl sent nothing more</source>
+        <translation>interrumpido: {protocol} no tiene comando de parada; el dispositivo termina lo que se le envió; motionctl no envió nada más</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted before the device was talked to: nothing was sent</source>
+        <translation>interrumpido antes de comunicarse con el dispositivo: no se envió nada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: {command} does not move the stage</source>
+        <translation>interrumpido: {command} no mueve la platina</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted before the move was sent: the stage does not move</source>
+        <translation>interrumpido antes de enviar el movimiento: la platina no se mueve</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted again while stopping: the {protocol} stop may not have arrived; the device may still be moving</source>
+        <translation>interrumpido de nuevo durante la parada: puede que la parada de {protocol} no haya llegado; puede que el dispositivo aún se esté moviendo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: the {protocol} stop was sent but not acknowledged ({error}); the device may still be moving</source>
+        <translation>interrumpido: la parada de {protocol} se envió pero no se confirmó ({error}); puede que el dispositivo aún se esté moviendo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted again</source>
+        <translation>interrumpido de nuevo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: stopped (the {protocol} stop was acknowledged; its queue is flushed); where the stage stopped could not be read: {error}</source>
+        <translation>interrumpido: detenido (la parada de {protocol} se confirmó; su cola está vaciada); no se pudo leer dónde se detuvo la platina: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: stopped at ({x:g}, {y:g}, {z:g}) mm (the {protocol} stop was acknowledged; its queue is flushed)</source>
+        <translation>interrumpido: detenido en ({x:g}, {y:g}, {z:g}) mm (la parada de {protocol} se confirmó; su cola está vaciada)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>uso: {usage} (se recibieron {count} argumentos)</translation>
     </message>
@@ -4132,6 +4383,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>speed {speed:g} mm/s refused ({error})</source>
         <translation>velocidad de {speed:g} mm/s rechazada ({error})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw move to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>movimiento en bruto hacia ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4325,6 +4581,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{error}; waiting for {url}</source>
+        <translation>{error}; esperando a {url}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the saved setup was refused: {error}</source>
         <translation>se rechazó la configuración guardada: {error}</translation>
     </message>
@@ -4365,6 +4626,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>stopped before it was sent</source>
+        <translation>detenido antes de enviarse</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the connection was lost</source>
         <translation>se perdió la conexión</translation>
     </message>
@@ -4380,8 +4646,23 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{hint} ({error})</source>
+        <translation>{hint} ({error})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{error}; not sent: {jobs}</source>
         <translation>{error}; sin enviar: {jobs}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; connecting again when {url} is back</source>
+        <translation>{error}; se reconectará cuando {url} vuelva a estar disponible</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} is back: connecting again</source>
+        <translation>{url} vuelve a estar disponible: reconectando</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4775,6 +5056,36 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>no protocol to read them with</source>
+        <translation>no hay ningún protocolo con el que interpretarlos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>program point {number}</source>
+        <translation>punto {number} del programa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw bytes refused: {protocol} cannot read them as a command ({reason}), so they cannot be checked against the travel limits ({box}); send them with force to send them anyway</source>
+        <translation>bytes en bruto rechazados: {protocol} no puede interpretarlos como un comando ({reason}), así que no se pueden comprobar con los límites de recorrido ({box}); usar force para enviarlos de todos modos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw bytes refused: they hold {count} commands, {moves} of them moves; send a move alone, so that it is checked and followed to its end</source>
+        <translation>bytes en bruto rechazados: contienen {count} comandos, {moves} de ellos movimientos; enviar un movimiento solo, para que se compruebe y se siga hasta su final</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw move {command}</source>
+        <translation>movimiento en bruto {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what}: not a move the panel can check</source>
+        <translation>{what}: no es un movimiento que el panel pueda comprobar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
         <translation>{what} {text!r} no es un número que acepte el dispositivo: usar dígitos con un signo opcional y un punto decimal, p. ej. -12.5</translation>
     </message>
@@ -5000,6 +5311,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>this looks like a {found} controller, not {expected}</source>
+        <translation>parece un controlador {found}, no {expected}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
         <translation>{setting} {value} rechazado: de {minimum:g} a {maximum:g} {unit}</translation>
     </message>
@@ -5022,6 +5338,21 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>{protocol} moves are linear only (got {kind!r})</source>
         <translation>{protocol} solo admite movimientos lineales (se recibió {kind!r})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} cannot read sent frames</source>
+        <translation>{protocol} no puede interpretar las tramas enviadas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the last {count} bytes are not a whole frame: the device would wait for the rest</source>
+        <translation>los últimos {count} bytes no forman una trama completa: el dispositivo esperaría el resto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no whole frame in {count} bytes</source>
+        <translation>ninguna trama completa en {count} bytes</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5127,6 +5458,26 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>line refused: {length} characters, the device takes at most {most}</source>
         <translation>línea rechazada: {length} caracteres, el dispositivo acepta como máximo {most}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line!r} has no line end: the device would wait for the rest</source>
+        <translation>{line!r} no tiene fin de línea: el dispositivo esperaría el resto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an empty line: the device ignores it</source>
+        <translation>una línea vacía: el dispositivo la ignora</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>non-ASCII bytes: COXIRIS takes ASCII text only</source>
+        <translation>bytes no ASCII: COXIRIS solo acepta texto ASCII</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} {params!r} is not three numbers as the firmware reads them</source>
+        <translation>{name} {params!r} no son tres números tal como los lee el firmware</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5280,6 +5631,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>a STEPPER_STEP of {count} data bytes, not 6</source>
+        <translation>un STEPPER_STEP de {count} bytes de datos, no 6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>framing</source>
         <translation>trama incorrecta</translation>
     </message>
@@ -5362,6 +5718,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>the laser link has no instruction for {command}</source>
         <translation>el enlace láser no tiene instrucción para {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MOVE_LINEAR with {count} float values, not x, y, z and speed</source>
+        <translation>MOVE_LINEAR con {count} valores float, no x, y, z y velocidad</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5730,6 +6091,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>move packet {packet!r} is not as the protocol documents</source>
+        <translation>el paquete de movimiento {packet!r} no es como lo documenta el protocolo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{packet} (set {parameter})</source>
         <translation>{packet} (fijar {parameter})</translation>
     </message>
@@ -6010,6 +6376,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{url} is in use by another program</source>
+        <translation>{url} está en uso por otro programa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>cannot open {url}: {error}</source>
         <translation>no se puede abrir {url}: {error}</translation>
     </message>
@@ -6032,6 +6403,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>{axis} {value:g} mm is outside {low:g}..{high:g} mm</source>
         <translation>{axis} {value:g} mm está fuera de {low:g}..{high:g} mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the stage is outside its travel limits: {what} brings it closer ({details})</source>
+        <translation>la platina está fuera de sus límites de recorrido: {what} la acerca a ellos ({details})</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -67,7 +67,7 @@
 <context>
     <name>ArcEntry</name>
     <message>
-        <location filename="../../widgets/arc_entry.py" line="+272"/>
+        <location filename="../../widgets/arc_entry.py" line="+274"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
         <translation>X du centre de l&apos;arc, en mm depuis l&apos;origine</translation>
     </message>
@@ -82,7 +82,7 @@
         <translation>Rayon de l&apos;arc, en mm (supérieur à 0)</translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-127"/>
         <source>Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above</source>
         <translation>Angle du point de départ, de 0 à 360°, dans le sens antihoraire depuis +X, vu de dessus</translation>
     </message>
@@ -94,14 +94,14 @@ the same as the start angle: a full circle</source>
 identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+120"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
         <translation>Z à la fin de l&apos;arc, en mm&#xa0;; Z varie uniformément depuis le Z actuel le long de l&apos;arc
 (une hélice s&apos;il diffère)</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-96"/>
         <source>Centre X:</source>
         <translation>Centre X&#xa0;:</translation>
     </message>
@@ -131,7 +131,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>Z final&#xa0;:</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>CW</source>
         <translation>Horaire</translation>
     </message>
@@ -167,17 +167,17 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+182"/>
+        <location line="+189"/>
         <source>Move along the arc, from its start point to its end point</source>
         <translation>Se déplacer le long de l&apos;arc, de son point de départ à son point d&apos;arrivée</translation>
     </message>
     <message>
-        <location line="-174"/>
+        <location line="-181"/>
         <source>Why the arc cannot run</source>
         <translation>Pourquoi l&apos;arc ne peut pas être exécuté</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>X of the arc&apos;s centre, in inches from home</source>
         <translation>X du centre de l&apos;arc, en pouces depuis l&apos;origine</translation>
     </message>
@@ -199,7 +199,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 (une hélice s&apos;il diffère)</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+148"/>
         <source>The radius must be more than 0 in.</source>
         <translation>Le rayon doit être supérieur à 0 in.</translation>
     </message>
@@ -270,7 +270,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>Erreur</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+50"/>
         <source>/dev/ttyUSB0, COM3 or a URL</source>
         <translation>/dev/ttyUSB0, COM3 ou une URL</translation>
     </message>
@@ -280,7 +280,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>Port série, ou toute URL pyserial (par ex. sim://coxiris, socket://host:port, loop://)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>Look for serial ports again</source>
         <translation>Rechercher à nouveau les ports série</translation>
     </message>
@@ -317,31 +317,35 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     <message>
         <location line="+6"/>
         <location line="+6"/>
-        <location line="+224"/>
+        <location line="+228"/>
         <source>Connect</source>
         <translation>Connecter</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+223"/>
+        <location line="-228"/>
+        <location line="+227"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+223"/>
+        <location line="-227"/>
+        <location line="+227"/>
         <source>Disconnect</source>
         <translation>Déconnecter</translation>
     </message>
     <message>
-        <location line="-213"/>
+        <location line="-217"/>
         <source>Lines:</source>
         <translation>Lignes&#xa0;:</translation>
     </message>
     <message>
         <location line="+13"/>
+        <source>&amp;Port:</source>
+        <translation>&amp;Port&#xa0;:</translation>
+    </message>
+    <message>
         <source>Port:</source>
-        <translation>Port&#xa0;:</translation>
+        <translation type="vanished">Port&#xa0;:</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -354,7 +358,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>Bauds&#xa0;:</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+72"/>
         <source>No description for this port</source>
         <translation>Aucune description pour ce port</translation>
     </message>
@@ -513,13 +517,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+42"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation>%1&#xa0;:</translation>
+        <translation type="vanished">%1&#xa0;:</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+52"/>
         <source>Absolute</source>
         <translation>Absolu</translation>
     </message>
@@ -559,7 +562,13 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Aller</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-25"/>
+        <source>&amp;%1:</source>
+        <comment>an axis field&apos;s label; Alt+axis</comment>
+        <translation>&amp;%1&#xa0;:</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Start the move (Enter in a field)</source>
         <translation>Lancer le mouvement (Entrée dans un champ)</translation>
     </message>
@@ -595,12 +604,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     </message>
     <message>
         <location line="+3"/>
-        <location line="+167"/>
+        <location line="+177"/>
         <source>Stop</source>
         <translation>Arrêt</translation>
     </message>
     <message>
-        <location line="-167"/>
+        <location line="-177"/>
         <source>Stop the stage now</source>
         <translation>Arrêter la platine immédiatement</translation>
     </message>
@@ -625,7 +634,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Repère des coordonnées saisies&#xa0;: Machine (pouces depuis l&apos;origine de l&apos;appareil) ou Pièce (pouces depuis le zéro pièce)&#xa0;; l&apos;appareil reçoit toujours des coordonnées machine, en mm</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+147"/>
         <source>Drop queued</source>
         <translation>Vider la file</translation>
     </message>
@@ -674,11 +683,16 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <source>(this device has no such axis)</source>
         <translation>(cet appareil n&apos;a pas cet axe)</translation>
     </message>
+    <message>
+        <location line="+29"/>
+        <source>%1; nothing sent</source>
+        <translation>%1&#xa0;; rien n&apos;a été envoyé</translation>
+    </message>
 </context>
 <context>
     <name>DerivedValues</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="+445"/>
+        <location filename="../../widgets/parameter_table.py" line="+447"/>
         <source>Derived values</source>
         <translation>Valeurs dérivées</translation>
     </message>
@@ -701,7 +715,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/device_docks.py" line="+136"/>
+        <location filename="../../app/device_docks.py" line="+83"/>
+        <source>Not now: %1</source>
+        <translation>Indisponible pour le moment&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location line="+62"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>de %1 à %2 mm sur chaque axe (impulsions sur 16 bits)</translation>
     </message>
@@ -762,12 +781,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DwellEntry</name>
     <message>
-        <location filename="../../widgets/dwell_entry.py" line="+26"/>
+        <location filename="../../widgets/dwell_entry.py" line="+28"/>
         <source>Dwell:</source>
         <translation>Temporisation&#xa0;:</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>How long the device waits, 0 to %1 ms; press Enter or Dwell to send</source>
         <translation>Durée d&apos;attente de l&apos;appareil, de 0 à %1 ms&#xa0;; appuyer sur Entrée ou Temporiser pour envoyer</translation>
     </message>
@@ -780,6 +799,11 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <location line="+2"/>
         <source>Make the device wait this long before its next command</source>
         <translation>Faire attendre l&apos;appareil pendant cette durée avant sa commande suivante</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1; nothing sent</source>
+        <translation>%1&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
 </context>
 <context>
@@ -977,19 +1001,19 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+32"/>
+        <location filename="../../widgets/jog_panel.py" line="+33"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>Touches&#xa0;: ←/→ X, ↑/↓ Y, Page préc/Page suiv Z, Maj ×10</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
         <translation>Déplacer la platine d&apos;un pas&#xa0;; maintenir un bouton ou une touche enfoncé pour continuer.
 %1 (voir l&apos;indication ci-dessous pour savoir où les touches fonctionnent).</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+35"/>
         <source>Step:</source>
         <translation>Pas&#xa0;:</translation>
     </message>
@@ -1020,7 +1044,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Pas quelconque (de 0,001 à 1000 mm)</translation>
     </message>
     <message>
-        <location line="-83"/>
+        <location line="+133"/>
+        <source>%1; no jog</source>
+        <translation>%1&#xa0;; aucun déplacement</translation>
+    </message>
+    <message>
+        <location line="-215"/>
         <source>keys active</source>
         <translation>touches actives</translation>
     </message>
@@ -1043,7 +1072,7 @@ Cliquer sur les vues ou sur ce panneau pour rendre les touches au déplacement.
 Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+103"/>
         <source>Jog %1 by %2 in (Shift: %3 in)</source>
         <translation>Déplacer %1 de %2 in (Maj&#xa0;: %3 in)</translation>
     </message>
@@ -1101,12 +1130,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>une barre d&apos;onglets</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+69"/>
         <source>not connected</source>
         <translation>non connecté</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>a menu or list is open</source>
         <translation>un menu ou une liste est ouvert</translation>
     </message>
@@ -1134,7 +1163,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>(non décodé)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Open traffic log</source>
         <translation>Ouvrir un journal de trafic</translation>
     </message>
@@ -1179,7 +1208,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>lecture de %1…</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+52"/>
         <source>%1 — traffic log</source>
         <translation>%1 — journal de trafic</translation>
     </message>
@@ -1334,7 +1363,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Aucune macro pour l&apos;instant&#xa0;: Nouvelle… en crée une, Importer… lit un fichier.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>New…</source>
         <translation>Nouvelle…</translation>
     </message>
@@ -1374,17 +1403,22 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Écrire les macros de ce protocole dans un fichier</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>Run %1:
 %2</source>
         <translation>Exécuter %1&#xa0;:
 %2</translation>
     </message>
+    <message>
+        <location line="+19"/>
+        <source>Macros off: %1</source>
+        <translation>Macros désactivées&#xa0;: %1</translation>
+    </message>
 </context>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+105"/>
+        <location filename="../../app/main_window.py" line="+110"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>Aucune commande d&apos;arrêt sur %1&#xa0;: ceci vide les commandes pas encore envoyées&#xa0;; un mouvement déjà en cours sur l&apos;appareil se termine (Échap)</translation>
     </message>
@@ -1394,7 +1428,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Arrêter la platine immédiatement&#xa0;: interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+35"/>
         <source>simulated %1 device</source>
         <translation>appareil %1 simulé</translation>
     </message>
@@ -1404,7 +1438,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+114"/>
         <source>no session log: %1</source>
         <translation>pas de journal de session&#xa0;: %1</translation>
     </message>
@@ -1505,12 +1539,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     </message>
     <message>
         <location line="+1"/>
-        <location line="+358"/>
+        <location line="+380"/>
         <source>&amp;Stop</source>
         <translation>&amp;Arrêt</translation>
     </message>
     <message>
-        <location line="-353"/>
+        <location line="-375"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Limites de course…</translation>
     </message>
@@ -1535,7 +1569,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Effacer la trace</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+126"/>
+        <source>%1 names its protocol: connecting as %2</source>
+        <translation>%1 indique son protocole&#xa0;: connexion en tant que %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>connecting to %1 (%2, %3 baud)</source>
         <translation>connexion à %1 (%2, %3 bauds)</translation>
     </message>
@@ -1580,7 +1619,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>déconnecté</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+48"/>
         <source>connected to %1 on %2</source>
         <translation>connecté à %1 sur %2</translation>
     </message>
@@ -1635,7 +1674,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>port %1 disparu</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -1650,12 +1689,51 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>limites de course&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>not connected: %1 not sent</source>
         <translation>non connecté&#xa0;: %1 non envoyé</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+9"/>
+        <source>%1 refused: %2 is under way; wait for its end or press Stop</source>
+        <translation>%1 refusé&#xa0;: %2 est en cours&#xa0;; attendre sa fin ou appuyer sur Arrêt</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>motion controls are off until %1 ends (Stop ends it now)</source>
+        <translation>les commandes de mouvement sont désactivées jusqu&apos;à la fin de %1 (Arrêt y met fin immédiatement)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 is under way</source>
+        <translation>%1 est en cours</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>jog refused: %1</source>
+        <translation>déplacement refusé&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location line="+90"/>
+        <source>Send unchecked bytes?</source>
+        <translation>Envoyer des octets non vérifiés&#xa0;?</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>These bytes cannot be read as a command (%1), so they cannot be checked against the travel limits (%2): they might move the stage outside them.
+
+Send them anyway?</source>
+        <translation>Ces octets ne peuvent pas être lus comme une commande (%1)&#xa0;: ils ne peuvent donc pas être vérifiés par rapport aux limites de course (%2) et pourraient amener la platine hors de celles-ci.
+
+Les envoyer quand même&#xa0;?</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>not sent: the bytes could not be checked against the travel limits</source>
+        <translation>non envoyés&#xa0;: les octets n&apos;ont pas pu être vérifiés par rapport aux limites de course</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>stopping the macro under way</source>
         <translation>arrêt de la macro en cours</translation>
     </message>
@@ -1675,23 +1753,23 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>arrêté&#xa0;: %1 commande(s) non envoyée(s)&#xa0;: %2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nouvelle origine&#xa0;: la trace est décalée de (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+103"/>
         <source>the device reported an error: %1</source>
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="-394"/>
-        <location line="+398"/>
+        <location line="-551"/>
+        <location line="+555"/>
         <source>device: %1</source>
         <translation>appareil&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+23"/>
         <source>%1 failed: %2</source>
         <translation>échec de %1&#xa0;: %2</translation>
     </message>
@@ -1699,6 +1777,39 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <location line="+21"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>vitesse %1 mm/s relue comme %2 mm/s (l&apos;appareil arrondit)</translation>
+    </message>
+</context>
+<context>
+    <name>NumberField</name>
+    <message>
+        <location filename="../../widgets/_number_field.py" line="+34"/>
+        <source>a number is needed, %1 to %2%3</source>
+        <translation>un nombre est requis, de %1 à %2%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%2 is not a whole number</source>
+        <translation>%1%2 n&apos;est pas un nombre entier</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>“%1” is not a number (%2 to %3%4)</source>
+        <translation>«&#xa0;%1&#xa0;» n&apos;est pas un nombre (de %2 à %3%4)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%4 is outside %2 to %3%4</source>
+        <translation>%1%4 est hors de la plage de %2 à %3%4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%2 has more than %3 decimals</source>
+        <translation>%1%2 a plus de %3 décimales</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2</source>
+        <translation>%1&#xa0;: %2</translation>
     </message>
 </context>
 <context>
@@ -1729,7 +1840,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>%1 sur %2</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>parameter writing cancelled: %1 not sent</source>
         <translation>écriture des paramètres annulée&#xa0;: %1 non envoyé(s)</translation>
     </message>
@@ -1940,7 +2051,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>ParameterModel</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-411"/>
+        <location filename="../../widgets/parameter_table.py" line="-413"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -2048,7 +2159,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>ParameterTableView</name>
     <message>
-        <location line="+157"/>
+        <location line="+159"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
         <translation>Pour modifier&#xa0;: double-cliquer sur une valeur, ou sélectionner une ligne puis appuyer sur Entrée ou saisir</translation>
     </message>
@@ -2101,7 +2212,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>%1 à %2 par pas de %3</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+19"/>
         <source>%1: %2 refused (%3): %4</source>
         <translation>%1&#xa0;: %2 refusé (%3)&#xa0;: %4</translation>
     </message>
@@ -2111,7 +2222,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>vide</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>use a point for decimals</source>
         <translation>utiliser un point comme séparateur décimal</translation>
     </message>
@@ -2302,7 +2413,17 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Ramener le zéro pièce à l&apos;origine de l&apos;appareil (pièce = machine)</translation>
     </message>
     <message>
-        <location line="+194"/>
+        <location line="+42"/>
+        <source>The stage is outside the travel limits set for this device: only moves that bring it closer to them are sent, until it is back inside</source>
+        <translation>La platine est hors des limites de course définies pour cet appareil&#xa0;: seuls les mouvements qui l&apos;en rapprochent sont envoyés, jusqu&apos;à ce qu&apos;elle y soit revenue</translation>
+    </message>
+    <message>
+        <location line="+108"/>
+        <source>outside the travel limits: %1</source>
+        <translation>hors des limites de course&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location line="+84"/>
         <source>millimetres</source>
         <translation>millimètres</translation>
     </message>
@@ -2382,7 +2503,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Y (mm)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y et Z en fonction du temps&#xa0;; pointillés&#xa0;: cible</translation>
     </message>
@@ -2402,7 +2523,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>position (mm)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>Clear trail</source>
         <translation>Effacer la trace</translation>
     </message>
@@ -2485,7 +2606,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Garder la caméra sur la position actuelle</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+75"/>
+        <location filename="../../widgets/position_view_3d.py" line="+76"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Nécessite OpenGL 2.1 ou plus récent (par ex. Mesa) sur un affichage&#xa0;; voir le README.</translation>
     </message>
@@ -2504,7 +2625,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>Glisser pour pivoter, molette pour zoomer, glisser avec le bouton du milieu pour déplacer la vue</translation>
     </message>
     <message>
-        <location line="+364"/>
+        <location line="+368"/>
         <source>grid %1 mm</source>
         <translation>grille %1 mm</translation>
     </message>
@@ -2712,12 +2833,11 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>aucun programme chargé</translation>
     </message>
     <message>
-        <location line="+21"/>
         <source>Load…</source>
-        <translation>Charger…</translation>
+        <translation type="vanished">Charger…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+27"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
         <translation>Charger un programme&#xa0;: CSV avec x,y,z,speed (mm, mm/s) ou JSON</translation>
     </message>
@@ -2732,9 +2852,8 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>Enregistrer le programme chargé en JSON (x, y, z, speed par point)</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Run</source>
-        <translation>Exécuter</translation>
+        <translation type="vanished">Exécuter</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2742,20 +2861,38 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>Envoyer le programme en continu à l&apos;appareil, 7 mouvements par trame</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+102"/>
         <source>Pause</source>
-        <translation>Pause</translation>
+        <translation type="vanished">Pause</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="+5"/>
         <source>Send nothing more until Resume (queued moves go on)</source>
         <translation>Ne plus rien envoyer jusqu&apos;à Reprendre (les mouvements en file se poursuivent)</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Stop</source>
-        <translation>Arrêt</translation>
+        <translation type="vanished">Arrêt</translation>
+    </message>
+    <message>
+        <location line="-14"/>
+        <source>&amp;Load…</source>
+        <translation>&amp;Charger…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Run</source>
+        <translation>Exécute&amp;r</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+123"/>
+        <source>P&amp;ause</source>
+        <translation>Pa&amp;use</translation>
+    </message>
+    <message>
+        <location line="-118"/>
+        <source>&amp;Stop</source>
+        <translation>Arrê&amp;t</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2769,12 +2906,12 @@ La vue 2D montre les mêmes positions.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+69"/>
+        <location line="+74"/>
         <source>%v / %m executed</source>
         <translation>%v / %m exécutées</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-55"/>
         <source>Program:</source>
         <translation>Programme&#xa0;:</translation>
     </message>
@@ -2794,7 +2931,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>JSON (*.json)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+29"/>
         <source>%1 (%2 points)</source>
         <translation>%1 (%2 points)</translation>
     </message>
@@ -2804,12 +2941,29 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>aucun programme</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+24"/>
+        <source>motion is off</source>
+        <translation>les mouvements sont désactivés</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1
+Not now: %2</source>
+        <translation>%1
+Indisponible pour le moment&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Resume</source>
         <translation>Reprendre</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+25"/>
+        <source>, paused</source>
+        <translation>, en pause</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>, about %1 s left</source>
         <translation>, reste environ %1 s</translation>
     </message>
@@ -3051,7 +3205,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>La console conserve les %1 lignes les plus récentes (Réglages)&#xa0;: les plus anciennes en sont retirées, le journal de session sur disque conserve toutes les lignes</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>export failed: %1</source>
         <translation>échec de l&apos;export&#xa0;: %1</translation>
     </message>
@@ -3061,7 +3215,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>%1 lignes exportées vers %2</translation>
     </message>
     <message>
-        <location filename="../../app/traffic_table.py" line="+44"/>
+        <location filename="../../app/traffic_table.py" line="+45"/>
         <source>motion</source>
         <translation>mouvement</translation>
     </message>
@@ -3136,7 +3290,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Envoyer la ligne à l&apos;appareil (Entrée)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+9"/>
+        <source>Sen&amp;d:</source>
+        <translation>E&amp;nvoyer&#xa0;:</translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>hex bytes, e.g. 48 45 4C 4C 4F (Up/Down: history)</source>
         <translation>octets hex, par ex. 48 45 4C 4C 4F (Haut/Bas&#xa0;: historique)</translation>
     </message>
@@ -3154,7 +3313,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>SettingsDialog</name>
     <message>
-        <location filename="../../widgets/settings_dialog.py" line="+77"/>
+        <location filename="../../widgets/settings_dialog.py" line="+78"/>
         <source>Settings</source>
         <translation>Réglages</translation>
     </message>
@@ -3204,7 +3363,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Fermer sans enregistrer</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+103"/>
         <source>Position polling</source>
         <translation>Interrogation de la position</translation>
     </message>
@@ -3544,7 +3703,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>%1&#xa0;: %2 n&apos;est pas un nombre de %3 à %4 %5</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>Memory grows with the session: about 33 MB a million lines.</source>
         <translation>La mémoire croît avec la session&#xa0;: environ 33 MB par million de lignes.</translation>
     </message>
@@ -3600,7 +3759,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+38"/>
+        <location filename="../../widgets/speed_control.py" line="+40"/>
         <source>Speed:</source>
         <translation>Vitesse&#xa0;:</translation>
     </message>
@@ -3610,7 +3769,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Vitesse des prochains mouvements</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Apply</source>
         <translation>Appliquer</translation>
     </message>
@@ -3626,7 +3785,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>La vitesse indiquée par l&apos;appareil (il peut l&apos;arrondir)</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+87"/>
         <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
         <translation>Vitesse, de %1 à %2 in/s&#xa0;; appuyer sur Entrée ou Appliquer pour envoyer</translation>
     </message>
@@ -3654,6 +3813,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+3"/>
         <source>device: %1 mm/s</source>
         <translation>appareil&#xa0;: %1 mm/s</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1; nothing sent</source>
+        <translation>%1&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
 </context>
 <context>
@@ -3804,7 +3968,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Réponse</translation>
     </message>
     <message>
-        <location line="+265"/>
+        <location line="+279"/>
         <source>line %1: %2</source>
         <translation>ligne %1&#xa0;: %2</translation>
     </message>
@@ -3916,7 +4080,19 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>%1&#xa0;:</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+4"/>
+        <source>%1 min</source>
+        <comment>an axis&apos; lower travel limit</comment>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 max</source>
+        <comment>an axis&apos; upper travel limit</comment>
+        <translation>%1 max</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Refuse a move that would leave the box</source>
         <translation>Refuser un mouvement qui sortirait de la zone</translation>
     </message>
@@ -3926,7 +4102,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Le borner&#xa0;: aller jusqu&apos;à la limite, et le signaler</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+50"/>
         <source>%1: the minimum must be below the maximum</source>
         <translation>%1&#xa0;: le minimum doit être inférieur au maximum</translation>
     </message>
@@ -3934,7 +4110,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>UnitSpinBox</name>
     <message>
-        <location filename="../../widgets/_units.py" line="+19"/>
+        <location filename="../../widgets/_units.py" line="+21"/>
         <source>in/s</source>
         <comment>inches per second</comment>
         <translation>in/s</translation>
@@ -3949,7 +4125,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>ValueDelegate</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-95"/>
+        <location filename="../../widgets/parameter_table.py" line="-97"/>
         <source>%1: edit cancelled, value unchanged</source>
         <translation>%1&#xa0;: modification annulée, valeur inchangée</translation>
     </message>
@@ -3959,7 +4135,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>%1 est une sortie. %2</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>%1 = %2, not yet written to the device</source>
         <translation>%1 = %2, pas encore écrit sur l&apos;appareil</translation>
     </message>
@@ -4105,6 +4281,81 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <name>messages</name>
     <message>
         <location filename="message_templates.py" line="+4"/>
+        <source>to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>vers ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>to its target</source>
+        <translation>vers sa cible</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: COXIRIS has no stop command; the device finishes the move under way {target} (a blocking sketch answers nothing until then) and then carries out what it had already received; motionctl sent nothing more</source>
+        <translation>interrompu&#xa0;: COXIRIS n&apos;a pas de commande d&apos;arrêt&#xa0;; l&apos;appareil termine le mouvement en cours {target} (un sketch bloquant ne répond rien jusque-là), puis exécute ce qu&apos;il avait déjà reçu&#xa0;; motionctl n&apos;a rien envoyé de plus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: Visiomex has no stop command; the device carries out the move packet it was sent {target} (FP0001, its steps, then FA0001); motionctl sent nothing more</source>
+        <translation>interrompu&#xa0;: Visiomex n&apos;a pas de commande d&apos;arrêt&#xa0;; l&apos;appareil exécute le paquet de mouvement {target} qui lui a été envoyé (FP0001, ses pas, puis FA0001)&#xa0;; motionctl n&apos;a rien envoyé de plus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: pi-frame has no stop command and sends no replies; the device carries out the frame it was sent {target}; motionctl sent nothing more</source>
+        <translation>interrompu&#xa0;: pi-frame n&apos;a pas de commande d&apos;arrêt et n&apos;envoie aucune réponse&#xa0;; l&apos;appareil exécute la trame {target} qui lui a été envoyée&#xa0;; motionctl n&apos;a rien envoyé de plus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: Firmata has no stop command; the board finishes the step message under way (at most 16383 steps) and stops there; the move&apos;s later messages, if it had more, were not sent</source>
+        <translation>interrompu&#xa0;: Firmata n&apos;a pas de commande d&apos;arrêt&#xa0;; la carte termine le message de pas en cours (16383 pas au plus) et s&apos;arrête là&#xa0;; les messages suivants du mouvement, s&apos;il en avait d&apos;autres, n&apos;ont pas été envoyés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: {protocol} has no stop command; the device finishes what it was sent; motionctl sent nothing more</source>
+        <translation>interrompu&#xa0;: {protocol} n&apos;a pas de commande d&apos;arrêt&#xa0;; l&apos;appareil termine ce qui lui a été envoyé&#xa0;; motionctl n&apos;a rien envoyé de plus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted before the device was talked to: nothing was sent</source>
+        <translation>interrompu avant tout dialogue avec l&apos;appareil&#xa0;: rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: {command} does not move the stage</source>
+        <translation>interrompu&#xa0;: {command} ne déplace pas la platine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted before the move was sent: the stage does not move</source>
+        <translation>interrompu avant l&apos;envoi du déplacement&#xa0;: la platine ne bouge pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted again while stopping: the {protocol} stop may not have arrived; the device may still be moving</source>
+        <translation>interrompu à nouveau pendant l&apos;arrêt&#xa0;: l&apos;arrêt {protocol} n&apos;est peut-être pas arrivé&#xa0;; l&apos;appareil est peut-être encore en mouvement</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: the {protocol} stop was sent but not acknowledged ({error}); the device may still be moving</source>
+        <translation>interrompu&#xa0;: l&apos;arrêt {protocol} a été envoyé mais non acquitté ({error})&#xa0;; l&apos;appareil est peut-être encore en mouvement</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted again</source>
+        <translation>interrompu à nouveau</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: stopped (the {protocol} stop was acknowledged; its queue is flushed); where the stage stopped could not be read: {error}</source>
+        <translation>interrompu&#xa0;: arrêté (l&apos;arrêt {protocol} a été acquitté&#xa0;; sa file est vidée)&#xa0;; la position où la platine s&apos;est arrêtée n&apos;a pas pu être lue&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: stopped at ({x:g}, {y:g}, {z:g}) mm (the {protocol} stop was acknowledged; its queue is flushed)</source>
+        <translation>interrompu&#xa0;: arrêté à ({x:g}, {y:g}, {z:g}) mm (l&apos;arrêt {protocol} a été acquitté&#xa0;; sa file est vidée)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>usage&#xa0;: {usage} ({count} arguments reçus)</translation>
     </message>
@@ -4132,6 +4383,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>speed {speed:g} mm/s refused ({error})</source>
         <translation>vitesse {speed:g} mm/s refusée ({error})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw move to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>déplacement brut vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4325,6 +4581,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{error}; waiting for {url}</source>
+        <translation>{error}&#xa0;; en attente de {url}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the saved setup was refused: {error}</source>
         <translation>la configuration enregistrée a été refusée&#xa0;: {error}</translation>
     </message>
@@ -4365,6 +4626,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>stopped before it was sent</source>
+        <translation>arrêté avant son envoi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the connection was lost</source>
         <translation>la connexion a été perdue</translation>
     </message>
@@ -4380,8 +4646,23 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{hint} ({error})</source>
+        <translation>{hint} ({error})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{error}; not sent: {jobs}</source>
         <translation>{error}&#xa0;; non envoyé&#xa0;: {jobs}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; connecting again when {url} is back</source>
+        <translation>{error}&#xa0;; reconnexion dès que {url} sera de nouveau disponible</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} is back: connecting again</source>
+        <translation>{url} est de nouveau disponible&#xa0;: reconnexion</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4775,6 +5056,36 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>no protocol to read them with</source>
+        <translation>aucun protocole pour les lire</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>program point {number}</source>
+        <translation>point {number} du programme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw bytes refused: {protocol} cannot read them as a command ({reason}), so they cannot be checked against the travel limits ({box}); send them with force to send them anyway</source>
+        <translation>octets bruts refusés&#xa0;: {protocol} ne peut pas les lire comme une commande ({reason}), ils ne peuvent donc pas être vérifiés par rapport aux limites de course ({box})&#xa0;; forcer l&apos;envoi pour les envoyer quand même</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw bytes refused: they hold {count} commands, {moves} of them moves; send a move alone, so that it is checked and followed to its end</source>
+        <translation>octets bruts refusés&#xa0;: ils contiennent {count} commandes, dont {moves} déplacements&#xa0;; envoyer un déplacement seul, pour qu&apos;il soit vérifié et suivi jusqu&apos;à sa fin</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw move {command}</source>
+        <translation>déplacement brut {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what}: not a move the panel can check</source>
+        <translation>{what}&#xa0;: pas un déplacement que le panneau sait vérifier</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
         <translation>{what} {text!r} n&apos;est pas un nombre accepté par l&apos;appareil&#xa0;: utiliser des chiffres, avec un signe facultatif et un seul point décimal, par ex. -12.5</translation>
     </message>
@@ -5000,6 +5311,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>this looks like a {found} controller, not {expected}</source>
+        <translation>cela ressemble à un contrôleur {found}, pas {expected}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
         <translation>{setting} {value} refusé&#xa0;: de {minimum:g} à {maximum:g} {unit}</translation>
     </message>
@@ -5022,6 +5338,21 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>{protocol} moves are linear only (got {kind!r})</source>
         <translation>les mouvements {protocol} sont uniquement linéaires (reçu {kind!r})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} cannot read sent frames</source>
+        <translation>{protocol} ne sait pas lire les trames envoyées</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the last {count} bytes are not a whole frame: the device would wait for the rest</source>
+        <translation>les {count} derniers octets ne forment pas une trame complète&#xa0;: l&apos;appareil attendrait la suite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no whole frame in {count} bytes</source>
+        <translation>aucune trame complète dans {count} octets</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5127,6 +5458,26 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>line refused: {length} characters, the device takes at most {most}</source>
         <translation>ligne refusée&#xa0;: {length} caractères, l&apos;appareil en accepte au plus {most}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line!r} has no line end: the device would wait for the rest</source>
+        <translation>{line!r} n&apos;a pas de fin de ligne&#xa0;: l&apos;appareil attendrait la suite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an empty line: the device ignores it</source>
+        <translation>une ligne vide&#xa0;: l&apos;appareil l&apos;ignore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>non-ASCII bytes: COXIRIS takes ASCII text only</source>
+        <translation>octets non ASCII&#xa0;: COXIRIS n&apos;accepte que du texte ASCII</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} {params!r} is not three numbers as the firmware reads them</source>
+        <translation>{name} {params!r} ne donne pas trois nombres tels que le firmware les lit</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5280,6 +5631,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>a STEPPER_STEP of {count} data bytes, not 6</source>
+        <translation>un STEPPER_STEP de {count} octets de données, au lieu de 6</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>framing</source>
         <translation>trame</translation>
     </message>
@@ -5362,6 +5718,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>the laser link has no instruction for {command}</source>
         <translation>la liaison laser n&apos;a pas d&apos;instruction pour {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MOVE_LINEAR with {count} float values, not x, y, z and speed</source>
+        <translation>MOVE_LINEAR avec {count} valeurs flottantes, au lieu de x, y, z et la vitesse</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5730,6 +6091,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>move packet {packet!r} is not as the protocol documents</source>
+        <translation>le paquet de mouvement {packet!r} n&apos;est pas conforme à la documentation du protocole</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{packet} (set {parameter})</source>
         <translation>{packet} (écriture de {parameter})</translation>
     </message>
@@ -6010,6 +6376,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{url} is in use by another program</source>
+        <translation>{url} est utilisé par un autre programme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>cannot open {url}: {error}</source>
         <translation>impossible d&apos;ouvrir {url}&#xa0;: {error}</translation>
     </message>
@@ -6032,6 +6403,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>{axis} {value:g} mm is outside {low:g}..{high:g} mm</source>
         <translation>{axis} {value:g} mm est hors de {low:g}..{high:g} mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the stage is outside its travel limits: {what} brings it closer ({details})</source>
+        <translation>la platine est hors de ses limites de course&#xa0;: {what} l&apos;en rapproche ({details})</translation>
     </message>
     <message>
         <location line="+1"/>

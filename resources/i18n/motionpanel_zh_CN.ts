@@ -67,7 +67,7 @@
 <context>
     <name>ArcEntry</name>
     <message>
-        <location filename="../../widgets/arc_entry.py" line="+272"/>
+        <location filename="../../widgets/arc_entry.py" line="+274"/>
         <source>X of the arc&apos;s centre, in mm from home</source>
         <translation>圆弧圆心的 X 坐标，单位 mm，从原点起算</translation>
     </message>
@@ -82,7 +82,7 @@
         <translation>圆弧半径，单位 mm（大于 0）</translation>
     </message>
     <message>
-        <location line="-125"/>
+        <location line="-127"/>
         <source>Angle of the start point, 0 to 360°, counter-clockwise from +X seen from above</source>
         <translation>起点角度，0 至 360°，俯视时自 +X 方向逆时针计</translation>
     </message>
@@ -94,14 +94,14 @@ the same as the start angle: a full circle</source>
 与起点角度相同：整圆</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+120"/>
         <source>Z at the end of the arc, in mm; Z moves evenly from the current Z along the arc
 (a helix when it differs)</source>
         <translation>圆弧终点处的 Z，单位 mm；Z 沿圆弧从当前 Z 匀速变化
 （与当前 Z 不同时即为螺旋线）</translation>
     </message>
     <message>
-        <location line="-94"/>
+        <location line="-96"/>
         <source>Centre X:</source>
         <translation>圆心 X：</translation>
     </message>
@@ -131,7 +131,7 @@ the same as the start angle: a full circle</source>
         <translation>终点 Z：</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>CW</source>
         <translation>顺时针</translation>
     </message>
@@ -167,17 +167,17 @@ the same as the start angle: a full circle</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+182"/>
+        <location line="+189"/>
         <source>Move along the arc, from its start point to its end point</source>
         <translation>沿圆弧从起点移动到终点</translation>
     </message>
     <message>
-        <location line="-174"/>
+        <location line="-181"/>
         <source>Why the arc cannot run</source>
         <translation>圆弧无法执行的原因</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>X of the arc&apos;s centre, in inches from home</source>
         <translation>圆弧圆心的 X 坐标，单位为英寸，从原点起算</translation>
     </message>
@@ -199,7 +199,7 @@ the same as the start angle: a full circle</source>
 （与当前 Z 不同时即为螺旋线）</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+148"/>
         <source>The radius must be more than 0 in.</source>
         <translation>半径必须大于 0 in。</translation>
     </message>
@@ -270,7 +270,7 @@ the same as the start angle: a full circle</source>
         <translation>错误</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+50"/>
         <source>/dev/ttyUSB0, COM3 or a URL</source>
         <translation>/dev/ttyUSB0、COM3 或 URL</translation>
     </message>
@@ -280,7 +280,7 @@ the same as the start angle: a full circle</source>
         <translation>串口，或任意 pyserial URL（例如 sim://coxiris、socket://host:port、loop://）</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>Look for serial ports again</source>
         <translation>重新查找串口</translation>
     </message>
@@ -317,31 +317,35 @@ the same as the start angle: a full circle</source>
     <message>
         <location line="+6"/>
         <location line="+6"/>
-        <location line="+224"/>
+        <location line="+228"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-224"/>
-        <location line="+223"/>
+        <location line="-228"/>
+        <location line="+227"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+223"/>
+        <location line="-227"/>
+        <location line="+227"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location line="-213"/>
+        <location line="-217"/>
         <source>Lines:</source>
         <translation>信号线：</translation>
     </message>
     <message>
         <location line="+13"/>
+        <source>&amp;Port:</source>
+        <translation>端口(&amp;P)：</translation>
+    </message>
+    <message>
         <source>Port:</source>
-        <translation>端口：</translation>
+        <translation type="vanished">端口：</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -354,7 +358,7 @@ the same as the start angle: a full circle</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+72"/>
         <source>No description for this port</source>
         <translation>此端口没有描述</translation>
     </message>
@@ -513,13 +517,12 @@ All coordinates will be measured from here from now on.</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+42"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
-        <translation>%1：</translation>
+        <translation type="vanished">%1：</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+52"/>
         <source>Absolute</source>
         <translation>绝对</translation>
     </message>
@@ -559,7 +562,13 @@ All coordinates will be measured from here from now on.</source>
         <translation>移动</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-25"/>
+        <source>&amp;%1:</source>
+        <comment>an axis field&apos;s label; Alt+axis</comment>
+        <translation>&amp;%1：</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Start the move (Enter in a field)</source>
         <translation>开始移动（在输入框中按 Enter）</translation>
     </message>
@@ -595,12 +604,12 @@ All coordinates will be measured from here from now on.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+167"/>
+        <location line="+177"/>
         <source>Stop</source>
         <translation>停止</translation>
     </message>
     <message>
-        <location line="-167"/>
+        <location line="-177"/>
         <source>Stop the stage now</source>
         <translation>立即停止平台</translation>
     </message>
@@ -625,7 +634,7 @@ All coordinates will be measured from here from now on.</source>
         <translation>输入坐标所用的坐标系：机床（从设备原点起算，单位为英寸）或工件（从工件零点起算，单位为英寸）；发送给设备的始终是机床坐标，单位 mm</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location line="+147"/>
         <source>Drop queued</source>
         <translation>清空队列</translation>
     </message>
@@ -674,11 +683,16 @@ All coordinates will be measured from here from now on.</source>
         <source>(this device has no such axis)</source>
         <translation>（此设备没有该轴）</translation>
     </message>
+    <message>
+        <location line="+29"/>
+        <source>%1; nothing sent</source>
+        <translation>%1；未发送任何内容</translation>
+    </message>
 </context>
 <context>
     <name>DerivedValues</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="+445"/>
+        <location filename="../../widgets/parameter_table.py" line="+447"/>
         <source>Derived values</source>
         <translation>派生值</translation>
     </message>
@@ -701,7 +715,12 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/device_docks.py" line="+136"/>
+        <location filename="../../app/device_docks.py" line="+83"/>
+        <source>Not now: %1</source>
+        <translation>暂不可用：%1</translation>
+    </message>
+    <message>
+        <location line="+62"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>各轴 %1 至 %2 mm（16 位计数）</translation>
     </message>
@@ -762,12 +781,12 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DwellEntry</name>
     <message>
-        <location filename="../../widgets/dwell_entry.py" line="+26"/>
+        <location filename="../../widgets/dwell_entry.py" line="+28"/>
         <source>Dwell:</source>
         <translation>延时：</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>How long the device waits, 0 to %1 ms; press Enter or Dwell to send</source>
         <translation>设备等待的时长，0 至 %1 ms；按 Enter 或“延时”发送</translation>
     </message>
@@ -780,6 +799,11 @@ All coordinates will be measured from here from now on.</source>
         <location line="+2"/>
         <source>Make the device wait this long before its next command</source>
         <translation>让设备在执行下一条命令前等待这段时间</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1; nothing sent</source>
+        <translation>%1；未发送任何内容</translation>
     </message>
 </context>
 <context>
@@ -977,19 +1001,19 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+32"/>
+        <location filename="../../widgets/jog_panel.py" line="+33"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift ×10</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+48"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
         <translation>将平台移动一步；按住按钮或按键可持续步进。
 %1（按键在何处有效，见下方提示）。</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+35"/>
         <source>Step:</source>
         <translation>步长：</translation>
     </message>
@@ -1020,7 +1044,12 @@ All coordinates will be measured from here from now on.</source>
         <translation>任意步长（0.001 至 1000 mm）</translation>
     </message>
     <message>
-        <location line="-83"/>
+        <location line="+133"/>
+        <source>%1; no jog</source>
+        <translation>%1；无法点动</translation>
+    </message>
+    <message>
+        <location line="-215"/>
         <source>keys active</source>
         <translation>按键已启用</translation>
     </message>
@@ -1043,7 +1072,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 按住按键可持续步进；按住 Shift 则步长放大十倍。</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+103"/>
         <source>Jog %1 by %2 in (Shift: %3 in)</source>
         <translation>%1 轴点动 %2 in（Shift：%3 in）</translation>
     </message>
@@ -1101,12 +1130,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>标签页</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+69"/>
         <source>not connected</source>
         <translation>未连接</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>a menu or list is open</source>
         <translation>菜单或列表已打开</translation>
     </message>
@@ -1134,7 +1163,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>（未解码）</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Open traffic log</source>
         <translation>打开通信日志</translation>
     </message>
@@ -1179,7 +1208,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在读取 %1…</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+52"/>
         <source>%1 — traffic log</source>
         <translation>%1 — 通信日志</translation>
     </message>
@@ -1334,7 +1363,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>还没有宏：用“新建…”编写，或用“导入…”从文件读取。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>New…</source>
         <translation>新建…</translation>
     </message>
@@ -1374,17 +1403,22 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>将此协议的宏写入文件</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>Run %1:
 %2</source>
         <translation>运行 %1：
 %2</translation>
     </message>
+    <message>
+        <location line="+19"/>
+        <source>Macros off: %1</source>
+        <translation>宏不可用：%1</translation>
+    </message>
 </context>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+105"/>
+        <location filename="../../app/main_window.py" line="+110"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 没有停止命令：此操作会丢弃尚未发送的命令；设备上已在进行的移动会继续完成（Esc）</translation>
     </message>
@@ -1394,7 +1428,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>立即停止平台：中止正在进行的移动，并清空队列（Esc）</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+35"/>
         <source>simulated %1 device</source>
         <translation>模拟的 %1 设备</translation>
     </message>
@@ -1404,7 +1438,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+114"/>
         <source>no session log: %1</source>
         <translation>无会话日志：%1</translation>
     </message>
@@ -1505,12 +1539,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+358"/>
+        <location line="+380"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location line="-353"/>
+        <location line="-375"/>
         <source>&amp;Travel limits…</source>
         <translation>行程限位(&amp;T)…</translation>
     </message>
@@ -1535,7 +1569,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>清除轨迹(&amp;C)</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+126"/>
+        <source>%1 names its protocol: connecting as %2</source>
+        <translation>%1 已指明其协议：按 %2 连接</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>connecting to %1 (%2, %3 baud)</source>
         <translation>正在连接 %1（%2，%3 波特）</translation>
     </message>
@@ -1580,7 +1619,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已断开连接</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+48"/>
         <source>connected to %1 on %2</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
@@ -1635,7 +1674,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>端口 %1 已消失</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -1650,12 +1689,51 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>行程限位：%1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>not connected: %1 not sent</source>
         <translation>未连接：%1 未发送</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+9"/>
+        <source>%1 refused: %2 is under way; wait for its end or press Stop</source>
+        <translation>%1 被拒绝：%2 正在进行；请等待其结束或按“停止”</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>motion controls are off until %1 ends (Stop ends it now)</source>
+        <translation>%1 结束前运动控制不可用（按“停止”可立即结束）</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 is under way</source>
+        <translation>%1 正在进行</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>jog refused: %1</source>
+        <translation>点动被拒绝：%1</translation>
+    </message>
+    <message>
+        <location line="+90"/>
+        <source>Send unchecked bytes?</source>
+        <translation>发送未经检查的字节？</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>These bytes cannot be read as a command (%1), so they cannot be checked against the travel limits (%2): they might move the stage outside them.
+
+Send them anyway?</source>
+        <translation>这些字节无法解读为命令（%1），因此无法对照行程限位（%2）进行检查：它们可能使平台移出限位范围。
+
+仍要发送吗？</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>not sent: the bytes could not be checked against the travel limits</source>
+        <translation>未发送：无法对照行程限位检查这些字节</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>stopping the macro under way</source>
         <translation>正在停止执行中的宏</translation>
     </message>
@@ -1675,23 +1753,23 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已停止：%1 条命令未发送：%2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>新原点：轨迹已平移 (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+103"/>
         <source>the device reported an error: %1</source>
         <translation>设备报告错误：%1</translation>
     </message>
     <message>
-        <location line="-394"/>
-        <location line="+398"/>
+        <location line="-551"/>
+        <location line="+555"/>
         <source>device: %1</source>
         <translation>设备：%1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+23"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
@@ -1699,6 +1777,39 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <location line="+21"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>速度 %1 mm/s 回读为 %2 mm/s（设备会取整）</translation>
+    </message>
+</context>
+<context>
+    <name>NumberField</name>
+    <message>
+        <location filename="../../widgets/_number_field.py" line="+34"/>
+        <source>a number is needed, %1 to %2%3</source>
+        <translation>需要输入数字，%1 至 %2%3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%2 is not a whole number</source>
+        <translation>%1%2 不是整数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>“%1” is not a number (%2 to %3%4)</source>
+        <translation>“%1”不是数字（%2 至 %3%4）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%4 is outside %2 to %3%4</source>
+        <translation>%1%4 超出 %2 至 %3%4 的范围</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1%2 has more than %3 decimals</source>
+        <translation>%1%2 的小数位数超过 %3 位</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
     </message>
 </context>
 <context>
@@ -1729,7 +1840,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>parameter writing cancelled: %1 not sent</source>
         <translation>参数写入已取消：%1 未发送</translation>
     </message>
@@ -1940,7 +2051,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>ParameterModel</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-411"/>
+        <location filename="../../widgets/parameter_table.py" line="-413"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -2048,7 +2159,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>ParameterTableView</name>
     <message>
-        <location line="+157"/>
+        <location line="+159"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
         <translation>双击某个值，或选中一行后按 Enter 或直接输入，即可编辑</translation>
     </message>
@@ -2101,7 +2212,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>%1 至 %2，步进 %3</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+19"/>
         <source>%1: %2 refused (%3): %4</source>
         <translation>%1：%2 被拒绝（%3）：允许 %4</translation>
     </message>
@@ -2111,7 +2222,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>为空</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>use a point for decimals</source>
         <translation>请用点号（.）作小数点</translation>
     </message>
@@ -2302,7 +2413,17 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>将工件零点恢复到设备原点（工件坐标 = 机床坐标）</translation>
     </message>
     <message>
-        <location line="+194"/>
+        <location line="+42"/>
+        <source>The stage is outside the travel limits set for this device: only moves that bring it closer to them are sent, until it is back inside</source>
+        <translation>平台位于为此设备设置的行程限位之外：在回到限位内之前，只会发送使其更接近限位范围的移动</translation>
+    </message>
+    <message>
+        <location line="+108"/>
+        <source>outside the travel limits: %1</source>
+        <translation>超出行程限位：%1</translation>
+    </message>
+    <message>
+        <location line="+84"/>
         <source>millimetres</source>
         <translation>毫米</translation>
     </message>
@@ -2382,7 +2503,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>Y (mm)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X、Y、Z 随时间的变化；虚线：目标</translation>
     </message>
@@ -2402,7 +2523,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>位置 (mm)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>Clear trail</source>
         <translation>清除轨迹</translation>
     </message>
@@ -2485,7 +2606,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>使视角始终对准当前位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+75"/>
+        <location filename="../../widgets/position_view_3d.py" line="+76"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>需要在有显示器的环境中提供 OpenGL 2.1 或更高版本（例如 Mesa）；请参阅 README。</translation>
     </message>
@@ -2504,7 +2625,7 @@ The 2D view shows the same positions.</source>
         <translation>拖动旋转，滚轮缩放，中键拖动平移</translation>
     </message>
     <message>
-        <location line="+364"/>
+        <location line="+368"/>
         <source>grid %1 mm</source>
         <translation>网格 %1 mm</translation>
     </message>
@@ -2712,12 +2833,11 @@ The 2D view shows the same positions.</source>
         <translation>未加载程序</translation>
     </message>
     <message>
-        <location line="+21"/>
         <source>Load…</source>
-        <translation>加载…</translation>
+        <translation type="vanished">加载…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+27"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
         <translation>加载程序：含 x,y,z,speed 列的 CSV（mm、mm/s）或 JSON</translation>
     </message>
@@ -2732,9 +2852,8 @@ The 2D view shows the same positions.</source>
         <translation>将已加载的程序保存为 JSON（每个点含 x, y, z, speed）</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Run</source>
-        <translation>运行</translation>
+        <translation type="vanished">运行</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2742,20 +2861,38 @@ The 2D view shows the same positions.</source>
         <translation>将程序流式发送到设备，每帧 7 个移动</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+102"/>
         <source>Pause</source>
-        <translation>暂停</translation>
+        <translation type="vanished">暂停</translation>
     </message>
     <message>
-        <location line="-100"/>
+        <location line="+5"/>
         <source>Send nothing more until Resume (queued moves go on)</source>
         <translation>在“继续”之前不再发送（已排队的移动照常执行）</translation>
     </message>
     <message>
-        <location line="+3"/>
         <source>Stop</source>
-        <translation>停止</translation>
+        <translation type="vanished">停止</translation>
+    </message>
+    <message>
+        <location line="-14"/>
+        <source>&amp;Load…</source>
+        <translation>加载(&amp;L)…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Run</source>
+        <translation>运行(&amp;R)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+123"/>
+        <source>P&amp;ause</source>
+        <translation>暂停(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="-118"/>
+        <source>&amp;Stop</source>
+        <translation>停止(&amp;S)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2769,12 +2906,12 @@ The 2D view shows the same positions.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+69"/>
+        <location line="+74"/>
         <source>%v / %m executed</source>
         <translation>已执行 %v / %m</translation>
     </message>
     <message>
-        <location line="-50"/>
+        <location line="-55"/>
         <source>Program:</source>
         <translation>程序：</translation>
     </message>
@@ -2794,7 +2931,7 @@ The 2D view shows the same positions.</source>
         <translation>JSON (*.json)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+29"/>
         <source>%1 (%2 points)</source>
         <translation>%1（%2 个点）</translation>
     </message>
@@ -2804,12 +2941,29 @@ The 2D view shows the same positions.</source>
         <translation>无程序</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+24"/>
+        <source>motion is off</source>
+        <translation>运动控制不可用</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1
+Not now: %2</source>
+        <translation>%1
+暂不可用：%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+25"/>
+        <source>, paused</source>
+        <translation>，已暂停</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>, about %1 s left</source>
         <translation>，约剩 %1 s</translation>
     </message>
@@ -3051,7 +3205,7 @@ The 2D view shows the same positions.</source>
         <translation>控制台只保留最新的 %1 行（见“设置”）：较旧的行会从中移除，磁盘上的会话日志保留所有行</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
@@ -3061,7 +3215,7 @@ The 2D view shows the same positions.</source>
         <translation>已将 %1 行导出到 %2</translation>
     </message>
     <message>
-        <location filename="../../app/traffic_table.py" line="+44"/>
+        <location filename="../../app/traffic_table.py" line="+45"/>
         <source>motion</source>
         <translation>运动</translation>
     </message>
@@ -3136,7 +3290,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>将该行发送到设备（Enter）</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+9"/>
+        <source>Sen&amp;d:</source>
+        <translation>发送(&amp;D)：</translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>hex bytes, e.g. 48 45 4C 4C 4F (Up/Down: history)</source>
         <translation>十六进制字节，例如 48 45 4C 4C 4F（↑/↓：历史记录）</translation>
     </message>
@@ -3154,7 +3313,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>SettingsDialog</name>
     <message>
-        <location filename="../../widgets/settings_dialog.py" line="+77"/>
+        <location filename="../../widgets/settings_dialog.py" line="+78"/>
         <source>Settings</source>
         <translation>设置</translation>
     </message>
@@ -3204,7 +3363,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>关闭且不保存</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+103"/>
         <source>Position polling</source>
         <translation>位置轮询</translation>
     </message>
@@ -3544,7 +3703,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>%1：%2 不是有效数字，应为 %3 至 %4 %5</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>Memory grows with the session: about 33 MB a million lines.</source>
         <translation>内存占用随会话增长：每百万行约 33 MB。</translation>
     </message>
@@ -3600,7 +3759,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+38"/>
+        <location filename="../../widgets/speed_control.py" line="+40"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
@@ -3610,7 +3769,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>后续移动的速度</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
@@ -3626,7 +3785,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>设备报告的速度（可能经过取整）</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+87"/>
         <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
         <translation>速度，%1 至 %2 in/s；按 Enter 或“应用”发送</translation>
     </message>
@@ -3654,6 +3813,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+3"/>
         <source>device: %1 mm/s</source>
         <translation>设备：%1 mm/s</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1; nothing sent</source>
+        <translation>%1；未发送任何内容</translation>
     </message>
 </context>
 <context>
@@ -3804,7 +3968,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>应答</translation>
     </message>
     <message>
-        <location line="+265"/>
+        <location line="+279"/>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>
@@ -3916,7 +4080,19 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>%1：</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+4"/>
+        <source>%1 min</source>
+        <comment>an axis&apos; lower travel limit</comment>
+        <translation>%1 最小值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 max</source>
+        <comment>an axis&apos; upper travel limit</comment>
+        <translation>%1 最大值</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Refuse a move that would leave the box</source>
         <translation>拒绝会超出范围的移动</translation>
     </message>
@@ -3926,7 +4102,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>限制：移动到边界为止，并给出提示</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+50"/>
         <source>%1: the minimum must be below the maximum</source>
         <translation>%1：最小值必须小于最大值</translation>
     </message>
@@ -3934,7 +4110,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>UnitSpinBox</name>
     <message>
-        <location filename="../../widgets/_units.py" line="+19"/>
+        <location filename="../../widgets/_units.py" line="+21"/>
         <source>in/s</source>
         <comment>inches per second</comment>
         <translation>in/s</translation>
@@ -3949,7 +4125,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>ValueDelegate</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-95"/>
+        <location filename="../../widgets/parameter_table.py" line="-97"/>
         <source>%1: edit cancelled, value unchanged</source>
         <translation>%1：编辑已取消，值未更改</translation>
     </message>
@@ -3959,7 +4135,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>%1 是输出参数。%2</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+24"/>
         <source>%1 = %2, not yet written to the device</source>
         <translation>%1 = %2，尚未写入设备</translation>
     </message>
@@ -4105,6 +4281,81 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <name>messages</name>
     <message>
         <location filename="message_templates.py" line="+4"/>
+        <source>to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>前往 ({x:g}, {y:g}, {z:g}) mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>to its target</source>
+        <translation>前往其目标</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: COXIRIS has no stop command; the device finishes the move under way {target} (a blocking sketch answers nothing until then) and then carries out what it had already received; motionctl sent nothing more</source>
+        <translation>已中断：COXIRIS 没有停止命令；设备会继续完成{target}的当前移动（阻塞式 sketch 在此之前不作任何应答），然后执行它已收到的命令；motionctl 未再发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: Visiomex has no stop command; the device carries out the move packet it was sent {target} (FP0001, its steps, then FA0001); motionctl sent nothing more</source>
+        <translation>已中断：Visiomex 没有停止命令；设备会执行已发给它的、{target}的移动数据包（FP0001、各步，然后 FA0001）；motionctl 未再发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: pi-frame has no stop command and sends no replies; the device carries out the frame it was sent {target}; motionctl sent nothing more</source>
+        <translation>已中断：pi-frame 没有停止命令，也不发送应答；设备会执行已发给它的、{target}的帧；motionctl 未再发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: Firmata has no stop command; the board finishes the step message under way (at most 16383 steps) and stops there; the move&apos;s later messages, if it had more, were not sent</source>
+        <translation>已中断：Firmata 没有停止命令；控制板会完成正在执行的步进消息（最多 16383 步）并停在该处；该移动后续的消息（如果还有）未发送</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: {protocol} has no stop command; the device finishes what it was sent; motionctl sent nothing more</source>
+        <translation>已中断：{protocol} 没有停止命令；设备会完成已发给它的内容；motionctl 未再发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted before the device was talked to: nothing was sent</source>
+        <translation>在与设备通信之前已中断：未发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: {command} does not move the stage</source>
+        <translation>已中断：{command} 不会移动平台</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted before the move was sent: the stage does not move</source>
+        <translation>在发送移动之前已中断：平台不会移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted again while stopping: the {protocol} stop may not have arrived; the device may still be moving</source>
+        <translation>停止过程中再次中断：{protocol} 停止命令可能未送达；设备可能仍在移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: the {protocol} stop was sent but not acknowledged ({error}); the device may still be moving</source>
+        <translation>已中断：{protocol} 停止命令已发送但未得到确认（{error}）；设备可能仍在移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted again</source>
+        <translation>再次中断</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: stopped (the {protocol} stop was acknowledged; its queue is flushed); where the stage stopped could not be read: {error}</source>
+        <translation>已中断：已停止（{protocol} 停止命令已确认；其队列已清空）；无法读取平台停止的位置：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>interrupted: stopped at ({x:g}, {y:g}, {z:g}) mm (the {protocol} stop was acknowledged; its queue is flushed)</source>
+        <translation>已中断：已停止于 ({x:g}, {y:g}, {z:g}) mm（{protocol} 停止命令已确认；其队列已清空）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>用法：{usage}（收到 {count} 个参数）</translation>
     </message>
@@ -4132,6 +4383,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>speed {speed:g} mm/s refused ({error})</source>
         <translation>速度 {speed:g} mm/s 被拒绝（{error}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw move to ({x:g}, {y:g}, {z:g}) mm</source>
+        <translation>原始命令移动到 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4325,6 +4581,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>{error}; waiting for {url}</source>
+        <translation>{error}；正在等待 {url}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the saved setup was refused: {error}</source>
         <translation>设备拒绝了已保存的设置：{error}</translation>
     </message>
@@ -4365,6 +4626,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>stopped before it was sent</source>
+        <translation>发送前已停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>the connection was lost</source>
         <translation>连接已断开</translation>
     </message>
@@ -4380,8 +4646,23 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>{hint} ({error})</source>
+        <translation>{hint}（{error}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{error}; not sent: {jobs}</source>
         <translation>{error}；未发送：{jobs}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{error}; connecting again when {url} is back</source>
+        <translation>{error}；{url} 恢复后将重新连接</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{url} is back: connecting again</source>
+        <translation>{url} 已恢复：正在重新连接</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4775,6 +5056,36 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>no protocol to read them with</source>
+        <translation>没有可用于解读它们的协议</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>program point {number}</source>
+        <translation>程序第 {number} 个点</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw bytes refused: {protocol} cannot read them as a command ({reason}), so they cannot be checked against the travel limits ({box}); send them with force to send them anyway</source>
+        <translation>原始字节被拒绝：{protocol} 无法将其解读为命令（{reason}），因此无法对照行程限位（{box}）进行检查；若仍要发送，请使用 force 强制发送</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw bytes refused: they hold {count} commands, {moves} of them moves; send a move alone, so that it is checked and followed to its end</source>
+        <translation>原始字节被拒绝：其中包含 {count} 条命令，其中 {moves} 条是移动；请单独发送一条移动，以便对其进行检查并跟踪至结束</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>raw move {command}</source>
+        <translation>原始命令移动 {command}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{what}: not a move the panel can check</source>
+        <translation>{what}：不是面板能够检查的移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
         <translation>{what} {text!r} 不是设备接受的数字：请使用数字，可带正负号和一个小数点，例如 -12.5</translation>
     </message>
@@ -5000,6 +5311,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>this looks like a {found} controller, not {expected}</source>
+        <translation>这看起来是 {found} 控制器，而不是 {expected}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
         <translation>{setting} {value} 被拒绝：允许 {minimum:g} 至 {maximum:g} {unit}</translation>
     </message>
@@ -5022,6 +5338,21 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>{protocol} moves are linear only (got {kind!r})</source>
         <translation>{protocol} 只支持直线移动（收到 {kind!r}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} cannot read sent frames</source>
+        <translation>{protocol} 无法解读发送的帧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the last {count} bytes are not a whole frame: the device would wait for the rest</source>
+        <translation>最后 {count} 个字节不是完整的帧：设备会等待其余部分</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no whole frame in {count} bytes</source>
+        <translation>{count} 个字节中没有完整的帧</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5127,6 +5458,26 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>line refused: {length} characters, the device takes at most {most}</source>
         <translation>行被拒绝：{length} 个字符，设备最多接受 {most} 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{line!r} has no line end: the device would wait for the rest</source>
+        <translation>{line!r} 没有行尾符：设备会等待其余部分</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>an empty line: the device ignores it</source>
+        <translation>空行：设备会忽略它</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>non-ASCII bytes: COXIRIS takes ASCII text only</source>
+        <translation>非 ASCII 字节：COXIRIS 只接受 ASCII 文本</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} {params!r} is not three numbers as the firmware reads them</source>
+        <translation>按固件的解析方式，{name} {params!r} 不是三个数字</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5280,6 +5631,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>a STEPPER_STEP of {count} data bytes, not 6</source>
+        <translation>STEPPER_STEP 有 {count} 个数据字节，而不是 6 个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>framing</source>
         <translation>帧格式错误</translation>
     </message>
@@ -5362,6 +5718,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>the laser link has no instruction for {command}</source>
         <translation>激光链路没有对应 {command} 的指令</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MOVE_LINEAR with {count} float values, not x, y, z and speed</source>
+        <translation>MOVE_LINEAR 含 {count} 个浮点值，而不是 x、y、z 和 speed</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5730,6 +6091,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>move packet {packet!r} is not as the protocol documents</source>
+        <translation>移动数据包 {packet!r} 与协议文档不符</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{packet} (set {parameter})</source>
         <translation>{packet}（设置 {parameter}）</translation>
     </message>
@@ -6010,6 +6376,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>{url} is in use by another program</source>
+        <translation>{url} 正被其他程序使用</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>cannot open {url}: {error}</source>
         <translation>无法打开 {url}：{error}</translation>
     </message>
@@ -6032,6 +6403,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>{axis} {value:g} mm is outside {low:g}..{high:g} mm</source>
         <translation>{axis} {value:g} mm 超出 {low:g}..{high:g} mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the stage is outside its travel limits: {what} brings it closer ({details})</source>
+        <translation>平台位于行程限位之外：{what}使其更接近限位范围（{details}）</translation>
     </message>
     <message>
         <location line="+1"/>
