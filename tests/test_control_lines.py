@@ -133,7 +133,8 @@ def test_a_break_is_noted_and_reaches_the_device_as_a_nul(notes: list[str]) -> N
         link.send_break(0.01)
         assert link.port.device.breaks == 1
         assert notes == ["break 10 ms"]
-        link.write(b"GET_POSITION\n")  # a NUL ends a line: an empty one, ignored
+        # The NUL stays in the line (only CR and LF end one) and empties its command.
+        link.write(b"GET_ID\nGET_POSITION\n")
         assert _read_exactly(link, 40).startswith(b"ACK GET_POSITION\r\n")
         with pytest.raises(BadInput, match="break"):
             link.send_break(0)

@@ -500,9 +500,10 @@ def test_replayed_reply_trackers_pair_as_live_ones(name, variant, data) -> None:
 
 
 def test_replayed_scripts_tell_apart_frames_that_end_differently() -> None:
-    """Found by the test above: `\x00\n` and `\x00\r` are the same text, not the same frame
-    (their trackers differ), so a script learnt from one must not be replayed for the other."""
-    traffic = [("rx", b"\r\x80"), ("tx", b"\x00\n\x00\r")] * 3
+    """Found by the test above: `\x01\n` and `\x01\r` are the same text, not the same frame
+    (their trackers differ), so a script learnt from one must not be replayed for the other.
+    (Found with NUL, which COXIRIS now reads as an empty command: no reply is followed.)"""
+    traffic = [("rx", b"\r\x80"), ("tx", b"\x01\n\x01\r")] * 3
     replayed, live = (
         TrafficIndex(create_protocol("coxiris")),
         TrafficIndex(create_protocol("coxiris")),

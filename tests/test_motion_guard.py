@@ -68,7 +68,12 @@ def _decoded(protocol: Protocol, data: bytes) -> cmd.Command | None:
         (b"ABSOLUTE_MOVE 100 0 0\n", cmd.MoveTo(100.0, 0.0, 0.0)),
         (b"absolute_move -1.5 2 .5\r\n", cmd.MoveTo(-1.5, 2.0, 0.5)),
         (b"DELTA_MOVE 1 2 3\r", cmd.MoveBy(1.0, 2.0, 3.0)),
-        (b"GO_HOME\x00", cmd.Home()),
+        (b"GO_HOME\x00\n", cmd.Home()),
+        # A NUL does not end the line: the firmware runs what precedes it, ignores the rest.
+        (b"ABSOLUTE_MOVE 5 0 0\x00ABSOLUTE_MOVE 100 0 0\n", cmd.MoveTo(5.0, 0.0, 0.0)),
+        (b"DELTA_MOVE 1 2 3\x00 4\r\n", cmd.MoveBy(1.0, 2.0, 3.0)),
+        (b"GET_ID\x00ABSOLUTE_MOVE 100 0 0\n", None),
+        (b"GET\x00_ID\xff\n", None),  # what follows the NUL is not read, non-ASCII or not
         (b"GET_ID\n", None),
         (b"SET_SPEED 5\n", None),
         (b"FROB 1\n", None),  # the firmware answers "Unknown command": nothing moves
@@ -85,6 +90,9 @@ def test_coxiris_reads_what_moves(data: bytes, expected: cmd.Command | None) -> 
         b"ABSOLUTE_MOVE 1 2\n",
         b"DELTA_MOVE 1 2 3 4\n",
         b"DELTA_MOVE a 0 0\n",
+        b"GO_HOME\x00",  # a NUL is no line end: the device would wait for the rest
+        b"ABSOLUTE_MOVE 5\x00 0 0\n",  # the firmware reads `ABSOLUTE_MOVE 5`: missing parameters
+        b"\x00ABSOLUTE_MOVE 100 0 0\n",  # an empty command: the firmware does nothing
     ],
 )
 def test_coxiris_cannot_read(data: bytes) -> None:
@@ -191,6 +199,21 @@ def test_a_raw_move_is_checked_like_a_typed_one() -> None:
         clamping.raw_move(protocol, move, (0.0, 0.0, 0.0), 0.01, notes.append)
 
 
+def test_a_raw_move_cut_by_a_nul_is_checked_as_the_firmware_runs_it() -> None:
+    """The firmware moves to 5, not 100: the guard checks a move to 5 (inside the box)."""
+    protocol, guard = CoxirisProtocol(), MotionGuard(TravelLimits(BOX))
+    notes: list[str] = []
+    move = guard.read_raw(protocol, b"ABSOLUTE_MOVE 5 0 0\x00ABSOLUTE_MOVE 100 0 0\n")
+    assert move == cmd.MoveTo(5.0, 0.0, 0.0)
+    planned = guard.raw_move(protocol, move, (0.0, 0.0, 0.0), 0.01, notes.append)
+    assert planned.target == (5.0, 0.0, 0.0) and notes == []
+    # The other way round: what the firmware runs is outside the box, what follows is not.
+    with pytest.raises(BadInput, match="X 100 mm is outside"):
+        hidden = guard.read_raw(protocol, b"ABSOLUTE_MOVE 100 0 0\x00ABSOLUTE_MOVE 5 0 0\n")
+        assert hidden is not None
+        guard.raw_move(protocol, hidden, (0.0, 0.0, 0.0), 0.01, notes.append)
+
+
 def test_a_program_outside_the_box_is_refused_before_anything_is_sent() -> None:
     link = open_link("sim://laser-frame?instant=1", 115200)
     recorder = Recorder()
@@ -224,6 +247,21 @@ def test_raw_moves_outside_the_box_are_never_sent(
     assert b"MOVE" not in recorder.sent()
     report = motion.send_raw(b"ABSOLUTE_MOVE 10 0 0\n")
     assert isinstance(report, PositionReport) and (report.x, report.y) == (10.0, 0.0)
+
+
+def test_a_raw_move_cut_by_a_nul_goes_where_the_firmware_takes_it(
+    motion: Motion, sim_link: tuple[Link, Recorder]
+) -> None:
+    _, recorder = sim_link
+    motion.travel = TravelLimits(BOX)
+    data = b"ABSOLUTE_MOVE 5 0 0\x00ABSOLUTE_MOVE 100 0 0\n"
+    report = motion.send_raw(data)
+    assert isinstance(report, PositionReport) and (report.x, report.y, report.z) == (5.0, 0, 0)
+    assert data in recorder.sent()
+    assert motion.client.execute(cmd.GetPosition()).value == PositionReport(5.0, 0.0, 0.0)
+    with pytest.raises(BadInput, match="X 100 mm is outside"):
+        motion.send_raw(b"ABSOLUTE_MOVE 100 0 0\x00ABSOLUTE_MOVE 5 0 0\n")
+    assert motion.client.execute(cmd.GetPosition()).value == PositionReport(5.0, 0.0, 0.0)
 
 
 @pytest.mark.sim_url("sim://coxiris?speed=2")

@@ -31,7 +31,7 @@ from drivers.protocols.base import Exchange, Protocol
 MAX_COMMAND_LENGTH = 63  # the firmware's 64-byte buffer keeps 63 characters and a NUL
 HELP_LINE_COUNT = 12
 UNKNOWN_COMMAND = "Unknown command - "
-LINE_ENDS = b"\r\n\0"  # the firmware ends a command at CR, LF or NUL
+LINE_ENDS = b"\r\n"  # only CR or LF ends a line (a NUL cuts the command: parsed_part)
 NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)")  # what the firmware takes as a number
 MOVES = ("ABSOLUTE_MOVE", "DELTA_MOVE")
 TOO_LONG = "Command too long"
@@ -106,6 +106,14 @@ def command_line(command: Command) -> str:
             )
         )
     return line
+
+
+def parsed_part(line: bytes) -> bytes:
+    """What the firmware parses of a line: the bytes before its first NUL.
+
+    A NUL does not end a line and still counts toward the 63 characters, but the parser reads
+    the line as a C string, so the rest of it is ignored (PROTOCOLS.md §1, coxiris-nul.json)."""
+    return line.split(b"\0", 1)[0]
 
 
 def expected_name(line: str) -> str:
@@ -288,7 +296,7 @@ class CoxirisProtocol(Protocol):
 
     def sent_kind(self, frame: bytes) -> str:
         """Moves and homing are motion, GET_POSITION the poll, SET_* settings, the rest queries."""
-        name = frame.decode("latin-1").strip().split(" ", 1)[0].upper()
+        name = parsed_part(frame).decode("latin-1").strip().split(" ", 1)[0].upper()
         if name in ("ABSOLUTE_MOVE", "DELTA_MOVE", "GO_HOME"):
             return "motion"
         if name == "GET_POSITION":
@@ -316,16 +324,17 @@ class CoxirisProtocol(Protocol):
                 break
         else:
             return None  # not ended: the device waits for more, nothing to follow yet
-        if b"\r" in line or b"\n" in line or not line.strip() or not line.isascii():
+        if b"\r" in line or b"\n" in line:
             return None
-        text = line.decode("ascii")
-        return CoxirisExchange(Raw(line), expected_name(text))
+        parsed = parsed_part(line)
+        if not parsed.strip() or not parsed.isascii():
+            return None  # nothing before a NUL is a blank line: no reply at all
+        return CoxirisExchange(Raw(line), expected_name(parsed.decode("ascii")))
 
     def sent_commands(self, data: bytes) -> list[Command | None]:
-        """Every line in console bytes (CR, LF and NUL end one, as in the firmware)."""
-        for end in b"\r\0":
-            data = data.replace(bytes((end,)), b"\n")
-        lines = data.split(b"\n")
+        """Every line in console bytes as the firmware reads them: CR or LF ends a line, and
+        a line's command is what precedes its first NUL."""
+        lines = data.replace(b"\r", b"\n").split(b"\n")
         if lines[-1]:
             raise FrameError(
                 Message(
@@ -333,16 +342,17 @@ class CoxirisProtocol(Protocol):
                     line=lines[-1].decode("latin-1"),
                 )
             )
-        commands = [self.sent_command(line) for line in lines[:-1] if line.strip()]
+        commands = [self.sent_command(line) for line in lines[:-1] if parsed_part(line).strip()]
         if not commands:
             raise FrameError(Message("an empty line: the device ignores it"))
         return commands
 
     def sent_command(self, frame: bytes) -> Command | None:
         """`ABSOLUTE_MOVE x y z`, `DELTA_MOVE dx dy dz` and `GO_HOME` move (any case, as the
-        firmware upper-cases the line); a move without exactly three numbers cannot be read."""
+        firmware upper-cases the line; what follows a NUL is not read); a move without exactly
+        three numbers cannot be read."""
         try:
-            line = frame.decode("ascii").strip(" \t\r\n\v\f").upper()
+            line = parsed_part(frame).decode("ascii").strip(" \t\r\n\v\f").upper()
         except UnicodeDecodeError as exc:
             raise FrameError(Message("non-ASCII bytes: COXIRIS takes ASCII text only")) from exc
         name, _, rest = line.partition(" ")

@@ -11,8 +11,9 @@ from drivers.sim.stage import Stage
 
 DEVICE_ID = "CX25F7TK9P"
 BUFFER_SIZE = 64  # the parser keeps 63 characters; the 64th before a terminator overflows
-# CR or LF ends a line (PROTOCOLS.md §1); on the real parser a NUL does too (issue 11).
-LINE_ENDS = frozenset(b"\r\n\0")
+# Only CR or LF ends a line. A NUL is stored like any other character (it counts toward the 63),
+# but the parser reads the line as a C string: the command ends at the first NUL (PROTOCOLS.md §1).
+LINE_ENDS = frozenset(b"\r\n")
 _NUMBER = re.compile(rb"[+-]?(?:\d+\.?\d*|\.\d+)")
 
 HELP_LINES = (
@@ -100,7 +101,7 @@ class CoxirisDevice(SimulatedDevice):
 
     # -- the parser ----------------------------------------------------------------------
     def handle_byte(self, byte: int, t: float) -> None:
-        """CommandParser.read(): collect a line; CR, LF or NUL ends it."""
+        """CommandParser.read(): collect a line (a NUL too); CR or LF ends it."""
         if self.mute:
             return
         if byte in LINE_ENDS:
@@ -121,7 +122,7 @@ class CoxirisDevice(SimulatedDevice):
         self.emit(text.encode("latin-1") + b"\r\n", t)
 
     def _execute(self, raw: bytes, t: float) -> None:
-        line = raw.strip(b" \t\r\n\v\f").upper()
+        line = raw.split(b"\0", 1)[0].strip(b" \t\r\n\v\f").upper()
         if not line:
             return
         name, _, rest = line.partition(b" ")
