@@ -9,11 +9,12 @@ import serial
 
 import drivers.transport  # noqa: F401  (registers the sim:// handler)
 from app.simcli import build_parser
+from drivers.protocols.visiomex_timing import stepping_start
 from drivers.sim.clock import ManualClock
 from drivers.sim.registry import create_device
-from drivers.sim.visiomex_device import BOOT_PARAMETERS, SILENCE, VisiomexDevice
+from drivers.sim.visiomex_device import POWER_ON, SILENCE, VisiomexDevice
 
-STEP = 2 * 4000e-6 + 575e-6  # one default step: two 4000 us delays plus the loop
+STEP = 4000e-6 + 4000e-6  # one power-on X step: 15 high, 16 low (PROTOCOLS.md §2b)
 
 
 def _device(**options: object) -> tuple[VisiomexDevice, ManualClock]:
@@ -41,6 +42,11 @@ def _debug(out: bytes) -> dict[str, str]:
     return dict(line.split(": ", 1) for line in lines if ": " in line)
 
 
+def _lead(out: bytes) -> float:
+    """From the reply's first byte to the start of stepping: FP0001 enters the TX buffer."""
+    return stepping_start(out.index(b"FP0001\r\n") + len(b"FP0001\r\n"))
+
+
 def _move(device: VisiomexDevice, clock: ManualClock, packet: bytes) -> dict[str, str]:
     out = _ask(device, clock, packet)
     assert out.endswith(b"FP0001\r\nFA0001\r\n"), out
@@ -65,7 +71,7 @@ def test_two_packets_within_a_second_merge_and_only_the_first_counts() -> None:
     assert _drain(device, clock) == b"FS0005\r\n"
     assert clock.now == pytest.approx(1.5)
     assert device.parameters[5] == 300
-    assert device.parameters[6] == BOOT_PARAMETERS[6]
+    assert device.parameters[6] == POWER_ON[6]
 
 
 def test_packets_more_than_a_second_apart_get_two_replies() -> None:
@@ -80,10 +86,11 @@ def test_bytes_sent_during_a_move_are_answered_one_second_after_fa() -> None:
     device, clock = _device()
     device.receive(b"MLP0010000P0010000")
     clock.advance(1.0)
-    assert device.read_output().endswith(b"FP0001\r\n")
+    out = device.read_output()
+    assert out.endswith(b"FP0001\r\n")
     clock.advance(1.0)
     device.receive(b"S05000200NNNNNNNNN")
-    fa_at = 1.0 + 400 * STEP
+    fa_at = 1.0 + _lead(out) + 400 * STEP
     clock.now = fa_at
     assert device.read_output() == b"FA0001\r\n"
     clock.now = fa_at + SILENCE - 0.01
@@ -140,12 +147,12 @@ def test_every_set_forces_the_lead_screw() -> None:
 def test_fullcycle_and_microstep_change_the_steps() -> None:
     device, clock = _device()
     assert _move(device, clock, b"MLP0010000P0000000")["Step x"] == "400"
-    _ask(device, clock, b"S05000400NNNNNNNNN")
+    _ask(device, clock, b"S05000800NNNNNNNNN")
     assert _move(device, clock, b"MLP0010000P0000000")["Step x"] == "800"
     _ask(device, clock, b"S07000004NNNNNNNNN")
-    assert _move(device, clock, b"MLP0010000P0000000")["Step x"] == "1600"
+    assert _move(device, clock, b"MLP0010000P0000000")["Step x"] == "3200"
     _ask(device, clock, b"S06000100NNNNNNNNN")
-    assert _move(device, clock, b"MLP0000000P0010000")["Step y"] == "200"
+    assert _move(device, clock, b"MLP0000000P0010000")["Step y"] == "100"
 
 
 def test_thread_distance_set_after_boot_changes_nothing() -> None:
@@ -160,34 +167,49 @@ def test_thread_distance_set_after_boot_changes_nothing() -> None:
 def test_move_timing_depends_on_x_alone_by_default() -> None:
     device, clock = _device()
     device.receive(b"MLP0001000N0050000")
-    _drain(device, clock)
-    assert clock.now == pytest.approx(1.0 + 40 * STEP)
+    out = _drain(device, clock)
+    assert clock.now == pytest.approx(1.0 + _lead(out) + 40 * STEP)
     assert device.position() == pytest.approx((1.0, 0.0))
     assert device.firmware_position == pytest.approx((1.0, -50.0))
 
 
-def test_y_loop_runs_step_count_acceleration_y() -> None:
+def test_y_never_moves_at_power_on_and_a_set_of_20_changes_nothing() -> None:
     device, clock = _device()
-    _ask(device, clock, b"S20000010NNNNNNNNN")
+    _ask(device, clock, b"S20000010NNNNNNNNN")  # recomputed at the move
     start = clock.now
-    debug = _move(device, clock, b"MLP0000000N0050000")
-    assert debug["Step y"] == "2000"
-    assert clock.now - start == pytest.approx(1.0 + 10 * STEP)
-    assert device.position() == pytest.approx((0.0, -0.25))
+    device.receive(b"MLP0000000N0050000")
+    out = _drain(device, clock)
+    assert _debug(out)["Step y"] == "2000"
+    assert clock.now - start == pytest.approx(1.0 + _lead(out))
+    assert device.position() == (0.0, 0.0)
+    assert device.parameters[20] == 0
+
+
+def test_y_loop_runs_the_ramp_count() -> None:
+    device, clock = _device()
+    _ask(device, clock, b"S22006000NNNNNNNNN")
+    _ask(device, clock, b"S24000001NNNNNNNNN")  # ramp length A_y = 14
+    start = clock.now
+    device.receive(b"MLP0000000N0050000")
+    out = _drain(device, clock)
+    ramp = 2 * (4000 + 5000 + sum(5000 - k * 5000 // 14 for k in range(1, 13))) * 1e-6
+    assert clock.now - start == pytest.approx(1.0 + _lead(out) + ramp)
+    assert device.position() == pytest.approx((0.0, -14 * 10 / 400))
+    assert (device.parameters[20], device.parameters[16]) == (14, 358)
 
 
 def test_position_moves_x_then_y() -> None:
     device, clock = _device()
-    _ask(device, clock, b"S20000400NNNNNNNNN")
+    _ask(device, clock, b"S22006000NNNNNNNNN")
+    _ask(device, clock, b"S24000001NNNNNNNNN")  # Y makes 14 steps
     start = clock.now
     device.receive(b"MLN0010000P0010000")
-    t0 = clock.advance(1.0)
-    device.read_output()  # the packet ends: the move starts
-    assert start + 1.0 == pytest.approx(t0)
+    clock.advance(1.0)
+    t0 = start + 1.0 + _lead(device.read_output())  # stepping starts
     assert device.position(t0 + 200 * STEP) == pytest.approx((-5.0, 0.0))
     assert device.position(t0 + 400 * STEP) == pytest.approx((-10.0, 0.0))
-    assert device.position(t0 + 600 * STEP) == pytest.approx((-10.0, 5.0))
-    assert device.position(t0 + 900 * STEP) == pytest.approx((-10.0, 10.0))
+    _drain(device, clock)
+    assert device.position() == pytest.approx((-10.0, 14 * 10 / 400))
 
 
 def test_type_letter_is_not_inspected() -> None:
@@ -264,7 +286,7 @@ def test_prefixed_variant_marks_feedback_only() -> None:
 
 def test_board12_set_move_and_go_home() -> None:
     device, clock = _device(variant="board12")
-    assert _ask(device, clock, b"S05000400NNN") == b"FS0005\r\n"
+    assert _ask(device, clock, b"S05000800NNN") == b"FS0005\r\n"
     debug = _move(device, clock, b"MLP0010N0005")
     assert (debug["Distance x (mm)"], debug["Step x"]) == ("10.00", "800")
     assert (debug["Distance y (mm)"], debug["Step y"]) == ("5.00", "200")
@@ -319,10 +341,12 @@ def test_documented_firmware_rotational_and_step_moves() -> None:
     assert (debug["Distance y (mm)"], debug["Step y"]) == ("1.00", "40")
     assert device.position() == pytest.approx((2.5, -1.0))
     start = clock.now
-    debug = _move(device, clock, b"MSP0000100P0000040")
+    device.receive(b"MSP0000100P0000040")
+    out = _drain(device, clock)
+    debug = _debug(out)
     assert (debug["Step x"], debug["Step y"], debug["Degree y"]) == ("100", "40", "36.00")
     # The Y loop runs Step y here: 140 steps in all.
-    assert clock.now - start == pytest.approx(1.0 + 140 * STEP)
+    assert clock.now - start == pytest.approx(1.0 + _lead(out) + 140 * STEP)
 
 
 def test_documented_firmware_board12_lone_d_goes_home() -> None:

@@ -64,7 +64,9 @@ def test_transcript_in_order_byte_for_byte_and_in_time(baud: int | None, variant
             assert chunks[0][0] == pytest.approx(recorded[0][0], abs=0.03), sent
         for (at, data), (recorded_at, text) in zip(chunks[1:], recorded[1:], strict=True):
             assert data == _as_sent_by(variant, text), sent
-            assert at == pytest.approx(recorded_at, abs=0.05), sent
+            # This older recording's host paced its steps differently (FA0001 of 100 steps at
+            # 1.86 s; visiomex-moves.json, the §2b reference, has 1.99 s): ±10 % as the issue asks.
+            assert at == pytest.approx(recorded_at, rel=0.10), sent
         clock.advance(0.2)
 
 

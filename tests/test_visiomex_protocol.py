@@ -13,7 +13,7 @@ from drivers.events import ErrorReport, Feedback, TextLine
 from drivers.motion import Motion
 from drivers.param_profile import ProfileError, format_profile, parse_profile
 from drivers.protocols.visiomex import VisiomexProtocol
-from drivers.protocols.visiomex_model import move_seconds
+from drivers.protocols.visiomex_model import POWER_ON
 from drivers.protocols.visiomex_params import DEFAULTS, PARAMETERS
 from drivers.registry import create_protocol
 from drivers.traffic import TX
@@ -49,7 +49,7 @@ SCALING = [
     (26, "delta_t_y", "s", 0, "000000"),
     (27, "driving_mechanism", "", 0, "000000"),
 ]
-OUTPUTS = {11, 12, 15, 16, 17, 18, 19, 20, 25, 26}
+OUTPUTS = {11, 12, 17, 18, 19, 20, 25, 26}  # 15/16 steer every move (§2b): inputs
 
 
 def test_the_table_covers_every_parameter_once() -> None:
@@ -176,18 +176,43 @@ def test_the_firmware_forces_the_driving_mechanism() -> None:
     assert protocol.known[27] == 1 and protocol.known[3] == 38.2
 
 
-def test_move_time_model_matches_the_recording() -> None:
-    # transcripts/visiomex.json: FA0001 4.43 s after MLP0010000P0010000, 1.86 s after 2.5 mm
-    assert 1.0 + move_seconds(DEFAULTS, 10, 0) == pytest.approx(4.43, abs=0.02)
-    assert 1.0 + move_seconds(DEFAULTS, 2.5, 0) == pytest.approx(1.86, abs=0.02)
-    slower = dict(DEFAULTS) | {15: 8000}
-    assert move_seconds(slower, 10, 0) == pytest.approx(2 * move_seconds(DEFAULTS, 10, 0), 0.1)
+def test_defaults_are_the_firmware_power_on_values() -> None:
+    assert DEFAULTS == POWER_ON
+    assert (DEFAULTS[5], DEFAULTS[7]) == (400, 1)  # 400 full steps × 1, not 200 × 2
+
+
+def test_written_outputs_are_reported_as_the_firmware_recomputes_them() -> None:
+    protocol = VisiomexProtocol()
+    written = protocol.parameter_written(cmd.SetParameter(17, 6000))
+    assert written.device_values["step_delay_acceleration_avg_x"] == 2500
+    assert any("recomputes step_delay_acceleration_avg_x" in note for note in written.notes)
+    assert protocol.known[17] == 2500
+    written = protocol.parameter_written(cmd.SetParameter(1, 5))
+    assert any("only at boot" in note for note in written.notes)
+    assert protocol.firmware.steps("x", 10_000) == 400  # the boot's cycle, 10 mm
+
+
+def test_move_timing_follows_the_firmware_state_and_moves_sent() -> None:
+    protocol = VisiomexProtocol()
+    move = cmd.MoveBy(10.0, 10.0, 0.0)
+    delay, duration = protocol.move_timing(move, (0, 0, 0), (10, 10, 0))
+    transmit = 18 * 10 / 9600
+    # visiomex-moves.json: FA0001 4.382 s after MLP0010000P0010000 at power-on (Y never moves)
+    assert delay + duration - transmit == pytest.approx(4.382, rel=0.02)
+    assert duration == pytest.approx(400 * 0.008)
+    protocol.parameter_written(cmd.SetParameter(15, 8000))
+    slower = sum(protocol.move_timing(move, (0, 0, 0), (10, 10, 0)))
+    assert slower - (delay + duration) == pytest.approx(400 * 0.004)
+    assert protocol.firmware.values[19] == 50  # power-on: replaced at the first move
+    protocol.on_sent(move)
+    assert (protocol.firmware.values[19], protocol.firmware.values[20]) == (0, 0)
 
 
 def test_profile_round_trip_and_bad_profiles() -> None:
     values = {p.name: p.default for p in PARAMETERS}
     text = format_profile(values, PARAMETERS, "visiomex")
-    assert parse_profile(text, PARAMETERS, "visiomex") == values
+    inputs = {p.name: p.default for p in PARAMETERS if not p.output}  # outputs are never written
+    assert parse_profile(text, PARAMETERS, "visiomex") == inputs
     bad = text.replace("pulley_diameter_x = 38.2", "pulley_diameter_x = 38.25")
     with pytest.raises(ProfileError, match=r"line \d+: pulley_diameter_x: 38.25 mm refused"):
         parse_profile(bad, PARAMETERS, "visiomex")

@@ -18,13 +18,20 @@ from drivers.events import ErrorReport, Event, Feedback, TextLine
 from drivers.framers.lines import LineFramer
 from drivers.messages import Message
 from drivers.parameters import ParameterWritten
+from drivers.position_count import firmware_move_mm
+from drivers.protocols import visiomex_advice
 from drivers.protocols.base import Exchange, Point, Protocol, Variant
+from drivers.protocols.visiomex_estimate import move_seconds
 from drivers.protocols.visiomex_model import (
+    BOOT_ONLY,
+    FULLCYCLE,
+    MICROSTEP,
+    NEVER_READ,
+    OVERWRITTEN_AFTER_SET,
+    OVERWRITTEN_AT_MOVE,
     SILENCE,
-    cycle_mm,
-    derived_values,
-    move_seconds,
-    steps_per_cycle,
+    FirmwareState,
+    parse_atof,
 )
 from drivers.protocols.visiomex_params import (
     BY_ID,
@@ -61,7 +68,6 @@ _CODE = re.compile(r"(?:FS|FP|FA|EP|EF)\d{4}")
 _UNITS = {"linear": "mm", "rotational": "°", "steps": Message("steps")}
 _GO_HOME = Message("go home")
 BOOT_BANNER = "Checkpoint 2"  # setup() prints it at every boot
-BOOT_ONLY = (1, 2, 3, 4)  # the cycle length is computed at boot only
 
 
 @dataclass(frozen=True)
@@ -213,14 +219,20 @@ class VisiomexProtocol(Protocol):
             )
         self.known: dict[int, float] = dict(DEFAULTS)
         """What the device holds, as far as the panel knows: boot defaults and confirmed sets."""
+        self.firmware = FirmwareState.boot()
+        """The firmware's own state (PROTOCOLS.md §2b): every confirmed set and every move sent
+        advance it, so estimates follow what the device computes."""
 
     def assume_parameters(self, values: dict[str, float]) -> None:
         """Take values written earlier (saved by the panel) as what the device holds."""
         for name, value in values.items():
             try:
-                self.known[self.parameter(name).id] = value
+                parameter = self.parameter(name)
+                wire = parameter.to_wire(value)
             except BadInput:
-                continue  # a name from an older version of the panel
+                continue  # a name from an older version of the panel, or a value out of range
+            self.known[parameter.id] = value
+            self.firmware.set(parameter.id, wire)
 
     # -- encoding ----------------------------------------------------------------------------
     def new_framer(self) -> LineFramer:
@@ -389,13 +401,22 @@ class VisiomexProtocol(Protocol):
 
     def _raw_move_seconds(self, text: str) -> float:
         """Time a console move packet takes: its distances read as the firmware reads them."""
-        d, per = self.format.digits, self.format.per_mm
-        try:
-            dx = int(text[3 : 3 + d]) / per
-            dy = int(text[4 + d : 4 + 2 * d]) / per
-        except ValueError:
-            dx = dy = 10**d / per  # unreadable digits: allow the longest move
-        return move_seconds(self.known, dx, dy) * 1.5
+        return (self.move_packet_seconds(text) - SILENCE) * 1.5
+
+    def move_packet_seconds(self, text: str) -> float:
+        """Seconds from a move packet's last byte to the end of its `FA0001`, as the firmware
+        will take them from the state it is in now (PROTOCOLS.md §2b)."""
+        return move_seconds(self.firmware, *self._firmware_reads(text))
+
+    def _firmware_reads(self, text: str) -> tuple[float, float, int]:
+        """A move packet as this firmware reads it: X and Y in µm (`atof`, whatever the type
+        letter), and how many direction letters it answers EP0003 for."""
+        d = self.format.digits
+        x_um, y_um = (
+            parse_atof(text[start : start + d]) * 1000 / self.format.per_mm for start in (3, 4 + d)
+        )
+        bad = sum(1 for i in (2, 3 + d) if text[i : i + 1] not in ("P", "N"))
+        return x_um, y_um, bad
 
     def new_tx_framer(self) -> None:
         """A packet has no terminator: each write is one packet."""
@@ -482,63 +503,115 @@ class VisiomexProtocol(Protocol):
 
     # -- what the panel knows of the device ---------------------------------------------------
     def parameter_written(self, command: SetParameter) -> ParameterWritten:
-        """Keep the value; the firmware then forces driving_mechanism to 1 (PROTOCOLS.md §2)."""
+        """Keep the value and recompute as the firmware does (PROTOCOLS.md §2b): it forces
+        driving_mechanism to 1 and overwrites its outputs after every set."""
         parameter = self.parameter(command.param_id)
         self.known[parameter.id] = command.value
+        self.firmware.set(parameter.id, parameter.to_wire(command.value))
         notes = []
         forced: dict[str, float] = {}
         if self.known[DRIVING_MECHANISM_ID] != 1:
             notes.append(Message("the firmware forces driving_mechanism to 1 after every set"))
         self.known[DRIVING_MECHANISM_ID] = 1
         forced[BY_ID[DRIVING_MECHANISM_ID].name] = 1.0
-        if parameter.id in BOOT_ONLY:
+        if parameter.id in OVERWRITTEN_AFTER_SET:
+            held = float(self.firmware.values[parameter.id])
+            self.known[parameter.id] = held
+            forced[parameter.name] = held
             notes.append(
                 Message(
-                    "this firmware revision reads {parameter} only at boot (and keeps pulley "
-                    "values divided by 4): moves do not change until the firmware is fixed",
+                    "the firmware recomputes {parameter} after every set: this value will not "
+                    "stay (it holds {held:g})",
+                    parameter=parameter.name,
+                    held=held,
+                )
+            )
+        elif parameter.id in OVERWRITTEN_AT_MOVE:
+            notes.append(
+                Message(
+                    "the firmware recomputes {parameter} at every move: this value will not stay",
+                    parameter=parameter.name,
+                )
+            )
+        elif parameter.id in BOOT_ONLY:
+            notes.append(
+                Message(
+                    "this firmware revision reads {parameter} only at boot: moves do not "
+                    "change until the device restarts",
+                    parameter=parameter.name,
+                )
+            )
+        elif parameter.id in NEVER_READ - {DRIVING_MECHANISM_ID}:
+            notes.append(
+                Message(
+                    "this firmware revision never reads {parameter}: moves do not change",
                     parameter=parameter.name,
                 )
             )
         return ParameterWritten(parameter, command.value, forced, tuple(notes))
 
+    def on_sent(self, command: Command) -> None:
+        """A move went out: the firmware recomputes 19/20 and its ramps leave 15/16 changed."""
+        reads = self._move_reads(command)
+        if reads is not None:
+            self.firmware.move(reads[0], reads[1])
+
+    def _move_reads(self, command: Command) -> tuple[float, float, int] | None:
+        """What the firmware reads from a move command's packet (None: not a move packet)."""
+        if isinstance(command, Raw):
+            text = command.data.decode("latin-1")
+        elif isinstance(command, (MoveBy, Home)):
+            try:
+                text = self.packet(command)
+            except BadInput:
+                return None
+        else:
+            return None
+        if not text.startswith("M"):
+            return None
+        return self._firmware_reads(text)
+
     def move_timing(self, command: Command, start: Point, target: Point) -> tuple[float, float]:
-        """The packet's silence window, then the firmware's stepping time."""
+        """Until stepping starts (the packet, 1 s of silence, the debug lines going out), then
+        until `FA0001` has come: from the firmware's state, as it stands before this move."""
         transmit = self.format.length * 10 / (self.variant_baud() or 9600)
-        dx, dy = target[0] - start[0], target[1] - start[1]
-        return SILENCE + transmit, move_seconds(self.known, dx, dy)
+        reads = self._move_reads(command)
+        if reads is None:  # `D` (board12) or a command without a packet: the distance given
+            dx, dy = target[0] - start[0], target[1] - start[1]
+            reads = (abs(dx) * 1000, abs(dy) * 1000, 0)
+        total = move_seconds(self.firmware, *reads)
+        stepping = min(self.firmware.copy().move(reads[0], reads[1]).seconds, total - SILENCE)
+        return transmit + total - stepping, stepping
 
     def derived_values(self, values: dict[str, float]) -> list[tuple[str, str]]:
-        """mm per step, steps per mm and a 10 mm move's time, from the values given by name."""
-        by_id = dict(self.known)
-        for name, value in values.items():
-            by_id[self.parameter(name).id] = value
-        rows = derived_values(by_id)
-        boot = {i: DEFAULTS[i] for i in BOOT_ONLY} | {DRIVING_MECHANISM_ID: 1.0}
-        if any(by_id[i] != boot[i] for i in boot):
-            rows.append(
-                (
-                    Message("Note"),
-                    Message(
-                        "this firmware revision moves by the cycle it computed at boot "
-                        "(10 mm lead screw), whatever 01-04 and 27 say"
-                    ),
-                )
-            )
-        return rows
+        """What the firmware will do with these values (by name): visiomex_advice."""
+        return visiomex_advice.derived_values(
+            {self.parameter(name).id: value for name, value in values.items()}
+        )
+
+    def write_warning(self, param_id: int) -> str:
+        """What writing this parameter will not do on this firmware (visiomex_advice)."""
+        return visiomex_advice.write_warning(param_id)
 
     def variant_baud(self) -> int:
         """The line rate of the chosen variant."""
         return type(self).default_baud(self.variant.name if self.variant else None)
 
     def kind_to_length(self, command: MoveBy) -> Point:
-        """Degrees and steps to mm, by the cycle length and the steps per turn."""
+        """Degrees and steps to mm: as the firmware reads the packet (the seed firmware takes
+        the digits as µm whatever the type letter), else by the cycle length and steps per turn."""
         if command.kind == "linear":
             return (command.dx, command.dy, command.dz)
+        moved = firmware_move_mm(self, self.encode(command))
+        if moved is not None:
+            return moved
         values = []
-        for axis, value in (("x", command.dx), ("y", command.dy)):
-            cycle = cycle_mm(DEFAULTS, axis)  # the firmware's boot-time cycle
+        firmware = self.firmware.values
+        for axis, value in enumerate((command.dx, command.dy)):
+            cycle = self.firmware.cycle[axis]  # the firmware's boot-time cycle
             if command.kind == "rotational":
                 values.append(value / 360 * cycle)
             else:
-                values.append(value / max(steps_per_cycle(self.known, axis), 1) * cycle)
+                per_turn = int(firmware[FULLCYCLE[axis]]) * int(firmware[MICROSTEP[axis]])
+                values.append(value / max(per_turn, 1) * cycle)
         return (values[0], values[1], 0.0)

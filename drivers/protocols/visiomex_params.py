@@ -1,9 +1,9 @@
 """The 27 Visiomex VMR2P0R0001 parameters (PROTOCOLS.md §2, seed `001_*`).
 
 Scaling: the seed gives only the pulley diameter (mm×10: 38.2 mm -> `000382`); every other value
-is a whole number of its unit on the wire (project decision). Defaults are what the seed-revision
-firmware holds at power-on, as the simulator has them (a move of 10 mm is 400 steps: 10 mm thread,
-200 full steps, ×2 microstepping; 4000 µs step delays).
+is a whole number of its unit on the wire (project decision). Defaults are what the firmware
+holds at power-on after its boot recalculation (PROTOCOLS.md §2b, `visiomex_model.POWER_ON`):
+a move of 10 mm is 400 steps (10 mm thread, 400 full steps, ×1 microstepping), 4000 µs delays.
 """
 
 from __future__ import annotations
@@ -12,6 +12,7 @@ from typing import TypedDict, Unpack
 
 from drivers.messages import Message, message_template
 from drivers.parameters import Parameter
+from drivers.protocols.visiomex_model import POWER_ON
 
 DRIVING_MECHANISM_ID = 27
 SPEED_IDS = (21, 22)
@@ -52,7 +53,7 @@ PARAMETERS: tuple[Parameter, ...] = (
         "thread_distance",
         "mm",
         message_template("Lead-screw pitch of the {axis} axis (mm per turn)"),
-        10,
+        POWER_ON[1],
     ),
     *_pair(
         3,
@@ -61,7 +62,7 @@ PARAMETERS: tuple[Parameter, ...] = (
         message_template(
             "Belt pulley diameter of the {axis} axis; sent as mm×10 (38.2 mm -> 000382)"
         ),
-        38.2,
+        POWER_ON[3],
         scale=10,
     ),
     *_pair(
@@ -69,20 +70,28 @@ PARAMETERS: tuple[Parameter, ...] = (
         "motor_fullcycle_step",
         "steps",
         message_template("Full steps per motor turn, {axis} axis"),
-        200,
+        POWER_ON[5],
     ),
     *_pair(
-        7, "microstep_coeff", "×", message_template("Microstepping factor of the {axis} driver"), 2
+        7,
+        "microstep_coeff",
+        "×",
+        message_template("Microstepping factor of the {axis} driver"),
+        POWER_ON[7],
     ),
     *_pair(
-        9, "max_speed", "mm/s", message_template("Highest speed allowed on the {axis} axis"), 50
+        9,
+        "max_speed",
+        "mm/s",
+        message_template("Highest speed allowed on the {axis} axis"),
+        POWER_ON[9],
     ),
     *_pair(
         11,
         "step_delay_speed_steady",
         "µs",
         message_template("Step delay at the steady speed, {axis} axis (computed by the firmware)"),
-        4000,
+        POWER_ON[11],
         output=True,
     ),
     *_pair(
@@ -90,18 +99,17 @@ PARAMETERS: tuple[Parameter, ...] = (
         "step_delay_speed_min",
         "µs",
         message_template("Step delay at the lowest speed, {axis} axis"),
-        8000,
+        POWER_ON[13],
     ),
     *_pair(
         15,
         "step_delay_instantaneous",
         "µs",
         message_template(
-            "Current step delay, {axis} axis (computed by the firmware; this revision times every "
-            "step from it: one step is twice this delay)"
+            "Current step delay, {axis} axis (left by the firmware's ramps; this revision times "
+            "an X step as 15 high plus 16 low, a Y step as 16 twice)"
         ),
-        4000,
-        output=True,
+        POWER_ON[15],
     ),
     *_pair(
         17,
@@ -110,7 +118,7 @@ PARAMETERS: tuple[Parameter, ...] = (
         message_template(
             "Mean step delay while accelerating, {axis} axis (computed by the firmware)"
         ),
-        6000,
+        POWER_ON[17],
         output=True,
     ),
     *_pair(
@@ -118,7 +126,7 @@ PARAMETERS: tuple[Parameter, ...] = (
         "step_count_acceleration",
         "steps",
         message_template("Steps spent accelerating, {axis} axis (computed by the firmware)"),
-        0,
+        POWER_ON[19],
         output=True,
     ),
     *_pair(
@@ -126,21 +134,21 @@ PARAMETERS: tuple[Parameter, ...] = (
         "input_speed_steady",
         "mm/s",
         message_template("Requested steady speed of the {axis} axis"),
-        10,
+        POWER_ON[21],
     ),
     *_pair(
         23,
         "input_acceleration",
         "mm/s²",
         message_template("Requested acceleration of the {axis} axis"),
-        100,
+        POWER_ON[23],
     ),
     *_pair(
         25,
         "delta_t",
         "s",
         message_template("Duration of the last move, {axis} axis (computed by the firmware)"),
-        0,
+        POWER_ON[25],
         output=True,
     ),
     Parameter(

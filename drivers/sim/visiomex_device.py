@@ -1,4 +1,4 @@
-"""The Visiomex VMR2P0R0001 firmware as it behaves on the wire (PROTOCOLS.md §2)."""
+"""The Visiomex VMR2P0R0001 firmware as it behaves on the wire (PROTOCOLS.md §2 and §2b)."""
 
 from __future__ import annotations
 
@@ -6,37 +6,34 @@ import logging
 from dataclasses import dataclass
 
 from drivers.protocols.visiomex import BOOT_BANNER
-from drivers.sim.arduino import print_float, to_float32
-from drivers.sim.clock import Clock, monotonic
-from drivers.sim.device import SimulatedDevice
-from drivers.sim.visiomex_firmware import (
-    BOOT_PARAMETERS,
+from drivers.protocols.visiomex_model import (
     DRIVING_MECHANISM,
     FULLCYCLE,
     MICROSTEP,
+    POWER_ON,
+    SILENCE,
+    FirmwareState,
+    debug_lines,
+)
+from drivers.protocols.visiomex_timing import stepping_start
+from drivers.sim.clock import Clock, monotonic
+from drivers.sim.device import BITS_PER_BYTE, SimulatedDevice
+from drivers.sim.visiomex_firmware import (
     MOVE_TYPE,
     PARAMETER_COUNT,
     SET_ID,
     SET_VALUE,
-    STEP_COUNT_ACCELERATION_Y,
-    STEP_DELAY,
     VARIANTS,
     X_DIR,
     Variant,
-    atol,
-    c_div,
     char_at,
-    cycle_length,
-    f32_div,
-    steps_for,
+    parse_atof,
+    parse_atol,
 )
 
-__all__ = ["BOOT_PARAMETERS", "LOOP_OVERHEAD", "SILENCE", "VARIANTS", "VisiomexDevice"]
+__all__ = ["POWER_ON", "SILENCE", "VARIANTS", "VisiomexDevice"]
 
 log = logging.getLogger(__name__)
-
-SILENCE = 1.0  # Serial.readString() returns after this long without a byte
-LOOP_OVERHEAD = 575e-6  # per step, on top of the two step delays (fits the recording)
 
 
 @dataclass
@@ -53,9 +50,10 @@ class _Segment:
 class VisiomexDevice(SimulatedDevice):
     """The Nucleo sketch: fixed-position ASCII packets, framed by 1 s of silence.
 
-    `variant` picks the packet profile (`seed`, `prefixed`, `board12`); `bugs=True` reproduces
-    the public firmware's bugs, `bugs=False` the documented behaviour. `instant` makes stepping
-    take no time; `mute` makes a device that never sends anything.
+    `variant` picks the packet profile (`seed`, `prefixed`, `board12`); `bugs=True` is the public
+    firmware (PROTOCOLS.md §2b), `bugs=False` the documented behaviour (the same arithmetic and
+    timing, with the documented checks, units and Y loop). `instant` makes stepping take no
+    time; `mute` makes a device that never sends anything.
     """
 
     protocol = "visiomex"
@@ -80,12 +78,7 @@ class VisiomexDevice(SimulatedDevice):
         self.bugs = bugs
         self.instant = instant
         self.mute = mute
-        self._params = dict(BOOT_PARAMETERS)
-        # Computed once at power-on; later sets of 01-04 do not change it.
-        self.cycle: tuple[float, float] = (
-            cycle_length(self._params, 0),
-            cycle_length(self._params, 1),
-        )
+        self.state = FirmwareState.boot()
         self._packet = bytearray()
         self._last_read = 0.0
         self._count = (0.0, 0.0)
@@ -93,9 +86,14 @@ class VisiomexDevice(SimulatedDevice):
 
     # -- accessors -------------------------------------------------------------------------
     @property
-    def parameters(self) -> dict[int, int]:
-        """The stored parameters (wire integers by id), as the firmware holds them now."""
-        return dict(self._params)
+    def parameters(self) -> dict[int, float]:
+        """The stored parameters by id, as the firmware holds them now."""
+        return dict(self.state.values)
+
+    @property
+    def cycle(self) -> tuple[float, float]:
+        """The cycle lengths C (mm) read from 01/02 at boot."""
+        return self.state.cycle
 
     @property
     def firmware_position(self) -> tuple[float, float]:
@@ -118,7 +116,9 @@ class VisiomexDevice(SimulatedDevice):
 
     # -- serial framing ----------------------------------------------------------------------
     def boot(self) -> None:
-        """Power-on: the sketch prints `Checkpoint 2`."""
+        """Power-on: the values are the declared ones again; the sketch prints `Checkpoint 2`."""
+        self.state = FirmwareState.boot()
+        self._packet = bytearray()
         self._line(BOOT_BANNER, self.clock())
 
     def emit(self, data: bytes, at: float) -> None:
@@ -142,11 +142,13 @@ class VisiomexDevice(SimulatedDevice):
         self._execute(packet, now)
 
     # -- output ----------------------------------------------------------------------------
-    def _line(self, text: str, t: float) -> None:
-        self.emit(text.encode("latin-1") + b"\r\n", t)
+    def _line(self, text: str, t: float) -> int:
+        data = text.encode("latin-1") + b"\r\n"
+        self.emit(data, t)
+        return len(data)
 
-    def _feedback(self, code: str, t: float) -> None:
-        self._line(self.variant.prefix + code, t)
+    def _feedback(self, code: str, t: float) -> int:
+        return self._line(self.variant.prefix + code, t)
 
     # -- the sketch ------------------------------------------------------------------------
     def _execute(self, packet: str, t: float) -> None:
@@ -160,23 +162,29 @@ class VisiomexDevice(SimulatedDevice):
         elif kind == "G":
             pass  # no reply at all
         elif kind == "D" and self.variant.go_home:
-            self._go(-self._count[0], -self._count[1], t)
+            self._go_home(t)
         else:
             self._feedback("EP0002", t)
 
     def _set_packet(self, packet: str, t: float) -> None:
-        ident, value = atol(packet[SET_ID]), atol(packet[SET_VALUE])
+        ident, value = parse_atol(packet[SET_ID]), parse_atol(packet[SET_VALUE])
         if not 1 <= ident <= PARAMETER_COUNT:
             self._feedback("EP0006", t)
+            if self.bugs:
+                self.state.recalculate()  # after every S packet, EP0006 included
             return
-        if self.bugs and ident in (3, 4):
-            value = c_div(value, 4)  # firmware bug: the pulley diameter is stored divided by 4
-        if not self.bugs and ident == DRIVING_MECHANISM and value not in (0, 1):
+        if self.bugs:
+            self._feedback(f"FS{ident:04d}", t)
+            self.state.set(ident, value)  # stores, then recalculates (27 forced to 1)
+            return
+        if ident == DRIVING_MECHANISM and value not in (0, 1):
             self._feedback("EF0002", t)
             return
-        self._params[ident] = value
-        if self.bugs:
-            self._params[DRIVING_MECHANISM] = 1  # firmware bug: an assignment in a condition
+        # The documented firmware stores what it is sent and keeps the mechanism it was given.
+        mechanism = value if ident == DRIVING_MECHANISM else self.state.values[DRIVING_MECHANISM]
+        self.state.values[ident] = value
+        self.state.recalculate()
+        self.state.values[DRIVING_MECHANISM] = mechanism
         self._feedback(f"FS{ident:04d}", t)
 
     def _move_packet(self, packet: str, t: float) -> None:
@@ -186,78 +194,75 @@ class VisiomexDevice(SimulatedDevice):
             self._feedback("EP0003", t)
             return
         signs = []
+        sent = 0
         for axis, index in enumerate((X_DIR, v.y_dir)):
             direction = char_at(packet, index)
             if direction in ("P", "N"):
                 signs.append(-1 if direction == "N" else 1)
             elif self.bugs:
-                self._feedback("EP0003", t)  # firmware bug: EP0003, and the axis runs positive
+                sent += self._feedback("EP0003", t)  # and the axis runs positive
                 signs.append(1)
             else:
                 self._feedback("EP0004" if axis == 0 else "EP0005", t)
                 return
-        amounts = (atol(packet[v.x_digits]), atol(packet[v.y_digits]))
+        if self.bugs:  # the type letter is not read: the digits are µm (`atof`)
+            fields = (parse_atof(packet[v.x_digits]), parse_atof(packet[v.y_digits]))
+            micrometres = [f * 1000 / v.per_mm for f in fields]
+            self._go(micrometres, signs, t, sent)
+            return
+        amounts = (parse_atol(packet[v.x_digits]), parse_atol(packet[v.y_digits]))
         steps: tuple[int, int] | None = None
-        if self.bugs or kind == "L":  # the buggy firmware does not look at the type letter
-            distances = [f32_div(a, v.per_mm) for a in amounts]
+        if kind == "L":
+            micrometres = [a * 1000 / v.per_mm for a in amounts]
         elif kind == "R":
-            distances = [
-                to_float32(f32_div(a, 360) * c) for a, c in zip(amounts, self.cycle, strict=True)
-            ]
+            micrometres = [a / 360 * c * 1000 for a, c in zip(amounts, self.cycle, strict=True)]
         else:
-            distances = [
-                to_float32(f32_div(a, self._per_rev(i)) * self.cycle[i])
-                for i, a in enumerate(amounts)
-            ]
+            micrometres = [a / max(self._per_rev(i), 1) * self.cycle[i] * 1000 for i, a in
+                           enumerate(amounts)]  # fmt: skip
             steps = (amounts[0], amounts[1])
-        self._go(signs[0] * distances[0], signs[1] * distances[1], t, steps)
+        self._go(micrometres, signs, t, sent, steps)
+
+    def _go_home(self, t: float) -> None:
+        """`D` (board12): back to the origin by the commanded count."""
+        count = self._count
+        signs = [-1 if c > 0 else 1 for c in count]
+        self._go([abs(c) * 1000 for c in count], signs, t, 0)
 
     def _per_rev(self, axis: int) -> int:
-        return self._params[FULLCYCLE[axis]] * self._params[MICROSTEP[axis]]
+        values = self.state.values
+        return int(values[FULLCYCLE[axis]]) * int(values[MICROSTEP[axis]])
 
-    def _go(self, dx: float, dy: float, t: float, steps: tuple[int, int] | None = None) -> None:
+    def _go(
+        self,
+        micrometres: list[float],
+        signs: list[int],
+        t: float,
+        sent: int,
+        steps: tuple[int, int] | None = None,
+    ) -> None:
         """Print the debug lines and FP0001, step (blocking), then FA0001."""
-        p = self._params
-        distances = (abs(dx), abs(dy))
+        state = self.state
+        if not self.bugs:  # the documented firmware prints distances without their sign
+            micrometres = [abs(m) for m in micrometres]
+        for text in debug_lines(state, micrometres[0], micrometres[1]):
+            sent += self._line(text, t)
+        sent += self._feedback("FP0001", t)
         if steps is None:
-            x, y = (
-                steps_for(d, c, p[FULLCYCLE[i]], p[MICROSTEP[i]])
-                for i, (d, c) in enumerate(zip(distances, self.cycle, strict=True))
-            )
-            steps = (x, y)
-        degrees = [
-            to_float32(f32_div(d, c) * 360) for d, c in zip(distances, self.cycle, strict=True)
-        ]
-        lines = [
-            f"Driving Mechanism: {p[DRIVING_MECHANISM]}",
-            f"System cycle linear distance x: {print_float(self.cycle[0], 2)}",
-            f"System cycle linear distance y: {print_float(self.cycle[1], 2)}",
-            f"Distance x (mm): {print_float(distances[0], 2)}",
-            f"Distance y (mm): {print_float(distances[1], 2)}",
-            f"Degree x: {print_float(degrees[0], 2)}",
-            f"Degree y: {print_float(degrees[1], 2)}",
-            f"Step x: {steps[0]}",
-            f"Step y: {steps[1]}",
-        ]
-        for text in lines:
-            self._line(text, t)
-        self._feedback("FP0001", t)
-        # Firmware bug: the Y loop counts step_count_acceleration_y, not Step y.
-        y_loop = p[STEP_COUNT_ACCELERATION_Y] if self.bugs else steps[1]
-        loops = (max(0, steps[0]), max(0, y_loop))
-        durations = [0.0, 0.0]
+            steps = (state.steps("x", micrometres[0]), state.steps("y", micrometres[1]))
+        plan = state.move_steps(steps[0], steps[1], y_runs_steps=not self.bugs)
         moved = [0.0, 0.0]
-        for axis, sign in enumerate((-1 if dx < 0 else 1, -1 if dy < 0 else 1)):
+        for axis, loops in enumerate(plan.loops):
             if self._per_rev(axis):
-                moved[axis] = sign * loops[axis] * self.cycle[axis] / self._per_rev(axis)
-            if not self.instant:
-                step_time = max(0.0, 2 * p[STEP_DELAY[axis]] * 1e-6 + LOOP_OVERHEAD)
-                durations[axis] = loops[axis] * step_time
-        start = self.position(t)
+                moved[axis] = signs[axis] * loops * self.cycle[axis] / self._per_rev(axis)
+        # Stepping starts once FP0001 is in the 64-byte transmit buffer.
+        begin = t + stepping_start(sent, BITS_PER_BYTE / self.variant.baud)
+        durations = (0.0, 0.0) if self.instant else (plan.x_seconds, plan.y_seconds)
+        start = self.position(begin)
         self._segment = _Segment(
-            t, start, (start[0] + moved[0], start[1] + moved[1]), durations[0], durations[1]
+            begin, start, (start[0] + moved[0], start[1] + moved[1]), *durations
         )
-        self._count = (to_float32(self._count[0] + dx), to_float32(self._count[1] + dy))
-        done = t + durations[0] + durations[1]
+        dx, dy = (s * m / 1000 for s, m in zip(signs, micrometres, strict=True))
+        self._count = (self._count[0] + dx, self._count[1] + dy)
+        done = begin + durations[0] + durations[1] if not self.instant else t
         self.busy_until = done
         self._feedback("FA0001", done)
