@@ -45,8 +45,11 @@ def unit_shown(unit: str) -> str:
     return QCoreApplication.translate("ParameterDock", word) if word else unit
 
 
-def editor_rows(parameters: tuple[Parameter, ...]) -> list[ParameterRow]:
-    """The editor's plain rows for a protocol's parameters."""
+def editor_rows(
+    parameters: tuple[Parameter, ...], protocol: Protocol | None = None
+) -> list[ParameterRow]:
+    """The editor's plain rows for a protocol's parameters: with their power-on values, and
+    the protocol's warning for those whose written value will not do what it says."""
     return [
         ParameterRow(
             p.id,
@@ -57,6 +60,8 @@ def editor_rows(parameters: tuple[Parameter, ...]) -> list[ParameterRow]:
             p.step,
             p.output,
             localized(p.description),
+            power_on=p.default,
+            warning=localized(protocol.write_warning(p.id)) if protocol is not None else "",
         )
         for p in parameters
     ]
@@ -130,7 +135,7 @@ class ParameterDock(QObject):
             self.dock.hide()
             return
         self.protocol = create_protocol(info.protocol, info.variant or None)
-        self.editor.set_parameters(editor_rows(info.parameters))
+        self.editor.set_parameters(editor_rows(info.parameters, self.protocol))
         last = read_parameters(self.window.settings, info.protocol, info.port)
         self.protocol.assume_parameters(last)
         defaults = {p.name: p.default for p in info.parameters}
@@ -201,7 +206,13 @@ class ParameterDock(QObject):
         self.editor.set_status(
             written.parameter.id, CONFIRMED, "; ".join(localized(note) for note in written.notes)
         )
+        outputs = {row.name for row in self.editor.parameters() if row.output}
+        untouched = set(outputs) - set(self.editor.changed_names())
         self.editor.set_last_written({**self.editor.last_written(), **values})
+        # An output the firmware recomputed shows its new value where it was not edited.
+        recomputed = {n: v for n, v in written.device_values.items() if n in untouched}
+        if recomputed:
+            self.editor.set_values(recomputed)
         for other, value in written.device_values.items():
             self.editor.set_row_note(other, fill(self.tr(FORCED_NOTE), f"{value:g}"))
 
@@ -231,28 +242,34 @@ class ParameterDock(QObject):
                 self.tr("connect to a device with parameters first"), error=True
             )
             return
+        outputs: list[str] = []
         try:
-            values = read_profile(path, self.protocol.parameters, self.protocol.name)
+            values = read_profile(path, self.protocol.parameters, self.protocol.name, outputs)
         except BadInput as exc:
             self.editor.show_message(localized(exc), error=True)
             return
         self.editor.set_values(values)
-        self.editor.show_message(
-            fill(
-                self.tr("loaded %1 values from %2; nothing sent (Write changed sends them)"),
-                len(values),
-                path,
-            )
+        loaded = fill(
+            self.tr("loaded %1 values from %2; nothing sent (Write changed sends them)"),
+            len(values),
+            path,
         )
+        if outputs:
+            skipped = self.tr("left out, computed by the firmware: %1")
+            loaded = f"{loaded}; {fill(skipped, ', '.join(outputs))}"
+        self.editor.show_message(loaded)
 
     def save(self, path: str) -> None:
         """Save the editor's values as a profile."""
         if self.protocol is None:
             return
+        values = self.editor.values()
         try:
-            write_profile(path, self.editor.values(), self.protocol.parameters, self.protocol.name)
+            count = write_profile(path, values, self.protocol.parameters, self.protocol.name)
         except BadInput as exc:
             self.editor.show_message(localized(exc), error=True)
             return
-        saved = self.tr("saved %1 values to %2")
-        self.editor.show_message(fill(saved, len(self.editor.values()), path))
+        saved = fill(self.tr("saved %1 values to %2"), count, path)
+        if count < len(values):
+            saved = fill(self.tr("%1 (firmware outputs are never saved)"), saved)
+        self.editor.show_message(saved)

@@ -8,7 +8,10 @@
     pulley_diameter_x = 38.2      # mm · sent as mm×10
 
 Only `protocol` and the `[parameters]` table are read; values are numbers; names are the
-protocol's. A file is data: nothing in it is executed, and it is refused whole (nothing sent) if
+protocol's. Firmware outputs (parameters the firmware computes itself and overwrites, e.g. the
+Visiomex's 11, 12, 17-20, 25, 26) are never saved in a profile, and a profile that has them (an
+older one, or written by hand) has them checked and then left out: writing them changes nothing
+that stays. A file is data: nothing in it is executed, and it is refused whole (nothing sent) if
 any line is wrong, if it is not a regular file of at most `PROFILE_MAX_BYTES` (drivers/files.py),
 or not UTF-8 text.
 """
@@ -38,9 +41,14 @@ def _line_of(text: str, name: str) -> int | None:
 
 
 def parse_profile(
-    text: str, parameters: tuple[Parameter, ...], protocol: str, source: str = "profile"
+    text: str,
+    parameters: tuple[Parameter, ...],
+    protocol: str,
+    source: str = "profile",
+    outputs: list[str] | None = None,
 ) -> dict[str, float]:
-    """The values of a profile's text, every one checked; ProfileError on the first problem."""
+    """The input values of a profile's text, every one checked; ProfileError on the first
+    problem. Firmware outputs are left out (their names are appended to `outputs` if given)."""
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -115,39 +123,59 @@ def parse_profile(
                     range=parameter.range_text(),
                 )
             ) from None
+        if parameter.output:
+            if outputs is not None:
+                outputs.append(name)
+            continue  # the firmware computes it: never written from a profile
         values[name] = float(value)
+    if not values:
+        raise ProfileError(
+            Message(
+                "{source}: only firmware outputs ({names}), which a profile does not write",
+                source=source,
+                names=", ".join(table),
+            )
+        )
     return values
 
 
 def read_profile(
-    path: str | Path, parameters: tuple[Parameter, ...], protocol: str
+    path: str | Path,
+    parameters: tuple[Parameter, ...],
+    protocol: str,
+    outputs: list[str] | None = None,
 ) -> dict[str, float]:
-    """A profile file's values; ProfileError for a missing, special, large, binary or malformed
-    file (nothing is sent: this only reads)."""
+    """A profile file's input values (firmware outputs left out, named in `outputs`);
+    ProfileError for a missing, special, large, binary or malformed file (nothing is sent:
+    this only reads)."""
     file = Path(path)
     text = read_text(file, PROFILE_MAX_BYTES, Message("profile"), ProfileError)
-    return parse_profile(text, parameters, protocol, str(file))
+    return parse_profile(text, parameters, protocol, str(file), outputs)
 
 
 def format_profile(
     values: dict[str, float], parameters: tuple[Parameter, ...], protocol: str
 ) -> str:
-    """A profile's text: every given value, in the protocol's order, with its unit and meaning."""
+    """A profile's text: every given input value, in the protocol's order, with its unit and
+    meaning; firmware outputs are left out (the firmware overwrites them)."""
     lines = [HEADER, f'protocol = "{protocol}"', "", "[parameters]"]
+    left_out = [p.name for p in parameters if p.output and p.name in values]
     for parameter in parameters:
-        if parameter.name not in values:
+        if parameter.name not in values or parameter.output:
             continue
         value = parameter.with_unit(values[parameter.name]).split(" ")[0]
         comment = f"{parameter.unit} · " if parameter.unit else ""
-        kind = " (firmware output)" if parameter.output else ""
-        lines.append(f"{parameter.name} = {value:<10}# {comment}{parameter.description}{kind}")
+        lines.append(f"{parameter.name} = {value:<10}# {comment}{parameter.description}")
+    if left_out:
+        lines += ["", f"# Not saved: {', '.join(left_out)} (computed by the firmware)."]
     return "\n".join(lines) + "\n"
 
 
 def write_profile(
     path: str | Path, values: dict[str, float], parameters: tuple[Parameter, ...], protocol: str
-) -> None:
-    """Save a profile; ProfileError if the file cannot be written."""
+) -> int:
+    """Save a profile; the number of values saved (firmware outputs are not); ProfileError if
+    the file cannot be written."""
     try:
         Path(path).write_text(format_profile(values, parameters, protocol), encoding="utf-8")
     except OSError as exc:
@@ -156,3 +184,4 @@ def write_profile(
                 "cannot write the profile {path}: {error}", path=path, error=exc.strerror or exc
             )
         ) from None
+    return sum(1 for p in parameters if p.name in values and not p.output)

@@ -128,7 +128,7 @@ def test_motion_is_off_while_parameters_are_written_and_on_after_a_cancel(
     with qtbot.waitSignal(window.settled, timeout=8000):
         window.connect_device("sim://visiomex", "visiomex", 9600, "seed")
     editor = window.parameters.editor
-    qtbot.mouseClick(editor.write_changed_button, Qt.MouseButton.LeftButton)  # 27 writes
+    qtbot.mouseClick(editor.write_all_button, Qt.MouseButton.LeftButton)  # 27 writes
     assert editor.writing()
     assert not window.jog_panel.isEnabled() and "under way" in window.jog_panel.hint_label.text()
     assert not window.submit_job(jobs.MoveByJob(1.0, 0.0, 0.0))

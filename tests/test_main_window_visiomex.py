@@ -48,11 +48,23 @@ def test_the_window_adapts_to_two_axes_and_commanded_positions(qtbot, window: Ma
     qtbot.waitUntil(console_shows_the_packet, timeout=5000)
 
 
-def test_editor_writes_a_profile_and_every_row_is_confirmed(
+def _sent_sets(window: MainWindow) -> list[bytes]:
+    """The set packets the console has shown as sent, in order."""
+    window.console.flush()
+    return [
+        data
+        for direction, data, _ in window.console.records()
+        if data[:1] == b"S" and direction == "tx"
+    ]
+
+
+def test_write_changed_after_a_three_value_profile_sends_three_packets(
     qtbot, window: MainWindow, tmp_path: Path
 ) -> None:
     _connect(qtbot, window)
     editor = window.parameters.editor
+    assert editor.changed_inputs() == []  # the table starts at the power-on values
+    assert not editor.write_changed_button.isEnabled()
     chosen = [p for p in PARAMETERS if p.id in (3, 9, 27)]
     values = {"pulley_diameter_x": 40.5, "max_speed_x": 30, "driving_mechanism": 0}
     profile = tmp_path / "three.toml"
@@ -61,20 +73,59 @@ def test_editor_writes_a_profile_and_every_row_is_confirmed(
     qtbot.mouseClick(editor.load_button, Qt.MouseButton.LeftButton)
     assert editor.value("pulley_diameter_x") == 40.5
     assert "nothing sent" in editor.message()
+    editor.set_values({"step_delay_acceleration_avg_x": 3000})  # an output: never sent by it
 
     qtbot.mouseClick(editor.write_changed_button, Qt.MouseButton.LeftButton)
     assert editor.writing()
+    assert "27 to 1" in editor.message()  # warned before it is sent, not refused
     qtbot.waitUntil(lambda: not editor.writing(), timeout=30000)
-    changed = set(editor.changed_names())
-    # Nothing had been written to this device: "write changed" writes all 27, one packet each.
-    for parameter in PARAMETERS:
+    qtbot.waitUntil(lambda: len(_sent_sets(window)) >= 3, timeout=5000)
+    assert [packet[:3] for packet in _sent_sets(window)] == [b"S03", b"S09", b"S27"]
+    for parameter in chosen:
         assert editor.status(parameter.id) == "confirmed", parameter.name
+    assert editor.status(17) == "not written"
     assert editor.last_written()["pulley_diameter_x"] == 40.5
     # The firmware forces driving_mechanism to 1 after every set: the editor says so.
     assert editor.last_written()["driving_mechanism"] == 1
-    assert "driving_mechanism" in changed  # 0 in the editor, 1 on the device
+    assert "driving_mechanism" in editor.changed_names()  # 0 in the editor, 1 on the device
     saved = read_parameters(window.settings, "visiomex", URL)
     assert saved["pulley_diameter_x"] == 40.5 and saved["driving_mechanism"] == 1
+
+
+def test_a_saved_profile_has_no_outputs(qtbot, window: MainWindow, tmp_path: Path) -> None:
+    _connect(qtbot, window)
+    editor = window.parameters.editor
+    path = tmp_path / "saved.toml"
+    editor._choose_path = lambda save: str(path)  # type: ignore[method-assign]
+    qtbot.mouseClick(editor.save_button, Qt.MouseButton.LeftButton)
+    text = path.read_text(encoding="utf-8")
+    inputs = [p for p in PARAMETERS if not p.output]
+    assert f"saved {len(inputs)} values" in editor.message()
+    assert "outputs are never saved" in editor.message()
+    for parameter in PARAMETERS:
+        assert (f"\n{parameter.name} = " in text) is not parameter.output, parameter.name
+
+
+def test_a_fresh_connection_says_the_position_is_unknown_until_home(
+    qtbot, window: MainWindow
+) -> None:
+    _connect(qtbot, window)
+    unknown = "position unknown: the device cannot be asked; Home or Set Home to start counting"
+    assert window.readout.status() == "uncounted"
+    assert window.readout.status_label.text() == unknown
+    assert "link failed" not in window.readout.status_label.text()
+    assert window.status_line.message() == unknown
+    window.jog_panel.set_step(1)
+    qtbot.mouseClick(window.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.readout.position() == (1.0, 0.0, 0.0), timeout=8000)
+    assert window.readout.status() == "uncounted"  # a relative move counts from nothing known
+
+    qtbot.waitUntil(window.coordinates.home_button.isEnabled, timeout=5000)
+    qtbot.mouseClick(window.coordinates.home_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.readout.status() == "live", timeout=8000)
+    assert window.readout.position() == (0.0, 0.0, 0.0)
+    assert window.readout.status_label.isHidden()
+    assert "home confirmed" in window.status_line.message()
 
 
 def test_a_malformed_profile_is_refused_and_nothing_is_sent(

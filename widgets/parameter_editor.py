@@ -2,7 +2,9 @@
 
 Protocol-independent: it takes `ParameterRow`s and values by name, and asks for writes with
 `write_requested([(id, value), …])`. The device cannot be read back, so the editor shows what was
-last written beside each value and marks the rows that differ.
+last written beside each value (or the power-on value, never written) and marks the rows that
+differ. "Write changed" sends only the inputs that differ: firmware outputs are written only when
+asked by row or with "Write all", with the driver's warning shown before they are sent.
 """
 
 from __future__ import annotations
@@ -110,7 +112,10 @@ class ParameterEditor(QWidget):
         self.write_changed_button = button(
             self.tr("Write changed"),
             "writeChangedButton",
-            self.tr("Write the values marked • (not yet written)"),
+            self.tr(
+                "Write the input values marked • (they differ from what the device holds); "
+                "firmware outputs are not written by it"
+            ),
         )
         self.cancel_button = button(
             self.tr("Cancel"),
@@ -318,9 +323,14 @@ class ParameterEditor(QWidget):
     def _write_all(self) -> None:
         self._request(range(self.model.rowCount()), self.tr("the table has no values"))
 
+    def changed_inputs(self) -> list[str]:
+        """Names "Write changed" would send: inputs whose value the device does not hold."""
+        return [s.row.name for s in self.model.states() if s.changed() and not s.row.output]
+
     def _write_changed(self) -> None:
         states = self.model.states()
-        self._request([p for p, s in enumerate(states) if s.changed()], self.tr("nothing differs"))
+        positions = [p for p, s in enumerate(states) if s.changed() and not s.row.output]
+        self._request(positions, self.tr("no input differs"))
 
     def _request(self, positions: range | list[int], empty: str) -> None:
         states = [self.model.states()[position] for position in positions]
@@ -334,9 +344,12 @@ class ParameterEditor(QWidget):
             notes = [fill(self.tr("Writing %1 values"), len(pairs))]
         if skipped := [s.row.name for s in states if s.value is None]:
             notes.append(fill(self.tr("no value, not written: %1"), ", ".join(skipped)))
-        if outputs := [s.row.name for s in states if s.value is not None and s.row.output]:
+        written = [s for s in states if s.value is not None]
+        if outputs := [s.row.name for s in written if s.row.output and not s.row.warning]:
             why = self.tr("computed by the firmware, which may replace them: %1")
             notes.append(fill(why, ", ".join(outputs)))
+        if warnings := [s.row.warning for s in written if s.row.warning]:  # warned, not refused
+            notes.append(fill(self.tr("Warning: %1"), "; ".join(warnings)))
         self.show_message("; ".join(notes))
         self._requested = dict(pairs)
         self.write_requested.emit(pairs)
@@ -402,5 +415,5 @@ class ParameterEditor(QWidget):
         selected = self.table.selectionModel().hasSelection()
         self.write_selected_button.setEnabled(can_write and has_values and selected)
         self.write_all_button.setEnabled(can_write and has_values)
-        self.write_changed_button.setEnabled(can_write and changed > 0)
+        self.write_changed_button.setEnabled(can_write and bool(self.changed_inputs()))
         self.cancel_button.setEnabled(self._writing and not self._cancelling)

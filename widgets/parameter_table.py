@@ -173,7 +173,12 @@ class ParameterModel(QAbstractTableModel):
             return f"• {text}" if state.changed() else text
         if column == WRITTEN_COL:
             written = state.written
-            return "—" if written is None else with_unit(format_value(row, written), row.unit)
+            if written is not None:
+                return with_unit(format_value(row, written), row.unit)
+            if row.power_on is not None:  # what the device holds until written
+                shown = with_unit(format_value(row, row.power_on), row.unit)
+                return fill(self.tr("%1 (power-on)"), shown)
+            return "—"
         if column == STATUS_COL:
             return state.status_text()
         return {
@@ -193,6 +198,16 @@ class ParameterModel(QAbstractTableModel):
         if column == STATUS_COL:
             return state.status_text().replace(" — ", "\n")
         if column == WRITTEN_COL:
+            if state.written is None and row.power_on is not None:
+                shown = with_unit(format_value(row, row.power_on), row.unit)
+                return fill(
+                    self.tr(
+                        "%1: never written to this device from this panel; it holds %2 from "
+                        "power-on"
+                    ),
+                    row.name,
+                    shown,
+                )
             if state.written is None:
                 return fill(self.tr("%1: never written to this device from this panel"), row.name)
             shown = with_unit(format_value(row, state.written), row.unit)
@@ -208,6 +223,8 @@ class ParameterModel(QAbstractTableModel):
                 lines.append(self.tr("• Differs from what was last written to this device"))
         if row.output:
             lines.append(translated(OUTPUT_TIP))
+        if row.warning:
+            lines.append(row.warning)
         return "\n".join(lines)
 
     def setData(
@@ -337,11 +354,14 @@ class ValueDelegate(QStyledItemDelegate):
         editor = _ValueEditor(row, parent)
         editor.setObjectName("parameterValueEditor")
         output = "\n" + translated(OUTPUT_TIP) if row.output else ""
-        editor.setToolTip(f"{row.name}: {allowed(row)}" + output)
+        warning = "\n" + row.warning if row.warning else ""
+        editor.setToolTip(f"{row.name}: {allowed(row)}" + output + warning)
         editor.textEdited.connect(lambda _text: self._check(editor, row))
         if row.output:
-            message = fill(self.tr("%1 is an output. %2"), row.name, translated(OUTPUT_TIP))
-            self.feedback.emit(message, False)
+            why = row.warning or translated(OUTPUT_TIP)
+            self.feedback.emit(fill(self.tr("%1 is an output. %2"), row.name, why), False)
+        elif row.warning:
+            self.feedback.emit(fill(self.tr("%1: %2"), row.name, row.warning), False)
         return editor
 
     def setEditorData(self, editor: QWidget, index: QModelIndex | QPersistentModelIndex) -> None:
@@ -364,8 +384,10 @@ class ValueDelegate(QStyledItemDelegate):
         typed = editor.text() if number is None else number  # refused: the model says why
         if model.setData(index, typed, Qt.ItemDataRole.EditRole):
             shown = with_unit(index.data(Qt.ItemDataRole.EditRole), row.unit)
-            message = self.tr("%1 = %2, not yet written to the device")
-            self.feedback.emit(fill(message, row.name, shown), False)
+            message = fill(self.tr("%1 = %2, not yet written to the device"), row.name, shown)
+            if row.warning:  # said before it is sent: a warning, not a refusal
+                message = fill(self.tr("%1. Warning: %2"), message, row.warning)
+            self.feedback.emit(message, False)
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """Enter on a refused value keeps the editor open (and says why) instead of closing."""

@@ -30,8 +30,10 @@ class ParameterRow:
     minimum: float
     maximum: float
     step: float  # the finest value the wire carries, e.g. 0.1 for the pulley (mm * 10)
-    output: bool  # computed by the firmware: writing is allowed, the editor says so
+    output: bool  # computed by the firmware: never in "Write changed", warned when written
     description: str
+    power_on: float | None = None  # what the device holds until written (None: unknown)
+    warning: str = ""  # what writing it will not do (e.g. the firmware recomputes it), if any
 
 
 NOT_WRITTEN, PENDING, CONFIRMED, ERROR, TIMED_OUT, CANCELLED = (  # keys; shown translated
@@ -151,13 +153,19 @@ class RowState:
     message: str = ""
     note: str = ""
 
+    def held(self) -> float | None:
+        """What the device holds as far as the panel knows: the value last written, else the
+        power-on value (None: unknown)."""
+        return self.written if self.written is not None else self.row.power_on
+
     def changed(self) -> bool:
-        """A value the device does not hold as far as we know (never written, or different)."""
+        """A value the device does not hold as far as we know (different, or unknown)."""
         if self.value is None:
             return False
-        if self.written is None:
+        held = self.held()
+        if held is None:
             return True
-        return not math.isclose(self.value, self.written, rel_tol=1e-9, abs_tol=self.row.step / 1e6)
+        return not math.isclose(self.value, held, rel_tol=1e-9, abs_tol=self.row.step / 1e6)
 
     def status_text(self) -> str:
         """The status (translated), its message and the row's note, as the Status cell shows."""

@@ -35,7 +35,16 @@ CONFIRMED_TIP = QT_TRANSLATE_NOOP(
     "(a device that can report its position is asked again when idle).",
 )
 LIVE, ESTIMATED, STALE, LOST = "live", "estimated", "stale", "lost"
+UNCOUNTED = "uncounted"  # a fresh connection to a device that cannot be asked: nothing counted
 _STATUS = {
+    UNCOUNTED: (
+        QT_TRANSLATE_NOOP(
+            "PositionReadout",
+            "position unknown: the device cannot be asked; Home or Set Home to start counting",
+        ),
+        "color: #b71c1c; background: #ffebee; border: 1px solid #ef9a9a;",
+        ("#9e9e9e", False),
+    ),
     LOST: (
         QT_TRANSLATE_NOOP(
             "PositionReadout",
@@ -251,7 +260,9 @@ class PositionReadout(QWidget):
     def set_status(self, status: str) -> None:
         """`"live"` (measured or commanded), `"estimated"` (moving) or `"stale"` (last known)."""
         if status not in _STATUS and status != LIVE:
-            raise ValueError(f"status must be live, estimated, stale or lost, not {status!r}")
+            raise ValueError(
+                f"status must be live, estimated, stale, lost or uncounted, not {status!r}"
+            )
         if status != self._status:
             self._status = status
             self._render_status()

@@ -227,6 +227,11 @@ class Protocol(ABC):
         """Figures that follow from parameter values (by name), as (label, text) pairs."""
         return []
 
+    def write_warning(self, param_id: int) -> str:
+        """What writing this parameter will not do (e.g. the firmware recomputes it), as a
+        Message shown before it is sent; "" if it does what it says."""
+        return ""
+
     def assume_parameters(self, values: dict[str, float]) -> None:
         """Take values written earlier (saved by the panel) as what the device holds."""
 
