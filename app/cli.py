@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 from typing import Any
 
+from app.cli_count import CliCount
 from app.cli_interrupt import MoveTracker, after_interrupt
 from app.cli_log import decode_log
 from app.cli_macro import find_macro, macro_offline, macro_text, run_macro
@@ -113,10 +114,9 @@ def _text(result: dict[str, Any]) -> str:
     if {"macros", "exported", "imported", "macro"} & result.keys():
         return macro_text(result, _text)
     if "position" in result:
-        text = " ".join(f"{v:.2f}" for v in result["position"])
-        return text if result.get("measured", True) else text + " (commanded, not measured)"
+        return _position_text(result)
     if "id" in result:
-        return str(result["id"])
+        return str(result["id"] if result["id"] is not None else result["identity"])
     if "speed" in result:
         return f"{result['speed']:g} mm/s"
     if "min_speed" in result:
@@ -151,6 +151,26 @@ def _text(result: dict[str, Any]) -> str:
             f"{w['name']} = {w['value']:g} {w['unit']}".rstrip() for w in result["written"]
         )
     return "ok"
+
+
+def _position_text(result: dict[str, Any]) -> str:
+    """A position, with the jog in degrees or steps that led to it and what the firmware did."""
+    lines = []
+    jog = result.get("jog")
+    if jog is not None:
+        lines.append(f"jog X {jog['x']:g} Y {jog['y']:g} {jog['unit']}, packet {jog['packet']}")
+    if "firmware_note" in result:
+        lines.append(result["firmware_note"])
+    if result["position"] is None:
+        lines.append(result["position_note"])
+    else:
+        text = " ".join(f"{v:.2f}" for v in result["position"])
+        if result.get("counted"):
+            text += " (counted, not measured)"
+        elif not result.get("measured", True):
+            text += " (commanded, not measured)"
+        lines.append(text)
+    return "\n".join(lines)
 
 
 def _travel(options: argparse.Namespace) -> TravelLimits | None:
@@ -256,6 +276,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         except BadInput as exc:
             return report.fail(exc, EXIT_BAD_INPUT)
 
+    count = CliCount(settings, protocol, options.port)  # Visiomex: where the panel counted
+    try:
+        count.check(options.command, macro.steps if macro is not None else ())
+    except BadInput as exc:
+        return report.fail(exc, EXIT_BAD_INPUT)
+
     def remember(values: dict[str, float]) -> None:
         write_parameters(settings, options.protocol, options.port, values)
 
@@ -278,6 +304,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 link.listeners.append(TrafficLogWriter(stream))
             motion = Motion(Client(link, protocol, timeout=options.timeout))
             motion.travel = travel
+            count.begin(motion)
             motion.notice_listeners.append(report.notice)
             motion.move_listeners.append(moves)
             if options.command != "config":
@@ -291,15 +318,21 @@ def main(argv: Sequence[str] | None = None) -> int:
             if options.command == "config":
                 saved = {s.name: protocol.values[s.name] for s in protocol.settings}
                 write_protocol_settings(settings, options.protocol, options.port, saved)
+            count.done(motion, options.command, options.args, result)
         except BadInput as exc:
+            count.failed(moves.last is not None)
             return report.fail(exc, EXIT_BAD_INPUT)
         except DeviceError as exc:
+            count.failed(moves.last is not None)
             return report.fail(exc, EXIT_DEVICE_ERROR)
         except (CommunicationError, OSError) as exc:
+            count.failed(moves.last is not None)
             return report.fail(exc, EXIT_NO_DEVICE)
         except MotionError as exc:
+            count.failed(moves.last is not None)
             return report.fail(exc, EXIT_DEVICE_ERROR)
         except KeyboardInterrupt:  # the protocol's stop where it has one, else what goes on
+            count.failed(moves.last is not None)
             return report.fail(after_interrupt(motion, options.command, moves), EXIT_INTERRUPTED)
     return report.done(result)
 

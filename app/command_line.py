@@ -16,6 +16,7 @@ from drivers.messages import Message
 from drivers.motion import Motion
 from drivers.motion_guard import MotionGuard
 from drivers.numbers import parse_number
+from drivers.position_count import firmware_move_mm, kind_note, no_identity
 from drivers.protocols.base import Protocol
 from drivers.traffic import RX, Traffic
 from drivers.travel import TravelLimits, check_resolution
@@ -77,6 +78,32 @@ def position_result(report: PositionReport) -> dict[str, Any]:
     return result
 
 
+_KIND_UNITS = {"rotational": "degrees", "steps": "steps"}
+
+
+def kind_jog(motion: Motion, dx: float, dy: float, dz: float, kind: str) -> dict[str, Any]:
+    """A rotational or steps jog, reported in its own unit; where the firmware is known to
+    read the digits as µm whatever the type letter, what it really moves, and the position
+    that follows from it (not from degrees or steps)."""
+    command = cmd.MoveBy(dx, dy, dz, kind)
+    protocol = motion.client.protocol
+    packet = protocol.encode(command)
+    before = motion.last_position
+    report = motion.move_by(dx, dy, dz, kind=kind)
+    sent = {"x": dx, "y": dy, "unit": _KIND_UNITS.get(kind, kind), "kind": kind}
+    sent["packet"] = packet.decode("latin-1")
+    moved = firmware_move_mm(protocol, packet)
+    if moved is not None and before is not None and not report.measured:
+        x, y, z = (a + b for a, b in zip((before.x, before.y, before.z), moved, strict=True))
+        report = PositionReport(x, y, z, measured=False, confirmed=report.confirmed)
+        motion.last_position = report  # the count follows the firmware, not the type letter
+    result = {"jog": sent, **position_result(report)}
+    if moved is not None:
+        result["firmware_mm"] = list(moved)
+        result["firmware_note"] = kind_note(kind, moved)
+    return result
+
+
 def run_command(
     motion: Motion,
     command: str,
@@ -92,6 +119,8 @@ def run_command(
     if command in DEVICE_COMMANDS:
         return run_device(motion, command, args)
     if command == "id":
+        if not motion.capabilities.identity_queryable:  # nothing to ask: no placeholder name
+            return {"id": None, "identity": no_identity(motion.client.protocol)}
         return {"id": motion.identify()}
     if command == "position":
         return position_result(motion.position())
@@ -103,7 +132,10 @@ def run_command(
     if command == "move":
         return position_result(motion.move_to(*numbers(args, ("x", "y", "z"))))
     if command == "jog":
-        return position_result(motion.move_by(*numbers(args, ("dx", "dy", "dz")), kind=kind))
+        dx, dy, dz = numbers(args, ("dx", "dy", "dz"))
+        if kind != "linear":
+            return kind_jog(motion, dx, dy, dz, kind)
+        return position_result(motion.move_by(dx, dy, dz))
     if command == "speed":
         if args:
             requested = parse_number(args[0], "speed")
@@ -142,6 +174,10 @@ def validate_offline(
     """Refuse what can be refused before the port is even opened."""
     check_arity(command, args)
     caps = protocol.capabilities
+    if kind != "linear" and command != "jog":
+        raise UsageError(
+            Message("--kind {kind} refused: --kind is for jog only (move is in mm)", kind=kind)
+        )
     if command in ("move", "jog") and len(args) < min(2, len(caps.axes)):
         axes = " ".join(a.upper() for a in caps.axes)
         raise UsageError(

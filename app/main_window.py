@@ -36,6 +36,7 @@ from app.settings import (
     read_str,
     read_travel,
     settings_problem,
+    write_counted_position,
     write_travel,
 )
 from app.window_tools import WindowTools, poll_rates
@@ -143,6 +144,15 @@ def _may_run_beside(job: object, running: list[jobs.Job]) -> bool:
     )
 
 
+def _counts_its_position(caps: Capabilities) -> bool:
+    """A device that confirms its moves but cannot be asked where it is (Visiomex): on a fresh
+    connection the panel has counted nothing yet, so the position is unknown until Home or
+    Set Home."""
+    from drivers.capabilities import Completion
+
+    return not caps.position_feedback and caps.completion is Completion.FEEDBACK
+
+
 def sim_ports() -> list[tuple[str, str]]:
     """Every built-in simulated device as a (port, description) pair."""
     from drivers.sim.registry import simulator_names  # (listed after the first paint)
@@ -185,6 +195,7 @@ class MainWindow(QMainWindow):
         self.ask_log_path: Callable[[], str] = self._ask_log_path
         self._last_position: tuple[float, float, float] | None = None
         self._true_position: tuple[float, float, float] | None = None  # reported, not estimated
+        self._count_kept: tuple[float, float, float] | None = None  # (Visiomex: _keep_count)
         self._unconfirmed_move = False  # a move started whose end no position has confirmed
         self._trail_device: tuple[str, str, str] | None = None  # port, protocol, identity
         self._busy_job: jobs.Job | None = None
@@ -192,6 +203,7 @@ class MainWindow(QMainWindow):
         self._failed = False
         self._link_failed = False  # the connection failed since the device was last ready
         self._position_lost = False  # a device with no position feedback lost track of it
+        self._lost_status = "lost"  # or "uncounted": a fresh connection, nothing counted yet
         self._jog_job: jobs.MoveByJob | None = None
         self._jog_repeat = False  # the step under way was sent because the jog was held
         self._jog_pressed_at = 0.0  # time.monotonic() of the last jog press
@@ -761,6 +773,7 @@ class MainWindow(QMainWindow):
         self._say(connected, note=False)
         if self._link_failed:  # after a lost link or a restart: what is the position now?
             self._position_lost = not info.capabilities.position_feedback
+            self._lost_status = "lost"
             self._say(
                 self.tr(
                     "the position is unknown: this device cannot report it; home it or set home"
@@ -771,6 +784,15 @@ class MainWindow(QMainWindow):
                     localized(info.identity),
                 ),
                 status.WARNING if self._position_lost else status.INFO,
+            )
+        elif _counts_its_position(info.capabilities):  # a fresh connection: nothing counted
+            self._position_lost, self._lost_status = True, "uncounted"
+            self._say(
+                self.tr(
+                    "position unknown: the device cannot be asked; Home or Set Home to start "
+                    "counting"
+                ),
+                status.WARNING,
             )
         self._link_failed = False
         self.readout.set_status(self._settled_status())
@@ -1176,6 +1198,20 @@ class MainWindow(QMainWindow):
             self.readout.set_measured(report.measured, report.confirmed or None)
         self._show_position(report.x, report.y, report.z)
         self._show_outside()
+        self._keep_count()
+
+    def _keep_count(self) -> None:
+        """A device that cannot be asked where it is (Visiomex): the position counted since
+        Home or Set Home is kept with the settings, for motionctl to go on from."""
+        from drivers.position_count import COUNTED_PROTOCOLS
+
+        info, here = self.info, self._true_position
+        if info is None or info.protocol not in COUNTED_PROTOCOLS or here is None:
+            return
+        if info.capabilities.position_feedback or self._position_lost or here == self._count_kept:
+            return
+        self._count_kept = here
+        write_counted_position(self.settings, info.protocol, info.port, here)
 
     def _show_outside(self) -> None:
         """The readout says so while the position reported is outside the travel limits."""
@@ -1227,7 +1263,7 @@ class MainWindow(QMainWindow):
 
     def _settled_status(self) -> str:
         """The readout's status when no move is being estimated."""
-        return "lost" if self._position_lost else "live"
+        return self._lost_status if self._position_lost else "live"
 
     def _mark_estimated(self, estimated: bool) -> None:
         self.readout.set_status("estimated" if estimated else self._settled_status())
@@ -1306,8 +1342,17 @@ class MainWindow(QMainWindow):
             or (caps is not None and caps.absolute_moves and isinstance(job, jobs.MoveToJob))
         ):
             self._position_lost = False  # a known place again
-            if self.readout.status() == "lost":
+            if self.readout.status() in ("lost", "uncounted"):
                 self.readout.set_status("live")
+        elif (
+            self._position_lost
+            and self._lost_status == "uncounted"
+            and isinstance(job, jobs.HomeJob)
+        ):  # the home move is confirmed: counting starts here
+            self._position_lost = False
+            self.readout.set_status("live")
+            self._say(self.tr("home confirmed: the position is counted from here"))
+        self._keep_count()  # Home, Set Home: counting starts
         if isinstance(job, jobs.SetSpeedJob) and isinstance(result, float) and result != job.speed:
             self._say(
                 fill(

@@ -225,3 +225,25 @@ def write_protocol_settings(
 ) -> None:
     """Remember a device's protocol settings."""
     _write_numbers(settings, f"{device_key(protocol, port)}/settings", values)
+
+
+def read_counted_position(
+    settings: QSettings, protocol: str, port: str
+) -> tuple[float, float, float] | None:
+    """Where a device without position feedback was last counted to be (None: no count kept)."""
+    values = _read_numbers(settings, f"{device_key(protocol, port)}/counted_position")
+    if not all(axis in values for axis in "xyz"):
+        return None
+    return (values["x"], values["y"], values["z"])
+
+
+def write_counted_position(
+    settings: QSettings, protocol: str, port: str, position: tuple[float, float, float] | None
+) -> None:
+    """Keep the position counted for a device (None: the count is lost, e.g. a failed move)."""
+    group = f"{device_key(protocol, port)}/counted_position"
+    if position is None:
+        settings.remove(group)
+    else:
+        _write_numbers(settings, group, dict(zip("xyz", position, strict=True)))
+    settings.sync()

@@ -121,10 +121,15 @@ def test_param_set_sends_one_packet_and_remembers_the_value(start_sim, host_log:
 @pytest.mark.timeout(20)
 def test_move_sends_one_packet_and_ends_at_fa0001(start_sim, host_log: Path) -> None:
     sim, _ = start_sim("--instant")
+    assert motionctl(sim.path, "set-home").returncode == 0  # counting starts (nothing sent)
     result = motionctl(sim.path, "--json", "move", "10", "-2.5", log=host_log)
     assert result.returncode == 0, result.stderr
     assert [r.data for r in sent(host_log)] == [b"MLP0010000N0002500"]
-    assert json.loads(result.stdout) == {"position": [10.0, -2.5, 0.0], "measured": False}
+    assert json.loads(result.stdout) == {
+        "position": [10.0, -2.5, 0.0],
+        "measured": False,
+        "counted": True,
+    }
     # The firmware's 9 debug lines come before FP0001 and do not disturb the driver. Lines end
     # in CR LF; motionctl is done at the CR of FA0001 and never reads its LF.
     lines = re.split(r"\r\n?", received(host_log).decode("ascii"))
@@ -221,11 +226,15 @@ def test_a_device_that_never_answers_exits_3(start_sim) -> None:
     [line] = result.stderr.strip().splitlines()
     assert line.startswith("motionctl: the device did not answer")
     assert "pulley_diameter_x" in line
+    assert motionctl(sim.path, "set-home").returncode == 0  # a count: the move may go
     moved = motionctl(sim.path, "move", "1", "0")
     assert moved.returncode == 3
     assert moved.seconds < 10.0
     [line] = moved.stderr.strip().splitlines()
     assert "did not answer to MLP0001000P0000000" in line
+    # The packet went and may have moved the stage: the count is gone.
+    after = motionctl(sim.path, "position")
+    assert after.returncode == 2 and "position unknown" in after.stderr, after.stderr
 
 
 # -- 6. the firmware's debug noise (its move lines are checked in test 2) -----------------------
@@ -281,7 +290,7 @@ def test_board12_packets(start_sim, tmp_path: Path) -> None:
     assert homed.returncode == 0, homed.stderr
     assert [r.data for r in sent(home_log)] == [b"DNNNNNNNNNNN"]
     assert b"FA0001" in received(home_log)
-    assert homed.stdout.strip() == "0.00 0.00 0.00 (commanded, not measured)"
+    assert homed.stdout.strip() == "0.00 0.00 0.00 (counted, not measured)"
 
 
 # -- 8. a whole profile, written and remembered -------------------------------------------------
@@ -289,25 +298,25 @@ def test_board12_packets(start_sim, tmp_path: Path) -> None:
 @pytest.mark.timeout(60)
 def test_full_profile_round_trip(start_sim, host_log: Path, tmp_path: Path) -> None:
     values = {p.name: p.default for p in PARAMETERS}
+    inputs = [p for p in PARAMETERS if not p.output]  # a profile never holds firmware outputs
     profile = tmp_path / "all.toml"
     profile.write_text(format_profile(values, PARAMETERS, "visiomex"), encoding="utf-8")
     sim, _ = start_sim()
     result = motionctl(sim.path, "--json", "param", "write", str(profile), log=host_log)
     assert result.returncode == 0, result.stderr
     written = json.loads(result.stdout)["written"]
-    assert [w["name"] for w in written] == [p.name for p in PARAMETERS]
-    assert [w["value"] for w in written] == [float(p.default) for p in PARAMETERS]
+    assert [w["name"] for w in written] == [p.name for p in inputs]
+    assert [w["value"] for w in written] == [float(p.default) for p in inputs]
     packets = sent(host_log)
-    assert [r.data for r in packets] == [
-        packet(p.id, round(p.default * p.scale)) for p in PARAMETERS
-    ]
+    assert [r.data for r in packets] == [packet(p.id, round(p.default * p.scale)) for p in inputs]
     assert all(b.time - a.time >= SET_SECONDS for a, b in itertools.pairwise(packets))
-    assert sum("confirmed" in line for line in result.stderr.splitlines()) == 27
+    assert sum("confirmed" in line for line in result.stderr.splitlines()) == len(inputs)
 
     listed = motionctl(sim.path, "--json", "param", "list")
     assert listed.returncode == 0, listed.stderr
-    last = {row["name"]: row["last_written"] for row in json.loads(listed.stdout)["parameters"]}
-    assert last == {name: float(value) for name, value in values.items()}
+    rows = json.loads(listed.stdout)["parameters"]
+    last = {row["name"]: row["last_written"] for row in rows if row["last_written"] is not None}
+    assert last == {p.name: float(p.default) for p in inputs}
 
 
 # -- 9. malformed profile files -------------------------------------------------------------

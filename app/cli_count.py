@@ -1,0 +1,99 @@
+"""motionctl and the counted position of a device that cannot be asked where it is (Visiomex):
+read from the settings the panel keeps, checked before anything is sent, kept after the run."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from PySide6.QtCore import QSettings
+
+from app.settings import read_counted_position, write_counted_position
+from drivers import commands as cmd
+from drivers.errors import FrameError
+from drivers.events import PositionReport
+from drivers.motion import Motion
+from drivers.position_count import (
+    firmware_move_mm,
+    keeps_count,
+    needs_count,
+    no_count,
+    starts_count,
+    unknown_note,
+)
+from drivers.protocols.base import Point, Protocol
+
+_MOVING = frozenset({"move", "jog", "home", "raw", "macro"})
+
+
+class CliCount:
+    """The count for one run: None where the protocol keeps none (it is measured, or asked)."""
+
+    def __init__(self, settings: QSettings, protocol: Protocol, port: str) -> None:
+        self.settings, self.protocol, self.port = settings, protocol, port
+        self.active = keeps_count(protocol)
+        self.before: Point | None = None
+        if self.active:
+            self.before = read_counted_position(settings, protocol.name, port)
+
+    def check(self, command: str, steps: tuple[str, ...] = ()) -> None:
+        """Refuse (NoCount) a command, or a macro's step, that needs a count none is kept of."""
+        if not self.active or self.before is not None:
+            return
+        caps = self.protocol.capabilities
+        for name in (command, *(step.split(" ", 1)[0].lower() for step in steps)):
+            if needs_count(name, caps):
+                raise no_count(name, self.protocol)
+
+    def begin(self, motion: Motion) -> None:
+        """Start the run's Motion from the count kept."""
+        if self.before is not None:
+            motion.last_position = PositionReport(*self.before, measured=False)
+
+    def done(self, motion: Motion, command: str, args: list[str], result: dict[str, Any]) -> None:
+        """After a command that succeeded: keep the new count, and say how it is known."""
+        if not self.active:
+            return
+        caps = self.protocol.capabilities
+        known = self.before is not None or starts_count(command, caps)
+        after: Point | None = None
+        if command == "raw":
+            after = self._after_raw(motion, args[0]) if known else None
+            known = known and after is not None
+        elif known and motion.last_position is not None:
+            here = motion.last_position
+            after = (here.x, here.y, here.z)
+        if known and after is not None:
+            if after != self.before:
+                write_counted_position(self.settings, self.protocol.name, self.port, after)
+            if "position" in result or command == "set-home":
+                result["position"] = list(after)
+                result["measured"], result["counted"] = False, True
+        elif command in _MOVING:
+            if self.before is not None:  # raw bytes sent unread: where they went is not known
+                write_counted_position(self.settings, self.protocol.name, self.port, None)
+            result["position"], result["measured"] = None, False
+            result["position_note"] = unknown_note(self.protocol)
+
+    def failed(self, moved: bool) -> None:
+        """A command failed: after a move was sent, where the stage is is no longer known."""
+        if self.active and moved and self.before is not None:
+            write_counted_position(self.settings, self.protocol.name, self.port, None)
+
+    def _after_raw(self, motion: Motion, text: str) -> Point | None:
+        """The count after raw bytes: moved as the firmware reads them, unchanged by a packet
+        that moves nothing, None where they could not be read."""
+        assert self.before is not None
+        frame = self.protocol.encode(cmd.Raw(text.encode("utf-8")))
+        try:
+            commands = self.protocol.sent_commands(frame)
+        except FrameError:
+            return None
+        if not any(c is not None for c in commands):
+            return self.before
+        moved = firmware_move_mm(self.protocol, frame)
+        if moved is None:
+            here = motion.last_position
+            return (here.x, here.y, here.z) if here is not None else None
+        x, y, z = (a + b for a, b in zip(self.before, moved, strict=True))
+        motion.last_position = PositionReport(x, y, z, measured=False)
+        return (x, y, z)
