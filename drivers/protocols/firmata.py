@@ -166,7 +166,9 @@ class _Reply(Exchange):
             self.fail(DeviceError(Message("the board answered: {error}", error=event.message)))
             return True
         if isinstance(event, Feedback) and event.code == "version":
-            self.version = f"{event.value[1]}.{event.value[2]}"  # the report's bytes
+            report = event.value
+            if isinstance(report, bytes | bytearray) and len(report) >= 3:
+                self.version = f"{report[1]}.{report[2]}"  # the report's bytes
             return self.code == "version"
         if isinstance(event, Feedback) and event.code == self.code:
             self.finish(event.meaning)
