@@ -18,6 +18,7 @@ QT_TRANSLATE_NOOP('messages', 'interrupted: stopped (the {protocol} stop was ack
 QT_TRANSLATE_NOOP('messages', 'interrupted: stopped at ({x:g}, {y:g}, {z:g}) mm (the {protocol} stop was acknowledged; its queue is flushed)')  # app/cli_interrupt.py
 QT_TRANSLATE_NOOP('messages', 'usage: {usage} (got {count} arguments)')  # app/command_line.py
 QT_TRANSLATE_NOOP('messages', 'usage: {usage}')  # app/command_line.py
+QT_TRANSLATE_NOOP('messages', '--kind {kind} refused: --kind is for jog only (move is in mm)')  # app/command_line.py
 QT_TRANSLATE_NOOP('messages', 'usage: {command} {axes} ({protocol} has {count} axes)')  # app/command_line.py
 QT_TRANSLATE_NOOP('messages', '--kind {kind} refused: {protocol} moves are {kinds}')  # app/command_line.py
 QT_TRANSLATE_NOOP('messages', 'speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s')  # app/command_line.py
@@ -177,6 +178,7 @@ QT_TRANSLATE_NOOP('messages', '{source} line {line}')  # drivers/param_profile.p
 QT_TRANSLATE_NOOP('messages', '{where}: unknown parameter {name!r} for {protocol}')  # drivers/param_profile.py
 QT_TRANSLATE_NOOP('messages', '{where}: {error}')  # drivers/param_profile.py
 QT_TRANSLATE_NOOP('messages', '{where}: {name}: not a number the device takes ({range})')  # drivers/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source}: only firmware outputs ({names}), which a profile does not write')  # drivers/param_profile.py
 QT_TRANSLATE_NOOP('messages', 'profile')  # drivers/param_profile.py
 QT_TRANSLATE_NOOP('messages', 'cannot write the profile {path}: {error}')  # drivers/param_profile.py
 QT_TRANSLATE_NOOP('messages', '{low} to {high} in steps of {step}')  # drivers/parameters.py
@@ -188,6 +190,12 @@ QT_TRANSLATE_NOOP('messages', '{name}: {value} refused: the device takes {range}
 QT_TRANSLATE_NOOP('messages', 'this protocol has no parameters')  # drivers/parameters.py
 QT_TRANSLATE_NOOP('messages', "unknown parameter {name!r} (did you mean {close}?): use a name or an id 1..{count}; 'motionctl ... param list' lists them")  # drivers/parameters.py
 QT_TRANSLATE_NOOP('messages', "unknown parameter {name!r}: use a name or an id 1..{count}; 'motionctl ... param list' lists them")  # drivers/parameters.py
+QT_TRANSLATE_NOOP('messages', 'Home or Set Home (in the panel, or motionctl home / set-home) to start counting')  # drivers/position_count.py
+QT_TRANSLATE_NOOP('messages', 'Set Home where the stage stands (in the panel, or motionctl set-home) to start counting; with no home move of its own, Home needs a count too')  # drivers/position_count.py
+QT_TRANSLATE_NOOP('messages', '{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}')  # drivers/position_count.py
+QT_TRANSLATE_NOOP('messages', 'position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}')  # drivers/position_count.py
+QT_TRANSLATE_NOOP('messages', 'this firmware reads the digits as µm whatever the type letter ({kind} is not read): the stage moves X {x:.3f} mm, Y {y:.3f} mm')  # drivers/position_count.py
+QT_TRANSLATE_NOOP('messages', '{protocol} has no identity query: the device cannot be asked what it is')  # drivers/position_count.py
 QT_TRANSLATE_NOOP('messages', '{where}: {name} {value!r} is not a number')  # drivers/program.py
 QT_TRANSLATE_NOOP('messages', '{where}: {name} is not a finite float32 number')  # drivers/program.py
 QT_TRANSLATE_NOOP('messages', '{where}: {name} {value!r} is not a finite float32 number')  # drivers/program.py
@@ -366,15 +374,37 @@ QT_TRANSLATE_NOOP('messages', 'packet {packet!r}')  # drivers/protocols/visiomex
 QT_TRANSLATE_NOOP('messages', 'move packet {packet!r} is not as the protocol documents')  # drivers/protocols/visiomex.py
 QT_TRANSLATE_NOOP('messages', '{packet} (set {parameter})')  # drivers/protocols/visiomex.py
 QT_TRANSLATE_NOOP('messages', 'the firmware forces driving_mechanism to 1 after every set')  # drivers/protocols/visiomex.py
-QT_TRANSLATE_NOOP('messages', 'this firmware revision reads {parameter} only at boot (and keeps pulley values divided by 4): moves do not change until the firmware is fixed')  # drivers/protocols/visiomex.py
-QT_TRANSLATE_NOOP('messages', 'Note')  # drivers/protocols/visiomex.py
-QT_TRANSLATE_NOOP('messages', 'this firmware revision moves by the cycle it computed at boot (10 mm lead screw), whatever 01-04 and 27 say')  # drivers/protocols/visiomex.py
-QT_TRANSLATE_NOOP('messages', '{axis}: the cycle ({cycle:g} mm) and the steps per turn ({steps:g}) must both be above 0')  # drivers/protocols/visiomex_model.py
-QT_TRANSLATE_NOOP('messages', '{times} (1 s silence included)')  # drivers/protocols/visiomex_model.py
-QT_TRANSLATE_NOOP('messages', 'Microsteps per turn')  # drivers/protocols/visiomex_model.py
-QT_TRANSLATE_NOOP('messages', 'Per step')  # drivers/protocols/visiomex_model.py
-QT_TRANSLATE_NOOP('messages', 'Steps per mm')  # drivers/protocols/visiomex_model.py
-QT_TRANSLATE_NOOP('messages', 'A 10 mm move')  # drivers/protocols/visiomex_model.py
+QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {parameter} after every set: this value will not stay (it holds {held:g})')  # drivers/protocols/visiomex.py
+QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {parameter} at every move: this value will not stay')  # drivers/protocols/visiomex.py
+QT_TRANSLATE_NOOP('messages', 'this firmware revision reads {parameter} only at boot: moves do not change until the device restarts')  # drivers/protocols/visiomex.py
+QT_TRANSLATE_NOOP('messages', 'this firmware revision never reads {parameter}: moves do not change')  # drivers/protocols/visiomex.py
+QT_TRANSLATE_NOOP('messages', 'Steps per move')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'X: 1 mm = {x1}, 10 mm = {x10} · Y: 1 mm = {y1}, 10 mm = {y10} (truncated: the firmware counts in 32-bit floats)')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', '{steps} steps, {stepping} s of stepping; FA0001 about {total} s after the packet')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', "{text}; after a move in which Y stepped, {later} s (X's low phase is Y's last delay, {delay} µs: the ramps do not restore the delays)")  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'A 10 mm X move')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', "no: the firmware's Y loop runs the ramp count (R_y = 0 with these values), not the {asked} steps a 10 mm move asks for; set 22 and 24 so that the ramp length is above 0 (e.g. 22 = 6000, 24 = 1)")  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', "{runs} of the {asked} steps of a 10 mm Y move, {seconds} s: the firmware's Y loop runs the ramp count R_y (at most the ramp length {ramp}), not the distance, and speeds up without slowing down")  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'Y moves')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'none: the ramp length is 0 on both axes (it follows 21 ÷ 23 and 13 - 11); every X step takes 15 high plus 16 low')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'X over {x} steps, Y over {y} steps, between 13/14 (slow) and 11/12 (fast)')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'Ramps')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'Not used')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', '{names}: the values in the table differ from power-on, but this firmware does not use them')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'Overwritten after every set')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', '{ids}: the firmware recomputes them; a written value does not stay')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'Overwritten at every move')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', '{ids}: the ramp counts of the last move')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'Never read')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', '{ids}: writing them changes nothing (27 is forced to 1 after every set)')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'Read only at boot')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', '{ids}: the cycle length ({cycle} mm) is taken from them at power-on, when they hold their power-on values again: writing them changes no move')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {id} after every set: this value will not stay')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {id} at every move: this value will not stay')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'the firmware forces 27 to 1 after every set: this value will not stay')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'this firmware never reads {id:02d}: writing it changes nothing')  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', "a move with ramps (ramp length above 0) leaves {id} at the ramp's last delay: this value stays only until then")  # drivers/protocols/visiomex_advice.py
+QT_TRANSLATE_NOOP('messages', 'this firmware reads {id:02d} only at boot, when it holds {value} again: writing it changes no move')  # drivers/protocols/visiomex_advice.py
 QT_TRANSLATE_NOOP('messages', 'Lead-screw pitch of the {axis} axis (mm per turn)')  # drivers/protocols/visiomex_params.py
 QT_TRANSLATE_NOOP('messages', 'Belt pulley diameter of the {axis} axis; sent as mm×10 (38.2 mm -> 000382)')  # drivers/protocols/visiomex_params.py
 QT_TRANSLATE_NOOP('messages', 'Full steps per motor turn, {axis} axis')  # drivers/protocols/visiomex_params.py
@@ -382,7 +412,7 @@ QT_TRANSLATE_NOOP('messages', 'Microstepping factor of the {axis} driver')  # dr
 QT_TRANSLATE_NOOP('messages', 'Highest speed allowed on the {axis} axis')  # drivers/protocols/visiomex_params.py
 QT_TRANSLATE_NOOP('messages', 'Step delay at the steady speed, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex_params.py
 QT_TRANSLATE_NOOP('messages', 'Step delay at the lowest speed, {axis} axis')  # drivers/protocols/visiomex_params.py
-QT_TRANSLATE_NOOP('messages', 'Current step delay, {axis} axis (computed by the firmware; this revision times every step from it: one step is twice this delay)')  # drivers/protocols/visiomex_params.py
+QT_TRANSLATE_NOOP('messages', "Current step delay, {axis} axis (left by the firmware's ramps; this revision times an X step as 15 high plus 16 low, a Y step as 16 twice)")  # drivers/protocols/visiomex_params.py
 QT_TRANSLATE_NOOP('messages', 'Mean step delay while accelerating, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex_params.py
 QT_TRANSLATE_NOOP('messages', 'Steps spent accelerating, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex_params.py
 QT_TRANSLATE_NOOP('messages', 'Requested steady speed of the {axis} axis')  # drivers/protocols/visiomex_params.py

@@ -692,7 +692,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DerivedValues</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="+447"/>
+        <location filename="../../widgets/parameter_table.py" line="+469"/>
         <source>Derived values</source>
         <translation>Valores derivados</translation>
     </message>
@@ -1418,7 +1418,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+110"/>
+        <location filename="../../app/main_window.py" line="+111"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 no tiene comando de parada: esto descarta los comandos aún no enviados; un movimiento ya en curso en el dispositivo termina (Esc)</translation>
     </message>
@@ -1428,7 +1428,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Detener la platina ahora: interrumpe el movimiento en curso y descarta lo que está en cola (Esc)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+44"/>
         <source>simulated %1 device</source>
         <translation>dispositivo %1 simulado</translation>
     </message>
@@ -1438,7 +1438,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+114"/>
+        <location line="+116"/>
         <source>no session log: %1</source>
         <translation>sin registro de sesión: %1</translation>
     </message>
@@ -1539,12 +1539,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     </message>
     <message>
         <location line="+1"/>
-        <location line="+380"/>
+        <location line="+390"/>
         <source>&amp;Stop</source>
         <translation>&amp;Detener</translation>
     </message>
     <message>
-        <location line="-375"/>
+        <location line="-385"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Límites de recorrido…</translation>
     </message>
@@ -1624,7 +1624,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>conectado a %1 en %2</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la posición es desconocida: este dispositivo no puede informar de ella; buscar el origen o fijar el origen</translation>
     </message>
@@ -1632,6 +1632,11 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <location line="+4"/>
         <source>connected again to %1: the position was read again</source>
         <translation>reconectado a %1: se ha vuelto a leer la posición</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
+        <translation>posición desconocida: no se puede consultar al dispositivo; pulsar Origen o Fijar origen para empezar a contar</translation>
     </message>
     <message>
         <location line="+20"/>
@@ -1758,13 +1763,13 @@ Send them anyway?</source>
         <translation>nuevo origen: la trayectoria se desplaza (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+117"/>
         <source>the device reported an error: %1</source>
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
-        <location line="-551"/>
-        <location line="+555"/>
+        <location line="-575"/>
+        <location line="+579"/>
         <source>device: %1</source>
         <translation>dispositivo: %1</translation>
     </message>
@@ -1774,7 +1779,12 @@ Send them anyway?</source>
         <translation>%1 falló: %2</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+25"/>
+        <source>home confirmed: the position is counted from here</source>
+        <translation>origen confirmado: la posición se cuenta desde aquí</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>la velocidad %1 mm/s se relee como %2 mm/s (el dispositivo redondea)</translation>
     </message>
@@ -1825,7 +1835,7 @@ Send them anyway?</source>
         <translation>pasos</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+56"/>
         <source>Parameters</source>
         <translation>Parámetros</translation>
     </message>
@@ -1850,7 +1860,7 @@ Send them anyway?</source>
         <translation>sin enviar</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+36"/>
         <source>the device did not answer</source>
         <translation>el dispositivo no respondió</translation>
     </message>
@@ -1865,15 +1875,25 @@ Send them anyway?</source>
         <translation>%1 valores cargados de %2; no se ha enviado nada (Escribir cambios los envía)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+5"/>
+        <source>left out, computed by the firmware: %1</source>
+        <translation>omitidos, calculados por el firmware: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>saved %1 values to %2</source>
         <translation>%1 valores guardados en %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (firmware outputs are never saved)</source>
+        <translation>%1 (las salidas del firmware nunca se guardan)</translation>
     </message>
 </context>
 <context>
     <name>ParameterEditor</name>
     <message>
-        <location filename="../../widgets/parameter_editor.py" line="+44"/>
+        <location filename="../../widgets/parameter_editor.py" line="+46"/>
         <source>Parameter profiles (*.toml);;All files (*)</source>
         <translation>Perfiles de parámetros (*.toml);;Todos los archivos (*)</translation>
     </message>
@@ -1913,12 +1933,11 @@ Send them anyway?</source>
         <translation>Escribir cambios</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Write the values marked • (not yet written)</source>
-        <translation>Escribir los valores marcados con • (aún sin escribir)</translation>
+        <translation type="vanished">Escribir los valores marcados con • (aún sin escribir)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
@@ -1978,9 +1997,18 @@ Send them anyway?</source>
         <translation>la tabla no tiene valores</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>nothing differs</source>
-        <translation>no hay diferencias</translation>
+        <translation type="vanished">no hay diferencias</translation>
+    </message>
+    <message>
+        <location line="-208"/>
+        <source>Write the input values marked • (they differ from what the device holds); firmware outputs are not written by it</source>
+        <translation>Escribir los valores de entrada marcados con • (difieren de lo que tiene el dispositivo); no escribe las salidas del firmware</translation>
+    </message>
+    <message>
+        <location line="+217"/>
+        <source>no input differs</source>
+        <translation>ninguna entrada difiere</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2003,12 +2031,17 @@ Send them anyway?</source>
         <translation>sin valor, no escrito: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>computed by the firmware, which may replace them: %1</source>
         <translation>calculados por el firmware, que puede reemplazarlos: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
+        <source>Warning: %1</source>
+        <translation>Aviso: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Cancelling: the packet under way finishes, the rest are not sent</source>
         <translation>Cancelando: el paquete en curso termina, el resto no se envía</translation>
     </message>
@@ -2051,7 +2084,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterModel</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-413"/>
+        <location filename="../../widgets/parameter_table.py" line="-435"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -2111,7 +2144,12 @@ Send them anyway?</source>
         <translation>El resultado de la última escritura de este parámetro</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+94"/>
+        <source>%1 (power-on)</source>
+        <translation>%1 (al encender)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>output</source>
         <translation>salida</translation>
     </message>
@@ -2126,7 +2164,12 @@ Send them anyway?</source>
         <translation>Entrada: la fija el usuario y se escribe en el dispositivo</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>%1: never written to this device from this panel; it holds %2 from power-on</source>
+        <translation>%1: nunca escrito en este dispositivo desde este panel; tiene %2 desde el encendido</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%1: never written to this device from this panel</source>
         <translation>%1: nunca escrito en este dispositivo desde este panel</translation>
     </message>
@@ -2151,7 +2194,7 @@ Send them anyway?</source>
         <translation>• Difiere de lo último escrito en este dispositivo</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>%1: no such parameter</source>
         <translation>%1: no existe ese parámetro</translation>
     </message>
@@ -2159,7 +2202,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterTableView</name>
     <message>
-        <location line="+159"/>
+        <location line="+164"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
         <translation>Para editar, hacer doble clic en un valor, o seleccionar una fila y pulsar Enter o escribir</translation>
     </message>
@@ -2167,7 +2210,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterValues</name>
     <message>
-        <location filename="../../widgets/parameter_values.py" line="+38"/>
+        <location filename="../../widgets/parameter_values.py" line="+40"/>
         <source>not written</source>
         <translation>sin escribir</translation>
     </message>
@@ -2336,6 +2379,11 @@ Send them anyway?</source>
         <translation>Adónde se le ordenó ir al dispositivo, y su respuesta indicó que el movimiento terminó allí; no se ha releído (a un dispositivo que puede informar de su posición se le vuelve a consultar en reposo).</translation>
     </message>
     <message>
+        <location line="+9"/>
+        <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
+        <translation>posición desconocida: no se puede consultar al dispositivo; pulsar Origen o Fijar origen para empezar a contar</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>position unknown: the link failed or the device restarted, and it cannot report where it is; home it or set home</source>
         <translation>posición desconocida: el enlace falló o el dispositivo se reinició, y no puede informar de dónde está; buscar el origen o fijar el origen</translation>
@@ -2418,7 +2466,7 @@ Send them anyway?</source>
         <translation>La platina está fuera de los límites de recorrido definidos para este dispositivo: solo se envían los movimientos que la acercan a ellos, hasta que vuelva a estar dentro</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+110"/>
         <source>outside the travel limits: %1</source>
         <translation>fuera de los límites de recorrido: %1</translation>
     </message>
@@ -4125,19 +4173,29 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>ValueDelegate</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-97"/>
+        <location filename="../../widgets/parameter_table.py" line="-102"/>
         <source>%1: edit cancelled, value unchanged</source>
         <translation>%1: edición cancelada, valor sin cambios</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1 is an output. %2</source>
         <translation>%1 es una salida. %2</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+2"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>%1 = %2, not yet written to the device</source>
         <translation>%1 = %2, aún no escrito en el dispositivo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1. Warning: %2</source>
+        <translation>%1. Aviso: %2</translation>
     </message>
     <message>
         <location line="+25"/>
@@ -4363,6 +4421,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>usage: {usage}</source>
         <translation>uso: {usage}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--kind {kind} refused: --kind is for jog only (move is in mm)</source>
+        <translation>--kind {kind} rechazado: --kind solo sirve para jog (move va en mm)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5161,6 +5224,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{source}: only firmware outputs ({names}), which a profile does not write</source>
+        <translation>{source}: solo salidas del firmware ({names}), que un perfil no escribe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>profile</source>
         <translation>perfil</translation>
     </message>
@@ -5213,6 +5281,36 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>unknown parameter {name!r}: use a name or an id 1..{count}; &apos;motionctl ... param list&apos; lists them</source>
         <translation>parámetro desconocido {name!r}: usar un nombre o un id 1..{count}; &apos;motionctl ... param list&apos; los enumera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Home or Set Home (in the panel, or motionctl home / set-home) to start counting</source>
+        <translation>usar Origen o Fijar origen (en el panel, o motionctl home / set-home) para empezar a contar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set Home where the stage stands (in the panel, or motionctl set-home) to start counting; with no home move of its own, Home needs a count too</source>
+        <translation>usar Fijar origen donde está la platina (en el panel, o motionctl set-home) para empezar a contar; como no tiene búsqueda de origen propia, Origen también necesita un conteo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}</source>
+        <translation>{command} rechazado: posición desconocida: no se puede preguntar a {protocol} dónde está y no hay ninguna posición contada para este puerto; {how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}</source>
+        <translation>posición desconocida: no se puede preguntar a {protocol} dónde está y no hay ninguna posición contada para este puerto; {how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware reads the digits as µm whatever the type letter ({kind} is not read): the stage moves X {x:.3f} mm, Y {y:.3f} mm</source>
+        <translation>este firmware lee los dígitos como µm sea cual sea la letra de tipo ({kind} no se lee): la platina se mueve X {x:.3f} mm, Y {y:.3f} mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no identity query: the device cannot be asked what it is</source>
+        <translation>{protocol} no tiene consulta de identidad: no se puede preguntar al dispositivo qué es</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6106,51 +6204,202 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>the firmware recomputes {parameter} after every set: this value will not stay (it holds {held:g})</source>
+        <translation>el firmware recalcula {parameter} tras cada escritura: este valor no se mantendrá (tiene {held:g})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware recomputes {parameter} at every move: this value will not stay</source>
+        <translation>el firmware recalcula {parameter} en cada movimiento: este valor no se mantendrá</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision reads {parameter} only at boot: moves do not change until the device restarts</source>
+        <translation>esta revisión del firmware solo lee {parameter} al arrancar: los movimientos no cambian hasta que el dispositivo se reinicie</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision never reads {parameter}: moves do not change</source>
+        <translation>esta revisión del firmware nunca lee {parameter}: los movimientos no cambian</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Steps per move</source>
+        <translation>Pasos por movimiento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>X: 1 mm = {x1}, 10 mm = {x10} · Y: 1 mm = {y1}, 10 mm = {y10} (truncated: the firmware counts in 32-bit floats)</source>
+        <translation>X: 1 mm = {x1}, 10 mm = {x10} · Y: 1 mm = {y1}, 10 mm = {y10} (truncados: el firmware cuenta con floats de 32 bits)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{steps} steps, {stepping} s of stepping; FA0001 about {total} s after the packet</source>
+        <translation>{steps} pasos, {stepping} s dando pasos; FA0001 unos {total} s después del paquete</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{text}; after a move in which Y stepped, {later} s (X&apos;s low phase is Y&apos;s last delay, {delay} µs: the ramps do not restore the delays)</source>
+        <translation>{text}; tras un movimiento en el que Y dio pasos, {later} s (la fase baja de X es el último retardo de Y, {delay} µs: las rampas no restauran los retardos)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A 10 mm X move</source>
+        <translation>Un movimiento de 10 mm en X</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no: the firmware&apos;s Y loop runs the ramp count (R_y = 0 with these values), not the {asked} steps a 10 mm move asks for; set 22 and 24 so that the ramp length is above 0 (e.g. 22 = 6000, 24 = 1)</source>
+        <translation>no: el bucle Y del firmware ejecuta el recuento de rampa (R_y = 0 con estos valores), no los {asked} pasos que pide un movimiento de 10 mm; fijar 22 y 24 de modo que la longitud de rampa sea mayor que 0 (p. ej. 22 = 6000, 24 = 1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{runs} of the {asked} steps of a 10 mm Y move, {seconds} s: the firmware&apos;s Y loop runs the ramp count R_y (at most the ramp length {ramp}), not the distance, and speeds up without slowing down</source>
+        <translation>{runs} de los {asked} pasos de un movimiento de 10 mm en Y, {seconds} s: el bucle Y del firmware ejecuta el recuento de rampa R_y (como máximo la longitud de rampa {ramp}), no la distancia, y acelera sin decelerar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y moves</source>
+        <translation>Movimiento en Y</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none: the ramp length is 0 on both axes (it follows 21 ÷ 23 and 13 - 11); every X step takes 15 high plus 16 low</source>
+        <translation>ninguna: la longitud de rampa es 0 en ambos ejes (depende de 21 ÷ 23 y 13 - 11); cada paso de X dura 15 en alto más 16 en bajo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>X over {x} steps, Y over {y} steps, between 13/14 (slow) and 11/12 (fast)</source>
+        <translation>X en {x} pasos, Y en {y} pasos, entre 13/14 (lento) y 11/12 (rápido)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramps</source>
+        <translation>Rampas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not used</source>
+        <translation>No usados</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{names}: the values in the table differ from power-on, but this firmware does not use them</source>
+        <translation>{names}: los valores de la tabla difieren de los de encendido, pero este firmware no los usa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Overwritten after every set</source>
+        <translation>Sobrescritos tras cada escritura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: the firmware recomputes them; a written value does not stay</source>
+        <translation>{ids}: el firmware los recalcula; un valor escrito no se mantiene</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Overwritten at every move</source>
+        <translation>Sobrescritos en cada movimiento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: the ramp counts of the last move</source>
+        <translation>{ids}: los recuentos de rampa del último movimiento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Never read</source>
+        <translation>Nunca leídos</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: writing them changes nothing (27 is forced to 1 after every set)</source>
+        <translation>{ids}: escribirlos no cambia nada (a 27 se le impone 1 tras cada escritura)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read only at boot</source>
+        <translation>Leídos solo al arrancar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: the cycle length ({cycle} mm) is taken from them at power-on, when they hold their power-on values again: writing them changes no move</source>
+        <translation>{ids}: la longitud del ciclo ({cycle} mm) se toma de ellos al encender, cuando vuelven a tener sus valores de encendido: escribirlos no cambia ningún movimiento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware recomputes {id} after every set: this value will not stay</source>
+        <translation>el firmware recalcula {id} tras cada escritura: este valor no se mantendrá</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware recomputes {id} at every move: this value will not stay</source>
+        <translation>el firmware recalcula {id} en cada movimiento: este valor no se mantendrá</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware forces 27 to 1 after every set: this value will not stay</source>
+        <translation>el firmware impone 27 = 1 tras cada escritura: este valor no se mantendrá</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware never reads {id:02d}: writing it changes nothing</source>
+        <translation>este firmware nunca lee {id:02d}: escribirlo no cambia nada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a move with ramps (ramp length above 0) leaves {id} at the ramp&apos;s last delay: this value stays only until then</source>
+        <translation>un movimiento con rampas (longitud de rampa mayor que 0) deja {id} en el último retardo de la rampa: este valor solo se mantiene hasta entonces</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware reads {id:02d} only at boot, when it holds {value} again: writing it changes no move</source>
+        <translation>este firmware solo lee {id:02d} al arrancar, cuando vuelve a tener {value}: escribirlo no cambia ningún movimiento</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Current step delay, {axis} axis (left by the firmware&apos;s ramps; this revision times an X step as 15 high plus 16 low, a Y step as 16 twice)</source>
+        <translation>Retardo entre pasos actual, eje {axis} (lo dejan las rampas del firmware; esta revisión temporiza un paso de X como 15 en alto más 16 en bajo, y un paso de Y como 16 dos veces)</translation>
+    </message>
+    <message>
         <source>this firmware revision reads {parameter} only at boot (and keeps pulley values divided by 4): moves do not change until the firmware is fixed</source>
-        <translation>esta revisión del firmware solo lee {parameter} al arrancar (y guarda los valores de polea divididos por 4): los movimientos no cambian hasta que se corrija el firmware</translation>
+        <translation type="vanished">esta revisión del firmware solo lee {parameter} al arrancar (y guarda los valores de polea divididos por 4): los movimientos no cambian hasta que se corrija el firmware</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Note</source>
-        <translation>Nota</translation>
+        <translation type="vanished">Nota</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>this firmware revision moves by the cycle it computed at boot (10 mm lead screw), whatever 01-04 and 27 say</source>
-        <translation>esta revisión del firmware se mueve según el ciclo que calculó al arrancar (husillo de 10 mm), digan lo que digan 01-04 y 27</translation>
+        <translation type="vanished">esta revisión del firmware se mueve según el ciclo que calculó al arrancar (husillo de 10 mm), digan lo que digan 01-04 y 27</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>{axis}: the cycle ({cycle:g} mm) and the steps per turn ({steps:g}) must both be above 0</source>
-        <translation>{axis}: el ciclo ({cycle:g} mm) y los pasos por vuelta ({steps:g}) deben ser ambos mayores que 0</translation>
+        <translation type="vanished">{axis}: el ciclo ({cycle:g} mm) y los pasos por vuelta ({steps:g}) deben ser ambos mayores que 0</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>{times} (1 s silence included)</source>
-        <translation>{times} (incluido 1 s de silencio)</translation>
+        <translation type="vanished">{times} (incluido 1 s de silencio)</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Microsteps per turn</source>
-        <translation>Micropasos por vuelta</translation>
+        <translation type="vanished">Micropasos por vuelta</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Per step</source>
-        <translation>Por paso</translation>
+        <translation type="vanished">Por paso</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Steps per mm</source>
-        <translation>Pasos por mm</translation>
+        <translation type="vanished">Pasos por mm</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>A 10 mm move</source>
-        <translation>Un movimiento de 10 mm</translation>
+        <translation type="vanished">Un movimiento de 10 mm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>Lead-screw pitch of the {axis} axis (mm per turn)</source>
         <translation>Paso del husillo del eje {axis} (mm por vuelta)</translation>
     </message>
@@ -6185,12 +6434,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Retardo entre pasos a la velocidad mínima, eje {axis}</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Current step delay, {axis} axis (computed by the firmware; this revision times every step from it: one step is twice this delay)</source>
-        <translation>Retardo entre pasos actual, eje {axis} (calculado por el firmware; esta revisión temporiza cada paso a partir de él: un paso dura el doble de este retardo)</translation>
+        <translation type="vanished">Retardo entre pasos actual, eje {axis} (calculado por el firmware; esta revisión temporiza cada paso a partir de él: un paso dura el doble de este retardo)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Mean step delay while accelerating, {axis} axis (computed by the firmware)</source>
         <translation>Retardo medio entre pasos durante la aceleración, eje {axis} (calculado por el firmware)</translation>
     </message>

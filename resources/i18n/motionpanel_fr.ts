@@ -692,7 +692,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DerivedValues</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="+447"/>
+        <location filename="../../widgets/parameter_table.py" line="+469"/>
         <source>Derived values</source>
         <translation>Valeurs dérivées</translation>
     </message>
@@ -1418,7 +1418,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+110"/>
+        <location filename="../../app/main_window.py" line="+111"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>Aucune commande d&apos;arrêt sur %1&#xa0;: ceci vide les commandes pas encore envoyées&#xa0;; un mouvement déjà en cours sur l&apos;appareil se termine (Échap)</translation>
     </message>
@@ -1428,7 +1428,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Arrêter la platine immédiatement&#xa0;: interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+44"/>
         <source>simulated %1 device</source>
         <translation>appareil %1 simulé</translation>
     </message>
@@ -1438,7 +1438,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+114"/>
+        <location line="+116"/>
         <source>no session log: %1</source>
         <translation>pas de journal de session&#xa0;: %1</translation>
     </message>
@@ -1539,12 +1539,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     </message>
     <message>
         <location line="+1"/>
-        <location line="+380"/>
+        <location line="+390"/>
         <source>&amp;Stop</source>
         <translation>&amp;Arrêt</translation>
     </message>
     <message>
-        <location line="-375"/>
+        <location line="-385"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Limites de course…</translation>
     </message>
@@ -1624,7 +1624,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>connecté à %1 sur %2</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la position est inconnue&#xa0;: cet appareil ne peut pas l&apos;indiquer&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
@@ -1632,6 +1632,11 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <location line="+4"/>
         <source>connected again to %1: the position was read again</source>
         <translation>reconnecté à %1&#xa0;: la position a été relue</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
+        <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé&#xa0;; «&#xa0;Origine&#xa0;» ou «&#xa0;Définir l&apos;origine&#xa0;» pour commencer le décompte</translation>
     </message>
     <message>
         <location line="+20"/>
@@ -1758,13 +1763,13 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>nouvelle origine&#xa0;: la trace est décalée de (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+117"/>
         <source>the device reported an error: %1</source>
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="-551"/>
-        <location line="+555"/>
+        <location line="-575"/>
+        <location line="+579"/>
         <source>device: %1</source>
         <translation>appareil&#xa0;: %1</translation>
     </message>
@@ -1774,7 +1779,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>échec de %1&#xa0;: %2</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+25"/>
+        <source>home confirmed: the position is counted from here</source>
+        <translation>origine confirmée&#xa0;: la position est comptée à partir d&apos;ici</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>vitesse %1 mm/s relue comme %2 mm/s (l&apos;appareil arrondit)</translation>
     </message>
@@ -1825,7 +1835,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>pas</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+56"/>
         <source>Parameters</source>
         <translation>Paramètres</translation>
     </message>
@@ -1850,7 +1860,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>non envoyé</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+36"/>
         <source>the device did not answer</source>
         <translation>l&apos;appareil n&apos;a pas répondu</translation>
     </message>
@@ -1865,15 +1875,25 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>%1 valeurs chargées depuis %2&#xa0;; rien n&apos;a été envoyé (le bouton «&#xa0;Écrire les modifications&#xa0;» les envoie)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+5"/>
+        <source>left out, computed by the firmware: %1</source>
+        <translation>écarté(s), calculé(s) par le firmware&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>saved %1 values to %2</source>
         <translation>%1 valeurs enregistrées dans %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (firmware outputs are never saved)</source>
+        <translation>%1 (les sorties du firmware ne sont jamais enregistrées)</translation>
     </message>
 </context>
 <context>
     <name>ParameterEditor</name>
     <message>
-        <location filename="../../widgets/parameter_editor.py" line="+44"/>
+        <location filename="../../widgets/parameter_editor.py" line="+46"/>
         <source>Parameter profiles (*.toml);;All files (*)</source>
         <translation>Profils de paramètres (*.toml);;Tous les fichiers (*)</translation>
     </message>
@@ -1913,12 +1933,11 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Écrire les modifications</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Write the values marked • (not yet written)</source>
-        <translation>Écrire les valeurs marquées • (pas encore écrites)</translation>
+        <translation type="vanished">Écrire les valeurs marquées • (pas encore écrites)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
@@ -1978,9 +1997,18 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>le tableau ne contient aucune valeur</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>nothing differs</source>
-        <translation>aucune différence</translation>
+        <translation type="vanished">aucune différence</translation>
+    </message>
+    <message>
+        <location line="-208"/>
+        <source>Write the input values marked • (they differ from what the device holds); firmware outputs are not written by it</source>
+        <translation>Écrire les valeurs d&apos;entrée marquées • (elles diffèrent de ce que contient l&apos;appareil)&#xa0;; les sorties du firmware ne sont pas écrites par ce bouton</translation>
+    </message>
+    <message>
+        <location line="+217"/>
+        <source>no input differs</source>
+        <translation>aucune entrée ne diffère</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2003,12 +2031,17 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>sans valeur, non écrit(s)&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>computed by the firmware, which may replace them: %1</source>
         <translation>calculé(s) par le firmware, qui peut les remplacer&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
+        <source>Warning: %1</source>
+        <translation>Avertissement&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Cancelling: the packet under way finishes, the rest are not sent</source>
         <translation>Annulation&#xa0;: le paquet en cours se termine, les suivants ne sont pas envoyés</translation>
     </message>
@@ -2051,7 +2084,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>ParameterModel</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-413"/>
+        <location filename="../../widgets/parameter_table.py" line="-435"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -2111,7 +2144,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Le résultat de la dernière écriture de ce paramètre</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+94"/>
+        <source>%1 (power-on)</source>
+        <translation>%1 (mise sous tension)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>output</source>
         <translation>sortie</translation>
     </message>
@@ -2126,7 +2164,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Entrée&#xa0;: définie par vous et écrite sur l&apos;appareil</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>%1: never written to this device from this panel; it holds %2 from power-on</source>
+        <translation>%1&#xa0;: jamais écrit sur cet appareil depuis ce panneau&#xa0;; il contient %2 depuis la mise sous tension</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%1: never written to this device from this panel</source>
         <translation>%1&#xa0;: jamais écrit sur cet appareil depuis ce panneau</translation>
     </message>
@@ -2151,7 +2194,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>• Diffère de la dernière valeur écrite sur cet appareil</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>%1: no such parameter</source>
         <translation>%1&#xa0;: paramètre inexistant</translation>
     </message>
@@ -2159,7 +2202,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>ParameterTableView</name>
     <message>
-        <location line="+159"/>
+        <location line="+164"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
         <translation>Pour modifier&#xa0;: double-cliquer sur une valeur, ou sélectionner une ligne puis appuyer sur Entrée ou saisir</translation>
     </message>
@@ -2167,7 +2210,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>ParameterValues</name>
     <message>
-        <location filename="../../widgets/parameter_values.py" line="+38"/>
+        <location filename="../../widgets/parameter_values.py" line="+40"/>
         <source>not written</source>
         <translation>non écrit</translation>
     </message>
@@ -2336,6 +2379,11 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Position de consigne, et la réponse de l&apos;appareil indique que le mouvement s&apos;y est terminé&#xa0;; non relue (un appareil capable d&apos;indiquer sa position est réinterrogé au repos).</translation>
     </message>
     <message>
+        <location line="+9"/>
+        <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
+        <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé&#xa0;; «&#xa0;Origine&#xa0;» ou «&#xa0;Définir l&apos;origine&#xa0;» pour commencer le décompte</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>position unknown: the link failed or the device restarted, and it cannot report where it is; home it or set home</source>
         <translation>position inconnue&#xa0;: la liaison a échoué ou l&apos;appareil a redémarré, et il ne peut pas indiquer où il se trouve&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
@@ -2418,7 +2466,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>La platine est hors des limites de course définies pour cet appareil&#xa0;: seuls les mouvements qui l&apos;en rapprochent sont envoyés, jusqu&apos;à ce qu&apos;elle y soit revenue</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+110"/>
         <source>outside the travel limits: %1</source>
         <translation>hors des limites de course&#xa0;: %1</translation>
     </message>
@@ -4125,19 +4173,29 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>ValueDelegate</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-97"/>
+        <location filename="../../widgets/parameter_table.py" line="-102"/>
         <source>%1: edit cancelled, value unchanged</source>
         <translation>%1&#xa0;: modification annulée, valeur inchangée</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1 is an output. %2</source>
         <translation>%1 est une sortie. %2</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+2"/>
+        <source>%1: %2</source>
+        <translation>%1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>%1 = %2, not yet written to the device</source>
         <translation>%1 = %2, pas encore écrit sur l&apos;appareil</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1. Warning: %2</source>
+        <translation>%1. Avertissement&#xa0;: %2</translation>
     </message>
     <message>
         <location line="+25"/>
@@ -4363,6 +4421,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>usage: {usage}</source>
         <translation>usage&#xa0;: {usage}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--kind {kind} refused: --kind is for jog only (move is in mm)</source>
+        <translation>--kind {kind} refusé&#xa0;: --kind ne s&apos;applique qu&apos;à jog (move s&apos;exprime en mm)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5161,6 +5224,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{source}: only firmware outputs ({names}), which a profile does not write</source>
+        <translation>{source}&#xa0;: uniquement des sorties du firmware ({names}), qu&apos;un profil n&apos;écrit pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>profile</source>
         <translation>profil</translation>
     </message>
@@ -5213,6 +5281,36 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>unknown parameter {name!r}: use a name or an id 1..{count}; &apos;motionctl ... param list&apos; lists them</source>
         <translation>paramètre inconnu {name!r}&#xa0;: utiliser un nom ou un id 1..{count}&#xa0;; &apos;motionctl ... param list&apos; les liste</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Home or Set Home (in the panel, or motionctl home / set-home) to start counting</source>
+        <translation>«&#xa0;Origine&#xa0;» ou «&#xa0;Définir l&apos;origine&#xa0;» (dans le panneau, ou motionctl home / set-home) pour commencer le décompte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set Home where the stage stands (in the panel, or motionctl set-home) to start counting; with no home move of its own, Home needs a count too</source>
+        <translation>«&#xa0;Définir l&apos;origine&#xa0;» là où se trouve la platine (dans le panneau, ou motionctl set-home) pour commencer le décompte&#xa0;; faute de mouvement de prise d&apos;origine propre, «&#xa0;Origine&#xa0;» a lui aussi besoin d&apos;un décompte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}</source>
+        <translation>{command} refusé&#xa0;: position inconnue&#xa0;: {protocol} ne peut pas être interrogé sur sa position et aucune position n&apos;est comptée pour ce port&#xa0;; {how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}</source>
+        <translation>position inconnue&#xa0;: {protocol} ne peut pas être interrogé sur sa position et aucune position n&apos;est comptée pour ce port&#xa0;; {how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware reads the digits as µm whatever the type letter ({kind} is not read): the stage moves X {x:.3f} mm, Y {y:.3f} mm</source>
+        <translation>ce firmware lit les chiffres comme des µm quelle que soit la lettre de type ({kind} n&apos;est pas lu)&#xa0;: la platine se déplace de X {x:.3f} mm, Y {y:.3f} mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no identity query: the device cannot be asked what it is</source>
+        <translation>{protocol} n&apos;a pas de requête d&apos;identification&#xa0;: l&apos;appareil ne peut pas être interrogé sur ce qu&apos;il est</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6106,51 +6204,202 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>the firmware recomputes {parameter} after every set: this value will not stay (it holds {held:g})</source>
+        <translation>le firmware recalcule {parameter} après chaque écriture&#xa0;: cette valeur ne restera pas (il vaut {held:g})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware recomputes {parameter} at every move: this value will not stay</source>
+        <translation>le firmware recalcule {parameter} à chaque mouvement&#xa0;: cette valeur ne restera pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision reads {parameter} only at boot: moves do not change until the device restarts</source>
+        <translation>cette révision du firmware ne lit {parameter} qu&apos;au démarrage&#xa0;: les mouvements ne changent pas tant que l&apos;appareil n&apos;a pas redémarré</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision never reads {parameter}: moves do not change</source>
+        <translation>cette révision du firmware ne lit jamais {parameter}&#xa0;: les mouvements ne changent pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Steps per move</source>
+        <translation>Pas par mouvement</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>X: 1 mm = {x1}, 10 mm = {x10} · Y: 1 mm = {y1}, 10 mm = {y10} (truncated: the firmware counts in 32-bit floats)</source>
+        <translation>X&#xa0;: 1 mm = {x1}, 10 mm = {x10} · Y&#xa0;: 1 mm = {y1}, 10 mm = {y10} (tronqué&#xa0;: le firmware compte en flottants 32 bits)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{steps} steps, {stepping} s of stepping; FA0001 about {total} s after the packet</source>
+        <translation>{steps} pas, {stepping} s d&apos;exécution des pas&#xa0;; FA0001 environ {total} s après le paquet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{text}; after a move in which Y stepped, {later} s (X&apos;s low phase is Y&apos;s last delay, {delay} µs: the ramps do not restore the delays)</source>
+        <translation>{text}&#xa0;; après un mouvement où Y a fait des pas, {later} s (la phase basse de X est le dernier délai de Y, {delay} µs&#xa0;: les rampes ne rétablissent pas les délais)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A 10 mm X move</source>
+        <translation>Un mouvement X de 10 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no: the firmware&apos;s Y loop runs the ramp count (R_y = 0 with these values), not the {asked} steps a 10 mm move asks for; set 22 and 24 so that the ramp length is above 0 (e.g. 22 = 6000, 24 = 1)</source>
+        <translation>non&#xa0;: la boucle Y du firmware exécute le compte de rampe (R_y = 0 avec ces valeurs), et non les {asked} pas que demande un mouvement de 10 mm&#xa0;; régler 22 et 24 pour que la longueur de rampe soit supérieure à 0 (par ex. 22 = 6000, 24 = 1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{runs} of the {asked} steps of a 10 mm Y move, {seconds} s: the firmware&apos;s Y loop runs the ramp count R_y (at most the ramp length {ramp}), not the distance, and speeds up without slowing down</source>
+        <translation>{runs} des {asked} pas d&apos;un mouvement Y de 10 mm, {seconds} s&#xa0;: la boucle Y du firmware exécute le compte de rampe R_y (au plus la longueur de rampe {ramp}), et non la distance, et accélère sans ralentir</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y moves</source>
+        <translation>Y se déplace</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none: the ramp length is 0 on both axes (it follows 21 ÷ 23 and 13 - 11); every X step takes 15 high plus 16 low</source>
+        <translation>aucune&#xa0;: la longueur de rampe est 0 sur les deux axes (elle découle de 21 ÷ 23 et de 13 - 11)&#xa0;; chaque pas X dure 15 à l&apos;état haut plus 16 à l&apos;état bas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>X over {x} steps, Y over {y} steps, between 13/14 (slow) and 11/12 (fast)</source>
+        <translation>X sur {x} pas, Y sur {y} pas, entre 13/14 (lent) et 11/12 (rapide)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramps</source>
+        <translation>Rampes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not used</source>
+        <translation>Non utilisés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{names}: the values in the table differ from power-on, but this firmware does not use them</source>
+        <translation>{names}&#xa0;: les valeurs du tableau diffèrent de celles de la mise sous tension, mais ce firmware ne les utilise pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Overwritten after every set</source>
+        <translation>Écrasés après chaque écriture</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: the firmware recomputes them; a written value does not stay</source>
+        <translation>{ids}&#xa0;: le firmware les recalcule&#xa0;; une valeur écrite ne reste pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Overwritten at every move</source>
+        <translation>Écrasés à chaque mouvement</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: the ramp counts of the last move</source>
+        <translation>{ids}&#xa0;: les comptes de rampe du dernier mouvement</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Never read</source>
+        <translation>Jamais lus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: writing them changes nothing (27 is forced to 1 after every set)</source>
+        <translation>{ids}&#xa0;: les écrire ne change rien (27 est remis à 1 après chaque écriture)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read only at boot</source>
+        <translation>Lus seulement au démarrage</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: the cycle length ({cycle} mm) is taken from them at power-on, when they hold their power-on values again: writing them changes no move</source>
+        <translation>{ids}&#xa0;: la longueur de cycle ({cycle} mm) en est tirée à la mise sous tension, quand ils ont retrouvé leurs valeurs de mise sous tension&#xa0;: les écrire ne change aucun mouvement</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware recomputes {id} after every set: this value will not stay</source>
+        <translation>le firmware recalcule {id} après chaque écriture&#xa0;: cette valeur ne restera pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware recomputes {id} at every move: this value will not stay</source>
+        <translation>le firmware recalcule {id} à chaque mouvement&#xa0;: cette valeur ne restera pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware forces 27 to 1 after every set: this value will not stay</source>
+        <translation>le firmware impose 27 à 1 après chaque écriture&#xa0;: cette valeur ne restera pas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware never reads {id:02d}: writing it changes nothing</source>
+        <translation>ce firmware ne lit jamais {id:02d}&#xa0;: l&apos;écrire ne change rien</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a move with ramps (ramp length above 0) leaves {id} at the ramp&apos;s last delay: this value stays only until then</source>
+        <translation>un mouvement avec rampes (longueur de rampe supérieure à 0) laisse {id} au dernier délai de la rampe&#xa0;: cette valeur ne reste que jusque-là</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware reads {id:02d} only at boot, when it holds {value} again: writing it changes no move</source>
+        <translation>ce firmware ne lit {id:02d} qu&apos;au démarrage, quand il vaut de nouveau {value}&#xa0;: l&apos;écrire ne change aucun mouvement</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Current step delay, {axis} axis (left by the firmware&apos;s ramps; this revision times an X step as 15 high plus 16 low, a Y step as 16 twice)</source>
+        <translation>Délai entre pas actuel, axe {axis} (laissé par les rampes du firmware&#xa0;; cette révision cadence un pas X sur 15 à l&apos;état haut plus 16 à l&apos;état bas, un pas Y sur deux fois 16)</translation>
+    </message>
+    <message>
         <source>this firmware revision reads {parameter} only at boot (and keeps pulley values divided by 4): moves do not change until the firmware is fixed</source>
-        <translation>cette révision du firmware ne lit {parameter} qu&apos;au démarrage (et garde les valeurs de poulie divisées par 4)&#xa0;: les mouvements ne changent pas tant que le firmware n&apos;est pas corrigé</translation>
+        <translation type="vanished">cette révision du firmware ne lit {parameter} qu&apos;au démarrage (et garde les valeurs de poulie divisées par 4)&#xa0;: les mouvements ne changent pas tant que le firmware n&apos;est pas corrigé</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Note</source>
-        <translation>Remarque</translation>
+        <translation type="vanished">Remarque</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>this firmware revision moves by the cycle it computed at boot (10 mm lead screw), whatever 01-04 and 27 say</source>
-        <translation>cette révision du firmware se déplace selon le cycle calculé au démarrage (vis au pas de 10 mm), quelles que soient les valeurs de 01-04 et 27</translation>
+        <translation type="vanished">cette révision du firmware se déplace selon le cycle calculé au démarrage (vis au pas de 10 mm), quelles que soient les valeurs de 01-04 et 27</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>{axis}: the cycle ({cycle:g} mm) and the steps per turn ({steps:g}) must both be above 0</source>
-        <translation>{axis}&#xa0;: le cycle ({cycle:g} mm) et les pas par tour ({steps:g}) doivent tous deux être supérieurs à 0</translation>
+        <translation type="vanished">{axis}&#xa0;: le cycle ({cycle:g} mm) et les pas par tour ({steps:g}) doivent tous deux être supérieurs à 0</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>{times} (1 s silence included)</source>
-        <translation>{times} (1 s de silence inclus)</translation>
+        <translation type="vanished">{times} (1 s de silence inclus)</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Microsteps per turn</source>
-        <translation>Micropas par tour</translation>
+        <translation type="vanished">Micropas par tour</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Per step</source>
-        <translation>Par pas</translation>
+        <translation type="vanished">Par pas</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Steps per mm</source>
-        <translation>Pas par mm</translation>
+        <translation type="vanished">Pas par mm</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>A 10 mm move</source>
-        <translation>Un mouvement de 10 mm</translation>
+        <translation type="vanished">Un mouvement de 10 mm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>Lead-screw pitch of the {axis} axis (mm per turn)</source>
         <translation>Pas de vis de l&apos;axe {axis} (mm par tour)</translation>
     </message>
@@ -6185,12 +6434,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Délai entre pas à la vitesse minimale, axe {axis}</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Current step delay, {axis} axis (computed by the firmware; this revision times every step from it: one step is twice this delay)</source>
-        <translation>Délai entre pas actuel, axe {axis} (calculé par le firmware&#xa0;; cette révision cadence chaque pas sur lui&#xa0;: un pas dure deux fois ce délai)</translation>
+        <translation type="vanished">Délai entre pas actuel, axe {axis} (calculé par le firmware&#xa0;; cette révision cadence chaque pas sur lui&#xa0;: un pas dure deux fois ce délai)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Mean step delay while accelerating, {axis} axis (computed by the firmware)</source>
         <translation>Délai moyen entre pas pendant l&apos;accélération, axe {axis} (calculé par le firmware)</translation>
     </message>

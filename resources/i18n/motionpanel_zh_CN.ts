@@ -692,7 +692,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DerivedValues</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="+447"/>
+        <location filename="../../widgets/parameter_table.py" line="+469"/>
         <source>Derived values</source>
         <translation>派生值</translation>
     </message>
@@ -1418,7 +1418,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+110"/>
+        <location filename="../../app/main_window.py" line="+111"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 没有停止命令：此操作会丢弃尚未发送的命令；设备上已在进行的移动会继续完成（Esc）</translation>
     </message>
@@ -1428,7 +1428,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>立即停止平台：中止正在进行的移动，并清空队列（Esc）</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+44"/>
         <source>simulated %1 device</source>
         <translation>模拟的 %1 设备</translation>
     </message>
@@ -1438,7 +1438,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+114"/>
+        <location line="+116"/>
         <source>no session log: %1</source>
         <translation>无会话日志：%1</translation>
     </message>
@@ -1539,12 +1539,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+380"/>
+        <location line="+390"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location line="-375"/>
+        <location line="-385"/>
         <source>&amp;Travel limits…</source>
         <translation>行程限位(&amp;T)…</translation>
     </message>
@@ -1624,7 +1624,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>位置未知：此设备无法报告其位置；请回原点或设为原点</translation>
     </message>
@@ -1632,6 +1632,11 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <location line="+4"/>
         <source>connected again to %1: the position was read again</source>
         <translation>已重新连接到 %1：已重新读取位置</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
+        <translation>位置未知：无法查询设备；请“回原点”或“设为原点”以开始计数</translation>
     </message>
     <message>
         <location line="+20"/>
@@ -1758,13 +1763,13 @@ Send them anyway?</source>
         <translation>新原点：轨迹已平移 (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+117"/>
         <source>the device reported an error: %1</source>
         <translation>设备报告错误：%1</translation>
     </message>
     <message>
-        <location line="-551"/>
-        <location line="+555"/>
+        <location line="-575"/>
+        <location line="+579"/>
         <source>device: %1</source>
         <translation>设备：%1</translation>
     </message>
@@ -1774,7 +1779,12 @@ Send them anyway?</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+25"/>
+        <source>home confirmed: the position is counted from here</source>
+        <translation>原点已确认：位置从此处开始计数</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>速度 %1 mm/s 回读为 %2 mm/s（设备会取整）</translation>
     </message>
@@ -1825,7 +1835,7 @@ Send them anyway?</source>
         <translation>步</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+56"/>
         <source>Parameters</source>
         <translation>参数</translation>
     </message>
@@ -1850,7 +1860,7 @@ Send them anyway?</source>
         <translation>未发送</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+36"/>
         <source>the device did not answer</source>
         <translation>设备无应答</translation>
     </message>
@@ -1865,15 +1875,25 @@ Send them anyway?</source>
         <translation>已从 %2 加载 %1 个值；尚未发送（“写入更改”会发送它们）</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+5"/>
+        <source>left out, computed by the firmware: %1</source>
+        <translation>已略过（由固件计算）：%1</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>saved %1 values to %2</source>
         <translation>已将 %1 个值保存到 %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (firmware outputs are never saved)</source>
+        <translation>%1（固件输出参数从不保存）</translation>
     </message>
 </context>
 <context>
     <name>ParameterEditor</name>
     <message>
-        <location filename="../../widgets/parameter_editor.py" line="+44"/>
+        <location filename="../../widgets/parameter_editor.py" line="+46"/>
         <source>Parameter profiles (*.toml);;All files (*)</source>
         <translation>参数配置文件 (*.toml);;所有文件 (*)</translation>
     </message>
@@ -1913,12 +1933,11 @@ Send them anyway?</source>
         <translation>写入更改</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Write the values marked • (not yet written)</source>
-        <translation>写入标有 • 的值（尚未写入）</translation>
+        <translation type="vanished">写入标有 • 的值（尚未写入）</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
@@ -1978,9 +1997,18 @@ Send them anyway?</source>
         <translation>表中没有值</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>nothing differs</source>
-        <translation>没有不同的值</translation>
+        <translation type="vanished">没有不同的值</translation>
+    </message>
+    <message>
+        <location line="-208"/>
+        <source>Write the input values marked • (they differ from what the device holds); firmware outputs are not written by it</source>
+        <translation>写入标有 • 的输入值（它们与设备当前的值不同）；此按钮不写入固件输出参数</translation>
+    </message>
+    <message>
+        <location line="+217"/>
+        <source>no input differs</source>
+        <translation>没有不同的输入值</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2003,12 +2031,17 @@ Send them anyway?</source>
         <translation>无值，未写入：%1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>computed by the firmware, which may replace them: %1</source>
         <translation>由固件计算，固件可能会替换写入的值：%1</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
+        <source>Warning: %1</source>
+        <translation>警告：%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Cancelling: the packet under way finishes, the rest are not sent</source>
         <translation>正在取消：当前数据包会完成，其余的不再发送</translation>
     </message>
@@ -2051,7 +2084,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterModel</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-413"/>
+        <location filename="../../widgets/parameter_table.py" line="-435"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -2111,7 +2144,12 @@ Send them anyway?</source>
         <translation>此参数上次写入的结果</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+94"/>
+        <source>%1 (power-on)</source>
+        <translation>%1（上电值）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>output</source>
         <translation>输出</translation>
     </message>
@@ -2126,7 +2164,12 @@ Send them anyway?</source>
         <translation>输入：由您设置并写入设备</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>%1: never written to this device from this panel; it holds %2 from power-on</source>
+        <translation>%1：从未通过本面板写入此设备；其值为上电时的 %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%1: never written to this device from this panel</source>
         <translation>%1：从未通过本面板写入此设备</translation>
     </message>
@@ -2151,7 +2194,7 @@ Send them anyway?</source>
         <translation>• 与上次写入此设备的值不同</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+59"/>
         <source>%1: no such parameter</source>
         <translation>%1：无此参数</translation>
     </message>
@@ -2159,7 +2202,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterTableView</name>
     <message>
-        <location line="+159"/>
+        <location line="+164"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
         <translation>双击某个值，或选中一行后按 Enter 或直接输入，即可编辑</translation>
     </message>
@@ -2167,7 +2210,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterValues</name>
     <message>
-        <location filename="../../widgets/parameter_values.py" line="+38"/>
+        <location filename="../../widgets/parameter_values.py" line="+40"/>
         <source>not written</source>
         <translation>未写入</translation>
     </message>
@@ -2336,6 +2379,11 @@ Send them anyway?</source>
         <translation>设备被指令到达的位置，其应答表明移动已在此结束；并非回读值（能报告位置的设备会在空闲时再次查询）。</translation>
     </message>
     <message>
+        <location line="+9"/>
+        <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
+        <translation>位置未知：无法查询设备；请“回原点”或“设为原点”以开始计数</translation>
+    </message>
+    <message>
         <location line="+8"/>
         <source>position unknown: the link failed or the device restarted, and it cannot report where it is; home it or set home</source>
         <translation>位置未知：连接故障或设备已重启，且设备无法报告其位置；请回原点或设为原点</translation>
@@ -2418,7 +2466,7 @@ Send them anyway?</source>
         <translation>平台位于为此设备设置的行程限位之外：在回到限位内之前，只会发送使其更接近限位范围的移动</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+110"/>
         <source>outside the travel limits: %1</source>
         <translation>超出行程限位：%1</translation>
     </message>
@@ -4125,19 +4173,29 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>ValueDelegate</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-97"/>
+        <location filename="../../widgets/parameter_table.py" line="-102"/>
         <source>%1: edit cancelled, value unchanged</source>
         <translation>%1：编辑已取消，值未更改</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1 is an output. %2</source>
         <translation>%1 是输出参数。%2</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+2"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>%1 = %2, not yet written to the device</source>
         <translation>%1 = %2，尚未写入设备</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1. Warning: %2</source>
+        <translation>%1。警告：%2</translation>
     </message>
     <message>
         <location line="+25"/>
@@ -4363,6 +4421,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>usage: {usage}</source>
         <translation>用法：{usage}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--kind {kind} refused: --kind is for jog only (move is in mm)</source>
+        <translation>--kind {kind} 被拒绝：--kind 仅适用于 jog（move 的单位为 mm）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5161,6 +5224,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>{source}: only firmware outputs ({names}), which a profile does not write</source>
+        <translation>{source}：只有固件输出参数（{names}），配置文件不会写入这些参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>profile</source>
         <translation>参数配置文件</translation>
     </message>
@@ -5213,6 +5281,36 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>unknown parameter {name!r}: use a name or an id 1..{count}; &apos;motionctl ... param list&apos; lists them</source>
         <translation>未知参数 {name!r}：请使用名称或 ID 1..{count}；&apos;motionctl ... param list&apos; 可列出全部参数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Home or Set Home (in the panel, or motionctl home / set-home) to start counting</source>
+        <translation>请回原点或设为原点（在面板中，或用 motionctl home / set-home）以开始计数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Set Home where the stage stands (in the panel, or motionctl set-home) to start counting; with no home move of its own, Home needs a count too</source>
+        <translation>请在平台当前所在处设为原点（在面板中，或用 motionctl set-home）以开始计数；设备自身没有回原点移动，因此回原点也需要位置计数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}</source>
+        <translation>{command} 被拒绝：位置未知：无法向 {protocol} 查询其位置，且此端口没有位置计数；{how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}</source>
+        <translation>位置未知：无法向 {protocol} 查询其位置，且此端口没有位置计数；{how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware reads the digits as µm whatever the type letter ({kind} is not read): the stage moves X {x:.3f} mm, Y {y:.3f} mm</source>
+        <translation>无论类型字母为何，此固件都将数字读作 µm（不会读取 {kind}）：平台移动 X {x:.3f} mm，Y {y:.3f} mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} has no identity query: the device cannot be asked what it is</source>
+        <translation>{protocol} 没有身份查询命令：无法查询设备的身份</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6106,51 +6204,202 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>the firmware recomputes {parameter} after every set: this value will not stay (it holds {held:g})</source>
+        <translation>每次设置后固件都会重新计算 {parameter}：此值不会保留（设备当前值为 {held:g}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware recomputes {parameter} at every move: this value will not stay</source>
+        <translation>每次移动时固件都会重新计算 {parameter}：此值不会保留</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision reads {parameter} only at boot: moves do not change until the device restarts</source>
+        <translation>此固件版本仅在启动时读取 {parameter}：在设备重启之前，移动不会改变</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware revision never reads {parameter}: moves do not change</source>
+        <translation>此固件版本从不读取 {parameter}：移动不会改变</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Steps per move</source>
+        <translation>每次移动的步数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>X: 1 mm = {x1}, 10 mm = {x10} · Y: 1 mm = {y1}, 10 mm = {y10} (truncated: the firmware counts in 32-bit floats)</source>
+        <translation>X：1 mm = {x1}，10 mm = {x10} · Y：1 mm = {y1}，10 mm = {y10}（已截断：固件以 32 位浮点数计数）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{steps} steps, {stepping} s of stepping; FA0001 about {total} s after the packet</source>
+        <translation>{steps} 步，步进耗时 {stepping} s；数据包发出后约 {total} s 收到 FA0001</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{text}; after a move in which Y stepped, {later} s (X&apos;s low phase is Y&apos;s last delay, {delay} µs: the ramps do not restore the delays)</source>
+        <translation>{text}；在 Y 轴有步进的移动之后为 {later} s（X 的低电平阶段取 Y 的最后延时 {delay} µs：斜坡不会恢复延时）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A 10 mm X move</source>
+        <translation>X 轴移动 10 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no: the firmware&apos;s Y loop runs the ramp count (R_y = 0 with these values), not the {asked} steps a 10 mm move asks for; set 22 and 24 so that the ramp length is above 0 (e.g. 22 = 6000, 24 = 1)</source>
+        <translation>不移动：固件的 Y 循环执行的是斜坡计数（按这些值 R_y = 0），而不是 10 mm 移动所需的 {asked} 步；请设置 22 和 24，使斜坡长度大于 0（例如 22 = 6000，24 = 1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{runs} of the {asked} steps of a 10 mm Y move, {seconds} s: the firmware&apos;s Y loop runs the ramp count R_y (at most the ramp length {ramp}), not the distance, and speeds up without slowing down</source>
+        <translation>10 mm Y 轴移动所需 {asked} 步中的 {runs} 步，{seconds} s：固件的 Y 循环按斜坡计数 R_y（至多为斜坡长度 {ramp}）执行，而不是按距离，且只加速不减速</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y moves</source>
+        <translation>Y 轴移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none: the ramp length is 0 on both axes (it follows 21 ÷ 23 and 13 - 11); every X step takes 15 high plus 16 low</source>
+        <translation>无：两轴的斜坡长度均为 0（由 21 ÷ 23 和 13 - 11 决定）；每个 X 步耗时为 15 高电平加 16 低电平</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>X over {x} steps, Y over {y} steps, between 13/14 (slow) and 11/12 (fast)</source>
+        <translation>X 历经 {x} 步，Y 历经 {y} 步，介于 13/14（慢）和 11/12（快）之间</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ramps</source>
+        <translation>斜坡</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Not used</source>
+        <translation>未使用</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{names}: the values in the table differ from power-on, but this firmware does not use them</source>
+        <translation>{names}：表中的值与上电值不同，但此固件不使用它们</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Overwritten after every set</source>
+        <translation>每次设置后被覆盖</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: the firmware recomputes them; a written value does not stay</source>
+        <translation>{ids}：固件会重新计算它们；写入的值不会保留</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Overwritten at every move</source>
+        <translation>每次移动时被覆盖</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: the ramp counts of the last move</source>
+        <translation>{ids}：上次移动的斜坡计数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Never read</source>
+        <translation>从不读取</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: writing them changes nothing (27 is forced to 1 after every set)</source>
+        <translation>{ids}：写入它们不会改变任何东西（每次设置后 27 都会被强制设为 1）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read only at boot</source>
+        <translation>仅在启动时读取</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{ids}: the cycle length ({cycle} mm) is taken from them at power-on, when they hold their power-on values again: writing them changes no move</source>
+        <translation>{ids}：周期长度（{cycle} mm）在上电时取自这些参数，而此时它们已恢复为上电值：写入它们不会改变任何移动</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware recomputes {id} after every set: this value will not stay</source>
+        <translation>每次设置后固件都会重新计算 {id}：此值不会保留</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware recomputes {id} at every move: this value will not stay</source>
+        <translation>每次移动时固件都会重新计算 {id}：此值不会保留</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the firmware forces 27 to 1 after every set: this value will not stay</source>
+        <translation>每次设置后固件都会将 27 强制设为 1：此值不会保留</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware never reads {id:02d}: writing it changes nothing</source>
+        <translation>此固件从不读取 {id:02d}：写入它不会改变任何东西</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a move with ramps (ramp length above 0) leaves {id} at the ramp&apos;s last delay: this value stays only until then</source>
+        <translation>带斜坡的移动（斜坡长度大于 0）会将 {id} 留在斜坡的最后延时：此值只保留到那时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>this firmware reads {id:02d} only at boot, when it holds {value} again: writing it changes no move</source>
+        <translation>此固件仅在启动时读取 {id:02d}，而那时它已恢复为 {value}：写入它不会改变任何移动</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Current step delay, {axis} axis (left by the firmware&apos;s ramps; this revision times an X step as 15 high plus 16 low, a Y step as 16 twice)</source>
+        <translation>{axis} 轴当前步进延时（由固件的斜坡留下；此版本中一个 X 步的时长为 15 高电平加 16 低电平，一个 Y 步为两倍的 16）</translation>
+    </message>
+    <message>
         <source>this firmware revision reads {parameter} only at boot (and keeps pulley values divided by 4): moves do not change until the firmware is fixed</source>
-        <translation>此固件版本仅在启动时读取 {parameter}（且保存的带轮数值被除以 4）：在固件修复之前，移动不会改变</translation>
+        <translation type="vanished">此固件版本仅在启动时读取 {parameter}（且保存的带轮数值被除以 4）：在固件修复之前，移动不会改变</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Note</source>
-        <translation>注意</translation>
+        <translation type="vanished">注意</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>this firmware revision moves by the cycle it computed at boot (10 mm lead screw), whatever 01-04 and 27 say</source>
-        <translation>此固件版本按启动时计算的周期（10 mm 丝杠）移动，与 01-04 和 27 的设置无关</translation>
+        <translation type="vanished">此固件版本按启动时计算的周期（10 mm 丝杠）移动，与 01-04 和 27 的设置无关</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>{axis}: the cycle ({cycle:g} mm) and the steps per turn ({steps:g}) must both be above 0</source>
-        <translation>{axis}：周期（{cycle:g} mm）和每转步数（{steps:g}）都必须大于 0</translation>
+        <translation type="vanished">{axis}：周期（{cycle:g} mm）和每转步数（{steps:g}）都必须大于 0</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>{times} (1 s silence included)</source>
-        <translation>{times}（含 1 s 静默）</translation>
+        <translation type="vanished">{times}（含 1 s 静默）</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Microsteps per turn</source>
-        <translation>每转微步数</translation>
+        <translation type="vanished">每转微步数</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Per step</source>
-        <translation>每步</translation>
+        <translation type="vanished">每步</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Steps per mm</source>
-        <translation>每毫米步数</translation>
+        <translation type="vanished">每毫米步数</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>A 10 mm move</source>
-        <translation>移动 10 mm 耗时</translation>
+        <translation type="vanished">移动 10 mm 耗时</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>Lead-screw pitch of the {axis} axis (mm per turn)</source>
         <translation>{axis} 轴丝杠导程（每转 mm）</translation>
     </message>
@@ -6185,12 +6434,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{axis} 轴最低速度时的步进延时</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Current step delay, {axis} axis (computed by the firmware; this revision times every step from it: one step is twice this delay)</source>
-        <translation>{axis} 轴当前步进延时（由固件计算；此版本的每一步都按它计时：一步为此延时的两倍）</translation>
+        <translation type="vanished">{axis} 轴当前步进延时（由固件计算；此版本的每一步都按它计时：一步为此延时的两倍）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Mean step delay while accelerating, {axis} axis (computed by the firmware)</source>
         <translation>{axis} 轴加速期间的平均步进延时（由固件计算）</translation>
     </message>
