@@ -63,10 +63,10 @@ CASES = [
     Case("laser-frame", ("position",), "hang", 3, r"GET_POSITION failed after 3 tries"),
     Case("laser-frame", ("position",), "garbage 300", 0, r"^0\.00 0\.00 0\.00$"),
     Case("laser-frame", ("position",), "wrong", 0, r"^0\.00 0\.00 0\.00$"),
-    Case("visiomex", ("move", "1", "0"), "hang", 3, r"did not answer to MLP0001000P0000000"),
+    Case("visiomex", ("jog", "1", "0"), "hang", 3, r"did not answer to MLP0001000P0000000"),
     Case(
         "visiomex",
-        ("move", "50", "0"),
+        ("jog", "50", "0"),
         "reboot",
         3,
         r"restarted during MLP0050000P0000000",
@@ -75,7 +75,7 @@ CASES = [
     ),
     Case(
         "visiomex",
-        ("move", "50", "0"),
+        ("jog", "50", "0"),
         "vanish",
         3,
         r"reading from .* failed|disconnected",
