@@ -63,7 +63,16 @@ def check_param_offline(protocol: Protocol, args: list[str]) -> None:
         parameter = protocol.parameter(args[1])
         parameter.to_wire(_value(parameter, args[2]))
     elif args[0] == "write":
-        _checked[args[1], protocol.name] = read_profile(args[1], protocol.parameters, protocol.name)
+        outputs: list[str] = []
+        _checked[args[1], protocol.name] = read_profile(
+            args[1], protocol.parameters, protocol.name, outputs
+        )
+        if outputs:
+            print(
+                f"motionctl: {args[1]}: not written: {', '.join(outputs)} "
+                "(computed by the firmware, which overwrites them)",
+                file=sys.stderr,
+            )
 
 
 def _value(parameter: Parameter, text: str) -> float:

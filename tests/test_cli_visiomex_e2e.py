@@ -300,10 +300,14 @@ def test_full_profile_round_trip(start_sim, host_log: Path, tmp_path: Path) -> N
     values = {p.name: p.default for p in PARAMETERS}
     inputs = [p for p in PARAMETERS if not p.output]  # a profile never holds firmware outputs
     profile = tmp_path / "all.toml"
-    profile.write_text(format_profile(values, PARAMETERS, "visiomex"), encoding="utf-8")
+    text = format_profile(values, PARAMETERS, "visiomex")
+    output = next(p for p in PARAMETERS if p.output)  # one written by hand: left out, said so
+    text += f"{output.name} = {output.default:g}\n"
+    profile.write_text(text, encoding="utf-8")
     sim, _ = start_sim()
     result = motionctl(sim.path, "--json", "param", "write", str(profile), log=host_log)
     assert result.returncode == 0, result.stderr
+    assert f"not written: {output.name} (computed by the firmware" in result.stderr
     written = json.loads(result.stdout)["written"]
     assert [w["name"] for w in written] == [p.name for p in inputs]
     assert [w["value"] for w in written] == [float(p.default) for p in inputs]
