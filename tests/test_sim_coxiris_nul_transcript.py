@@ -11,7 +11,7 @@ import pytest
 from drivers.sim.clock import ManualClock
 from drivers.sim.coxiris_device import BUFFER_SIZE, CoxirisDevice
 from drivers.sim.device import BITS_PER_BYTE
-from tests.test_sim_coxiris_transcript import _replay
+from tests.test_sim_coxiris_transcript import _replay, replay_transcript
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -45,27 +45,13 @@ def test_the_transcript_holds_the_five_nul_cases() -> None:
 @pytest.mark.parametrize("blocking", [True, False], ids=["blocking", "background"])
 @pytest.mark.parametrize("baud", [None, 115200], ids=["untimed", "115200"])
 def test_nul_transcript_in_order_byte_for_byte(baud: int | None, blocking: bool) -> None:
-    clock = ManualClock()
-    # The recorded sketch: instant moves, speeds 1 to 100, initial speed 10 (the defaults).
-    device = CoxirisDevice(clock, baud, blocking=blocking, instant=True)
-    device.boot()
-    assert device.read_output() == TRANSCRIPT["boot_output"].encode()
-    for exchange in EXCHANGES:
-        sent = exchange["sent"].encode("latin-1")
-        first, got = _replay(device, clock, sent)
-        # Recorded behind a pty, where the whole line is in at once: timed from the byte the
-        # parser answers (the line end, or the 64th character of a line too long).
+    def line_in(sent: bytes) -> float:
+        """Recorded behind a pty, where the whole line is in at once: timed from the byte the
+        parser answers (the line end, or the 64th character of a line too long)."""
         answered = BUFFER_SIZE if len(sent.rstrip(b"\r\n")) >= BUFFER_SIZE else len(sent)
-        line_in = answered * BITS_PER_BYTE / baud if baud else 0.0
-        assert got == _expected(sent, exchange["received"].encode("latin-1"), baud is not None), (
-            sent
-        )
-        recorded_first = exchange["first_byte_after_s"]
-        if recorded_first is None:
-            assert first is None, sent
-        else:
-            # The recording's time includes the host's pty latency: the device is no slower.
-            assert first is not None and 0.0 <= first - line_in <= recorded_first, sent
+        return answered * BITS_PER_BYTE / baud if baud else 0.0
+
+    replay_transcript(TRANSCRIPT, baud, blocking, _expected, line_in)
 
 
 @pytest.mark.parametrize("baud", [None, 115200], ids=["untimed", "115200"])

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -49,23 +50,34 @@ def _replay(device: CoxirisDevice, clock: ManualClock, sent: bytes) -> tuple[flo
     return first, out + device.read_output()
 
 
-@pytest.mark.parametrize("blocking", [True, False], ids=["blocking", "background"])
-@pytest.mark.parametrize("baud", [None, 115200], ids=["untimed", "115200"])
-def test_transcript_in_order_byte_for_byte(baud: int | None, blocking: bool) -> None:
+def replay_transcript(
+    transcript: dict,
+    baud: int | None,
+    blocking: bool,
+    expected: Callable[[bytes, bytes, bool], bytes],
+    line_in: Callable[[bytes], float] = lambda sent: 0.0,
+) -> None:
+    """Replay `transcript`'s exchanges in order on a fresh device: each reply as `expected`
+    makes it of the recorded one, its first byte no later than recorded, timed from
+    `line_in(sent)` seconds after the write began (the byte the parser answers)."""
     clock = ManualClock()
     # The recorded sketch: instant moves, speeds 1 to 100, initial speed 10 (the defaults).
     device = CoxirisDevice(clock, baud, blocking=blocking, instant=True)
     device.boot()
-    assert device.read_output() == TRANSCRIPT["boot_output"].encode()
-    for exchange in EXCHANGES:
+    assert device.read_output() == transcript["boot_output"].encode()
+    for exchange in transcript["exchanges"]:
         sent = exchange["sent"].encode("latin-1")
         first, got = _replay(device, clock, sent)
-        assert got == _expected(sent, exchange["received"].encode("latin-1"), baud is not None), (
-            sent
-        )
+        assert got == expected(sent, exchange["received"].encode("latin-1"), baud is not None), sent
         recorded_first = exchange["first_byte_after_s"]
         if recorded_first is None:
             assert first is None, sent
         else:
             # The recording's time includes the host's pty latency: the device is no slower.
-            assert first is not None and 0.0 <= first <= recorded_first, sent
+            assert first is not None and 0.0 <= first - line_in(sent) <= recorded_first, sent
+
+
+@pytest.mark.parametrize("blocking", [True, False], ids=["blocking", "background"])
+@pytest.mark.parametrize("baud", [None, 115200], ids=["untimed", "115200"])
+def test_transcript_in_order_byte_for_byte(baud: int | None, blocking: bool) -> None:
+    replay_transcript(TRANSCRIPT, baud, blocking, _expected)
