@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
 from pathlib import Path
 
 from tests.acceptance.conftest import Rig
-from tests.acceptance.xsession import ROOT, XServer, hold, numbers, wait_for, write_settings
+from tests.acceptance.xsession import (
+    XServer,
+    hold,
+    motionctl,
+    numbers,
+    wait_for,
+    write_settings,
+)
 
 BOX = ((-50.0, 50.0), (-50.0, 50.0), (-50.0, 50.0))
 
@@ -69,25 +74,15 @@ def test_raw_move_from_the_console_is_waited_for(
 def test_motionctl_raw_cannot_leave_the_box(rig: Rig) -> None:
     """`motionctl --travel ... raw "ABSOLUTE_MOVE 100 0 0"` exits 2 and sends nothing."""
     sim = rig.sim("coxiris", "--speed", "100")
-    done = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "app.cli",
-            "--port",
-            sim.path,
-            "--protocol",
-            "coxiris",
-            "--travel",
-            "-50:50,-50:50,-50:50",
-            "raw",
-            "ABSOLUTE_MOVE 100 0 0",
-        ],
-        cwd=ROOT,
-        capture_output=True,
-        text=True,
-        timeout=30,
-        check=False,
+    done = motionctl(
+        "--port",
+        sim.path,
+        "--protocol",
+        "coxiris",
+        "--travel",
+        "-50:50,-50:50,-50:50",
+        "raw",
+        "ABSOLUTE_MOVE 100 0 0",
     )
     assert done.returncode == 2, (done.returncode, done.stdout, done.stderr)
     assert "ABSOLUTE_MOVE" not in sim.record.received_bytes().decode("ascii", "replace")
