@@ -11,10 +11,10 @@ from collections.abc import Sequence
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication
 
-from app.gc_main_thread import collect_for
-from app.i18n import LANGUAGES, install_translations, language_arg
-from app.main_window import MainWindow
-from app.settings import DEFAULT_PORT, DEFAULT_PROTOCOL
+from app.common.i18n import LANGUAGES, install_translations, language_arg
+from app.common.settings import DEFAULT_PORT, DEFAULT_PROTOCOL
+from app.window.gc_main_thread import collect_for
+from app.window.main_window import MainWindow
 from drivers.registry import get_protocol_class, protocol_names
 from widgets.gl_share import share_opengl_contexts  # imports no OpenGL, no numpy
 

@@ -27,8 +27,8 @@ def measure(jogs: int) -> dict[str, float]:
     from PySide6.QtTest import QTest
     from PySide6.QtWidgets import QApplication
 
-    from app.gc_main_thread import collect_for
-    from app.main_window import MainWindow
+    from app.window.gc_main_thread import collect_for
+    from app.window.main_window import MainWindow
 
     app = QApplication.instance() or QApplication([])
     window = MainWindow()

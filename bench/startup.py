@@ -34,7 +34,7 @@ from PySide6.QtWidgets import QApplication, QWidget
 app = QApplication([])
 views = None
 if {panel}:
-    from app.main_window import MainWindow
+    from app.window.main_window import MainWindow
     window = MainWindow()
     views = getattr(window, "views", None)  # built after the first paint
 else:

@@ -4,7 +4,7 @@ it in the operator's language.
 The driver layer has no Qt, so it cannot translate; it says what it has to say as
 `Message("the device did not answer {command} within {seconds:g} s", command=..., seconds=...)`.
 A Message is a `str` (the English text, what the command-line tools print and the logs keep), and
-remembers its template and values: `app/messages.py` looks the template up in the interface's
+remembers its template and values: `app/common/messages.py` looks the template up in the interface's
 language and fills in the values, translating those that are Messages (or errors carrying one)
 in turn. `resources/i18n/update.py` collects every `Message("…")` template in drivers/ and app/
 for the translators, so a template must be a plain string literal.

@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 from PySide6.QtCore import QCoreApplication, QTranslator
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from drivers.client import Client
 from drivers.motion import Motion
 from drivers.protocols.coxiris import CoxirisProtocol
@@ -62,7 +62,7 @@ def sim_link(request: pytest.FixtureRequest) -> Iterator[tuple[Link, Recorder]]:
 
 @pytest.fixture(autouse=True)
 def _garbage_collected_outside_qt() -> Iterator[None]:
-    """As the application does (app/gc_main_thread.py): no automatic collection, which could
+    """As the application does (app/window/gc_main_thread.py): no automatic collection, which could
     run inside a Qt call holding a lock and deadlock on it; collected here after each test."""
     gc.disable()
     yield

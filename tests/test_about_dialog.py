@@ -11,7 +11,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QGuiApplication, QIcon, QPixmap
 from PySide6.QtWidgets import QLabel
 
-from app.icons import app_icon
+from app.window.icons import app_icon
 from widgets.about_dialog import (
     AboutDialog,
     app_licence,

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from tests.simproc import SimProcess
 from widgets import status_line as status
 

@@ -165,7 +165,7 @@ def test_bad_options_exit_2_with_nothing_sent(sim: SimProcess, record: Path) -> 
             [
                 sys.executable,
                 "-m",
-                "app.cli",
+                "app.cli.main",
                 "--port",
                 sim.path,
                 "--protocol",
@@ -247,7 +247,7 @@ def test_travel_limits_clamp_when_asked(sim: SimProcess) -> None:
 def test_travel_limits_saved_by_the_panel_apply(sim: SimProcess, settings_file: Path) -> None:
     from PySide6.QtCore import QSettings
 
-    from app.settings import write_travel
+    from app.common.settings import write_travel
     from drivers.travel import TravelLimits
 
     settings = QSettings(str(settings_file), QSettings.Format.IniFormat)

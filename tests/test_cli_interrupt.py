@@ -155,7 +155,7 @@ def test_ctrl_c_without_a_stop_says_what_the_coxiris_device_does_next(sim_factor
 
 
 def test_ctrl_c_before_a_move_is_sent_says_the_stage_does_not_move() -> None:
-    from app.cli_interrupt import MoveTracker, after_interrupt
+    from app.cli.interrupt import MoveTracker, after_interrupt
     from drivers.client import Client
     from drivers.motion import Motion
     from drivers.registry import create_protocol

@@ -9,8 +9,8 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QPushButton
 
-from app.main_window import MainWindow
-from app.settings import read_counted_position
+from app.common.settings import read_counted_position
+from app.window.main_window import MainWindow
 from tests import e2e_support
 from tests.e2e_support import sent
 

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from app.settings import open_settings, read_counted_position, write_counted_position
+from app.common.settings import open_settings, read_counted_position, write_counted_position
 from tests import e2e_support
 from tests.e2e_support import Run, device_received, sent, stream
 from tests.simproc import SimProcess

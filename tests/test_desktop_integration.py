@@ -11,13 +11,13 @@ from pathlib import Path
 import pytest
 from PySide6.QtGui import QColor, QIcon, QImage
 
-from app.desktop_entry import (
+from app.window.desktop_entry import (
     data_home,
     install_desktop_entry,
     quote_exec,
     uninstall_desktop_entry,
 )
-from app.icons import (
+from app.window.icons import (
     ACTION_ICONS,
     APP_ICON_NAME,
     action_icon,

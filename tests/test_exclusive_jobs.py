@@ -10,8 +10,8 @@ from PySide6.QtCore import QEvent, Qt
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QApplication
 
-from app import jobs
-from app.main_window import MainWindow
+from app.window import jobs
+from app.window.main_window import MainWindow
 from widgets import status_line as status
 
 pytestmark = pytest.mark.timeout(60)
@@ -101,7 +101,7 @@ def test_a_jog_during_a_program_is_refused_and_nothing_moves_after_it(
 def test_a_program_cannot_start_while_a_macro_runs(
     qtbot, window: MainWindow, tmp_path: Path
 ) -> None:
-    from app.macros import Macro
+    from app.common.macros import Macro
 
     _connect(qtbot, window)
     panel = window.devices.program

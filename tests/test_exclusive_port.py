@@ -8,8 +8,8 @@ from collections.abc import Iterator
 
 import pytest
 
-from app.cli import EXIT_NO_DEVICE
-from app.main_window import MainWindow
+from app.cli.main import EXIT_NO_DEVICE
+from app.window.main_window import MainWindow
 from drivers.errors import PortBusy
 from drivers.transport import open_link
 from tests.simproc import ROOT, SimProcess
@@ -54,7 +54,7 @@ def test_motionctl_on_a_held_port_exits_with_the_port_error_code(sim: SimProcess
             [
                 sys.executable,
                 "-m",
-                "app.cli",
+                "app.cli.main",
                 "--port",
                 sim.path,
                 "--protocol",

@@ -11,7 +11,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QPushButton
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from tests.relay import wait_in_gui
 from tests.simproc import SimProcess
 

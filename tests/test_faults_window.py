@@ -15,8 +15,8 @@ import pytest
 from PySide6.QtCore import QObject, Slot
 from PySide6.QtWidgets import QLabel, QPushButton
 
-from app import jobs
-from app.main_window import MainWindow
+from app.window import jobs
+from app.window.main_window import MainWindow
 from drivers.registry import get_protocol_class
 from tests.relay import wait_in_gui
 from tests.simproc import SimProcess

@@ -6,7 +6,7 @@ import gc
 
 import pytest
 
-from app.gc_main_thread import MainThreadCollector, collect_for
+from app.window.gc_main_thread import MainThreadCollector, collect_for
 
 pytestmark = pytest.mark.timeout(30)
 

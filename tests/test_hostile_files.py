@@ -259,10 +259,10 @@ READER_SOURCES = [
     "drivers/program.py",
     "drivers/log_reader.py",
     "drivers/spy_log.py",
-    "app/settings.py",
-    "app/log_viewer.py",
-    "app/cli_log.py",
-    "app/cli_params.py",
+    "app/common/settings.py",
+    "app/window/log_viewer.py",
+    "app/cli/log.py",
+    "app/cli/params.py",
 ]
 UNSAFE_CALLS = {"eval", "exec", "compile", "__import__", "open"}
 UNSAFE_MODULES = {"pickle", "marshal", "shelve", "yaml", "dill", "jsonpickle", "runpy"}
@@ -327,12 +327,12 @@ def _settings_cases(tmp_path: Path) -> dict[str, tuple[Path, str]]:
 def test_a_bad_settings_file_gives_the_defaults_a_warning_and_is_left_alone(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, caplog: pytest.LogCaptureFixture, case: str
 ) -> None:
-    from app.settings import DEFAULT_PORT, open_settings, read_str, settings_problem
+    from app.common.settings import DEFAULT_PORT, open_settings, read_str, settings_problem
 
     path, why = _settings_cases(tmp_path)[case]
     before = path.read_bytes() if path.is_file() and case != "huge" else None
     monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(path))
-    with caplog.at_level(logging.WARNING, logger="app.settings"):
+    with caplog.at_level(logging.WARNING, logger="app.common.settings"):
         settings = open_settings()
     assert read_str(settings, "port", DEFAULT_PORT) == DEFAULT_PORT
     assert str(path.name) in settings_problem(settings) and why in settings_problem(settings)
@@ -347,7 +347,7 @@ def test_a_bad_settings_file_gives_the_defaults_a_warning_and_is_left_alone(
 
 
 def test_a_good_settings_file_is_the_users(tmp_path: Path, monkeypatch: pytest.MonkeyPatch):
-    from app.settings import open_settings, settings_problem
+    from app.common.settings import open_settings, settings_problem
 
     path = tmp_path / "settings.ini"
     monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(path))
@@ -361,7 +361,7 @@ def test_a_good_settings_file_is_the_users(tmp_path: Path, monkeypatch: pytest.M
 def test_the_default_settings_files_are_checked_too(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from app import settings as settings_module
+    from app.common import settings as settings_module
 
     if sys.platform.startswith("linux"):
         real = settings_module._native_files()
@@ -377,8 +377,8 @@ def test_the_default_settings_files_are_checked_too(
 def test_the_window_starts_with_a_fifo_for_its_settings(
     qtbot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from app.main_window import MainWindow
-    from app.settings import settings_problem
+    from app.common.settings import settings_problem
+    from app.window.main_window import MainWindow
 
     fifo = tmp_path / "settings.ini"
     os.mkfifo(fifo)
@@ -394,7 +394,7 @@ def test_the_window_starts_with_a_fifo_for_its_settings(
 # -- the log viewer: streamed into its index, a clear error in its status ---------------------
 @pytest.fixture
 def viewer(qtbot):
-    from app.log_viewer import LogViewer
+    from app.window.log_viewer import LogViewer
 
     window = LogViewer(None, "coxiris")
     qtbot.addWidget(window)
@@ -425,7 +425,7 @@ def test_the_log_viewer_shows_a_clear_error_for_a_bad_file(
 def test_the_log_viewer_takes_a_log_in_batches(
     qtbot, viewer, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from app import log_viewer
+    from app.window import log_viewer
 
     monkeypatch.setattr(log_viewer, "LOOKAHEAD", 3)
     monkeypatch.setattr(log_viewer, "BATCH", 5)

@@ -1,4 +1,4 @@
-"""app/i18n.py: the language from --lang, $MOTIONPANEL_LANG or the locale; our and Qt's .qm."""
+"""app/common/i18n.py: the language from --lang, $MOTIONPANEL_LANG or the locale; the .qm files."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ import pytest
 from PySide6.QtCore import QCoreApplication, QLocale
 from PySide6.QtWidgets import QApplication, QDialogButtonBox
 
-from app import i18n
+from app.common import i18n
 
 pytestmark = pytest.mark.timeout(60)
 

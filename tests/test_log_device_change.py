@@ -10,10 +10,10 @@ from pathlib import Path
 
 import pytest
 
-from app import jobs
-from app.log_viewer import LogViewer
-from app.session_log import open_session_log
-from app.worker import SerialWorker
+from app.common.session_log import open_session_log
+from app.window import jobs
+from app.window.log_viewer import LogViewer
+from app.window.worker import SerialWorker
 from drivers.decoding import DecodedFrame, decode_records
 from drivers.log_reader import read_log
 from drivers.registry import create_protocol

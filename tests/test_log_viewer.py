@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from app.log_viewer import LogViewer, detect_protocol
+from app.window.log_viewer import LogViewer, detect_protocol
 from drivers.log_reader import LogRecord
 from drivers.traffic import Traffic, TrafficLogWriter
 from tests.simproc import ROOT

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from app import macros
-from app.macros import Macro
+from app.common import macros
+from app.common.macros import Macro
 from tests.e2e_support import device_received, motionctl
 from tests.simproc import SimProcess
 
@@ -91,7 +91,7 @@ def test_an_unknown_macro_exits_2_with_nothing_sent(sim: SimProcess, record: Pat
 def test_a_saved_macro_with_a_bad_step_exits_2_with_nothing_sent(
     sim: SimProcess, record: Path, settings_file: Path
 ) -> None:
-    from app.settings import open_settings
+    from app.common.settings import open_settings
 
     macros.save(open_settings(), "coxiris", [Macro("m", "coxiris", ("home", "move 1 two"))])
     run = motionctl("coxiris", sim.path, "macro", "run", "m")

@@ -12,9 +12,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from app import macros
-from app.macros import BadMacro, BadMacroFile, Macro, MacroStopped
-from app.settings import open_settings
+from app.common import macros
+from app.common.macros import BadMacro, BadMacroFile, Macro, MacroStopped
+from app.common.settings import open_settings
 from drivers.client import Client
 from drivers.errors import BadFile
 from drivers.motion import Motion

@@ -9,7 +9,7 @@ import sys
 import pytest
 from PySide6.QtCore import Qt
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from drivers.log_reader import read_log
 from tests.simproc import ROOT, SimProcess
 

@@ -6,8 +6,8 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget, QPushButton
 
-from app.main_window import MainWindow
-from app.settings import read_protocol_settings
+from app.common.settings import read_protocol_settings
+from app.window.main_window import MainWindow
 from widgets import status_line as status
 
 pytestmark = pytest.mark.timeout(40)

@@ -8,8 +8,8 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QMessageBox
 
-from app.main_window import MainWindow
-from app.settings import write_travel
+from app.common.settings import write_travel
+from app.window.main_window import MainWindow
 from drivers.travel import TravelLimits
 
 pytestmark = pytest.mark.timeout(40)

@@ -9,7 +9,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from drivers.program import read_program
 from widgets import status_line as status
 

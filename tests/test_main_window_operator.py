@@ -7,8 +7,8 @@ import pytest
 from PySide6.QtCore import QPoint, QRect, Qt
 from PySide6.QtWidgets import QApplication, QDockWidget, QMenu, QWidget
 
-from app.main_window import MainWindow
-from app.settings import write_travel
+from app.common.settings import write_travel
+from app.window.main_window import MainWindow
 from drivers.travel import TravelLimits
 from tests.relay import wait_in_gui
 

@@ -6,8 +6,8 @@ from collections.abc import Iterator
 
 import pytest
 
-from app import jobs
-from app.main_window import MainWindow
+from app.window import jobs
+from app.window.main_window import MainWindow
 from tests.simproc import SimProcess
 
 pytestmark = [pytest.mark.timeout(40), pytest.mark.e2e]

@@ -8,8 +8,8 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget, QPushButton
 
-from app.main_window import MainWindow
-from app.settings import read_parameters
+from app.common.settings import read_parameters
+from app.window.main_window import MainWindow
 from drivers.param_profile import format_profile
 from drivers.protocols.visiomex_params import PARAMETERS
 

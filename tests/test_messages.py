@@ -1,5 +1,5 @@
 """Messages the driver layer and the app compose reach the operator in the interface's language:
-a Message is the English text and keeps its template and values; app/messages.py translates
+a Message is the English text and keeps its template and values; app/common/messages.py translates
 both; every error the code raises for people carries one; the catalogs translate every template,
 keeping its fields."""
 
@@ -18,7 +18,7 @@ import pytest
 from PySide6.QtCore import QCoreApplication, QTranslator
 
 import drivers
-from app.messages import localized
+from app.common.messages import localized
 from drivers.errors import BadInput, DeviceTimeout, MotionError, PortError
 from drivers.messages import CONTEXT, Message, message_of
 
@@ -81,7 +81,12 @@ def _errors_for_people() -> set[str]:
     """The names of every MotionError class (and the app's) once every module is loaded."""
     for module in pkgutil.walk_packages(drivers.__path__, "drivers."):
         importlib.import_module(module.name)
-    for name in ("app.macros", "app.command_line", "app.worker", "app.jobs"):
+    for name in (
+        "app.common.macros",
+        "app.cli.command_line",
+        "app.window.worker",
+        "app.window.jobs",
+    ):
         importlib.import_module(name)
     names: set[str] = set()
     stack: list[type] = [MotionError]

@@ -7,9 +7,10 @@ from collections.abc import Iterator
 
 import pytest
 
-from app import jobs, macros
-from app.main_window import MainWindow
-from app.worker_thread import WorkerThread
+from app.common import macros
+from app.window import jobs
+from app.window.main_window import MainWindow
+from app.window.worker_thread import WorkerThread
 from tests.relay import wait_in_gui
 
 pytestmark = pytest.mark.timeout(60)
@@ -99,7 +100,7 @@ def test_a_refused_connection_reaches_the_worker_state_translated(
 
 
 def test_the_console_shows_decoded_meanings_translated(qtbot, upper) -> None:
-    from app.traffic_console import RawConsole
+    from app.window.traffic_console import RawConsole
     from drivers.registry import create_protocol
 
     console = RawConsole()

@@ -18,7 +18,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QImage
 from PySide6.QtWidgets import QPushButton, QToolButton, QWidget
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from widgets import _gl_scene, position_view_3d
 from widgets.position_buffer import PositionBuffer
 from widgets.position_view_3d import PositionView3D, PositionView3DPlaceholder

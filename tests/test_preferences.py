@@ -11,7 +11,8 @@ import pytest
 from PySide6.QtCore import QSettings
 from PySide6.QtGui import QKeySequence
 
-from app.preferences import (
+from app.common.settings import read_number
+from app.window.preferences import (
     DEFAULTS,
     JOG_KEY_FIELDS,
     Preferences,
@@ -22,7 +23,6 @@ from app.preferences import (
     validate,
     write_preferences,
 )
-from app.settings import read_number
 from widgets.jog_panel import KEY_MAP
 
 pytestmark = pytest.mark.timeout(30)
@@ -104,7 +104,7 @@ def test_the_windows_hand_written_rates_are_clamped_as_it_did(
     tmp_path: Path, caplog: pytest.LogCaptureFixture
 ) -> None:
     settings = _ini(tmp_path / "rates.ini", "[General]\npoll_moving_hz=5\npoll_idle_s=50\n")
-    with caplog.at_level(logging.WARNING, logger="app.preferences"):
+    with caplog.at_level(logging.WARNING, logger="app.window.preferences"):
         prefs = read_preferences(settings)
     assert (prefs.poll_moving_hz, prefs.poll_idle_s) == (5.0, 10.0)
     assert "poll_idle_s" in caplog.text
@@ -135,7 +135,7 @@ def test_an_unreadable_value_falls_back_to_its_default(
     tmp_path: Path, caplog: pytest.LogCaptureFixture, line: str, name: str
 ) -> None:
     settings = _ini(tmp_path / "bad.ini", f"[General]\n{line}\n")
-    with caplog.at_level(logging.WARNING, logger="app.preferences"):
+    with caplog.at_level(logging.WARNING, logger="app.window.preferences"):
         prefs = read_preferences(settings)
     assert getattr(prefs, name) == getattr(DEFAULTS, name)
     assert prefs == DEFAULTS
@@ -151,7 +151,7 @@ def test_clashing_saved_keys_give_the_default_keys(
     tmp_path: Path, caplog: pytest.LogCaptureFixture
 ) -> None:
     text = "[jog_keys]\nx_minus=A\nx_plus=A\ny_plus=W\n"
-    with caplog.at_level(logging.WARNING, logger="app.preferences"):
+    with caplog.at_level(logging.WARNING, logger="app.window.preferences"):
         prefs = read_preferences(_ini(tmp_path / "keys.ini", text))
     assert prefs.jog_keys() == DEFAULTS.jog_keys()
     assert "clash" in caplog.text
@@ -290,7 +290,7 @@ def test_session_log_folder(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> 
 
 
 def test_the_clamp_default_applies_only_where_a_device_saved_none(tmp_path: Path) -> None:
-    from app.settings import device_key, read_travel
+    from app.common.settings import device_key, read_travel
 
     key = device_key("coxiris", "sim://coxiris")
     settings = _ini(tmp_path / "travel.ini")

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from tests.relay import GuiRelay, wait_in_gui
 from tests.simproc import SimProcess
 

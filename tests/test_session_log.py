@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from app.session_log import PATTERN, open_session_log, prune
+from app.common.session_log import PATTERN, open_session_log, prune
 from drivers.log_reader import LogError
 from tests.e2e_support import stream as _bytes
 from tests.simproc import ROOT, SimProcess

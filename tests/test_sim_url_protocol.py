@@ -7,7 +7,7 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import Qt
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from drivers.protocol_sniff import looks_like, sniff
 from tests.simproc import SimProcess
 from widgets.connection_bar import ConnectionBar, sim_protocol

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 from PySide6.QtWidgets import QDockWidget
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from drivers.registry import get_protocol_class, has_variants, protocol_names
 from widgets.lazy_view import LazyPart, built
 
@@ -23,17 +23,17 @@ HEAVY = (
     "numpy",
     "pyqtgraph",
     "OpenGL",
-    "app.traffic_console",
-    "app.device_docks",
-    "app.parameter_dock",
-    "app.log_viewer",
+    "app.window.traffic_console",
+    "app.window.device_docks",
+    "app.window.parameter_dock",
+    "app.window.log_viewer",
     "drivers.traffic_index",
     "serial.tools.list_ports",
     # the serial worker, its thread, the jobs and the motion engine under them
-    "app.worker",
-    "app.worker_thread",
-    "app.jobs",
-    "app.move_estimate",
+    "app.window.worker",
+    "app.window.worker_thread",
+    "app.window.jobs",
+    "app.window.move_estimate",
     "drivers.motion",
     "drivers.client",
     "drivers.transport",
@@ -52,7 +52,7 @@ import json, sys
 from PySide6.QtCore import QEvent, QObject, QTimer
 from PySide6.QtWidgets import QApplication
 app = QApplication([])
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 window = MainWindow()
 window.connect_device("loop://", "coxiris", 115200)  # (a simulator imports numpy)
 seen = {{}}
@@ -67,7 +67,7 @@ class Painted(QObject):
 
 def ready():
     seen["ready"] = sorted(
-        m for m in ("numpy", "app.traffic_console", "app.worker") if m in sys.modules
+        m for m in ("numpy", "app.window.traffic_console", "app.window.worker") if m in sys.modules
     )
     QTimer.singleShot(0, app.quit)
 
@@ -92,7 +92,10 @@ print(json.dumps(seen))
     )
     assert out.returncode == 0, out.stderr
     seen = json.loads(out.stdout.strip().splitlines()[-1])
-    assert seen == {"painted": [], "ready": ["app.traffic_console", "app.worker", "numpy"]}
+    assert seen == {
+        "painted": [],
+        "ready": ["app.window.traffic_console", "app.window.worker", "numpy"],
+    }
 
 
 @pytest.fixture

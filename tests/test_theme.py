@@ -9,7 +9,7 @@ import pytest
 from PySide6.QtGui import QColor, QPalette
 from PySide6.QtWidgets import QApplication
 
-from app.theme import (
+from app.window.theme import (
     DARK_PLOT_COLORS,
     LIGHT_PLOT_COLORS,
     ThemeMenu,

@@ -26,10 +26,10 @@ from PySide6.QtWidgets import QApplication
 
 import app
 import widgets
-from app import jobs
-from app.main_window import MainWindow
-from app.traffic_console import RawConsole
-from app.worker import SerialWorker
+from app.window import jobs
+from app.window.main_window import MainWindow
+from app.window.traffic_console import RawConsole
+from app.window.worker import SerialWorker
 from tests.relay import GuiRelay
 from widgets.position_buffer import PositionBuffer
 from widgets.traffic_timeline import TrafficTimeline

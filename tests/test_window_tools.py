@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 from PySide6.QtWidgets import QDialogButtonBox, QLabel
 
-from app import macros
-from app.main_window import MainWindow
+from app.common import macros
+from app.window.main_window import MainWindow
 from tests.e2e_support import device_received
 from tests.simproc import SimProcess
 from widgets.about_dialog import AboutDialog

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from app import jobs
-from app.worker import DeviceInfo
-from app.worker_thread import WorkerThread
+from app.window import jobs
+from app.window.worker import DeviceInfo
+from app.window.worker_thread import WorkerThread
 from drivers.events import PositionReport
 from tests.relay import wait_in_gui
 

@@ -11,8 +11,8 @@ from typing import Any
 import pytest
 from PySide6.QtCore import QObject, Signal
 
-from app.worker import ConnectOptions
-from app.worker_thread import WorkerThread
+from app.window.worker import ConnectOptions
+from app.window.worker_thread import WorkerThread
 from drivers.control_lines import ControlLines
 from tests.relay import GuiRelay, wait_in_gui
 

@@ -1,7 +1,7 @@
 """The Settings dialog: polling, console and session log, display, jog keys, theme and language.
 
-It edits a frozen preferences dataclass (app.preferences.Preferences; widgets import no app, so
-it is used by its shape): each field's metadata `spec` gives its range or choices,
+It edits a frozen preferences dataclass (app.window.preferences.Preferences; widgets import no
+app, so it is used by its shape): each field's metadata `spec` gives its range or choices,
 `field_problems()` checks it, the class called with no arguments gives the defaults. Problems
 are shown as you type and OK stays disabled while there are any; OK and Apply emit `applied`.
 """

@@ -237,7 +237,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/bridge_session.py" line="+83"/>
+        <location filename="../../app/window/bridge_session.py" line="+83"/>
         <source>the bridge failed: %1</source>
         <translation>la passerelle a échoué&#xa0;: %1</translation>
     </message>
@@ -715,7 +715,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/device_docks.py" line="+83"/>
+        <location filename="../../app/window/device_docks.py" line="+83"/>
         <source>Not now: %1</source>
         <translation>Indisponible pour le moment&#xa0;: %1</translation>
     </message>
@@ -753,7 +753,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DockLayout</name>
     <message>
-        <location filename="../../app/dock_layout.py" line="+16"/>
+        <location filename="../../app/window/dock_layout.py" line="+16"/>
         <source>Stepper setup</source>
         <translation>Configuration du moteur</translation>
     </message>
@@ -923,7 +923,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>Jobs</name>
     <message>
-        <location filename="../../app/jobs.py" line="+25"/>
+        <location filename="../../app/window/jobs.py" line="+25"/>
         <source>move to (%1, %2, %3) mm</source>
         <translation>déplacement vers (%1, %2, %3) mm</translation>
     </message>
@@ -1085,7 +1085,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>KeyboardJog</name>
     <message>
-        <location filename="../../app/keyboard_jog.py" line="+38"/>
+        <location filename="../../app/window/keyboard_jog.py" line="+38"/>
         <source>a text field</source>
         <translation>un champ de texte</translation>
     </message>
@@ -1158,7 +1158,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/log_viewer.py" line="+43"/>
+        <location filename="../../app/window/log_viewer.py" line="+43"/>
         <source>(undecoded)</source>
         <translation>(non décodé)</translation>
     </message>
@@ -1221,7 +1221,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>MacroDock</name>
     <message>
-        <location filename="../../app/macro_dock.py" line="+29"/>
+        <location filename="../../app/window/macro_dock.py" line="+30"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
         <translation>Macros Motion Panel (*.json);;Tous les fichiers (*)</translation>
     </message>
@@ -1418,7 +1418,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+111"/>
+        <location filename="../../app/window/main_window.py" line="+111"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>Aucune commande d&apos;arrêt sur %1&#xa0;: ceci vide les commandes pas encore envoyées&#xa0;; un mouvement déjà en cours sur l&apos;appareil se termine (Échap)</translation>
     </message>
@@ -1825,7 +1825,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/parameter_dock.py" line="+33"/>
+        <location filename="../../app/window/parameter_dock.py" line="+33"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>l&apos;appareil contient maintenant %1&#xa0;: le firmware l&apos;impose après chaque écriture</translation>
     </message>
@@ -2351,7 +2351,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PortWatcher</name>
     <message>
-        <location filename="../../app/ports.py" line="+22"/>
+        <location filename="../../app/window/ports.py" line="+22"/>
         <source>serial port</source>
         <translation>port série</translation>
     </message>
@@ -2681,7 +2681,7 @@ La vue 2D montre les mêmes positions.</translation>
 <context>
     <name>Preferences</name>
     <message>
-        <location filename="../../app/preferences.py" line="+67"/>
+        <location filename="../../app/window/preferences.py" line="+67"/>
         <source>Stop (Motion menu)</source>
         <translation>Arrêt (menu Mouvement)</translation>
     </message>
@@ -3024,7 +3024,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/traffic_console.py" line="+76"/>
+        <location filename="../../app/window/traffic_console.py" line="+76"/>
         <source>text</source>
         <translation>texte</translation>
     </message>
@@ -3263,7 +3263,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>%1 lignes exportées vers %2</translation>
     </message>
     <message>
-        <location filename="../../app/traffic_table.py" line="+45"/>
+        <location filename="../../app/window/traffic_table.py" line="+45"/>
         <source>motion</source>
         <translation>mouvement</translation>
     </message>
@@ -3935,7 +3935,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>ThemeMenu</name>
     <message>
-        <location filename="../../app/theme.py" line="+354"/>
+        <location filename="../../app/window/theme.py" line="+354"/>
         <source>&amp;Theme</source>
         <translation>&amp;Thème</translation>
     </message>
@@ -3986,7 +3986,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>TrafficModel</name>
     <message>
-        <location filename="../../app/traffic_table.py" line="-19"/>
+        <location filename="../../app/window/traffic_table.py" line="-19"/>
         <source>Line</source>
         <translation>Ligne</translation>
     </message>
@@ -4206,7 +4206,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>WindowTools</name>
     <message>
-        <location filename="../../app/window_tools.py" line="+58"/>
+        <location filename="../../app/window/window_tools.py" line="+58"/>
         <source>Macros</source>
         <translation>Macros</translation>
     </message>
@@ -4306,7 +4306,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>WorkFrame</name>
     <message>
-        <location filename="../../app/work_frame.py" line="+59"/>
+        <location filename="../../app/window/work_frame.py" line="+59"/>
         <source>work coordinates: %1</source>
         <translation>coordonnées pièce&#xa0;: %1</translation>
     </message>
@@ -4338,7 +4338,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+4"/>
+        <location filename="message_templates.py" line="+12"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -4413,7 +4413,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>interrompu&#xa0;: arrêté à ({x:g}, {y:g}, {z:g}) mm (l&apos;arrêt {protocol} a été acquitté&#xa0;; sa file est vidée)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-22"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>usage&#xa0;: {usage} ({count} arguments reçus)</translation>
     </message>
@@ -4453,7 +4453,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>déplacement brut vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+16"/>
         <source>macro {name} ({count} step)</source>
         <translation>macro {name} ({count} étape)</translation>
     </message>

@@ -237,7 +237,7 @@ the same as the start angle: a full circle</source>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/bridge_session.py" line="+83"/>
+        <location filename="../../app/window/bridge_session.py" line="+83"/>
         <source>the bridge failed: %1</source>
         <translation>桥接失败：%1</translation>
     </message>
@@ -715,7 +715,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/device_docks.py" line="+83"/>
+        <location filename="../../app/window/device_docks.py" line="+83"/>
         <source>Not now: %1</source>
         <translation>暂不可用：%1</translation>
     </message>
@@ -753,7 +753,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DockLayout</name>
     <message>
-        <location filename="../../app/dock_layout.py" line="+16"/>
+        <location filename="../../app/window/dock_layout.py" line="+16"/>
         <source>Stepper setup</source>
         <translation>步进电机设置</translation>
     </message>
@@ -923,7 +923,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>Jobs</name>
     <message>
-        <location filename="../../app/jobs.py" line="+25"/>
+        <location filename="../../app/window/jobs.py" line="+25"/>
         <source>move to (%1, %2, %3) mm</source>
         <translation>移动到 (%1, %2, %3) mm</translation>
     </message>
@@ -1085,7 +1085,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>KeyboardJog</name>
     <message>
-        <location filename="../../app/keyboard_jog.py" line="+38"/>
+        <location filename="../../app/window/keyboard_jog.py" line="+38"/>
         <source>a text field</source>
         <translation>文本框</translation>
     </message>
@@ -1158,7 +1158,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/log_viewer.py" line="+43"/>
+        <location filename="../../app/window/log_viewer.py" line="+43"/>
         <source>(undecoded)</source>
         <translation>（未解码）</translation>
     </message>
@@ -1221,7 +1221,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>MacroDock</name>
     <message>
-        <location filename="../../app/macro_dock.py" line="+29"/>
+        <location filename="../../app/window/macro_dock.py" line="+30"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
         <translation>Motion Panel 宏 (*.json);;所有文件 (*)</translation>
     </message>
@@ -1418,7 +1418,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/main_window.py" line="+111"/>
+        <location filename="../../app/window/main_window.py" line="+111"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 没有停止命令：此操作会丢弃尚未发送的命令；设备上已在进行的移动会继续完成（Esc）</translation>
     </message>
@@ -1825,7 +1825,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/parameter_dock.py" line="+33"/>
+        <location filename="../../app/window/parameter_dock.py" line="+33"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>设备当前值为 %1：每次设置后固件都会强制使用该值</translation>
     </message>
@@ -2351,7 +2351,7 @@ Send them anyway?</source>
 <context>
     <name>PortWatcher</name>
     <message>
-        <location filename="../../app/ports.py" line="+22"/>
+        <location filename="../../app/window/ports.py" line="+22"/>
         <source>serial port</source>
         <translation>串口</translation>
     </message>
@@ -2681,7 +2681,7 @@ The 2D view shows the same positions.</source>
 <context>
     <name>Preferences</name>
     <message>
-        <location filename="../../app/preferences.py" line="+67"/>
+        <location filename="../../app/window/preferences.py" line="+67"/>
         <source>Stop (Motion menu)</source>
         <translation>停止（运动菜单）</translation>
     </message>
@@ -3024,7 +3024,7 @@ Not now: %2</source>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/traffic_console.py" line="+76"/>
+        <location filename="../../app/window/traffic_console.py" line="+76"/>
         <source>text</source>
         <translation>文本</translation>
     </message>
@@ -3263,7 +3263,7 @@ Not now: %2</source>
         <translation>已将 %1 行导出到 %2</translation>
     </message>
     <message>
-        <location filename="../../app/traffic_table.py" line="+45"/>
+        <location filename="../../app/window/traffic_table.py" line="+45"/>
         <source>motion</source>
         <translation>运动</translation>
     </message>
@@ -3935,7 +3935,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>ThemeMenu</name>
     <message>
-        <location filename="../../app/theme.py" line="+354"/>
+        <location filename="../../app/window/theme.py" line="+354"/>
         <source>&amp;Theme</source>
         <translation>主题(&amp;T)</translation>
     </message>
@@ -3986,7 +3986,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>TrafficModel</name>
     <message>
-        <location filename="../../app/traffic_table.py" line="-19"/>
+        <location filename="../../app/window/traffic_table.py" line="-19"/>
         <source>Line</source>
         <translation>行号</translation>
     </message>
@@ -4206,7 +4206,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>WindowTools</name>
     <message>
-        <location filename="../../app/window_tools.py" line="+58"/>
+        <location filename="../../app/window/window_tools.py" line="+58"/>
         <source>Macros</source>
         <translation>宏</translation>
     </message>
@@ -4306,7 +4306,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>WorkFrame</name>
     <message>
-        <location filename="../../app/work_frame.py" line="+59"/>
+        <location filename="../../app/window/work_frame.py" line="+59"/>
         <source>work coordinates: %1</source>
         <translation>工件坐标：%1</translation>
     </message>
@@ -4338,7 +4338,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+4"/>
+        <location filename="message_templates.py" line="+12"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>前往 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -4413,7 +4413,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>已中断：已停止于 ({x:g}, {y:g}, {z:g}) mm（{protocol} 停止命令已确认；其队列已清空）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-22"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>用法：{usage}（收到 {count} 个参数）</translation>
     </message>
@@ -4453,7 +4453,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>原始命令移动到 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+16"/>
         <source>macro {name} ({count} step)</source>
         <translation>宏 {name}（{count} 步）</translation>
     </message>

@@ -11,7 +11,7 @@ resources/i18n/message_templates.py for lupdate to read), into
 resources/i18n/motionpanel_<lang>.ts for es, fr and zh_CN, keeping what translators have done
 (new strings come in unfinished, vanished ones are kept as obsolete). Translate the .ts files
 with pyside6-linguist or any XLIFF/TS editor; lrelease then writes motionpanel_<lang>.qm beside
-them, which app/i18n.py loads (and pyproject.toml installs as package data of `resources`,
+them, which app/common/i18n.py loads (and pyproject.toml installs as package data of `resources`,
 beside app/). lupdate's warnings (e.g. an f-string inside tr(), which it cannot extract) are
 printed; --strict makes them fail the run.
 For Python, lupdate says nothing about tr(f"…"), tr("a" + b) or tr("…".format(…)): it quietly

@@ -26,7 +26,7 @@ from typing import TypeVar
 from PySide6.QtCore import QSettings
 from PySide6.QtGui import QImage
 
-from app.settings import write_travel
+from app.common.settings import write_travel
 from drivers.travel import TravelLimits
 
 log = logging.getLogger(__name__)

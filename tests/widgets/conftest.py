@@ -16,7 +16,7 @@ from widgets.position_view_3d import share_opengl_contexts
 
 share_opengl_contexts()  # as the application does: several GL views over the session
 
-from app.traffic_console import RawConsole  # noqa: E402
+from app.window.traffic_console import RawConsole  # noqa: E402
 from widgets.arc_entry import ArcEntry  # noqa: E402
 from widgets.coordinate_entry import CoordinateEntry  # noqa: E402
 from widgets.position_readout import PositionReadout  # noqa: E402

@@ -11,8 +11,8 @@ import pytest
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QAbstractItemView
 
-from app.traffic_console import TRIM_MARGIN, RawConsole
-from app.traffic_table import BYTES, REPLY
+from app.window.traffic_console import TRIM_MARGIN, RawConsole
+from app.window.traffic_table import BYTES, REPLY
 from drivers.registry import create_protocol
 from drivers.traffic_index import TrafficIndex, compile_filter
 
@@ -257,7 +257,7 @@ def test_a_view_scrolled_up_keeps_its_lines_in_place(console: RawConsole) -> Non
 
 
 def test_the_timeline_starts_again_from_the_oldest_line_kept(console: RawConsole, qtbot) -> None:
-    from app.traffic_feed import TimelineFeed
+    from app.window.traffic_feed import TimelineFeed
     from widgets.traffic_timeline import TrafficTimeline
 
     timeline = TrafficTimeline()

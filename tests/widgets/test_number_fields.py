@@ -12,7 +12,7 @@ from PySide6.QtGui import QPalette
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QAbstractItemView, QAbstractSpinBox, QLineEdit, QPushButton
 
-from app.preferences import DEFAULTS
+from app.window.preferences import DEFAULTS
 from widgets._number_field import INVALID_PROPERTY, INVALID_TEXT, parse_decimal, parse_whole
 from widgets.arc_entry import ArcEntry
 from widgets.coordinate_entry import CoordinateEntry

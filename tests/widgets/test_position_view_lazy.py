@@ -129,7 +129,7 @@ from widgets.position_view_3d import share_opengl_contexts
 share_opengl_contexts()
 app = QApplication([])
 import app.main
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 window = MainWindow()
 before = sorted(m for m in ("OpenGL", "pyqtgraph.opengl") if m in sys.modules)
 window.views.build_now()

@@ -25,7 +25,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.preferences import DEFAULTS, Preferences
+from app.window.preferences import DEFAULTS, Preferences
 from widgets.settings_dialog import OBJECT_NAMES, SettingsDialog
 
 pytestmark = pytest.mark.timeout(30)

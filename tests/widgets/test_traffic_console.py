@@ -9,8 +9,8 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QColor
 
-from app.traffic_console import RawConsole
-from app.traffic_table import BYTES, ERROR_BACKGROUND, MATCH_BACKGROUND, REPLY
+from app.window.traffic_console import RawConsole
+from app.window.traffic_table import BYTES, ERROR_BACKGROUND, MATCH_BACKGROUND, REPLY
 from drivers.registry import create_protocol
 from drivers.traffic_index import KINDS
 
@@ -338,7 +338,7 @@ def test_send_disabled(console: RawConsole, qtbot, record) -> None:
 def test_the_timeline_gets_the_bytes_of_each_second_and_its_first_line(console, qtbot) -> None:
     """TimelineFeed adds a second's bytes of a direction in one call: the same bins and first
     lines as a call a line, and the latencies."""
-    from app.traffic_feed import TimelineFeed
+    from app.window.traffic_feed import TimelineFeed
     from widgets.traffic_timeline import TrafficTimeline
 
     timeline = TrafficTimeline()

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from app.traffic_console import RawConsole
+from app.window.traffic_console import RawConsole
 from drivers.traffic import Traffic
 
 pytestmark = pytest.mark.timeout(60)

@@ -13,7 +13,7 @@ import os
 import numpy as np
 import pytest
 
-from app.main_window import MainWindow
+from app.window.main_window import MainWindow
 from widgets._gl_scene import segment_vertices
 from widgets.position_buffer import PositionBuffer, TrailLOD
 
@@ -181,7 +181,7 @@ def _connect(qtbot, win: MainWindow, url: str, protocol: str, baud: int = 115200
 def test_a_reconnect_breaks_the_trail_and_another_device_clears_it(
     qtbot, window: MainWindow
 ) -> None:
-    from app import jobs
+    from app.window import jobs
 
     _connect(qtbot, window, "sim://coxiris?speed=100", "coxiris")
     finished: list[object] = []

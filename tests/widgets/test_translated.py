@@ -25,7 +25,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.traffic_console import RawConsole
+from app.window.traffic_console import RawConsole
 from widgets.arc_entry import ArcEntry
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
@@ -70,19 +70,19 @@ WRAPPED = [
     "widgets/position_readout.py",
     "widgets/macro_panel.py",
     "widgets/macro_editor.py",
-    "app/parameter_dock.py",
-    "app/device_docks.py",
-    "app/log_viewer.py",
-    "app/bridge_session.py",
-    "app/macro_dock.py",
-    "app/main_window.py",
-    "app/keyboard_jog.py",
-    "app/dock_layout.py",
-    "app/window_tools.py",
-    "app/work_frame.py",
-    "app/ports.py",
-    "app/traffic_feed.py",
-    "app/session_log.py",
+    "app/window/parameter_dock.py",
+    "app/window/device_docks.py",
+    "app/window/log_viewer.py",
+    "app/window/bridge_session.py",
+    "app/window/macro_dock.py",
+    "app/window/main_window.py",
+    "app/window/keyboard_jog.py",
+    "app/window/dock_layout.py",
+    "app/window/window_tools.py",
+    "app/window/work_frame.py",
+    "app/window/ports.py",
+    "app/window/traffic_feed.py",
+    "app/common/session_log.py",
     "widgets/connection_bar.py",
     "widgets/jog_panel.py",
     "widgets/lazy_view.py",
@@ -96,8 +96,8 @@ WRAPPED = [
     "widgets/_view_common.py",
     "widgets/traffic_timeline.py",
     "widgets/traffic_format.py",
-    "app/traffic_console.py",
-    "app/traffic_table.py",
+    "app/window/traffic_console.py",
+    "app/window/traffic_table.py",
 ]
 OPEN, CLOSE = "⟦", "⟧"
 # What is not a word to translate: numbers, units, axis letters, line endings, signs.

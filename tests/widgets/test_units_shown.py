@@ -302,8 +302,8 @@ def test_the_window_applies_the_units_at_start_and_on_change(
 
     from PySide6.QtCore import QSettings
 
-    from app.main_window import MainWindow
-    from app.preferences import DEFAULTS, write_preferences
+    from app.window.main_window import MainWindow
+    from app.window.preferences import DEFAULTS, write_preferences
 
     path = tmp_path / "settings.ini"
     stored = QSettings(str(path), QSettings.Format.IniFormat)

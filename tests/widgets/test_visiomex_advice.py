@@ -9,7 +9,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QLineEdit
 
-from app.parameter_dock import editor_rows, shown_derivation
+from app.window.parameter_dock import editor_rows, shown_derivation
 from drivers.param_profile import ProfileError, format_profile, parse_profile
 from drivers.protocols.visiomex import VisiomexProtocol
 from drivers.protocols.visiomex_advice import firmware_after_writing, timed_move

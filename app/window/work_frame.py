@@ -9,8 +9,8 @@ from typing import Any
 
 from PySide6.QtCore import QObject
 
-from app.messages import localized
-from app.settings import device_key
+from app.common.messages import localized
+from app.common.settings import device_key
 from drivers.errors import BadInput
 from drivers.work_zero import WorkZero, format_work_zero, parse_work_zero
 from widgets._i18n import fill

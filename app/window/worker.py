@@ -13,9 +13,9 @@ from typing import TextIO
 
 from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, Slot
 
-from app import jobs
-from app.macros import Macro, run_macro
-from app.messages import localized
+from app.common.macros import Macro, run_macro
+from app.common.messages import localized
+from app.window import jobs
 from drivers.capabilities import Capabilities
 from drivers.client import Client
 from drivers.commands import Stop

@@ -27,9 +27,9 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.messages import localized
-from app.traffic_console import RawConsole, localized_index
-from app.traffic_feed import TimelineFeed
+from app.common.messages import localized
+from app.window.traffic_console import RawConsole, localized_index
+from app.window.traffic_feed import TimelineFeed
 from drivers.decoding import PartProtocols, connection_protocol
 from drivers.errors import MotionError
 from drivers.log_reader import LogRecord, open_any_log

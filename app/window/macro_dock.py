@@ -9,9 +9,10 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QFileDialog, QMainWindow
 
-from app import jobs, macros
-from app.dock_layout import empty_dock
-from app.messages import localized
+from app.common import macros
+from app.common.messages import localized
+from app.window import jobs
+from app.window.dock_layout import empty_dock
 from drivers.errors import BadInput
 from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
@@ -21,7 +22,7 @@ from widgets.macro_panel import MacroPanel
 from widgets.panel_scroll_area import PanelScrollArea
 
 if TYPE_CHECKING:
-    from app.main_window import MainWindow
+    from app.window.main_window import MainWindow
 
 log = logging.getLogger(__name__)
 

@@ -108,7 +108,7 @@ def _run_program(motion: Motion, points: list[ProgramPoint]) -> dict[str, Any]:
     try:
         state = streamer.run()
     except KeyboardInterrupt:
-        streamer.stop()  # motionctl then sends the device's stop (app/cli_interrupt.py)
+        streamer.stop()  # motionctl then sends the device's stop (app/cli/interrupt.py)
         raise
     return {
         "instructions": state.total,

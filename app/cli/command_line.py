@@ -6,9 +6,9 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from app.cli_devices import DEVICE_COMMANDS, check_device_offline, run_device
-from app.cli_log import check_log_offline
-from app.cli_params import check_param_offline, run_param
+from app.cli.devices import DEVICE_COMMANDS, check_device_offline, run_device
+from app.cli.log import check_log_offline
+from app.cli.params import check_param_offline, run_param
 from drivers import commands as cmd
 from drivers.errors import BadInput
 from drivers.events import PositionReport

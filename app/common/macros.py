@@ -10,8 +10,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from app.cli_devices import DEVICE_COMMANDS
-from app.command_line import UsageError, run_command, validate_offline
+from app.cli.command_line import UsageError, run_command, validate_offline
+from app.cli.devices import DEVICE_COMMANDS
 from drivers.errors import BadFile, BadInput, MotionError
 from drivers.files import MACRO_MAX_BYTES, read_text
 from drivers.messages import Message, message_of

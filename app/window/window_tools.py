@@ -11,15 +11,15 @@ from PySide6.QtCore import QObject, QSettings, Qt
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QApplication, QDockWidget, QMenu
 
-from app.preferences import Preferences, read_preferences, write_preferences
-from app.settings import device_key
-from app.work_frame import WorkFrame
+from app.common.settings import device_key
+from app.window.preferences import Preferences, read_preferences, write_preferences
+from app.window.work_frame import WorkFrame
 from widgets._i18n import fill
 from widgets.lazy_view import LazyPart, built
 
 if TYPE_CHECKING:
-    from app.macro_dock import MacroDock
-    from app.main_window import MainWindow
+    from app.window.macro_dock import MacroDock
+    from app.window.main_window import MainWindow
     from drivers.control_lines import ControlLines
 
 log = logging.getLogger(__name__)
@@ -28,7 +28,7 @@ ARROWS = {"Left": "←", "Right": "→", "Up": "↑", "Down": "↓"}  # others: 
 NATIVE = QKeySequence.SequenceFormat.NativeText
 MACRO_CALLS = frozenset({"set_protocol", "set_runnable"})
 MACRO_DOCK = "macroPanelDock"
-POLL_MOVING_HZ = (5.0, 20.0)  # the preferences' range (see app/preferences.py)
+POLL_MOVING_HZ = (5.0, 20.0)  # the preferences' range (see app/window/preferences.py)
 POLL_IDLE_S = (0.2, 10.0)
 
 
@@ -78,7 +78,7 @@ class WindowTools(QObject):
 
     # -- built after the first paint -----------------------------------------------------------
     def _build_macros(self) -> MacroDock:
-        from app.macro_dock import MacroDock
+        from app.window.macro_dock import MacroDock
 
         self.macros = MacroDock(self.window)
         return self.macros
@@ -105,7 +105,7 @@ class WindowTools(QObject):
 
     def _add_theme_menu(self, view_menu: QMenu) -> None:
         """View → Theme (its module is imported after the first paint)."""
-        from app.theme import ThemeMenu
+        from app.window.theme import ThemeMenu
 
         self.theme_menu = ThemeMenu(view_menu, self.prefs.theme)
         self.theme_menu.chosen.connect(self._on_theme_chosen)
@@ -113,7 +113,7 @@ class WindowTools(QObject):
 
     def apply_theme(self) -> None:
         """The theme the preferences choose, and the plots in its colours."""
-        from app.theme import apply_theme, theme_notifier
+        from app.window.theme import apply_theme, theme_notifier
 
         app = QApplication.instance()
         if isinstance(app, QApplication):
@@ -125,7 +125,7 @@ class WindowTools(QObject):
 
     def _recolor(self, colors: Any) -> None:
         """The 2D and 3D views in the theme's colours (once they are built)."""
-        from app.theme import apply_gl_colors, apply_plot_colors
+        from app.window.theme import apply_gl_colors, apply_plot_colors
 
         window = self.window
         if not window.views.is_ready():
@@ -140,7 +140,7 @@ class WindowTools(QObject):
             apply_gl_colors(scene, colors)
 
     def _recolor_now(self) -> None:
-        from app.theme import current_plot_colors
+        from app.window.theme import current_plot_colors
 
         self._recolor(current_plot_colors())
 
@@ -230,7 +230,7 @@ class WindowTools(QObject):
     # -- settings ------------------------------------------------------------------------------
     def edit_settings(self) -> None:
         """File → Settings…: change the preferences; applied on OK or Apply."""
-        from app.session_log import log_folder
+        from app.common.session_log import log_folder
         from widgets.settings_dialog import SettingsDialog
 
         dialog = SettingsDialog(self.prefs, self.window, default_log_folder=str(log_folder()))

@@ -36,7 +36,7 @@ THEMED_COLOUR = "currentColor"  # the action icons' strokes, replaced by the pal
 
 def icon_dir() -> Path:
     """The folder holding the SVG icons (resources/icons beside the `app` package)."""
-    beside = Path(__file__).resolve().parent.parent / "resources" / "icons"
+    beside = Path(__file__).resolve().parents[2] / "resources" / "icons"
     if beside.is_dir():
         return beside
     try:  # an unusual layout: ask the import system where `resources` went

@@ -9,11 +9,11 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow
 
-from app import jobs
-from app.dock_layout import empty_dock
-from app.messages import localized
-from app.settings import read_parameters, write_parameters
-from app.worker import DeviceInfo
+from app.common.messages import localized
+from app.common.settings import read_parameters, write_parameters
+from app.window import jobs
+from app.window.dock_layout import empty_dock
+from app.window.worker import DeviceInfo
 from drivers.errors import BadInput
 from drivers.messages import message_of
 from drivers.param_profile import read_profile, write_profile
@@ -25,7 +25,7 @@ from widgets.parameter_editor import ParameterEditor, ParameterRow
 from widgets.parameter_values import CANCELLED, CONFIRMED, ERROR, TIMED_OUT
 
 if TYPE_CHECKING:
-    from app.main_window import MainWindow
+    from app.window.main_window import MainWindow
 
 log = logging.getLogger(__name__)
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 from typing import Any
 
-from app import macros
+from app.common import macros
 from drivers.motion import Motion
 from drivers.protocols.base import Protocol
 

@@ -13,7 +13,7 @@ import os
 import shutil
 from pathlib import Path
 
-from app.icons import APP_ICON_NAME, icon_dir, icon_path
+from app.window.icons import APP_ICON_NAME, icon_dir, icon_path
 
 log = logging.getLogger(__name__)
 

@@ -14,7 +14,7 @@ from urllib.parse import quote, urlsplit
 
 from PySide6.QtCore import QSettings, QStandardPaths
 
-from app.messages import localized
+from app.common.messages import localized
 from drivers.errors import BadFile, BadInput
 from drivers.files import SETTINGS_MAX_BYTES, check_user_file
 from drivers.messages import Message, message_of, message_template

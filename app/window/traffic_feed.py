@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from PySide6.QtCore import QObject, Slot
 
-from app.traffic_console import RawConsole
+from app.window.traffic_console import RawConsole
 from drivers.traffic_index import DIRECTIONS
 from widgets.traffic_timeline import TrafficTimeline
 

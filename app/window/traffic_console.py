@@ -36,8 +36,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.messages import localized
-from app.traffic_table import (
+from app.common.messages import localized
+from app.window.traffic_table import (
     BYTES,
     COLUMNS,
     CSV_COLUMNS,

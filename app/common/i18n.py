@@ -29,7 +29,7 @@ LANGUAGE_NAMES = {"en": "English", "es": "Español", "fr": "Français", "zh_CN":
 ENV_VAR = "MOTIONPANEL_LANG"
 CATALOG = "motionpanel"
 QT_CATALOGS = ("qtbase",)
-SOURCE_DIR = Path(__file__).resolve().parent.parent / "resources" / "i18n"
+SOURCE_DIR = Path(__file__).resolve().parents[2] / "resources" / "i18n"
 _TRADITIONAL = ("tw", "hk", "mo", "hant")
 
 _installed: list[QTranslator] = []  # kept alive while installed

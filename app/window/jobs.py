@@ -12,7 +12,7 @@ from drivers.program import ProgramPoint
 from widgets._i18n import fill
 
 if TYPE_CHECKING:
-    from app.macros import Macro
+    from app.common.macros import Macro
 
 
 def _t(template: str, *values: object) -> str:
@@ -245,6 +245,6 @@ class MacroJob(Job):
 
     def describe(self) -> str:
         """E.g. `macro probe (4 steps)`."""
-        from app.messages import localized
+        from app.common.messages import localized
 
         return localized(self.macro.describe())

@@ -14,7 +14,7 @@ from pathlib import Path
 
 from PySide6.QtCore import QObject, QTimer, Signal, Slot
 
-from app.messages import localized
+from app.common.messages import localized
 from drivers.bridge import Bridge
 from drivers.errors import MotionError
 from drivers.traffic import Traffic, TrafficLogWriter

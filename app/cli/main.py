@@ -10,19 +10,19 @@ from collections.abc import Sequence
 from contextlib import ExitStack
 from typing import Any
 
-from app.cli_count import CliCount
-from app.cli_interrupt import MoveTracker, after_interrupt
-from app.cli_log import decode_log
-from app.cli_macro import find_macro, macro_offline, macro_text, run_macro
-from app.cli_params import param_rows, param_table
-from app.command_line import (
+from app.cli.command_line import (
     COMMANDS,
     PROTOCOL_CHOICES,
     UsageError,
     run_command,
     validate_offline,
 )
-from app.settings import (
+from app.cli.count import CliCount
+from app.cli.interrupt import MoveTracker, after_interrupt
+from app.cli.log import decode_log
+from app.cli.macro import find_macro, macro_offline, macro_text, run_macro
+from app.cli.params import param_rows, param_table
+from app.common.settings import (
     open_settings,
     read_parameters,
     read_protocol_settings,
@@ -224,7 +224,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of motionctl; returns the exit status."""
     arguments = _join_travel(list(sys.argv[1:] if argv is None else argv))
     if arguments[:1] == ["bridge"]:  # `motionctl bridge --port DEVICE --protocol P ...`
-        from app.cli_bridge import main as bridge_main
+        from app.cli.bridge import main as bridge_main
 
         return bridge_main(arguments[1:])
     parser = build_parser()

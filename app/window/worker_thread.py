@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from PySide6.QtCore import QObject, QThread, Signal
 
-from app.worker import SerialWorker
+from app.window.worker import SerialWorker
 
 
 class WorkerThread(QObject):

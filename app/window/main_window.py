@@ -19,14 +19,9 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
-from app.dock_balance import DockBalance
-from app.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
-from app.keyboard_jog import KeyboardJog
-from app.messages import localized
-from app.ports import PortWatcher
-from app.preferences import session_log_folder
-from app.session_log import log_folder, open_session_log
-from app.settings import (
+from app.common.messages import localized
+from app.common.session_log import log_folder, open_session_log
+from app.common.settings import (
     DEFAULT_PORT,
     DEFAULT_PROTOCOL,
     open_settings,
@@ -39,7 +34,12 @@ from app.settings import (
     write_counted_position,
     write_travel,
 )
-from app.window_tools import WindowTools, poll_rates
+from app.window.dock_balance import DockBalance
+from app.window.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
+from app.window.keyboard_jog import KeyboardJog
+from app.window.ports import PortWatcher
+from app.window.preferences import session_log_folder
+from app.window.window_tools import WindowTools, poll_rates
 from drivers.errors import BadInput, MotionError
 from drivers.registry import create_protocol, get_protocol_class, has_variants, protocol_names
 from widgets import status_line as status
@@ -56,15 +56,15 @@ from widgets.status_line import StatusLine
 if TYPE_CHECKING:
     from typing import TextIO
 
-    from app import jobs
-    from app.bridge_session import BridgeSession
-    from app.device_docks import DeviceDocks
-    from app.log_viewer import LogViewer
-    from app.move_estimate import MoveEstimate
-    from app.parameter_dock import ParameterDock
-    from app.traffic_console import RawConsole
-    from app.worker import DeviceInfo, SerialWorker
-    from app.worker_thread import WorkerThread
+    from app.window import jobs
+    from app.window.bridge_session import BridgeSession
+    from app.window.device_docks import DeviceDocks
+    from app.window.log_viewer import LogViewer
+    from app.window.move_estimate import MoveEstimate
+    from app.window.parameter_dock import ParameterDock
+    from app.window.traffic_console import RawConsole
+    from app.window.worker import DeviceInfo, SerialWorker
+    from app.window.worker_thread import WorkerThread
     from drivers.capabilities import Capabilities
     from drivers.events import PositionReport
     from drivers.motion import MoveStart
@@ -119,15 +119,15 @@ STOP_TIP = QT_TRANSLATE_NOOP(
 
 
 def _is_macro(job: object) -> bool:
-    """Whether `job` is a macro (the worker is built: app.jobs is imported)."""
-    from app import jobs
+    """Whether `job` is a macro (the worker is built: app.window.jobs is imported)."""
+    from app.window import jobs
 
     return isinstance(job, jobs.MacroJob)
 
 
 def _runs_alone(job: object) -> bool:
     """Whether `job` turns motion off until it ends: a program, a macro, a parameter write."""
-    from app import jobs
+    from app.window import jobs
 
     return isinstance(job, (jobs.StreamJob, jobs.MacroJob, jobs.SetParameterJob))
 
@@ -135,7 +135,7 @@ def _runs_alone(job: object) -> bool:
 def _may_run_beside(job: object, running: list[jobs.Job]) -> bool:
     """Whether `job` may be queued while the jobs that run alone in `running` are under way:
     reading the device, or more parameter writes beside parameter writes; nothing that moves."""
-    from app import jobs
+    from app.window import jobs
 
     if isinstance(job, (jobs.RefreshJob, jobs.StepperVersionJob)):
         return True
@@ -245,8 +245,8 @@ class MainWindow(QMainWindow):
         before, in order. Harmless to call again."""
         if self._serial is not None:
             return self._serial
-        from app.move_estimate import MoveEstimate
-        from app.worker_thread import WorkerThread
+        from app.window.move_estimate import MoveEstimate
+        from app.window.worker_thread import WorkerThread
 
         self.estimate = MoveEstimate(self)
         self.estimate.estimated.connect(self._on_estimate)
@@ -313,13 +313,13 @@ class MainWindow(QMainWindow):
             self.console.append_note(self.tr("no session log from now on"))
 
     def _ask_log_path(self) -> str:
-        from app.log_viewer import ask_open_path
+        from app.window.log_viewer import ask_open_path
 
         return ask_open_path(self)
 
     def open_log(self, path: str | None = None) -> LogViewer | None:
         """Open a traffic log in a viewer window (asks for the file when `path` is None)."""
-        from app.log_viewer import LogViewer
+        from app.window.log_viewer import LogViewer
 
         viewer = LogViewer(None, self.connection_bar.protocol())
         viewer.ask_path = self.ask_log_path
@@ -345,7 +345,7 @@ class MainWindow(QMainWindow):
     def _make_worker(self) -> SerialWorker:
         """A worker with the saved polling rates (5-10 Hz while a move is confirmed, 1 s idle)."""
         moving_hz, idle_s = poll_rates(self.settings)
-        from app.worker import SerialWorker
+        from app.window.worker import SerialWorker
 
         return SerialWorker(poll_moving_hz=moving_hz, poll_idle_s=idle_s)
 
@@ -497,8 +497,8 @@ class MainWindow(QMainWindow):
     def _build_console(self) -> RawConsole:
         """The traffic console and its timeline, in their docks (the calls made on the console
         until now are replayed on it next)."""
-        from app.traffic_console import RawConsole
-        from app.traffic_feed import TimelineFeed
+        from app.window.traffic_console import RawConsole
+        from app.window.traffic_feed import TimelineFeed
         from widgets.traffic_timeline import TrafficTimeline
 
         self.console = console = RawConsole(self)
@@ -520,14 +520,14 @@ class MainWindow(QMainWindow):
 
     def _build_parameters(self) -> ParameterDock:
         """The parameter editor, in its dock."""
-        from app.parameter_dock import ParameterDock
+        from app.window.parameter_dock import ParameterDock
 
         self.parameters = ParameterDock(self)
         return self.parameters
 
     def _build_devices(self) -> DeviceDocks:
         """The device-specific panels, in their docks."""
-        from app.device_docks import DeviceDocks
+        from app.window.device_docks import DeviceDocks
 
         self.devices = DeviceDocks(self)
         return self.devices
@@ -611,7 +611,7 @@ class MainWindow(QMainWindow):
         def open_port(thread: WorkerThread) -> None:
             """What needs the protocol's module and the worker: done once the worker is (just
             after the first paint when asked for before it)."""
-            from app.worker import ConnectOptions
+            from app.window.worker import ConnectOptions
             from drivers.urlhandler.protocol_sim import with_sim_variant
 
             try:
@@ -663,7 +663,7 @@ class MainWindow(QMainWindow):
             self.console.set_protocol(create_protocol(protocol, variant or None))
         except (LookupError, BadInput):
             self.console.set_protocol(None)
-        from app.bridge_session import BridgeSession
+        from app.window.bridge_session import BridgeSession
         from drivers.urlhandler.protocol_sim import with_sim_variant
 
         session = BridgeSession(
@@ -1032,7 +1032,7 @@ class MainWindow(QMainWindow):
             self._jog_step(axis, distance)
 
     def _jog_step(self, axis: str, distance: float) -> None:
-        from app import jobs
+        from app.window import jobs
 
         deltas = {"x": 0.0, "y": 0.0, "z": 0.0}
         deltas[axis] = distance
@@ -1071,7 +1071,7 @@ class MainWindow(QMainWindow):
             serial.worker.stop_now()
 
     def _on_go(self, mode: str, values: tuple[float, float, float]) -> None:
-        from app import jobs
+        from app.window import jobs
 
         if mode == "relative":
             self._submit(jobs.MoveByJob(*values))
@@ -1079,18 +1079,18 @@ class MainWindow(QMainWindow):
             self._submit(jobs.MoveToJob(*values))
 
     def _set_home(self) -> None:
-        from app import jobs
+        from app.window import jobs
 
         if self._submit(jobs.SetHomeJob()):
             self._home_from = self._last_position
 
     def _go_home(self) -> None:
-        from app import jobs
+        from app.window import jobs
 
         self._submit(jobs.HomeJob())
 
     def _set_speed(self, speed: float) -> None:
-        from app import jobs
+        from app.window import jobs
 
         self._submit(jobs.SetSpeedJob(speed))
 
@@ -1098,7 +1098,7 @@ class MainWindow(QMainWindow):
         """The console's send line: bytes for the device as they are, through the motion guard
         (a move checked and followed like a typed one); bytes the protocol cannot read go,
         while a travel box is set, only once the operator confirms them."""
-        from app import jobs
+        from app.window import jobs
         from drivers.motion_guard import unreadable
 
         reason = unreadable(self.console.index.protocol, data) if self.travel else None
@@ -1306,7 +1306,7 @@ class MainWindow(QMainWindow):
         self.console.append_note(fill(self.tr("device: %1"), text))
 
     def _job_ended(self, job: jobs.Job) -> None:
-        from app import jobs
+        from app.window import jobs
 
         self._busy_job = None
         if self._moving:  # one job at a time: when it ends, nothing moves (arcs and jogs alike)
@@ -1331,7 +1331,7 @@ class MainWindow(QMainWindow):
         self._show_machine_state()
 
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
-        from app import jobs
+        from app.window import jobs
 
         self._failed = False
         self.status_line.clear_error()

@@ -3,7 +3,7 @@
 `Preferences` is a frozen dataclass; each field's metadata holds its settings key, label, unit
 and range (`spec(name)`), which `read_preferences`, `write_preferences`, `validate` and the
 settings dialog share. Keys stay those the window reads today (`poll_moving_hz`, `poll_idle_s`,
-`session_log`). Travel limits stay per device (`app.settings.read_travel`); `clamp_to_limits`
+`session_log`). Travel limits stay per device (`app.common.settings.read_travel`); `clamp_to_limits`
 is only the choice a device without saved limits starts with.
 
 Ranges, and why:
@@ -177,7 +177,7 @@ class Preferences:
     theme: str = _pref(
         "system",
         Spec("view/theme", QT_TRANSLATE_NOOP("Preferences", "Theme"), choices=THEMES),
-    )  # app/theme.py's THEME_SETTING and choices
+    )  # app/window/theme.py's THEME_SETTING and choices
     language: str = _pref(
         "system",
         Spec("language", QT_TRANSLATE_NOOP("Preferences", "Language"), choices=LANGUAGES),
@@ -465,7 +465,7 @@ def write_preferences(settings: QSettings, prefs: Preferences) -> None:
 def session_log_folder(prefs: Preferences) -> Path:
     """Where session logs go: $MOTIONPANEL_LOG_DIR, else `log_folder`, else the default
     (created if missing)."""
-    from app.session_log import log_folder
+    from app.common.session_log import log_folder
 
     if os.environ.get("MOTIONPANEL_LOG_DIR") or not prefs.log_folder:
         return log_folder()

@@ -7,7 +7,7 @@ from typing import Any
 
 from PySide6.QtCore import QSettings
 
-from app.settings import read_counted_position, write_counted_position
+from app.common.settings import read_counted_position, write_counted_position
 from drivers import commands as cmd
 from drivers.errors import FrameError
 from drivers.events import PositionReport

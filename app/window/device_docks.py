@@ -10,11 +10,11 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QCoreApplication, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QWidget
 
-from app import jobs
-from app.dock_layout import DEVICE_DOCKS
-from app.messages import localized
-from app.settings import write_protocol_settings
-from app.worker import DeviceInfo
+from app.common.messages import localized
+from app.common.settings import write_protocol_settings
+from app.window import jobs
+from app.window.dock_layout import DEVICE_DOCKS
+from app.window.worker import DeviceInfo
 from drivers.capabilities import Capabilities
 from drivers.commands import Arc
 from drivers.errors import BadInput
@@ -29,7 +29,7 @@ from widgets.piframe_panel import PiFramePanel
 from widgets.program_panel import ProgramPanel
 
 if TYPE_CHECKING:
-    from app.main_window import MainWindow
+    from app.window.main_window import MainWindow
 
 log = logging.getLogger(__name__)
 
@@ -67,7 +67,7 @@ class DeviceDocks(QObject):
         if dock is not None and dock.widget() is None:
             dock.setWidget(PanelScrollArea(widget, dock))
             return dock
-        # The titles are marked in app/dock_layout.py, context "DockLayout".
+        # The titles are marked in app/window/dock_layout.py, context "DockLayout".
         dock = QDockWidget(QCoreApplication.translate("DockLayout", title), self.window)
         dock.setObjectName(name)
         dock.setWidget(PanelScrollArea(widget, dock))

@@ -1,0 +1,1 @@
+"""motionctl: the command line (argument parsing, device commands, logs, macros, bridge)."""
