@@ -52,6 +52,12 @@ def build_parser() -> argparse.ArgumentParser:
         help="Visiomex: the documented firmware instead of the public one's bugs",
     )
     parser.add_argument(
+        "--pace",
+        choices=("recorded", "uart"),
+        help="Visiomex: send a byte every 1.06 byte times like the recorded firmware "
+        "(recorded, the default) or at the board UART's line rate (uart)",
+    )
+    parser.add_argument(
         "--reset-delay",
         type=float,
         metavar="S",
@@ -118,6 +124,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         device_options["bugs"] = not options.no_bugs
         if options.variant is not None:
             device_options["variant"] = options.variant
+        if options.pace is not None:
+            device_options["pace"] = options.pace
     elif options.protocol == "firmata" and options.reset_delay is not None:
         device_options["reset_delay"] = options.reset_delay
     elif options.protocol == "laser-frame":

@@ -390,5 +390,15 @@ def test_motionsim_accepts_the_visiomex_options() -> None:
         True,
     )
     assert build_parser().parse_args(["visiomex"]).variant is None
+    assert build_parser().parse_args(["visiomex", "--pace", "uart"]).pace == "uart"
+    with pytest.raises(SystemExit):
+        build_parser().parse_args(["visiomex", "--pace", "fast"])
     with pytest.raises(SystemExit):
         build_parser().parse_args(["visiomex", "--variant", "nope"])
+
+
+def test_the_sim_url_takes_the_pace() -> None:
+    with serial.serial_for_url("sim://visiomex?pace=uart", 9600) as port:
+        assert port.device.pacing == 1.0  # type: ignore[attr-defined]
+    with pytest.raises(serial.SerialException, match="recorded"):
+        serial.serial_for_url("sim://visiomex?pace=fast", 9600)

@@ -10,19 +10,19 @@ copy of it.
 from __future__ import annotations
 
 from drivers.messages import Message
+from drivers.protocols.visiomex_estimate import after_packet_seconds
 from drivers.protocols.visiomex_model import (
     BOOT_ONLY,
     NEVER_READ,
     OVERWRITTEN_AFTER_SET,
     OVERWRITTEN_AT_MOVE,
     POWER_ON,
-    SILENCE,
     FirmwareState,
     debug_lines,
     format_float,
 )
 from drivers.protocols.visiomex_params import BY_ID
-from drivers.protocols.visiomex_timing import MovePlan, move_reply_seconds
+from drivers.protocols.visiomex_timing import MovePlan
 
 OUTPUTS = OVERWRITTEN_AFTER_SET | OVERWRITTEN_AT_MOVE
 RAMPED = frozenset({15, 16})  # the current step delays: a ramp leaves them changed
@@ -53,7 +53,7 @@ def timed_move(state: FirmwareState, x_um: float, y_um: float) -> tuple[MovePlan
     (1 s of silence, the debug lines and `FP0001`, stepping meanwhile); the state advances."""
     reply = sum(len(line) + 2 for line in debug_lines(state, x_um, y_um)) + FEEDBACK_LINE
     plan = state.move(x_um, y_um)
-    return plan, SILENCE + move_reply_seconds(reply, plan.seconds)
+    return plan, after_packet_seconds(reply, plan.seconds)
 
 
 def _steps_row(state: FirmwareState) -> tuple[str, str]:

@@ -9,7 +9,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-BYTE_SECONDS = 10 / 9600  # 9600 8N1
+UART_BYTE_SECONDS = 10 / 9600  # 9600 8N1 on the board's UART
+# The recorded firmware (the host build behind a pty, transcripts/visiomex-moves.json) sends a
+# byte every ~1.1 ms, not 1.042: its 382 lines before stepping fit 1.4 ms + 1.117 ms a byte.
+HOST_PACING = 1.06
+BYTE_SECONDS = UART_BYTE_SECONDS * HOST_PACING
+REPLY_LATENCY = 0.0015  # s from the end of the 1 s silence to the reply's first byte leaving
 TX_BUFFER = 64  # the firmware blocks on a full 64-byte transmit buffer
 FEEDBACK_BYTES = 8  # `FA0001\r\n`
 I32 = 1 << 32

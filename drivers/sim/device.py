@@ -138,6 +138,10 @@ class SimulatedDevice(ABC):
         return min(times) if times else None
 
     # -- firmware side ---------------------------------------------------------------------
+    def tx_byte_seconds(self) -> float:
+        """Seconds each sent byte takes on the line (with `baud` set)."""
+        return BITS_PER_BYTE / self.baud if self.baud else 0.0
+
     def emit(self, data: bytes, at: float) -> None:
         """Send `data` starting at time `at` (paced at the line rate when emulated)."""
         if not data:
@@ -145,7 +149,7 @@ class SimulatedDevice(ABC):
         if not self.baud:
             self._tx.append((at, data))
             return
-        byte_time = BITS_PER_BYTE / self.baud
+        byte_time = self.tx_byte_seconds()
         t = max(at, self._tx_line_free)
         for byte in data:
             t += byte_time

@@ -15,7 +15,7 @@ from drivers.protocols.visiomex_model import (
     FirmwareState,
     debug_lines,
 )
-from drivers.protocols.visiomex_timing import stepping_start
+from drivers.protocols.visiomex_timing import HOST_PACING, REPLY_LATENCY, stepping_start
 from drivers.sim.clock import Clock, monotonic
 from drivers.sim.device import BITS_PER_BYTE, SimulatedDevice
 from drivers.sim.visiomex_firmware import (
@@ -31,7 +31,9 @@ from drivers.sim.visiomex_firmware import (
     parse_atol,
 )
 
-__all__ = ["POWER_ON", "SILENCE", "VARIANTS", "VisiomexDevice"]
+__all__ = ["PACES", "POWER_ON", "SILENCE", "VARIANTS", "VisiomexDevice"]
+
+PACES = {"recorded": HOST_PACING, "uart": 1.0}  # byte times per sent byte
 
 log = logging.getLogger(__name__)
 
@@ -53,7 +55,9 @@ class VisiomexDevice(SimulatedDevice):
     `variant` picks the packet profile (`seed`, `prefixed`, `board12`); `bugs=True` is the public
     firmware (PROTOCOLS.md §2b), `bugs=False` the documented behaviour (the same arithmetic and
     timing, with the documented checks, units and Y loop). `instant` makes stepping take no
-    time; `mute` makes a device that never sends anything.
+    time; `mute` makes a device that never sends anything. `pace`: "recorded" sends a byte every
+    1.06 byte times, as the recorded firmware does (transcripts/visiomex-moves.json), "uart" at
+    the board UART's line rate.
     """
 
     protocol = "visiomex"
@@ -68,16 +72,20 @@ class VisiomexDevice(SimulatedDevice):
         bugs: bool = True,
         instant: bool = False,
         mute: bool = False,
+        pace: str = "recorded",
     ) -> None:
         if variant not in VARIANTS:
             known = ", ".join(VARIANTS)
             raise ValueError(f"unknown Visiomex variant {variant!r} (variants: {known})")
+        if pace not in PACES:
+            raise ValueError(f"unknown pace {pace!r} (paces: {', '.join(PACES)})")
         super().__init__(clock, baud)
         self.variant: Variant = VARIANTS[variant]
         self.default_baud = self.variant.baud
         self.bugs = bugs
         self.instant = instant
         self.mute = mute
+        self.pacing = PACES[pace]
         self.state = FirmwareState.boot()
         self._packet = bytearray()
         self._last_read = 0.0
@@ -121,6 +129,10 @@ class VisiomexDevice(SimulatedDevice):
         self._packet = bytearray()
         self._line(BOOT_BANNER, self.clock())
 
+    def tx_byte_seconds(self) -> float:
+        """A sent byte's time: the line rate's, slowed by the recorded firmware's pacing."""
+        return super().tx_byte_seconds() * self.pacing
+
     def emit(self, data: bytes, at: float) -> None:
         """Send `data` at `at`, unless the device is mute."""
         if not self.mute:
@@ -139,7 +151,7 @@ class VisiomexDevice(SimulatedDevice):
         """readString() timed out: act on the packet."""
         packet, self._packet = self._packet.decode("latin-1"), bytearray()
         log.debug("visiomex packet %r at %.3f", packet, now)
-        self._execute(packet, now)
+        self._execute(packet, now + (REPLY_LATENCY if self.baud else 0.0))
 
     # -- output ----------------------------------------------------------------------------
     def _line(self, text: str, t: float) -> int:
@@ -255,7 +267,9 @@ class VisiomexDevice(SimulatedDevice):
             if self._per_rev(axis):
                 moved[axis] = signs[axis] * loops * self.cycle[axis] / self._per_rev(axis)
         # Stepping starts once FP0001 is in the 64-byte transmit buffer.
-        begin = t + stepping_start(sent, BITS_PER_BYTE / self.variant.baud)
+        begin = t + stepping_start(
+            sent, BITS_PER_BYTE / (self.baud or self.variant.baud) * self.pacing
+        )
         durations = (0.0, 0.0) if self.instant else (plan.x_seconds, plan.y_seconds)
         start = self.position(begin)
         self._segment = _Segment(

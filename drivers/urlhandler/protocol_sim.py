@@ -2,7 +2,8 @@
 
 Options: `instant=0|1`, `mute=0|1`, `line_timing=0|1` (emulate the baud rate, on by default);
 COXIRIS: `blocking=0|1`, `speed=S`, `fault=TEXT` (repeatable, CHECK_ERRORS);
-Visiomex: `variant=seed|prefixed|board12`, `bugs=0|1` (the public firmware's bugs, on by default);
+Visiomex: `variant=seed|prefixed|board12`, `bugs=0|1` (the public firmware's bugs, on by default),
+`pace=recorded|uart` (bytes paced as in the recording, or at the UART's rate);
 Firmata: `reset_delay=S` (seconds the board ignores input after the port opens);
 laser-frame: fault rates `corrupt=F`, `drop=F`, `drop_reply=F`, `delay_reply=F`, `garbage=F`
 (probabilities 0..1), `seed=N` (their random generator), `queue=N` (queue depth in instructions).
@@ -53,8 +54,8 @@ def parse_sim_url(url: str) -> tuple[str, dict[str, Any], bool]:
             options[key] = float(value)
         elif key in _INTEGERS:
             options[key] = int(value)
-        elif key == "variant":
-            options["variant"] = value
+        elif key in ("variant", "pace"):
+            options[key] = value
         elif key == "fault":
             options["faults"] = (*options.get("faults", ()), value)
         else:
