@@ -114,7 +114,7 @@ class Parameter:
     def _given(self, value: float) -> str:
         return f"{value:g} {self.unit}".rstrip()
 
-    def from_wire(self, wire: int) -> float:
+    def from_wire(self, wire: float) -> float:
         """The interface value of a wire integer."""
         return wire / self.scale
 

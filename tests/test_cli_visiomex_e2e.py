@@ -207,7 +207,9 @@ def test_two_sets_in_one_run_are_not_merged(start_sim, host_log: Path, tmp_path:
         ("pulley_diameter_x", 38.2),
         ("input_speed_steady_x", 12.0),
     ]
-    assert all(w["device_values"] == {"driving_mechanism": 1.0} for w in written)
+    assert written[0]["device_values"] == {"driving_mechanism": 1.0}
+    # 21 = 12 mm/s: the firmware recomputes delta_t_x (25 = 21 ÷ 23 = 12 ÷ 10, whole)
+    assert written[1]["device_values"] == {"driving_mechanism": 1.0, "delta_t_x": 1.0}
     progress = [line for line in result.stderr.splitlines() if "confirmed" in line]
     assert progress[0].startswith("motionctl: 1/2 pulley_diameter_x = 38.2 mm confirmed")
     assert progress[1].startswith("motionctl: 2/2 input_speed_steady_x = 12 mm/s confirmed")

@@ -163,3 +163,17 @@ def test_speed_sets_parameters_21_and_22(qtbot, window: MainWindow) -> None:
     window.speed.apply()
     qtbot.waitUntil(lambda: editor.last_written().get("input_speed_steady_y") == 20, timeout=8000)
     assert editor.last_written()["input_speed_steady_x"] == 20
+
+
+def test_a_set_of_21_shows_the_25_the_firmware_recomputed(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    editor = window.parameters.editor
+    assert editor.value("delta_t_x") == 10  # power-on: 100 ÷ 10
+    editor.set_values({"input_speed_steady_x": 6000})
+    qtbot.mouseClick(editor.write_changed_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: not editor.writing(), timeout=30000)
+    assert [packet[:3] for packet in _sent_sets(window)] == [b"S21"]
+    assert editor.value("delta_t_x") == 600  # 21 ÷ 23, recomputed after the set
+    assert editor.last_written()["delta_t_x"] == 600
+    assert "delta_t_x" not in editor.changed_names()
+    assert read_parameters(window.settings, "visiomex", URL)["delta_t_x"] == 600

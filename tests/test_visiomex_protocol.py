@@ -192,6 +192,17 @@ def test_written_outputs_are_reported_as_the_firmware_recomputes_them() -> None:
     assert protocol.firmware.steps("x", 10_000) == 400  # the boot's cycle, 10 mm
 
 
+def test_a_set_reports_the_outputs_it_recomputed_in_other_parameters() -> None:
+    protocol = VisiomexProtocol()
+    written = protocol.parameter_written(cmd.SetParameter(21, 6000))
+    assert written.device_values == {"driving_mechanism": 1.0, "delta_t_x": 600.0}  # 21 ÷ 23
+    assert protocol.known[25] == 600
+    written = protocol.parameter_written(cmd.SetParameter(23, 0))  # integer ÷ 0 = 0
+    assert written.device_values == {"driving_mechanism": 1.0, "delta_t_x": 0.0}
+    written = protocol.parameter_written(cmd.SetParameter(3, 38.2))  # nothing else changes
+    assert written.device_values == {"driving_mechanism": 1.0}
+
+
 def test_move_timing_follows_the_firmware_state_and_moves_sent() -> None:
     protocol = VisiomexProtocol()
     move = cmd.MoveBy(10.0, 10.0, 0.0)

@@ -514,8 +514,13 @@ class VisiomexProtocol(Protocol):
             notes.append(Message("the firmware forces driving_mechanism to 1 after every set"))
         self.known[DRIVING_MECHANISM_ID] = 1
         forced[BY_ID[DRIVING_MECHANISM_ID].name] = 1.0
+        for output in sorted(OVERWRITTEN_AFTER_SET - {parameter.id}):
+            now = BY_ID[output].from_wire(self.firmware.values[output])
+            if self.known.get(output) != now:  # e.g. a set of 21 recomputes 25
+                self.known[output] = now
+                forced[BY_ID[output].name] = now
         if parameter.id in OVERWRITTEN_AFTER_SET:
-            held = float(self.firmware.values[parameter.id])
+            held = parameter.from_wire(self.firmware.values[parameter.id])
             self.known[parameter.id] = held
             forced[parameter.name] = held
             notes.append(
