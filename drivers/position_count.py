@@ -1,7 +1,7 @@
-"""The position counted for a device that cannot be asked where it is (Visiomex).
+"""The position counted for a device that cannot be asked where it is (Visiomex, Firmata).
 
-Visiomex has no position feedback and moves only by relative packets, so where the stage is
-comes from the moves counted since a Home or Set Home. The count is kept between runs (by the
+Visiomex and the Firmata stepper have no position feedback and move only by relative packets
+or step counts, so where the stage is comes from the moves counted since a Home or Set Home. The count is kept between runs (by the
 panel and motionctl alike); where none is kept, what needs it is refused, never reckoned from
 an assumed origin. A move packet is counted as the firmware reads it: on the seed firmware
 (@902bd4d, PROTOCOLS.md §2b "Move packet") the type letter is never read, so the digits are µm
@@ -15,7 +15,7 @@ from drivers.errors import BadInput
 from drivers.messages import Message
 from drivers.protocols.base import Point, Protocol
 
-COUNTED_PROTOCOLS = frozenset({"visiomex"})
+COUNTED_PROTOCOLS = frozenset({"visiomex", "firmata"})
 # The commands that start from the counted position (a relative-only device sends the
 # distance from it); `home` too where the device has no home move of its own.
 _NEEDS_COUNT = frozenset({"move", "position"})

@@ -1,5 +1,6 @@
-"""motionctl and the counted position of a device that cannot be asked where it is (Visiomex):
-read from the settings the panel keeps, checked before anything is sent, kept after the run."""
+"""motionctl and the counted position of a device that cannot be asked where it is (Visiomex,
+Firmata): read from the settings the panel keeps, checked before anything is sent, kept after
+the run."""
 
 from __future__ import annotations
 
