@@ -137,7 +137,7 @@ def trim(lines: int) -> dict[str, float]:
             _feed((lines + block - index.kept) * 8 // 7 + 16, console)
             if following:
                 console.view.scrollToBottom()  # type: ignore[attr-defined]
-                console._set_follow(True)  # type: ignore[attr-defined]
+                console.navigator.set_follow(True)  # type: ignore[attr-defined]
             else:
                 console.jump_to_line(index.first + index.kept // 2)  # type: ignore[attr-defined]
             console.max_lines = lines  # type: ignore[attr-defined]
@@ -151,7 +151,7 @@ def trim(lines: int) -> dict[str, float]:
     results["index_drop_ms"] = sorted(timings["drop_oldest"])[len(timings["drop_oldest"]) // 2]
     results["table_drop_ms"] = sorted(timings["drop_before"])[len(timings["drop_before"]) // 2]
     results["kept"] = index.kept
-    spool = os.fstat(index._fd)
+    spool = os.fstat(index._spool.fd)
     results["spool_mb"] = spool.st_size / 1e6
     results["spool_on_disk_mb"] = spool.st_blocks * 512 / 1e6
     return results
@@ -165,7 +165,7 @@ def memory(lines: int) -> dict[str, float]:
     console, seconds, _ = _feed(lines, console)
     after = _rss_mb()
     index = console.index  # type: ignore[attr-defined]
-    spool = os.fstat(index._fd).st_size
+    spool = os.fstat(index._spool.fd).st_size
     timings = {}
     for name, action in (
         ("show_poll_ms", lambda: console.show_poll(True)),  # type: ignore[attr-defined]
@@ -370,7 +370,7 @@ TRACED = (  # Python functions the tracer times too: (module, class, method)
     ("widgets.position_view_2d", "PositionView2D", "_follow_time"),
     ("widgets.position_view_3d", "PositionView3D", "refresh"),
     ("widgets.position_view_3d", "PositionView3D", "render_scene"),
-    ("app.window.traffic_console", "RawConsole", "_take_pending"),
+    ("app.window.traffic_pacing", "FeedPacer", "take_pending"),
     ("app.window.traffic_console", "RawConsole", "_show_new"),
     ("widgets.traffic_timeline", "TrafficTimeline", "refresh"),
     ("pyqtgraph.graphicsItems.ViewBox.ViewBox", "ViewBox", "setRange"),

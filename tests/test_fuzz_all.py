@@ -55,7 +55,9 @@ from drivers.protocols.visiomex_params import PARAMETERS as VISIOMEX_PARAMETERS
 from drivers.registry import create_protocol, get_protocol_class, protocol_names
 from drivers.spy_log import _row, parse_spy
 from drivers.traffic import Traffic, hexdump_lines
-from drivers.traffic_index import KINDS, FilterError, TrafficIndex, compile_filter
+from drivers.traffic_index import TrafficIndex
+from drivers.traffic_lines import KINDS
+from drivers.traffic_search import FilterError, compile_filter
 
 pytestmark = pytest.mark.timeout(120)
 
@@ -485,7 +487,7 @@ def test_replayed_reply_trackers_pair_as_live_ones(name, variant, data) -> None:
     exchanges = vocabulary.flatmap(lambda words: st.lists(st.sampled_from(words), max_size=60))
     traffic = data.draw(st.one_of(exchanges, traffic_of(protocol)), "traffic") * 3
     replayed, live = TrafficIndex(protocol), TrafficIndex(create_protocol(name, variant))
-    live._scripts.MAX_DEPTH = 0  # nothing learnt: each tracker is built at its first frame
+    live._pairing._scripts.MAX_DEPTH = 0  # nothing learnt: each tracker is built at its first frame
     try:
         for step, (direction, chunk) in enumerate(traffic):
             for index in (replayed, live):
@@ -508,7 +510,7 @@ def test_replayed_scripts_tell_apart_frames_that_end_differently() -> None:
         TrafficIndex(create_protocol("coxiris")),
         TrafficIndex(create_protocol("coxiris")),
     )
-    live._scripts.MAX_DEPTH = 0
+    live._pairing._scripts.MAX_DEPTH = 0
     try:
         for step, (direction, chunk) in enumerate(traffic):
             for index in (replayed, live):
@@ -528,7 +530,7 @@ def _spool_text(index: TrafficIndex, line: int) -> bytes:
 
     index.commit()
     start, end = index._columns.offset[line], index._columns.offset[line + 1]
-    return os.pread(index._fd, end - start, start)[:-1]
+    return os.pread(index._spool.fd, end - start, start)[:-1]
 
 
 # Every category, lone surrogates weighed up (a paste into the filter box can hold one).

@@ -17,7 +17,7 @@ from app.window.worker import SerialWorker
 from drivers.decoding import DecodedFrame, decode_records
 from drivers.log_reader import read_log
 from drivers.registry import create_protocol
-from drivers.traffic_index import KINDS
+from drivers.traffic_lines import KINDS
 from tests.simproc import ROOT
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]

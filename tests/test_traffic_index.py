@@ -14,7 +14,8 @@ from drivers.log_reader import read_log
 from drivers.motion import Motion
 from drivers.registry import create_protocol
 from drivers.traffic import TrafficLogWriter
-from drivers.traffic_index import FilterError, TrafficIndex, compile_filter
+from drivers.traffic_index import TrafficIndex
+from drivers.traffic_search import FilterError, compile_filter
 from drivers.transport import open_link
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]

@@ -6,7 +6,7 @@ import numpy as np
 from PySide6.QtCore import QObject, Slot
 
 from app.window.traffic_console import RawConsole
-from drivers.traffic_index import DIRECTIONS
+from drivers.traffic_lines import DIRECTIONS
 from widgets.traffic_timeline import TrafficTimeline
 
 

@@ -21,7 +21,8 @@ from PySide6.QtCore import (
 from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QPainter, QPaintEvent, QPalette
 from PySide6.QtWidgets import QHeaderView, QStyle, QTableView
 
-from drivers.traffic_index import TrafficIndex, TrafficLine, escape
+from drivers.traffic_index import TrafficIndex
+from drivers.traffic_lines import TrafficLine, escape
 from widgets._i18n import fill
 
 TEXT, HEX, MIXED = "text", "hex", "mixed"

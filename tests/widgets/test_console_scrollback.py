@@ -14,7 +14,8 @@ from PySide6.QtWidgets import QAbstractItemView
 from app.window.traffic_console import TRIM_MARGIN, RawConsole
 from app.window.traffic_table import BYTES, REPLY
 from drivers.registry import create_protocol
-from drivers.traffic_index import TrafficIndex, compile_filter
+from drivers.traffic_index import TrafficIndex
+from drivers.traffic_search import compile_filter
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -114,12 +115,12 @@ def test_a_reply_whose_request_was_dropped_still_names_it() -> None:
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="holes are punched on Linux")
 def test_the_spool_gives_the_dropped_bytes_back_to_the_disk() -> None:
     index = _index_with(60_000)  # about 6 MB of spool
-    size = os.fstat(index._fd).st_size
+    size = os.fstat(index._spool.fd).st_size
     newest = repr(index.read(len(index) - 1))
     index.drop_oldest(index.kept - 1_000)
-    if index._punched == 0:
+    if index._spool.punched == 0:
         pytest.skip("this file system cannot punch holes")
-    stat = os.fstat(index._fd)
+    stat = os.fstat(index._spool.fd)
     assert stat.st_size == size  # offsets stay
     assert stat.st_blocks * 512 < size // 2  # the dropped megabytes are free
     assert repr(index.read(len(index) - 1)) == newest
@@ -237,7 +238,7 @@ def test_a_view_scrolled_up_keeps_its_lines_in_place(console: RawConsole) -> Non
         model.index(model.row_of(target), BYTES), QAbstractItemView.ScrollHint.PositionAtTop
     )
     _settle()
-    console._scrolled(view.verticalScrollBar().value())  # (as the user's scrolling does)
+    console.navigator.scrolled(view.verticalScrollBar().value())  # (as the user's scrolling does)
     assert not console.is_following()
     top = int(model.rows[view.rowAt(0)])
     view.setCurrentIndex(model.index(model.row_of(top + 2), BYTES))

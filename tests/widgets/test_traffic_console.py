@@ -12,7 +12,7 @@ from PySide6.QtGui import QColor
 from app.window.traffic_console import RawConsole
 from app.window.traffic_table import BYTES, ERROR_BACKGROUND, MATCH_BACKGROUND, REPLY
 from drivers.registry import create_protocol
-from drivers.traffic_index import KINDS
+from drivers.traffic_lines import KINDS
 
 pytestmark = pytest.mark.timeout(60)
 LEFT = Qt.MouseButton.LeftButton
@@ -417,19 +417,19 @@ def test_traffic_is_decoded_and_shown_in_turns_of_their_own(qtbot, monkeypatch) 
     for i in range(20):  # few enough to be decoded in one turn
         console.append_traffic("rx", b"dbg 1234 loop ok\r\n", i * 0.0002)
     QCoreApplication.sendPostedEvents()  # the pacer's turn is free
-    console._shown_at = 0.0  # the table was last updated long ago: its update is due
-    console._flush_timer.stop()  # as when its (single-shot) timer calls it
-    console._timed_flush()  # a decoding turn (at most FLUSH_BUDGET), the table not yet
-    assert console._show_due and console._flush_timer.isActive()
+    console.feed.shown_at = 0.0  # the table was last updated long ago: its update is due
+    console.feed.timer.stop()  # as when its (single-shot) timer calls it
+    console.feed.timed_flush()  # a decoding turn (at most FLUSH_BUDGET), the table not yet
+    assert console.feed.show_due and console.feed.timer.isActive()
     assert console.shown_lines() == []
     console.append_traffic("rx", b"dbg late\r\n", 1.0)  # arrives between the turns
     QCoreApplication.sendPostedEvents()
-    console._flush_timer.stop()
-    console._timed_flush()  # the table's turn
-    assert not console._show_due
+    console.feed.timer.stop()
+    console.feed.timed_flush()  # the table's turn
+    assert not console.feed.show_due
     assert console.shown_lines()
-    assert console._flush_timer.isActive()  # what came meanwhile gets its turn too
-    qtbot.waitUntil(lambda: console.backlog() == 0 and not console._show_due, timeout=10000)
+    assert console.feed.timer.isActive()  # what came meanwhile gets its turn too
+    qtbot.waitUntil(lambda: console.backlog() == 0 and not console.feed.show_due, timeout=10000)
     assert len(console.index) == 21
     assert console.shown_lines()[-1] == 20  # every line kept and shown
 
