@@ -10,11 +10,8 @@ from __future__ import annotations
 import math
 import time
 
-from drivers.client import Client
 from drivers.program import ProgramPoint
-from drivers.protocols.laser import LaserProtocol
-from drivers.streaming import Streamer
-from drivers.transport import open_link
+from drivers.session import open_device
 
 
 def _program(count: int) -> list[ProgramPoint]:
@@ -27,15 +24,11 @@ def _program(count: int) -> list[ProgramPoint]:
 
 
 def _stream(url: str, points: list[ProgramPoint], group: int) -> tuple[dict[str, float], object]:
-    link = open_link(url, 115200)
-    try:
-        client = Client(link, LaserProtocol())
+    with open_device(url, "laser-frame", baud=115200) as session:
         start = time.perf_counter()
-        state = Streamer(client, points, group=group).run()
+        state = session.run_program(points, group=group)
         seconds = time.perf_counter() - start
-        device = link.port.device  # type: ignore[attr-defined]
-    finally:
-        link.close()
+        device = session.link.port.device
     figures = {
         "instructions": len(points),
         "frames": state.frames,

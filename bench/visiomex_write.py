@@ -9,26 +9,18 @@ from __future__ import annotations
 import time
 
 from bench.motionsim import motionsim
-from drivers.client import Client
-from drivers.motion import Motion
-from drivers.protocols.visiomex import VisiomexProtocol
 from drivers.protocols.visiomex_model import SILENCE
 from drivers.protocols.visiomex_params import PARAMETERS
-from drivers.transport import open_link
+from drivers.session import open_device
 
 
 def bench_visiomex_write(count: int = len(PARAMETERS)) -> dict[str, float]:
     """Write `count` parameters (defaults) to `motionsim visiomex` over a pty at 9600 baud."""
-    with motionsim("visiomex") as path:
-        link = open_link(path, 9600)
-        try:
-            motion = Motion(Client(link, VisiomexProtocol()))
-            start = time.perf_counter()
-            for parameter in PARAMETERS[:count]:
-                motion.set_parameter(parameter.id, parameter.default)
-            seconds = time.perf_counter() - start
-        finally:
-            link.close()
+    with motionsim("visiomex") as path, open_device(path, "visiomex", baud=9600) as session:
+        start = time.perf_counter()
+        for parameter in PARAMETERS[:count]:
+            session.parameters.set(parameter.id, parameter.default)
+        seconds = time.perf_counter() - start
     minimum = count * SILENCE
     return {
         "parameters": count,

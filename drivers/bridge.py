@@ -33,8 +33,10 @@ import serial
 
 from drivers.errors import PortError
 from drivers.messages import Message
+from drivers.protocols.base import Protocol
+from drivers.session_setup import open_device_link
 from drivers.traffic import RX, TX, Traffic
-from drivers.transport import Link, open_link
+from drivers.transport import Link
 
 log = logging.getLogger(__name__)
 
@@ -61,12 +63,21 @@ class Bridge:
     """
 
     def __init__(
-        self, device: str, baud: int, tap: Tap | None = None, *, dtr: bool | None = None
+        self,
+        device: str,
+        baud: int | None = None,
+        tap: Tap | None = None,
+        *,
+        dtr: bool | None = None,
+        protocol: Protocol | None = None,
     ) -> None:
+        """A bridge to `device`, opened as `protocol` needs it where one is given (its default
+        baud, its DTR, a `sim://` device in its variant), as a device session opens it."""
         self.device = device
         self.baud = baud
         self.tap = tap
         self.dtr = dtr
+        self.protocol = protocol
         self.path = ""
         self.bytes_to_device = 0
         self.bytes_from_device = 0
@@ -91,7 +102,7 @@ class Bridge:
             raise PortError(Message("the bridge to {device} is closed", device=self.device))
         if self._link is not None:
             return
-        link = open_link(self.device, self.baud, dtr=self.dtr)
+        link = open_device_link(self.device, self.protocol, baud=self.baud, dtr=self.dtr)
         try:
             self._device_fd = _descriptor(link.port)
             master, slave = os.openpty()
