@@ -21,16 +21,14 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from bench import bridge_latency, startup  # noqa: E402
+from bench import bridge_latency, ser2net_latency, startup  # noqa: E402
 from bench.laser_stream import bench_laser_stream  # noqa: E402
 from bench.motionsim import motionsim  # noqa: E402
 from bench.visiomex_write import bench_visiomex_write  # noqa: E402
 from drivers import commands as cmd  # noqa: E402
-from drivers.client import Client  # noqa: E402
 from drivers.framers.lines import LineFramer  # noqa: E402
-from drivers.motion import Motion  # noqa: E402
 from drivers.protocols.coxiris import CoxirisProtocol  # noqa: E402
-from drivers.transport import open_link  # noqa: E402
+from drivers.session import open_device  # noqa: E402
 
 log = logging.getLogger("bench")
 
@@ -63,9 +61,8 @@ def bench_line_framer(lines: int) -> dict[str, float]:
 
 
 def _round_trips(url: str, count: int) -> list[float]:
-    link = open_link(url, 115200)
-    client = Client(link, CoxirisProtocol())
-    try:
+    with open_device(url, "coxiris", baud=115200) as session:
+        client = session.client
         client.execute(cmd.GetId())
         times = []
         for _ in range(count):
@@ -73,8 +70,6 @@ def _round_trips(url: str, count: int) -> list[float]:
             client.execute(cmd.GetPosition())
             times.append(time.perf_counter() - start)
         return times
-    finally:
-        link.close()
 
 
 def bench_round_trips(count: int) -> dict[str, float]:
@@ -118,11 +113,10 @@ def bench_move_overhead(moves: int) -> dict[str, float]:
 
     def jogs_on(url: str, first: list[float], jogs: int) -> tuple[float, float, float]:
         """Commands per move over `first` (absolute X), then per small jog; milliseconds a move."""
-        link = open_link(url, 115200)
         written: list[bytes] = []
-        link.listeners.append(lambda r: written.append(r.data) if r.direction == "tx" else None)
-        motion = Motion(Client(link, CoxirisProtocol()))
-        try:
+        with open_device(url, "coxiris", baud=115200) as session:
+            session.add_listener(lambda r: written.append(r.data) if r.direction == "tx" else None)
+            motion = session.motion
             start = time.perf_counter()
             for x in first:
                 motion.move_to(x, 0, 0)
@@ -130,8 +124,6 @@ def bench_move_overhead(moves: int) -> dict[str, float]:
             before = len(written)
             for i in range(jogs):
                 motion.move_by(0.1 if i % 2 else -0.1, 0, 0)  # small jogs, one after another
-        finally:
-            link.close()
         return before / len(first), (len(written) - before) / jogs, seconds / len(first) * 1000
 
     per_move, per_jog, ms = jogs_on(
@@ -236,6 +228,15 @@ def bench_bridge(count: int) -> dict[str, float]:
     return figures
 
 
+def bench_ser2net(count: int) -> dict[str, float | None]:
+    """What ser2net (RFC 2217 on this host) adds to a round trip; None where it is missing."""
+    try:
+        return dict(ser2net_latency.measure(count, 4))
+    except RuntimeError as exc:  # ser2net is not installed
+        logging.warning("ser2net: %s", exc)
+        return {"ser2net_added_ms_p50": None, "ser2net_added_ms_p95": None}
+
+
 def main() -> int:
     """Run every benchmark and print the figures."""
     parser = argparse.ArgumentParser(description=__doc__)
@@ -260,6 +261,7 @@ def main() -> int:
             3.0 if options.quick else 10.0,
         ),
         "bridge": bench_bridge(400 if options.quick else 2000),
+        "ser2net": bench_ser2net(40 if options.quick else 200),
         "startup": startup.measure(3 if options.quick else 5),
         "trail": bench_trail(1_000_000),  # --quick too: about 10 s
     }
@@ -270,6 +272,7 @@ def main() -> int:
     results["startup_ratio"] = results["startup"]["startup_ratio"]
     results["trail_frame_ms_1e6"] = results["trail"].get("trail_frame_ms")  # None: no display
     results["gui_max_stall_ms"] = results["console"]["flood_max_stall_ms"]
+    results["ser2net_added_ms_p50"] = results["ser2net"]["ser2net_added_ms_p50"]
     if options.json:
         print(json.dumps(results, indent=None))
     else:

@@ -23,6 +23,7 @@ from drivers.control_lines import BREAK_S, OUTPUTS, ControlLines
 from drivers.errors import BadInput, NoControlLines, PortBusy, PortError
 from drivers.messages import Message
 from drivers.traffic import RX, TX, Traffic
+from drivers.urlhandler.rfc2217_port import Rfc2217Port
 
 log = logging.getLogger(__name__)
 
@@ -52,8 +53,13 @@ class Link:
         self.listeners: list[TrafficListener] = []
         self.note_listeners: list[NoteListener] = []
         """Told of every control-line change and break made here ("DTR off", "break 250 ms")."""
+        self.opening_notes: list[str] = []
+        """What opening the port found worth noting, before anyone could listen (a network
+        server that does not confirm control-line changes); the owner logs them."""
         self.closed = False
         self._no_lines: str | None = None  # why the port has no modem lines ("": it has them)
+        self._unconfirmed_noted = False
+        self._note_unconfirmed(self.opening_notes.append)
 
     def _report(self, direction: str, data: bytes) -> None:
         if not self.listeners:
@@ -157,6 +163,22 @@ class Link:
                 )
             ) from exc
         self._note(Message("{line} on", line=label) if on else Message("{line} off", line=label))
+        self._note_unconfirmed(self._note)
+
+    def _note_unconfirmed(self, note: NoteListener) -> None:
+        """Say once that an RFC 2217 server left a control-line change unconfirmed."""
+        what = getattr(self.port, "unconfirmed", "")
+        if not what or self._unconfirmed_noted:
+            return
+        self._unconfirmed_noted = True
+        note(
+            Message(
+                "the server did not confirm the control lines ({what} unanswered); they are "
+                "set without confirmation (ser2net does not answer when the port it serves "
+                "has no modem lines, e.g. a pseudo-terminal)",
+                what=what,
+            )
+        )
 
     def control_lines(self) -> ControlLines:
         """All six lines as the port reports them; all None on a port without modem lines.
@@ -179,9 +201,10 @@ class Link:
                 cd=bool(bits & serialposix.TIOCM_CD),
                 ri=bool(bits & serialposix.TIOCM_RI),
             )
+        unconfirmed = bool(getattr(self.port, "unconfirmed", ""))  # as asked, not as they are
         return ControlLines(
-            dtr=bool(self.port.dtr),
-            rts=bool(self.port.rts),
+            dtr=None if unconfirmed else bool(self.port.dtr),
+            rts=None if unconfirmed else bool(self.port.rts),
             cts=self._input("cts"),
             dsr=self._input("dsr"),
             cd=self._input("cd"),
@@ -346,7 +369,7 @@ def open_link(url: str, baud: int, *, dtr: bool | None = None, rts: bool | None 
     if not url:
         raise PortError(Message("no port given"))
     try:
-        port = serial.serial_for_url(url, baudrate=baud, timeout=POLL_INTERVAL, do_not_open=True)
+        port = _port_for_url(url, baud)
         if os.name == "posix" and isinstance(port, serial.Serial):
             port.exclusive = True  # flock: a second program's open fails (spy:// included)
         if dtr is not None:
@@ -359,8 +382,34 @@ def open_link(url: str, baud: int, *, dtr: bool | None = None, rts: bool | None 
             raise PortBusy(
                 Message("{url} is in use by another program", url=_port_name(url))
             ) from exc
-        raise PortError(Message("cannot open {url}: {error}", url=url, error=exc)) from exc
+        raise PortError(
+            Message("cannot open {url}: {error}", url=url, error=_open_error(exc))
+        ) from exc
     return Link(port, url)
+
+
+def _open_error(exc: BaseException) -> object:
+    """Why a port did not open, its errno and path said once (pyserial's text repeats both:
+    `[Errno 2] could not open port P: [Errno 2] No such file or directory: 'P'`)."""
+    cause = exc.__context__
+    if (
+        isinstance(exc, serial.SerialException)
+        and isinstance(cause, OSError)
+        and not isinstance(cause, serial.SerialException)
+        and cause.strerror
+    ):
+        return f"[Errno {cause.errno}] {cause.strerror}" if cause.errno else cause.strerror
+    return exc  # (a Message inside it stays translatable)
+
+
+def _port_for_url(url: str, baud: int) -> serial.SerialBase:
+    """The pyserial port object for `url`, not opened yet; `rfc2217://` is ours (servers that
+    do not confirm control lines, clearer errors)."""
+    if url[:10].lower() == "rfc2217://":
+        port = Rfc2217Port(None, baudrate=baud, timeout=POLL_INTERVAL)
+        port.port = url
+        return port
+    return serial.serial_for_url(url, baudrate=baud, timeout=POLL_INTERVAL, do_not_open=True)
 
 
 def _busy(exc: Exception) -> bool:

@@ -17,9 +17,11 @@ DEBIAN_PACKAGES=(
   libfontconfig1 libdbus-1-3 libglib2.0-0
   fonts-droid-fallback desktop-file-utils
   openbox xdotool x11-utils imagemagick
+  ser2net
 )  # fonts-droid-fallback: Chinese glyphs for the zh_CN interface; desktop-file-utils: the
    # launcher file's check; openbox, xdotool, x11-utils (xprop), imagemagick (import): the
-   # real-input acceptance tier (tests/acceptance)
+   # real-input acceptance tier (tests/acceptance); ser2net: a device served over RFC 2217
+   # (tests/test_ser2net.py, bench/ser2net_latency.py)
 
 say() { printf 'setup: %s\n' "$*" >&2; }
 
