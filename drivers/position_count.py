@@ -1,11 +1,11 @@
 """The position counted for a device that cannot be asked where it is (Visiomex, Firmata).
 
 Visiomex and the Firmata stepper have no position feedback and move only by relative packets
-or step counts, so where the stage is comes from the moves counted since a Home or Set Home. The count is kept between runs (by the
-panel and motionctl alike); where none is kept, what needs it is refused, never reckoned from
-an assumed origin. A move packet is counted as the firmware reads it: on the seed firmware
-(@902bd4d, PROTOCOLS.md §2b "Move packet") the type letter is never read, so the digits are µm
-whether the packet says linear, rotational or steps.
+or step counts, so where the stage is comes from the moves counted since a Home or Set Home.
+The count is kept between runs (by the panel and motionctl alike); where none is kept, what
+needs it is refused, never reckoned from an assumed origin. A move packet is counted as the
+firmware reads it: on the seed firmware (@902bd4d, PROTOCOLS.md §2b "Move packet") the type
+letter is never read, so the digits are µm whether the packet says linear, rotational or steps.
 """
 
 from __future__ import annotations
@@ -31,7 +31,13 @@ class NoCount(BadInput):
 
 def keeps_count(protocol: Protocol) -> bool:
     """Whether the position of this protocol's devices is counted and kept between runs."""
-    return protocol.name in COUNTED_PROTOCOLS and not protocol.capabilities.position_feedback
+    return counts_position(protocol.name, protocol.capabilities)
+
+
+def counts_position(protocol: str, caps: Capabilities) -> bool:
+    """Whether the position of the devices of the protocol named `protocol` is counted (from a
+    Home or Set Home: unknown until then) and kept between runs."""
+    return protocol in COUNTED_PROTOCOLS and not caps.position_feedback
 
 
 def needs_count(command: str, caps: Capabilities) -> bool:

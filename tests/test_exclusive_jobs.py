@@ -75,7 +75,7 @@ def test_a_jog_during_a_program_is_refused_and_nothing_moves_after_it(
     window.jog_panel.jog_requested.emit("x", 30.0)
     assert "refused" in window.status_line.message()
     assert window.status_line.message_kind() == status.WARNING
-    assert window._jog_job is None and window.jog_panel.held() is None
+    assert window.job_desk.jog_job is None and window.jog_panel.held() is None
     assert not window.submit_job(jobs.MoveToJob(30.0, 0.0, 0.0))
     assert "move to (30, 0, 0) mm refused: run line.csv" in window.status_line.message()
     assert not window.submit_job(jobs.RawJob(b"\x00"))

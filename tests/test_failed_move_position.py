@@ -68,8 +68,8 @@ def test_a_late_error_takes_the_estimated_motion_back(qtbot, window: MainWindow)
     try:
         _connect(qtbot, window, sim.path)
         estimates: list[float] = []
-        assert window.estimate is not None
-        window.estimate.estimated.connect(lambda x, y, z: estimates.append(x))
+        assert window.machine.estimate is not None
+        window.machine.estimate.estimated.connect(lambda x, y, z: estimates.append(x))
         sim.fault("slow 0.6")
         failures = _jog_x_plus_fails(qtbot, window)
         assert "not configured" in failures[0]

@@ -230,15 +230,15 @@ def test_a_vanished_device_is_an_error_and_reconnects_when_back_slot_only(
         sim.fault("vanish")
         first_error(qtbot, states)
         assert not window.jog_panel.isEnabled()
-        last = window._last_connection
+        last = window.connection.last
         window.disconnect_device()  # the worker watches no more: only the slot reconnects
         qtbot.waitUntil(lambda: window.worker._watch is None, timeout=WAIT_MS)
-        window._last_connection = last
+        window.connection.last = last
         back = SimProcess(protocol, "--instant")
         try:
             # A new pty may get another number: announce it as the lost port's return.
-            _, name, baud = window._last_connection
-            window._last_connection = (back.path, name, baud)
+            _, name, baud = window.connection.last
+            window.connection.last = (back.path, name, baud)
             with qtbot.waitSignal(window.settled, timeout=WAIT_MS):
                 window.port_watcher.port_added.emit(back.path)
             wait_connected(qtbot, window)

@@ -52,7 +52,7 @@ def _moves_sent(win: MainWindow) -> list[bytes]:
 
 
 def _idle(win: MainWindow) -> bool:
-    return win.status_line.state() == status.IDLE and win._jog_job is None
+    return win.status_line.state() == status.IDLE and win.job_desk.jog_job is None
 
 
 def _keys_active(qtbot, win: MainWindow) -> QWidget:

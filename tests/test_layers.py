@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
@@ -67,15 +68,20 @@ def _load_time_imports(body: list[ast.stmt]) -> list[ast.Import | ast.ImportFrom
     return found
 
 
-def _import_graph(package: str) -> dict[str, set[str]]:
-    """Each module of `package` and the modules of `package` it imports as it loads."""
+def _import_graph(
+    package: str,
+    imports: Callable[[list[ast.stmt]], list[ast.Import | ast.ImportFrom]] | None = None,
+) -> dict[str, set[str]]:
+    """Each module of `package` and the modules of `package` it imports as it loads (or, with
+    `imports`, the imports that function finds in the module's body)."""
+    find = imports or _load_time_imports
     paths = {_module_name(path): path for path in (ROOT / package).rglob("*.py")}
     graph: dict[str, set[str]] = {}
     for module, path in paths.items():
         is_package = path.name == "__init__.py"
         tree = ast.parse(path.read_text(encoding="utf-8"))
         targets: set[str] = set()
-        for node in _load_time_imports(tree.body):
+        for node in find(tree.body):
             if isinstance(node, ast.Import):
                 targets.update(alias.name for alias in node.names)
                 continue
@@ -126,3 +132,36 @@ def test_drivers_have_no_import_cycle() -> None:
     assert "drivers.framers.base" in graph["drivers.framers"]  # the package's own import
     cycle = _find_cycle(graph)
     assert cycle is None, "drivers/ modules import each other as they load: " + " -> ".join(cycle)
+
+
+def _every_import(body: list[ast.stmt]) -> list[ast.Import | ast.ImportFrom]:
+    """Every import of a module: at load time, in functions (run later) and under
+    `if TYPE_CHECKING:` alike (a cycle through any of them is still a circle of modules)."""
+    return [
+        node
+        for node in ast.walk(ast.Module(body, []))
+        if isinstance(node, ast.Import | ast.ImportFrom)
+    ]
+
+
+@pytest.mark.parametrize("package", ["app", "widgets"])
+def test_app_and_widgets_have_no_import_cycle(package: str) -> None:
+    graph = _import_graph(package, _every_import)
+    cycle = _find_cycle(graph)
+    assert cycle is None, f"{package}/ modules import each other: " + " -> ".join(cycle)
+
+
+def test_the_full_import_graph_sees_function_and_type_checking_imports() -> None:
+    graph = _import_graph("app", _every_import)
+    assert "app.window.worker_thread" in graph["app.window.worker_link"]  # in a function
+    assert "app.window.services" in graph["app.window.device_docks"]  # under TYPE_CHECKING
+    assert "app.window.services" not in _import_graph("app")["app.window.device_docks"]
+
+
+def test_only_app_main_imports_the_main_window() -> None:
+    importers = sorted(
+        module
+        for module, targets in _import_graph("app", _every_import).items()
+        if "app.window.main_window" in targets
+    )
+    assert importers == ["app.main"]

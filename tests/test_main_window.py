@@ -106,7 +106,7 @@ def test_stop_reports_what_was_not_sent(qtbot, window: MainWindow) -> None:
     with wait_in_gui(qtbot, window.worker.busy_changed):
         window.jog_panel.jog_requested.emit("x", 100.0)
     window.coordinates.go_requested.emit("relative", (0.0, 100.0, 0.0))
-    window.stop()
+    window.job_desk.stop()
     window.console.flush()
     assert "1 command(s) not sent: jog by (0, 100, 0) mm" in window.console.text()
     assert "not sent" in window.status_line.message()
@@ -211,7 +211,7 @@ def test_window_adapts_to_a_two_axis_commanded_only_protocol(qtbot, window: Main
         completion=Completion.ESTIMATE,
         speed_range=(1.0, 50.0),
     )
-    window._on_device_ready(DeviceInfo("sim://other", "other", "test device", caps))
+    window.connection._on_device_ready(DeviceInfo("sim://other", "other", "test device", caps))
     assert window.findChild(QPushButton, "jogXPlus").isEnabled()
     assert not window.findChild(QPushButton, "jogZPlus").isEnabled()
     assert not window.readout.is_measured()
@@ -237,7 +237,7 @@ def test_reconnects_when_the_lost_port_comes_back_slot_only(qtbot, window: MainW
         sim = SimProcess("coxiris", "--speed", "100")  # a new device process
         # The kernel may hand out another pty number: the port that "comes back" is the old one
         # only when the numbers match, so announce the new path as the lost port's return.
-        window._last_connection = (sim.path, "coxiris", 115200)
+        window.connection.last = (sim.path, "coxiris", 115200)
         with qtbot.waitSignal(window.settled, timeout=10000):
             window.port_watcher.port_added.emit(sim.path)
         assert window.connection_bar.state() == "connected"

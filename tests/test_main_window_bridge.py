@@ -43,8 +43,8 @@ def test_a_program_drives_the_device_through_the_bridge(qtbot, window: MainWindo
     bar.set_protocol("coxiris")
     bar.set_bridge_mode(True)
     qtbot.mouseClick(bar.connect_button, Qt.MouseButton.LeftButton)
-    assert window.bridge is not None, window.status_line.message()
-    path = window.bridge.bridge.path
+    assert window.connection.bridge is not None, window.status_line.message()
+    path = window.connection.bridge.bridge.path
     assert bar.state() == "connected" and bar.connect_button.text() == "Disconnect"
     assert not window.jog_panel.isEnabled() and not window.coordinates.isEnabled()
     assert not bar.bridge_check.isEnabled()
@@ -64,22 +64,22 @@ def test_a_program_drives_the_device_through_the_bridge(qtbot, window: MainWindo
     assert index.line(index.line(move).pair).meaning == "ACK ABSOLUTE_MOVE"
 
     qtbot.mouseClick(bar.connect_button, Qt.MouseButton.LeftButton)  # Disconnect
-    qtbot.waitUntil(lambda: window.bridge is None, timeout=5000)
+    qtbot.waitUntil(lambda: window.connection.bridge is None, timeout=5000)
     assert bar.state() == "disconnected"
-    sent = b"".join(r.data for r in read_log(window.session_log_path) if r.direction == "tx")
+    sent = b"".join(r.data for r in read_log(window.link.session_log_path) if r.direction == "tx")
     assert b"ABSOLUTE_MOVE 1 2 3\n" in sent  # the session log has every byte
 
 
 def test_the_device_vanishing_ends_the_bridge_with_an_error(qtbot, window: MainWindow, sim):
     window.connection_bar.set_bridge_mode(True)
-    assert window.start_bridge(sim.path, "coxiris", 115200)
+    assert window.connection.start_bridge(sim.path, "coxiris", 115200)
     sim.kill()
-    qtbot.waitUntil(lambda: window.bridge is None, timeout=10_000)
+    qtbot.waitUntil(lambda: window.connection.bridge is None, timeout=10_000)
     assert window.connection_bar.state() == "error"
     assert "went away" in window.status_line.message()
 
 
 def test_a_missing_device_is_refused_clearly(window: MainWindow) -> None:
-    assert window.start_bridge("/dev/does-not-exist", "coxiris", 115200) is None
+    assert window.connection.start_bridge("/dev/does-not-exist", "coxiris", 115200) is None
     assert window.connection_bar.state() == "error"
     assert "does-not-exist" in window.status_line.message()

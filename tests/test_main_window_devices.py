@@ -6,7 +6,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget, QPushButton
 
-from app.common.settings import read_protocol_settings
+from app.common.settings import read_counted_position, read_protocol_settings
 from app.window.main_window import MainWindow
 from widgets import status_line as status
 
@@ -63,7 +63,7 @@ def test_firmata_one_axis_configure_and_jog(qtbot, window: MainWindow) -> None:
     assert not _dock(window, "arcEntryDock").isVisible()
     assert window.findChild(QPushButton, "jogXPlus").isEnabled()
     assert not window.findChild(QPushButton, "jogYPlus").isEnabled()
-    assert window.info is not None and window.info.identity == "FirmataPlus.ino 2.5"
+    assert window.machine.info is not None and window.machine.info.identity == "FirmataPlus.ino 2.5"
     panel = window.devices.firmata
     qtbot.mouseClick(window.findChild(QPushButton, "firmataConfigure"), Qt.MouseButton.LeftButton)
     qtbot.waitUntil(
@@ -76,6 +76,32 @@ def test_firmata_one_axis_configure_and_jog(qtbot, window: MainWindow) -> None:
     qtbot.waitUntil(lambda: window.readout.position() == (1.0, 0.0, 0.0), timeout=8000)
     device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
     assert device.steps() == 80  # 1 mm at 80 steps/mm
+
+
+def test_firmata_position_is_unknown_until_set_home_then_counted_for_motionctl(
+    qtbot, window: MainWindow
+) -> None:
+    """Firmata cannot be asked where it is: like Visiomex, a fresh connection counts nothing
+    (no count kept for motionctl) until Set Home starts one."""
+    url = "sim://firmata?reset_delay=0.2&instant=1"
+    _connect(qtbot, window, url, "firmata", 57600)
+    assert window.readout.status() == "uncounted"
+    assert "position unknown" in window.status_line.message()
+    qtbot.mouseClick(window.findChild(QPushButton, "firmataConfigure"), Qt.MouseButton.LeftButton)
+    window.jog_panel.set_step(1)
+    qtbot.mouseClick(window.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.readout.position() == (1.0, 0.0, 0.0), timeout=8000)
+    assert read_counted_position(window.settings, "firmata", url) is None
+    window.coordinates.confirm = lambda question: True
+    qtbot.waitUntil(window.coordinates.set_home_button.isEnabled, timeout=5000)
+    qtbot.mouseClick(window.coordinates.set_home_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.readout.status() != "uncounted", timeout=5000)
+    qtbot.waitUntil(window.findChild(QPushButton, "jogXPlus").isEnabled, timeout=5000)
+    qtbot.mouseClick(window.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(
+        lambda: read_counted_position(window.settings, "firmata", url) == (1.0, 0.0, 0.0),
+        timeout=8000,
+    )
 
 
 def test_firmata_string_data_is_shown_in_words(qtbot, window: MainWindow) -> None:

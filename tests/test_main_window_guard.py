@@ -82,7 +82,7 @@ def test_the_readout_says_the_stage_is_outside_its_box(qtbot, window: MainWindow
     qtbot.waitUntil(lambda: window.readout.position() == (100.0, 0.0, 0.0), timeout=5000)
     label = window.findChild(QLabel, "positionOutsideTravel")
     assert label is not None and label.isHidden()
-    window._apply_travel(TravelLimits(BOX))  # as the Travel limits dialog does on OK
+    window.machine.apply_travel(TravelLimits(BOX))  # as the Travel limits dialog does on OK
     assert not label.isHidden()
     assert label.text() == "outside the travel limits: X 100.00 mm (-50.00..50.00)"
     window.jog_panel.jog_requested.emit("x", -10.0)  # back towards the box: allowed

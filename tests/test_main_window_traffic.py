@@ -37,12 +37,12 @@ def test_the_console_decodes_and_the_timeline_follows(qtbot, window: MainWindow)
 def test_open_log_shows_the_session_log_decoded(qtbot, window: MainWindow) -> None:
     _connect(qtbot, window)
     qtbot.waitUntil(lambda: window.console.index.counts["poll"] >= 2, timeout=10_000)
-    path = window.session_log_path
+    path = window.link.session_log_path
     assert path is not None
-    window.ask_log_path = lambda: str(path)
+    window.logs.ask_path = lambda: str(path)
     file_menu = window.menuBar().actions()[0].menu()
     next(a for a in file_menu.actions() if a.text() == "&Open log…").trigger()
-    viewer = window._viewers[-1]
+    viewer = window.logs.viewers[-1]
     qtbot.waitUntil(lambda: not viewer.busy(), timeout=20_000)
     assert viewer.protocol_combo.currentText() == "coxiris"  # from the log's connection note
     viewer.console.set_filter(pattern="GET_ID")

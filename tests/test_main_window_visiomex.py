@@ -177,3 +177,12 @@ def test_a_set_of_21_shows_the_25_the_firmware_recomputed(qtbot, window: MainWin
     assert editor.last_written()["delta_t_x"] == 600
     assert "delta_t_x" not in editor.changed_names()
     assert read_parameters(window.settings, "visiomex", URL)["delta_t_x"] == 600
+
+
+def test_the_built_in_device_speaks_the_variant_chosen(qtbot, window: MainWindow) -> None:
+    """The window hands the plain sim:// URL to the device session, which makes it speak the
+    variant in the bar (board12: 12-character packets at 115200 baud)."""
+    with qtbot.waitSignal(window.settled, timeout=8000):
+        window.connect_device("sim://visiomex?instant=1", "visiomex", 115200, "board12")
+    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    assert device.variant.name == "board12"

@@ -44,7 +44,7 @@ def test_a_device_that_comes_back_under_its_name_is_connected_again(
             sim.kill()
         else:
             window.jog_panel.jog_requested.emit("x", 10.0)  # 2 s at 5 mm/s
-            qtbot.waitUntil(lambda: window._moving, timeout=DEADLINE_MS)
+            qtbot.waitUntil(lambda: window.machine.moving, timeout=DEADLINE_MS)
             sim.fault("vanish")
         qtbot.waitUntil(lambda: window.connection_bar.state() == "error", timeout=DEADLINE_MS)
         assert f"connecting again when {link} is back" in window.status_line.message()

@@ -81,14 +81,14 @@ def test_a_sim_url_typed_with_another_protocol_connects_with_its_own(
     assert bar.protocol() == "visiomex"
     with qtbot.waitSignal(window.settled, timeout=WAIT_MS):
         qtbot.mouseClick(bar.connect_button, Qt.MouseButton.LeftButton)
-    assert window.info is not None and window.info.protocol == "visiomex"
+    assert window.machine.info is not None and window.machine.info.protocol == "visiomex"
 
 
 @pytest.mark.e2e
 def test_connect_device_follows_the_protocol_a_sim_url_names(qtbot, window: MainWindow) -> None:
     with qtbot.waitSignal(window.settled, timeout=WAIT_MS):
         window.connect_device("sim://visiomex", "coxiris", 115200)
-    assert window.info is not None and window.info.protocol == "visiomex"
+    assert window.machine.info is not None and window.machine.info.protocol == "visiomex"
     assert window.connection_bar.protocol() == "visiomex"
 
 

@@ -24,10 +24,20 @@ HEAVY = (
     "pyqtgraph",
     "OpenGL",
     "app.window.traffic_console",
+    "app.window.traffic_display",
+    "app.window.traffic_export",
+    "app.window.traffic_filter_bar",
+    "app.window.traffic_navigation",
+    "app.window.traffic_pacing",
+    "app.window.traffic_status",
     "app.window.device_docks",
     "app.window.parameter_dock",
     "app.window.log_viewer",
     "drivers.traffic_index",
+    "drivers.traffic_lines",
+    "drivers.traffic_pairing",
+    "drivers.traffic_search",
+    "drivers.traffic_spool",
     "serial.tools.list_ports",
     # the serial worker, its thread, the jobs and the motion engine under them
     "app.window.worker",
@@ -111,12 +121,12 @@ def test_the_deferred_parts_get_the_calls_made_before_them(qtbot, unshown: MainW
     win = unshown
     assert not built(win.console) and not built(win.devices) and not built(win.parameters)
     assert not win.views.is_ready()
-    assert win._serial is None  # the serial worker too
+    assert win.link.thread is None  # the serial worker too
     win.connect_device("loop://", "coxiris", 115200)
     win.console.append_note("before the console")
     win.show()
     qtbot.waitUntil(win.views.is_ready, timeout=10_000)
-    assert win._serial is not None and win.worker_thread.thread.isRunning()
+    assert win.link.thread is not None and win.worker_thread.thread.isRunning()
     for part in (win.console, win.devices, win.parameters, win.buffer):
         assert built(part) and not isinstance(part, LazyPart)
     assert win.findChild(QDockWidget, "rawConsoleDock").widget() is win.console
@@ -147,8 +157,8 @@ def test_a_window_closed_before_its_first_paint_builds_nothing(unshown: MainWind
     win.connect_device("loop://", "coxiris", 115200)
     win.close()
     assert not built(win.console)
-    assert win._serial is None  # no worker, no thread: the connection is not made
-    assert win._pending_log is None or win._pending_log.closed  # the session log is closed
+    assert win.link.thread is None  # no worker, no thread: the connection is not made
+    assert win.link.pending_log is None or win.link.pending_log.closed  # the session log is closed
     # Built after the close (a late paint's building: the docks want the worker), it is a
     # stopped one, and it was asked for nothing.
     win.views.build_now()
@@ -161,7 +171,7 @@ def test_the_worker_is_built_when_asked_for_before_the_first_paint(
     qtbot, unshown: MainWindow
 ) -> None:
     win = unshown
-    assert win._serial is None
+    assert win.link.thread is None
     worker = win.worker  # (a test, or a part built early, may need it)
     assert win.worker_thread.thread.isRunning() and worker is win.worker_thread.worker
     with qtbot.waitSignal(win.settled, timeout=10_000):

@@ -190,13 +190,13 @@ def test_the_session_log_follows_its_settings_at_once(
     qtbot, window: MainWindow, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     _connect(qtbot, window, "sim://coxiris?instant=1")
-    first = window.session_log_path
+    first = window.link.session_log_path
     assert first is not None and first.is_file()
     monkeypatch.delenv("MOTIONPANEL_LOG_DIR")  # the environment would come before the setting
     chosen = tmp_path / "chosen-logs"
     chosen.mkdir()  # the setting takes a folder that exists
     window.tools.apply_preferences(dataclasses.replace(window.tools.prefs, log_folder=str(chosen)))
-    second = window.session_log_path
+    second = window.link.session_log_path
     assert second is not None and second.parent == chosen
     window.jog_panel.jog_requested.emit("x", 1.0)  # the open connection goes on in the new file
     qtbot.waitUntil(lambda: "DELTA_MOVE" in second.read_text(encoding="utf-8"), timeout=10000)
@@ -205,6 +205,6 @@ def test_the_session_log_follows_its_settings_at_once(
     assert "DELTA_MOVE" not in first.read_text(encoding="utf-8")
     assert window.status_line.message() == "settings saved"
     window.tools.apply_preferences(dataclasses.replace(window.tools.prefs, session_log=False))
-    assert window.session_log_path is None
+    assert window.link.session_log_path is None
     qtbot.waitUntil(lambda: "turned off" in second.read_text(encoding="utf-8"))
     assert "no session log from now on" in _console(window)

@@ -17,6 +17,7 @@ from PySide6.QtCore import QObject, QTimer, Signal, Slot
 from app.common.messages import localized
 from drivers.bridge import Bridge
 from drivers.errors import MotionError
+from drivers.protocols.base import Protocol
 from drivers.traffic import Traffic, TrafficLogWriter
 from widgets._i18n import fill
 
@@ -38,13 +39,15 @@ class BridgeSession(QObject):
         log_path: Path | None = None,
         log_start: float | None = None,
         parent: QObject | None = None,
+        *,
+        protocol: Protocol | None = None,
     ) -> None:
         super().__init__(parent)
         self._queue: deque[Traffic] = deque()
         self._log = None
         if log_path is not None:
             self._log = TrafficLogWriter(log_path.open("a", encoding="utf-8"), log_start)
-        self.bridge = Bridge(device, baud, self._tap)
+        self.bridge = Bridge(device, baud, self._tap, protocol=protocol)
         self._thread: threading.Thread | None = None
         self._timer = QTimer(self)
         self._timer.setInterval(DRAIN_INTERVAL_MS)

@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QObject, Qt
-from PySide6.QtWidgets import QDockWidget, QWidget
+from PySide6.QtWidgets import QDockWidget, QMainWindow, QWidget
 
 from app.common.messages import localized
 from app.common.settings import write_protocol_settings
@@ -29,7 +29,7 @@ from widgets.piframe_panel import PiFramePanel
 from widgets.program_panel import ProgramPanel
 
 if TYPE_CHECKING:
-    from app.window.main_window import MainWindow
+    from app.window.services import WindowServices
 
 log = logging.getLogger(__name__)
 
@@ -37,9 +37,14 @@ log = logging.getLogger(__name__)
 class DeviceDocks(QObject):
     """Shows the panels the connected device calls for, and turns their requests into jobs."""
 
-    def __init__(self, window: MainWindow) -> None:
+    def __init__(
+        self, window: QMainWindow, services: WindowServices, moves_dock: QDockWidget
+    ) -> None:
+        """`moves_dock`: the dock the arc and dwell docks go beside (Go to)."""
         super().__init__(window)
-        self.window = window
+        self.window = window  # the docks' parent
+        self.services = services
+        self.moves_dock = moves_dock
         self.info: DeviceInfo | None = None
         self.firmata = FirmataPanel(window)
         self.piframe = PiFramePanel(window)
@@ -90,23 +95,23 @@ class DeviceDocks(QObject):
     def _wire(self) -> None:
         self.firmata.configure_requested.connect(self._configure_stepper)
         self.firmata.version_requested.connect(
-            lambda: self.window.submit_job(jobs.StepperVersionJob())
+            lambda: self.services.submit_job(jobs.StepperVersionJob())
         )
         self.firmata.steps_per_mm_changed.connect(lambda value: self._set({"steps_per_mm": value}))
         self.piframe.ticks_per_mm_changed.connect(lambda value: self._set({"ticks_per_mm": value}))
         self.arc.preview_changed.connect(self._preview)
         self.arc.arc_requested.connect(self._run_arc)
-        self.dwell.dwell_requested.connect(lambda ms: self.window.submit_job(jobs.DwellJob(ms)))
-        self.dwell.refused.connect(self.window.say)  # a typed dwell that cannot be sent
-        self.window.worker.job_finished.connect(self._on_job_finished)
-        self.window.worker.job_failed.connect(self._on_job_failed)
-        self.window.worker.stream_progress.connect(self._on_stream_progress)
+        self.dwell.dwell_requested.connect(lambda ms: self.services.submit_job(jobs.DwellJob(ms)))
+        self.dwell.refused.connect(self.services.say)  # a typed dwell that cannot be sent
+        self.services.worker.job_finished.connect(self._on_job_finished)
+        self.services.worker.job_failed.connect(self._on_job_failed)
+        self.services.worker.stream_progress.connect(self._on_stream_progress)
         self.program.load_requested.connect(self.load_program)
         self.program.save_requested.connect(self.save_program)
         self.program.run_requested.connect(self.run_program)
         self.program.pause_requested.connect(lambda: self._pause(True))
         self.program.resume_requested.connect(lambda: self._pause(False))
-        self.program.stop_requested.connect(self.window.worker_thread.stream_stop)
+        self.program.stop_requested.connect(self.services.worker_thread.stream_stop)
 
     # -- connection --------------------------------------------------------------------------
     def device_ready(self, info: DeviceInfo) -> None:
@@ -127,8 +132,8 @@ class DeviceDocks(QObject):
         self.adapt(info.capabilities)
         for dock in (self.arc_dock, self.dwell_dock):  # one place for moves: Go to, Arc, Dwell
             if dock.isVisible():
-                self.window.tabifyDockWidget(self.window.coordinates_dock, dock)
-        self.window.coordinates_dock.raise_()
+                self.window.tabifyDockWidget(self.moves_dock, dock)
+        self.moves_dock.raise_()
 
     def adapt(self, caps: Capabilities) -> None:
         """Follow the capabilities (after a connection, or new settings)."""
@@ -138,7 +143,9 @@ class DeviceDocks(QObject):
         self.dwell_dock.setVisible(caps.dwell)
         self.program_dock.setVisible(caps.streaming)
         self.arc.set_resolution(caps.resolution)
-        self.arc.set_box(self.window.travel.box if self.window.travel is not None else caps.travel)
+        self.arc.set_box(
+            self.services.travel.box if self.services.travel is not None else caps.travel
+        )
         self.piframe.set_dtr(caps.dtr)
         if caps.travel is not None:
             (x0, x1), _, _ = caps.travel
@@ -156,14 +163,14 @@ class DeviceDocks(QObject):
         """New settings: used from the next command on, and remembered for this device."""
         if self.info is None:
             return
-        write_protocol_settings(self.window.settings, self.info.protocol, self.info.port, values)
-        self.window.submit_job(jobs.SettingsJob(values))
+        write_protocol_settings(self.services.settings, self.info.protocol, self.info.port, values)
+        self.services.submit_job(jobs.SettingsJob(values))
 
     def _configure_stepper(self, steps_per_rev: int, pins: list[int], steps_per_mm: float) -> None:
         if self.info is None:
             return
         self._set({"steps_per_mm": steps_per_mm})
-        self.window.submit_job(jobs.StepperConfigJob(steps_per_rev, tuple(pins)))
+        self.services.submit_job(jobs.StepperConfigJob(steps_per_rev, tuple(pins)))
 
     def _run_arc(self, values: dict[str, object]) -> None:
         arc = Arc(
@@ -175,7 +182,7 @@ class DeviceDocks(QObject):
             bool(values["ccw"]),
             float(values["z"]),  # type: ignore[arg-type]
         )
-        self.window.submit_job(jobs.ArcJob(arc))
+        self.services.submit_job(jobs.ArcJob(arc))
 
     # -- programs ----------------------------------------------------------------------------
     def load_program(self, path: str) -> None:
@@ -190,7 +197,7 @@ class DeviceDocks(QObject):
         self.program.set_program(self.program_name, len(points))
         self._show_path(0)
         loaded = self.tr("program %1: %2 points, nothing sent yet")
-        self.window.say(fill(loaded, self.program_name, len(points)))
+        self.services.say(fill(loaded, self.program_name, len(points)))
 
     def save_program(self, path: str) -> None:
         """Save the loaded program as the panel's JSON."""
@@ -199,25 +206,24 @@ class DeviceDocks(QObject):
         except BadInput as exc:
             self.program.show_error(localized(exc))
             return
-        self.window.say(fill(self.tr("program saved to %1 (%2 points)"), path, len(self.points)))
+        self.services.say(fill(self.tr("program saved to %1 (%2 points)"), path, len(self.points)))
 
     def run_program(self) -> None:
         """Stream the loaded program (the worker runs it; progress comes by signal)."""
         if not self.points:
             return
         job = jobs.StreamJob(tuple(self.points), self.program_name)
-        if self.window.submit_job(job):
+        if self.services.submit_job(job):
             self.program.set_running(True)
 
     def _pause(self, paused: bool) -> None:
-        self.window.worker_thread.stream_pause(paused)
+        self.services.worker_thread.stream_pause(paused)
         self.program.set_paused(paused)
 
     def _show_path(self, executed: int) -> None:
         """What is left of the program, drawn as the preview; what is done is the trail."""
         left = [(p.x, p.y, p.z) for p in self.points[max(executed - 1, 0) :]]
-        self.window.view2d.set_preview(left or None)
-        self.window.view3d.set_preview(left or None)  # type: ignore[attr-defined]
+        self.services.show_preview(left or None)
 
     def _on_stream_progress(self, state: StreamProgress) -> None:
         self.program.show_progress(
@@ -238,8 +244,7 @@ class DeviceDocks(QObject):
     def _preview(self, points: list[tuple[float, float, float]]) -> None:
         if self.info is None or not self.info.capabilities.arcs:
             points = []  # no arcs on this device: nothing to preview
-        self.window.view2d.set_preview(points or None)
-        self.window.view3d.set_preview(points or None)  # type: ignore[attr-defined]
+        self.services.show_preview(points or None)
 
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
         if isinstance(job, jobs.StreamJob) and isinstance(result, StreamProgress):
@@ -254,7 +259,7 @@ class DeviceDocks(QObject):
                     "program %1 stopped, the device's queue flushed: %2/%3 executed, %4 frames, "
                     "%5 retransmission(s), %6 s"
                 )
-            self.window.say(
+            self.services.say(
                 fill(
                     done,
                     job.name,
@@ -273,7 +278,7 @@ class DeviceDocks(QObject):
                 for i in range(1, 5)
             }
             write_protocol_settings(
-                self.window.settings,
+                self.services.settings,
                 self.info.protocol,
                 self.info.port,
                 {"steps_per_rev": float(job.steps_per_rev), **pins},

@@ -221,7 +221,7 @@ class RawJob(Job):
 
     def describe(self) -> str:
         """E.g. `send "GET_ID\\n"`, with the console's escapes."""
-        from drivers.traffic_index import escape  # imports numpy: not before the first paint
+        from drivers.traffic_lines import escape
 
         return _t('send "%1"', escape(self.data))
 

@@ -22,7 +22,7 @@ from widgets.macro_panel import MacroPanel
 from widgets.panel_scroll_area import PanelScrollArea
 
 if TYPE_CHECKING:
-    from app.window.main_window import MainWindow
+    from app.window.services import WindowServices
 
 log = logging.getLogger(__name__)
 
@@ -56,9 +56,10 @@ def vocabulary() -> str:
 class MacroDock(QObject):
     """Keeps the protocol's macros, shows them as buttons, runs one as a MacroJob."""
 
-    def __init__(self, window: MainWindow) -> None:
+    def __init__(self, window: QMainWindow, services: WindowServices) -> None:
         super().__init__(window)
-        self.window = window
+        self.window = window  # the docks' and dialogs' parent
+        self.services = services
         self.panel = MacroPanel(window)
         self.dock = empty_dock(window, DOCK_NAME, make_dock)
         self.dock.setWidget(PanelScrollArea(self.panel, self.dock))
@@ -70,7 +71,7 @@ class MacroDock(QObject):
         self.panel.edit_requested.connect(self.edit)
         self.panel.import_requested.connect(self._ask_import)
         self.panel.export_requested.connect(self._ask_export)
-        window.worker.macro_step.connect(self._on_step)
+        services.worker.macro_step.connect(self._on_step)
 
     # -- which protocol ------------------------------------------------------------------------
     def set_protocol(self, name: str, variant: str = "") -> None:
@@ -83,7 +84,7 @@ class MacroDock(QObject):
             self.protocol = None
             self.macros = []
         else:
-            self.macros = macros.read_saved(self.window.settings, name)
+            self.macros = macros.read_saved(self.services.settings, name)
         self.dock.setWindowTitle(fill(self.tr("Macros (%1)"), name))
         self._show()
 
@@ -107,12 +108,12 @@ class MacroDock(QObject):
         try:
             macros.check_macro(macro, self.protocol)
         except BadInput as exc:
-            self.window.say(fill(self.tr("%1; nothing sent"), localized(exc)))
+            self.services.say(fill(self.tr("%1; nothing sent"), localized(exc)))
             return False
-        return self.window.submit_job(jobs.MacroJob(macro))
+        return self.services.submit_job(jobs.MacroJob(macro))
 
     def _on_step(self, name: str, number: int, count: int, step: str) -> None:
-        self.window.say(fill(self.tr("macro %1: step %2/%3: %4"), name, number, count, step))
+        self.services.say(fill(self.tr("macro %1: step %2/%3: %4"), name, number, count, step))
 
     # -- editing -------------------------------------------------------------------------------
     def problem(self, name: str, steps: tuple[str, ...], original: str = "") -> str:
@@ -163,17 +164,17 @@ class MacroDock(QObject):
         else:
             self.macros[index] = kept
         self._save()
-        self.window.say(fill(self.tr("macro %1 kept (%2 steps)"), name, len(steps)))
+        self.services.say(fill(self.tr("macro %1 kept (%2 steps)"), name, len(steps)))
 
     def delete(self, name: str) -> None:
         """Forget a macro."""
         self.macros = [m for m in self.macros if m.name != name]
         self._save()
-        self.window.say(fill(self.tr("macro %1 deleted"), name))
+        self.services.say(fill(self.tr("macro %1 deleted"), name))
 
     def _save(self) -> None:
         assert self.protocol is not None
-        macros.save(self.window.settings, self.protocol.name, self.macros)
+        macros.save(self.services.settings, self.protocol.name, self.macros)
         self._show()
 
     # -- files -----------------------------------------------------------------------------------
@@ -191,14 +192,14 @@ class MacroDock(QObject):
                 too_many = self.tr("%1 macros; at most %2")
                 raise macros.BadMacro(fill(too_many, len(merged), macros.MAX_MACROS))
         except BadInput as exc:
-            self.window.say(fill(self.tr("macros not imported: %1"), localized(exc)))
+            self.services.say(fill(self.tr("macros not imported: %1"), localized(exc)))
             return False
         self.macros = merged
         self._save()
         others = len(read) - len(incoming)
         left = fill(self.tr("; %1 for other protocols left out"), others) if others else ""
         imported = self.tr("imported %1 macro(s) from %2%3")
-        self.window.say(fill(imported, len(incoming), path, left))
+        self.services.say(fill(imported, len(incoming), path, left))
         return True
 
     def export_file(self, path: str) -> bool:
@@ -207,9 +208,9 @@ class MacroDock(QObject):
             macros.write_macro_file(path, self.macros)
         except OSError as exc:
             why = self.tr("macros not exported: cannot write %1: %2")
-            self.window.say(fill(why, path, exc.strerror or exc))
+            self.services.say(fill(why, path, exc.strerror or exc))
             return False
-        self.window.say(fill(self.tr("exported %1 macro(s) to %2"), len(self.macros), path))
+        self.services.say(fill(self.tr("exported %1 macro(s) to %2"), len(self.macros), path))
         return True
 
     def _ask_import(self) -> None:

@@ -25,7 +25,7 @@ from widgets.parameter_editor import ParameterEditor, ParameterRow
 from widgets.parameter_values import CANCELLED, CONFIRMED, ERROR, TIMED_OUT
 
 if TYPE_CHECKING:
-    from app.window.main_window import MainWindow
+    from app.window.services import WindowServices
 
 log = logging.getLogger(__name__)
 
@@ -107,9 +107,10 @@ def make_dock(window: QMainWindow) -> QDockWidget:
 class ParameterDock(QObject):
     """Shows the editor when the device has parameters; turns its requests into jobs."""
 
-    def __init__(self, window: MainWindow) -> None:
+    def __init__(self, window: QMainWindow, services: WindowServices) -> None:
         super().__init__(window)
-        self.window = window
+        self.window = window  # the docks' and dialogs' parent
+        self.services = services
         self.editor = ParameterEditor(window)
         self.dock = empty_dock(window, DOCK_NAME, make_dock)
         self.dock.setWidget(self.editor)
@@ -120,7 +121,7 @@ class ParameterDock(QObject):
         self.editor.cancel_requested.connect(self.cancel)
         self.editor.load_requested.connect(self.load)
         self.editor.save_requested.connect(self.save)
-        w = window.worker
+        w = services.worker
         w.parameter_written.connect(self._on_written)
         w.job_finished.connect(self._on_job_finished)
         w.job_failed.connect(self._on_job_failed)
@@ -136,7 +137,7 @@ class ParameterDock(QObject):
             return
         self.protocol = create_protocol(info.protocol, info.variant or None)
         self.editor.set_parameters(editor_rows(info.parameters, self.protocol))
-        last = read_parameters(self.window.settings, info.protocol, info.port)
+        last = read_parameters(self.services.settings, info.protocol, info.port)
         self.protocol.assume_parameters(last)
         defaults = {p.name: p.default for p in info.parameters}
         self.editor.set_values({**defaults, **last})
@@ -164,7 +165,7 @@ class ParameterDock(QObject):
         for param_id, value in items:
             parameter = self.protocol.parameter(param_id)
             job = jobs.SetParameterJob(parameter.id, value, parameter.name, parameter.unit)
-            if not self.window.submit_job(job):
+            if not self.services.submit_job(job):
                 break
             self._writing.append(job)
             submitted.append(parameter.id)
@@ -173,14 +174,14 @@ class ParameterDock(QObject):
 
     def cancel(self) -> None:
         """Drop the sets not sent yet; the one in flight finishes (its reply is awaited)."""
-        dropped = self.window.worker.cancel_pending()
+        dropped = self.services.worker.cancel_pending()
         keep = [job for job in dropped if not isinstance(job, jobs.SetParameterJob)]
         for job in keep:
-            self.window.worker.submit(job)  # only the parameter writes are cancelled
+            self.services.worker.submit(job)  # only the parameter writes are cancelled
         cancelled = [job for job in dropped if isinstance(job, jobs.SetParameterJob)]
         self.forget(cancelled)
-        self.window.jobs_dropped(cancelled)  # motion is on again once none is left
-        self.window.say(fill(self.tr("parameter writing cancelled: %1 not sent"), len(cancelled)))
+        self.services.jobs_dropped(cancelled)  # motion is on again once none is left
+        self.services.say(fill(self.tr("parameter writing cancelled: %1 not sent"), len(cancelled)))
 
     def forget(self, dropped: list[jobs.Job]) -> None:
         """Jobs that will never run (cancelled or stopped): their rows say so."""
@@ -201,7 +202,7 @@ class ParameterDock(QObject):
             return
         name = written.parameter.name
         values = {name: written.value, **written.device_values}
-        write_parameters(self.window.settings, info.protocol, info.port, values)
+        write_parameters(self.services.settings, info.protocol, info.port, values)
         self.protocol.assume_parameters(values)
         self.editor.set_status(
             written.parameter.id, CONFIRMED, "; ".join(localized(note) for note in written.notes)

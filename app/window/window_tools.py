@@ -19,7 +19,7 @@ from widgets.lazy_view import LazyPart, built
 
 if TYPE_CHECKING:
     from app.window.macro_dock import MacroDock
-    from app.window.main_window import MainWindow
+    from app.window.services import WindowParts
     from drivers.control_lines import ControlLines
 
 log = logging.getLogger(__name__)
@@ -50,12 +50,12 @@ class WindowTools(QObject):
     """Built with the window (its menus and the work frame at once, the macro dock just after
     the first paint); the window tells it what happens through the methods below."""
 
-    def __init__(self, window: MainWindow) -> None:
-        super().__init__(window)
+    def __init__(self, window: WindowParts) -> None:
+        super().__init__(window)  # type: ignore[arg-type]
         self.window = window
         self.prefs: Preferences = read_preferences(window.settings)
         self.work = WorkFrame(window.settings, window.readout, window.coordinates, self._say, self)
-        self.macro_dock = QDockWidget(self.tr("Macros"), window)
+        self.macro_dock = QDockWidget(self.tr("Macros"), window)  # type: ignore[call-overload]
         self.macro_dock.setObjectName(MACRO_DOCK)
         window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, self.macro_dock)
         self.macros: MacroDock = LazyPart(self._build_macros, MACRO_CALLS)  # type: ignore[assignment]
@@ -80,7 +80,7 @@ class WindowTools(QObject):
     def _build_macros(self) -> MacroDock:
         from app.window.macro_dock import MacroDock
 
-        self.macros = MacroDock(self.window)
+        self.macros = MacroDock(self.window, self.window)  # type: ignore[arg-type]
         return self.macros
 
     # -- menus ---------------------------------------------------------------------------------

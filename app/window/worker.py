@@ -17,8 +17,6 @@ from app.common.macros import Macro, run_macro
 from app.common.messages import localized
 from app.window import jobs
 from drivers.capabilities import Capabilities
-from drivers.client import Client
-from drivers.commands import Stop
 from drivers.control_lines import BREAK_S, ControlLines
 from drivers.errors import (
     Aborted,
@@ -37,10 +35,10 @@ from drivers.parameters import Parameter
 from drivers.protocol_sniff import looks_like
 from drivers.protocols.base import Reply, Setting
 from drivers.protocols.firmata import StepperVersion, configure_stepper
-from drivers.registry import create_protocol
-from drivers.streaming import Streamer, StreamProgress
+from drivers.session import DeviceSession, open_device
+from drivers.streaming import StreamProgress
 from drivers.traffic import RX, Traffic, TrafficLogWriter
-from drivers.transport import Link, open_link
+from drivers.transport import Link
 from drivers.travel import TravelLimits
 
 log = logging.getLogger(__name__)
@@ -151,15 +149,15 @@ class SerialWorker(QObject):
         self._submit_lock = threading.Lock()
         self._submitted = 0  # jobs submitted so far (each numbered in turn)
         self._stop_covers = 0  # the jobs numbered up to this were submitted before a stop
-        self._link: Link | None = None
-        self._motion: Motion | None = None
+        self._session: DeviceSession | None = None
+        self._link: Link | None = None  # the session's (None: not connected)
+        self._motion: Motion | None = None  # the session's
         self._timer: QTimer | None = None
         self._batch: list[Traffic] = []
         self._batch_sent = 0.0
         self._next_poll = 0.0
         self._abort = threading.Event()
         self._travel: TravelLimits | None = None
-        self._streamer: Streamer | None = None
         self._session_log: TrafficLogWriter | None = None
         self._last_stream_position = 0.0
         self._recovering = ""  # why the device is being talked to again ("": it answers)
@@ -196,12 +194,9 @@ class SerialWorker(QObject):
 
     def stream_pause(self, paused: bool) -> None:
         """Pause or resume the program under way (any thread)."""
-        streamer = self._streamer
-        if streamer is not None:
-            if paused:
-                streamer.pause()
-            else:
-                streamer.resume()
+        session = self._session
+        if session is not None:
+            session.pause_program(paused)
 
     def stop_now(self) -> None:
         """Stop the move or program under way, where the device has a stop (any thread); a
@@ -215,9 +210,9 @@ class SerialWorker(QObject):
 
     def stream_stop(self) -> None:
         """Stop the program under way; the device's queue is flushed (any thread)."""
-        streamer = self._streamer
-        if streamer is not None:
-            streamer.stop()
+        session = self._session
+        if session is not None:
+            session.stop_program()
 
     def abort_clear(self) -> None:
         """Allow waits again (before a new connection)."""
@@ -282,35 +277,44 @@ class SerialWorker(QObject):
         )
         self.state_changed.emit("connecting", localized(connecting))
         try:
-            protocol = create_protocol(protocol_name, options.variant or None)
-            protocol.assume_parameters(options.parameters)
-            protocol.configure(options.settings)
-            dtr = protocol.capabilities.dtr if options.dtr is None else options.dtr
-            link = open_link(url, baud, dtr=dtr, rts=options.rts)
+            session = open_device(
+                url,
+                protocol_name,
+                variant=options.variant or None,
+                baud=baud,
+                settings=options.settings,
+                parameters=options.parameters,
+                dtr=options.dtr,
+                rts=options.rts,
+                travel=self._travel,
+                start=False,  # the handshake identifies the device first
+                abort=self._abort,
+            )
         except MotionError as exc:
             failed: object = exc
             if self._watch is not None:  # back, but not usable yet (busy, permissions)
                 failed = Message("{error}; waiting for {url}", error=exc, url=url)
             self.state_changed.emit("error", localized(failed))
             return
-        link.listeners.append(self._on_traffic)
+        link = session.link
+        session.add_listener(self._on_traffic)
         link.note_listeners.append(self._on_link_note)
         if self._session_log is not None:
-            link.listeners.append(self._session_log)
+            session.add_listener(self._session_log)  # set_session_log may change it later
             shown = f"{protocol_name} {options.variant}" if options.variant else protocol_name
             self._log_note(f"connected to {url} ({shown}, {baud} baud)")
-        client = Client(link, protocol)
-        client.abort = self._abort
-        client.wait_hooks.append(self._flush_traffic_if_due)
-        client.listeners.append(self._on_event)
+        for text in link.opening_notes:  # e.g. an RFC 2217 server that left DTR unconfirmed
+            self._on_link_note(text)
+        session.client.wait_hooks.append(self._flush_traffic_if_due)
+        session.client.listeners.append(self._on_event)
+        self._session = session
         self._link = link
-        self._motion = Motion(client)
+        self._motion = session.motion
         self._motion.poll_interval = 1.0 / self.poll_moving_hz
         self._motion.position_listeners.append(self.position_changed.emit)
         self._motion.move_listeners.append(self._on_move_started)
         self._motion.notice_listeners.append(self._on_motion_notice)
         self._motion.parameter_listeners.append(self.parameter_written.emit)
-        self._motion.travel = self._travel
         self._connection = (url, protocol_name, options)
         self._recovering = ""
         self._lines = None
@@ -451,10 +455,16 @@ class SerialWorker(QObject):
         if self._link is None:
             return
         self._flush_traffic()
-        self._link.close()
+        self._end_session()
+        self.state_changed.emit("disconnected", "")
+
+    def _end_session(self) -> None:
+        """Close the session (its port) and forget it."""
+        if self._session is not None:
+            self._session.close()
+        self._session = None
         self._link = None
         self._motion = None
-        self.state_changed.emit("disconnected", "")
 
     @Slot()
     def shutdown(self) -> None:
@@ -678,18 +688,9 @@ class SerialWorker(QObject):
                 motion.position()  # the live position moves along the program
             self._flush_traffic_if_due()
 
-        self._streamer = Streamer(
-            motion.client, list(job.points), progress=progress, guard=motion.guard
-        )
-        try:
-            state = self._streamer.run()
-        finally:
-            stopped = self._streamer.stopped
-            self._streamer = None
-        if stopped:
-            motion.client.execute(Stop())  # flushes the device's queue
-        motion.position()
-        return state
+        assert self._session is not None
+        # Stopped early, the device's queue is flushed; the position is read at the end.
+        return self._session.run_program(job.points, progress)
 
     def _refresh(self) -> None:
         motion = self._motion
@@ -716,10 +717,7 @@ class SerialWorker(QObject):
             error = Message("{error}; not sent: {jobs}", error=error, jobs=_described(dropped))
         self._recovering = ""
         self._flush_traffic()
-        if self._link is not None:
-            self._link.close()
-        self._link = None
-        self._motion = None
+        self._end_session()
         if self._ready_once and url and _watchable(url):
             if self._watch is None:
                 now = time.monotonic()

@@ -1,0 +1,344 @@
+"""One device's machine state as the window shows it: connected or not, what it is doing, where it
+is (reported, estimated, counted or unknown) and the travel box it must stay in."""
+
+from __future__ import annotations
+
+import time
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QCoreApplication, QObject
+
+from app.common.messages import localized
+from app.common.settings import write_counted_position
+from widgets import status_line as status
+from widgets._i18n import fill
+from widgets.lazy_view import built
+
+if TYPE_CHECKING:
+    from app.window import jobs
+    from app.window.move_estimate import MoveEstimate
+    from app.window.services import Point, WindowParts
+    from app.window.worker import DeviceInfo, SerialWorker
+    from app.window.worker_link import WorkerLink
+    from drivers.events import PositionReport
+    from drivers.motion import MoveStart
+    from drivers.travel import TravelLimits
+
+translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
+
+
+class MachineState(QObject):
+    """The state of the device connected, in one place: the status line, the position readout,
+    the trail and the target mark follow it."""
+
+    def __init__(self, window: WindowParts, link: WorkerLink) -> None:
+        super().__init__(window)  # type: ignore[arg-type]
+        self.window = window
+        self.t0 = time.monotonic()
+        self.connected = False
+        self.info: DeviceInfo | None = None
+        self.travel: TravelLimits | None = None
+        self.busy_job: jobs.Job | None = None
+        self.moving = False
+        self.failed = False
+        self.link_failed = False  # the connection failed since the device was last ready
+        self.position_lost = False  # a device with no position feedback lost track of it
+        self.lost_status = "lost"  # or "uncounted": a fresh connection, nothing counted yet
+        self.last_position: Point | None = None
+        self.true_position: Point | None = None  # reported, not estimated
+        self.count_kept: Point | None = None  # (Visiomex, Firmata: keep_count)
+        self.unconfirmed_move = False  # a move started whose end no position has confirmed
+        self.trail_device: tuple[str, str, str] | None = None  # port, protocol, identity
+        self.home_from: Point | None = None
+        self.estimate: MoveEstimate | None = None  # built with the worker
+        link.wirers.append(self._wire)
+
+    def _wire(self, w: SerialWorker) -> None:
+        """The worker's reports of where the stage is and what it does, to bound methods (queued
+        to the GUI thread); the estimate is built with the worker (it imports the motion engine)."""
+        from app.window.move_estimate import MoveEstimate
+
+        self.estimate = MoveEstimate(self)
+        self.estimate.estimated.connect(self._on_estimate)
+        w.position_changed.connect(self._on_position)
+        w.target_changed.connect(self.show_target)
+        w.speed_changed.connect(self._on_speed)
+        w.speed_limits_changed.connect(self.window.speed.set_range)
+        w.move_started.connect(self._on_move_started)
+        w.notice.connect(self._on_notice)
+        w.device_error.connect(self._on_device_error)
+        w.device_note.connect(self._on_device_note)
+
+    def _tell(self, text: str, kind: str = status.INFO, note: bool = True) -> None:
+        self.window.tell(text, kind, note)
+
+    # -- the status line ---------------------------------------------------------------------
+    def show_status(self, connection: str = "", detail: str = "") -> None:
+        """The status line: the connection's state, or moving, busy, failed or idle."""
+        line = self.window.status_line
+        if not self.connected:
+            name = connection or self.window.connection_bar.state()
+            line.set_state(name if name != "connected" else status.IDLE, detail)
+        elif self.moving:
+            line.set_state(status.MOVING)
+        elif self.busy_job is not None:
+            line.set_state(status.BUSY, self.busy_job.describe())
+        elif self.failed:
+            line.set_state(status.ERROR, line.message())
+        else:
+            line.set_state(status.IDLE)
+
+    def _on_notice(self, text: str) -> None:
+        self._tell(text, status.WARNING)
+
+    def _on_device_error(self, message: str) -> None:
+        self.failed = True
+        text = translate("MainWindow", "the device reported an error: %1")
+        self._tell(fill(text, message), status.FAILURE)
+        self.show_status()
+
+    def _on_device_note(self, text: str) -> None:
+        self.window.console.append_note(fill(translate("MainWindow", "device: %1"), text))
+
+    def _on_speed(self, speed: float) -> None:
+        self.window.speed.set_reported(speed)
+        self.window.speed.set_value(speed)
+        self.window.devices.set_speed(speed)
+
+    # -- the connection ----------------------------------------------------------------------
+    def link_lost(self) -> None:
+        """No device any more: the move under way is not confirmed, the trail breaks, nothing
+        runs, and the position shown is stale."""
+        if self.unconfirmed_move:
+            self.undo_move()
+        self.window.buffer.break_trail()  # the next connection's positions: a new segment
+        self.show_target(None)
+        self.end_move()
+        self.busy_job = None  # the worker dropped what was queued: nothing runs after this
+        if self.last_position is not None:
+            self.window.readout.set_status("stale")
+
+    def device_ready(self, info: DeviceInfo) -> None:
+        """A device answered: whether its position is known (read again, or lost, or not yet
+        counted), said once."""
+        from drivers.position_count import counts_position  # (not before the first paint)
+
+        self.info = info
+        device = (info.port, info.protocol, info.identity)
+        if self.trail_device is not None and device != self.trail_device:
+            self.window.buffer.clear(keep_last=True)  # another device: a trail of its own
+        self.trail_device = device
+        if self.link_failed:  # after a lost link or a restart: what is the position now?
+            self.position_lost = not info.capabilities.position_feedback
+            self.lost_status = "lost"
+            self._tell(
+                translate(
+                    "MainWindow",
+                    "the position is unknown: this device cannot report it; home it or set home",
+                )
+                if self.position_lost
+                else fill(
+                    translate("MainWindow", "connected again to %1: the position was read again"),
+                    localized(info.identity),
+                ),
+                status.WARNING if self.position_lost else status.INFO,
+            )
+        elif counts_position(info.protocol, info.capabilities):  # fresh: nothing counted yet
+            self.position_lost, self.lost_status = True, "uncounted"
+            self._tell(
+                translate(
+                    "MainWindow",
+                    "position unknown: the device cannot be asked; Home or Set Home to start "
+                    "counting",
+                ),
+                status.WARNING,
+            )
+        self.link_failed = False
+        self.window.readout.set_status(self.settled_status())
+
+    def known_position(self) -> Point | None:
+        """The position as last shown, unless the device lost track of it."""
+        return None if self.position_lost else self.last_position
+
+    # -- travel limits -----------------------------------------------------------------------
+    def apply_travel(self, limits: TravelLimits | None) -> None:
+        """The travel box for the device (None: none): the worker, the entry and views follow."""
+        self.travel = limits
+        self.show_outside()
+        box = limits.box if limits is not None else None
+        self.window.to_worker(lambda thread: thread.set_travel(limits))
+        self.window.coordinates.set_box(box)
+        self.window.view2d.set_workspace(box)
+        self.window.view3d.set_workspace(box)
+
+    def show_outside(self) -> None:
+        """The readout says so while the position reported is outside the travel limits."""
+        here, travel = self.last_position, self.travel
+        outside = travel.outside(here) if here is not None and travel is not None else []
+        self.window.readout.show_outside(outside)
+
+    # -- the position ------------------------------------------------------------------------
+    def _on_position(self, report: PositionReport) -> None:
+        self.true_position = (report.x, report.y, report.z)
+        self.unconfirmed_move = False
+        window = self.window
+        window.buffer.keep_provisional()  # the estimate so far was the stage's way
+        if self.home_from is not None and (report.x, report.y, report.z) == (0.0, 0.0, 0.0):
+            # Set Home: the trail moves into the new coordinates, with no false jump.
+            x, y, z = self.home_from
+            self.home_from = None
+            window.buffer.shift(-x, -y, -z)
+            self.show_target(None)
+            window.console.append_note(
+                fill(
+                    translate("MainWindow", "new home: the trail is shifted by (%1, %2, %3) mm"),
+                    f"{-x:g}",
+                    f"{-y:g}",
+                    f"{-z:g}",
+                )
+            )
+            window.tools.home_moved((x, y, z))
+        if self.estimate is not None and self.estimate.active():
+            self._end_move_estimate()
+        devices = window.devices
+        if built(devices) and devices.arc_dock.isVisible() and devices.arc.start_z() != report.z:
+            devices.arc.set_start_z(report.z)  # the arc preview starts at the stage's Z
+        if self.info is not None:  # measured, or where the last move's reply said it ended
+            window.readout.set_measured(report.measured, report.confirmed or None)
+        self._show_position(report.x, report.y, report.z)
+        self.show_outside()
+        self.keep_count()
+
+    def keep_count(self) -> None:
+        """A device that cannot be asked where it is (Visiomex, Firmata): the count since
+        Home or Set Home is kept with the settings, for motionctl to go on from."""
+        from drivers.position_count import counts_position
+
+        info, here = self.info, self.true_position
+        if info is None or not counts_position(info.protocol, info.capabilities) or here is None:
+            return
+        if info.capabilities.position_feedback or self.position_lost or here == self.count_kept:
+            return
+        self.count_kept = here
+        write_counted_position(self.window.settings, info.protocol, info.port, here)
+
+    def _show_position(self, x: float, y: float, z: float) -> None:
+        self.last_position = (x, y, z)
+        if self.connected and not self.position_lost:
+            self.window.tools.position((x, y, z))
+        self.window.readout.set_position(x, y, z)
+        self.window.coordinates.set_known_position(x, y, z)
+        self.window.buffer.append(time.monotonic() - self.t0, x, y, z)
+
+    def _on_move_started(self, move: MoveStart) -> None:
+        self.moving = True
+        self.unconfirmed_move = True
+        self.show_status()
+        if move.duration > 0 and self.estimate is not None:
+            self.window.buffer.begin_provisional()  # taken back should the move fail
+            self.estimate.start(move)
+
+    def undo_move(self) -> None:
+        """A move failed (or its link went) before a position confirmed it: its estimate is
+        taken back from the trail, its target mark goes, and the readout shows the last
+        position reported again."""
+        self.unconfirmed_move = False
+        if self.estimate is not None:
+            self.estimate.stop()
+        self.window.buffer.drop_provisional()
+        self.show_target(None)
+        readout = self.window.readout
+        if readout.status() == "estimated":
+            self._mark_estimated(False)
+        true = self.true_position
+        if true is not None and true != self.last_position:
+            self.last_position = true
+            if self.connected and not self.position_lost:
+                self.window.tools.position(true)
+            readout.set_position(*true)
+            self.window.coordinates.set_known_position(*true)
+
+    def _on_estimate(self, x: float, y: float, z: float) -> None:
+        if self.window.readout.status() != "estimated":
+            # Marked at the first estimate: a move over before it (a short jog step) restyles
+            # nothing, which halved the GUI's event-loop gaps while jogging.
+            self._mark_estimated(True)
+        self._show_position(x, y, z)
+
+    def settled_status(self) -> str:
+        """The readout's status when no move is being estimated."""
+        return self.lost_status if self.position_lost else "live"
+
+    def _mark_estimated(self, estimated: bool) -> None:
+        self.window.readout.set_status("estimated" if estimated else self.settled_status())
+        self.window.view2d.set_estimated(estimated)
+        self.window.view3d.set_estimated(estimated)
+
+    def _end_move_estimate(self) -> None:
+        if self.estimate is not None:
+            self.estimate.stop()
+        if self.window.readout.status() == "estimated":
+            self._mark_estimated(False)
+
+    def end_move(self) -> None:
+        """Nothing moves (any more): its estimate ends."""
+        self.moving = False
+        if self.estimate is not None and self.estimate.active():
+            self._end_move_estimate()
+
+    def show_target(self, target: Point | None) -> None:
+        """The target of the move under way, marked in the views (None: no mark)."""
+        self.window.view2d.set_target(target)
+        self.window.view3d.set_target(target)
+
+    # -- jobs --------------------------------------------------------------------------------
+    def job_failed(self) -> None:
+        """A job failed: the move it started is taken back; the status says failed."""
+        if self.unconfirmed_move:
+            self.undo_move()
+        self.failed = True
+
+    def job_ended(self, job: jobs.Job) -> None:
+        """`job` ended (done or failed): nothing runs, nothing moves any more."""
+        from app.window import jobs
+
+        self.busy_job = None
+        if self.moving:  # one job at a time: when it ends, nothing moves (arcs and jogs alike)
+            self.end_move()
+        if isinstance(job, jobs.SetHomeJob):
+            self.home_from = None
+
+    def job_finished(self, job: jobs.Job, result: object) -> None:
+        """`job` was done: where that makes the position known again, it is."""
+        from app.window import jobs
+
+        self.failed = False
+        self.window.status_line.clear_error()
+        caps = self.info.capabilities if self.info is not None else None
+        readout = self.window.readout
+        if (
+            isinstance(job, jobs.SetHomeJob)  # places that the device itself knows again
+            or (caps is not None and caps.homing and isinstance(job, jobs.HomeJob))
+            or (caps is not None and caps.absolute_moves and isinstance(job, jobs.MoveToJob))
+        ):
+            self.position_lost = False  # a known place again
+            if readout.status() in ("lost", "uncounted"):
+                readout.set_status("live")
+        elif (
+            self.position_lost and self.lost_status == "uncounted" and isinstance(job, jobs.HomeJob)
+        ):
+            self.position_lost = False  # the home move is confirmed: counting starts here
+            readout.set_status("live")
+            self._tell(translate("MainWindow", "home confirmed: the position is counted from here"))
+        self.keep_count()  # Home, Set Home: counting starts
+        if isinstance(job, jobs.SetSpeedJob) and isinstance(result, float) and result != job.speed:
+            self._tell(
+                fill(
+                    translate(
+                        "MainWindow", "speed %1 mm/s reads back as %2 mm/s (the device rounds)"
+                    ),
+                    f"{job.speed:g}",
+                    f"{result:g}",
+                ),
+                note=False,
+            )
