@@ -12,7 +12,10 @@ for the translators, so a template must be a plain string literal.
 
 from __future__ import annotations
 
+import math
+import string
 from collections.abc import Mapping
+from decimal import Decimal
 
 CONTEXT = "messages"
 """The translation context of every Message template."""
@@ -26,7 +29,7 @@ class Message(str):
 
     def __new__(cls, template: str, /, **values: object) -> Message:
         """The message; `template` uses str.format fields named after `values`."""
-        text = template.format(**values) if values else template
+        text = fill(template, values) if values else template
         made = super().__new__(cls, text)
         made.template = template
         made.values = values
@@ -35,6 +38,46 @@ class Message(str):
     def __reduce__(self) -> tuple[object, ...]:
         """Pickled with its template and values (multiprocessing, copy)."""
         return (_rebuild, (self.template, dict(self.values)))
+
+
+def plain_number(value: float, spec: str = "g") -> str:
+    """`value` formatted with a `g` spec, in plain digits where `g` would use an exponent
+    (`1e+08` as `100000000`, `1.5e-07` as `0.00000015`)."""
+    text = format(value, spec)
+    if "e" not in text or not math.isfinite(value):
+        return text
+    exact = Decimal(repr(float(value))) if spec == "g" else Decimal(text)
+    digits = format(exact, "f")
+    if "." in digits:
+        digits = digits.rstrip("0").rstrip(".")
+    return digits
+
+
+class _PlainNumbers(string.Formatter):
+    """str.format, with numbers formatted `g` in plain digits."""
+
+    def format_field(self, value: object, format_spec: str) -> str:
+        """A field as str.format fills it; a `g` number without an exponent."""
+        text = str(super().format_field(value, format_spec))
+        if (
+            isinstance(value, (int, float))
+            and not isinstance(value, bool)
+            and format_spec.endswith("g")
+            and "e" in text
+        ):
+            return plain_number(float(value), format_spec)
+        return text
+
+
+_PLAIN = _PlainNumbers()
+
+
+def fill(template: str, values: Mapping[str, object]) -> str:
+    """`template.format(**values)`, numbers formatted `g` in plain digits (no `1e+08`)."""
+    text = template.format(**values)
+    if "e+" in text or "e-" in text:  # maybe a number in exponent notation: formatted again
+        return _PLAIN.vformat(template, (), values)
+    return text
 
 
 def _rebuild(template: str, values: dict[str, object]) -> Message:

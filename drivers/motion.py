@@ -27,6 +27,8 @@ POSITION_TOLERANCE = 0.011  # positions are printed with two decimals from 32-bi
 POLL_INTERVAL = 0.1  # seconds between position polls while waiting for a move to end
 LISTEN_SLICE = 0.05  # s: a wait on a write-only device's move reads its errors this often
 ESTIMATE_MARGIN = 1.5  # a move may take this much longer than distance / speed
+KIND_UNITS = {"linear": "mm", "rotational": "degrees", "steps": "steps"}
+"""The unit of a relative move's distances by its kind (MoveBy.kind)."""
 EVIDENCE_MIN_S = 0.05
 """A move shows whether its device replies once it has ended only if it takes this long (by
 distance and speed): a reply at the start then comes clearly before the end."""
@@ -328,7 +330,7 @@ class Motion:
                 dx=dx,
                 dy=dy,
                 dz=dz,
-                unit="mm" if kind == "linear" else kind,
+                unit=KIND_UNITS.get(kind, kind),
             ),
             lambda here: (here.x + lx, here.y + ly, here.z + lz),
             lambda here, t: self._relative(command, here, t, (lx, ly, lz)),

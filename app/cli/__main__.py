@@ -1,7 +1,8 @@
-"""`python -m app.cli.main`: motionctl."""
+"""`python -m app.cli`: motionctl."""
 
 import sys
 
 from app.cli.main import main
 
-sys.exit(main())
+if __name__ == "__main__":
+    sys.exit(main())

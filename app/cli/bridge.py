@@ -37,6 +37,7 @@ from contextlib import ExitStack
 from types import FrameType
 from typing import TextIO
 
+from app.cli.report import plain_error
 from drivers.bridge import Bridge
 from drivers.decoding import DecodedFrame, StreamDecoder
 from drivers.errors import BadInput, CommunicationError, UnknownProtocol
@@ -44,7 +45,6 @@ from drivers.log_reader import LogRecord
 from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol, protocol_names
 from drivers.traffic import Traffic, TrafficLogWriter
-from drivers.urlhandler.protocol_sim import with_sim_variant
 
 log = logging.getLogger("motionctl")
 
@@ -146,7 +146,7 @@ def _silence_stdout() -> None:
 
 
 def _fail(message: object, status: int, as_json: bool) -> int:
-    text = str(message).replace("\n", " ")
+    text = plain_error(message)  # one prefix, each errno once
     print(f"motionctl: {text}", file=sys.stderr, flush=True)
     if as_json:
         print(json.dumps({"error": text, "exit": status}), flush=True)
@@ -174,9 +174,6 @@ def main(argv: Sequence[str]) -> int:
             raise BadInput("--baud must be a positive number of bits per second")
     except (BadInput, UnknownProtocol) as exc:
         return _fail(exc, EXIT_BAD_INPUT, as_json)
-    baud = options.baud or protocol.capabilities.default_baud
-    variant = protocol.variant.name if options.variant and protocol.variant else ""
-    device = with_sim_variant(options.port, variant)
     start = time.monotonic()
     with ExitStack() as stack:
         writer: TrafficLogWriter | None = None
@@ -195,7 +192,9 @@ def main(argv: Sequence[str]) -> int:
             finally:
                 printer.put(record)  # shown even if the log fails (the bridge logs that)
 
-        bridge = Bridge(device, baud, tap, dtr=protocol.capabilities.dtr)
+        # Opened as a device session opens it: the protocol's baud and DTR unless given, a
+        # sim:// device in the protocol's variant.
+        bridge = Bridge(options.port, options.baud, tap, protocol=protocol)
 
         def stop(signum: int, frame: FrameType | None) -> None:
             bridge.stop()  # a stop before serve_forever makes it return at once

@@ -13,7 +13,7 @@ from drivers import commands as cmd
 from drivers.errors import BadInput
 from drivers.events import PositionReport
 from drivers.messages import Message
-from drivers.motion import Motion
+from drivers.motion import KIND_UNITS, Motion
 from drivers.motion_guard import MotionGuard
 from drivers.numbers import parse_number
 from drivers.position_count import firmware_move_mm, kind_note, no_identity
@@ -78,9 +78,6 @@ def position_result(report: PositionReport) -> dict[str, Any]:
     return result
 
 
-_KIND_UNITS = {"rotational": "degrees", "steps": "steps"}
-
-
 def kind_jog(motion: Motion, dx: float, dy: float, dz: float, kind: str) -> dict[str, Any]:
     """A rotational or steps jog, reported in its own unit; where the firmware is known to
     read the digits as µm whatever the type letter, what it really moves, and the position
@@ -90,7 +87,7 @@ def kind_jog(motion: Motion, dx: float, dy: float, dz: float, kind: str) -> dict
     packet = protocol.encode(command)
     before = motion.last_position
     report = motion.move_by(dx, dy, dz, kind=kind)
-    sent = {"x": dx, "y": dy, "unit": _KIND_UNITS.get(kind, kind), "kind": kind}
+    sent = {"x": dx, "y": dy, "unit": KIND_UNITS.get(kind, kind), "kind": kind}
     sent["packet"] = packet.decode("latin-1")
     moved = firmware_move_mm(protocol, packet)
     if moved is not None and before is not None and not report.measured:
@@ -139,8 +136,12 @@ def run_command(
     if command == "speed":
         if args:
             requested = parse_number(args[0], "speed")
-            return {"speed": motion.set_speed(requested), "requested": requested}
-        return {"speed": motion.speed()}
+            result: dict[str, Any] = {"speed": motion.set_speed(requested), "requested": requested}
+        else:
+            result = {"speed": motion.speed()}
+        if motion.capabilities.speed_in_moves:
+            result["in_moves"] = True  # the speed of the moves that follow, kept for the port
+        return result
     if command == "limits":
         low, high = motion.speed_limits()
         return {"min_speed": low, "max_speed": high}
@@ -225,6 +226,8 @@ def validate_offline(
                     high=high,
                 )
             )
+        if caps.speed_in_moves:  # nothing is sent: the speed goes with the moves that follow
+            return
         for part in protocol.expand(cmd.SetSpeed(speed)):
             try:
                 protocol.encode(part)

@@ -8,6 +8,7 @@ from typing import Any
 from app.common import macros
 from drivers.motion import Motion
 from drivers.protocols.base import Protocol
+from drivers.registry import protocol_names
 
 
 def find_macro(settings: Any, protocol: Protocol, name: str) -> macros.Macro:
@@ -48,6 +49,17 @@ def macro_offline(settings: Any, protocol: Protocol, args: list[str]) -> dict[st
     return None
 
 
+def every_macro(settings: Any) -> dict[str, Any]:
+    """`macro list` without --protocol: the macros saved for every protocol."""
+    return {
+        "macros": [
+            {"name": m.name, "steps": list(m.steps), "protocol": name}
+            for name in protocol_names()
+            for m in macros.read_saved(settings, name)
+        ]
+    }
+
+
 def run_macro(motion: Motion, macro: macros.Macro) -> dict[str, Any]:
     """Run a macro, telling each step on stderr; the result of each step in order."""
     count = len(macro.steps)
@@ -67,7 +79,11 @@ def macro_text(result: dict[str, Any], line_of: Any) -> str:
     if "macros" in result:
         if not result["macros"]:
             return "no macros saved for this protocol"
-        return "\n".join(f"{m['name']}: {'; '.join(m['steps'])}" for m in result["macros"])
+        return "\n".join(
+            (f"{m['protocol']} " if "protocol" in m else "")
+            + f"{m['name']}: {'; '.join(m['steps'])}"
+            for m in result["macros"]
+        )
     if "exported" in result:
         return f"{result['exported']} macro(s) written to {result['file']}"
     if "imported" in result:

@@ -6,7 +6,7 @@ import logging
 
 from PySide6.QtCore import QCoreApplication
 
-from drivers.messages import CONTEXT, Message, message_of
+from drivers.messages import CONTEXT, Message, fill, message_of
 
 log = logging.getLogger(__name__)
 
@@ -22,10 +22,10 @@ def localized(value: object) -> str:
         return str(said)
     values = {name: _value(item) for name, item in said.values.items()}
     try:
-        return template.format(**values)
+        return fill(template, values)
     except (KeyError, IndexError, ValueError):
         log.warning("a translation of %r does not fit its values; shown in English", said.template)
-        return said.template.format(**values)
+        return fill(said.template, values)
 
 
 def _value(item: object) -> object:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import atexit
 import contextlib
 import logging
+import math
 import os
 import shutil
 import sys
@@ -246,4 +247,20 @@ def write_counted_position(
         settings.remove(group)
     else:
         _write_numbers(settings, group, dict(zip("xyz", position, strict=True)))
+    settings.sync()
+
+
+def read_speed(settings: QSettings, protocol: str, port: str) -> float | None:
+    """The speed last set for a device whose moves carry it (None: none set)."""
+    value = settings.value(f"{device_key(protocol, port)}/speed")
+    try:
+        speed = float(value)
+    except (TypeError, ValueError):
+        return None
+    return speed if math.isfinite(speed) and speed > 0 else None
+
+
+def write_speed(settings: QSettings, protocol: str, port: str, speed: float) -> None:
+    """Remember the speed set for a device whose moves carry it (pi-frame, Firmata, laser)."""
+    settings.setValue(f"{device_key(protocol, port)}/speed", repr(float(speed)))
     settings.sync()
