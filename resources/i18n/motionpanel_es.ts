@@ -237,7 +237,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/window/bridge_session.py" line="+83"/>
+        <location filename="../../app/window/bridge_session.py" line="+86"/>
         <source>the bridge failed: %1</source>
         <translation>el puente falló: %1</translation>
     </message>
@@ -715,12 +715,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+83"/>
+        <location filename="../../app/window/device_docks.py" line="+88"/>
         <source>Not now: %1</source>
         <translation>Ahora no: %1</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>%1 a %2 mm en cada eje (cuentas de 16 bits)</translation>
     </message>
@@ -735,12 +735,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>programa guardado en %1 (%2 puntos)</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+33"/>
         <source>the program stopped: %1</source>
         <translation>el programa se detuvo: %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
         <translation>programa %1 terminado: %2/%3 ejecutadas, %4 tramas, %5 retransmisión(es), %6 s</translation>
     </message>
@@ -1237,7 +1237,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Pasos (uno por línea, cada uno espera al dispositivo): home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXT (se envía tal cual y se espera su respuesta) · wait S (s, el panel hace una pausa) · check · id · limits; y si el dispositivo los admite: dwell MS (ms) · arc CX CY R START END --cw|--ccw · step RPM STEPS · status · stop · version.</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Macros (%1)</source>
         <translation>Macros (%1)</translation>
     </message>
@@ -1418,7 +1418,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/window/main_window.py" line="+111"/>
+        <location filename="../../app/window/fit_controls.py" line="+18"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 no tiene comando de parada: esto descarta los comandos aún no enviados; un movimiento ya en curso en el dispositivo termina (Esc)</translation>
     </message>
@@ -1428,17 +1428,17 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Detener la platina ahora: interrumpe el movimiento en curso y descarta lo que está en cola (Esc)</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location filename="../../app/window/connection.py" line="+49"/>
         <source>simulated %1 device</source>
         <translation>dispositivo %1 simulado</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../../app/window/main_window.py" line="+91"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location filename="../../app/window/worker_link.py" line="+114"/>
         <source>no session log: %1</source>
         <translation>sin registro de sesión: %1</translation>
     </message>
@@ -1453,7 +1453,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>sin registro de sesión a partir de ahora</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location filename="../../app/window/main_window.py" line="+112"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
@@ -1493,22 +1493,22 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Línea de tiempo del tráfico</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location filename="../../app/window/menus.py" line="+26"/>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>&amp;Export traffic log…</source>
         <translation>&amp;Exportar registro de tráfico…</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Save every byte sent and received, with timestamps, to a text file</source>
         <translation>Guardar cada byte enviado y recibido, con marcas de tiempo, en un archivo de texto</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>&amp;Open log…</source>
         <translation>&amp;Abrir registro…</translation>
     </message>
@@ -1518,17 +1518,17 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Ver decodificado un registro de tráfico (de este panel o una captura spy:// de pyserial)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Open the session &amp;log folder</source>
         <translation>Abrir la carpeta del &amp;registro de sesión</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Every byte of every session is kept there, one file a session</source>
         <translation>Allí se guarda cada byte de cada sesión, un archivo por sesión</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Quit</source>
         <translation>&amp;Salir</translation>
     </message>
@@ -1538,18 +1538,18 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Movimiento</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+390"/>
+        <location filename="../../app/window/fit_controls.py" line="+49"/>
+        <location filename="../../app/window/menus.py" line="+1"/>
         <source>&amp;Stop</source>
         <translation>&amp;Detener</translation>
     </message>
     <message>
-        <location line="-385"/>
+        <location filename="../../app/window/menus.py" line="+4"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Límites de recorrido…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>The box the stage may move in, for this device</source>
         <translation>La caja en la que puede moverse la platina, para este dispositivo</translation>
     </message>
@@ -1569,22 +1569,22 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Borrar trayectoria</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location filename="../../app/window/connection.py" line="+71"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 indica su protocolo: conectando como %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>connecting to %1 (%2, %3 baud)</source>
         <translation>conectando con %1 (%2, %3 baudios)</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+79"/>
         <source>bridge refused: %1</source>
         <translation>puente rechazado: %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>bridge: %1</source>
         <translation>puente: %1</translation>
     </message>
@@ -1609,42 +1609,42 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>puente cerrado</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+20"/>
         <source>connection error: %1</source>
         <translation>error de conexión: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+16"/>
         <source>connected to %1 on %2</source>
         <translation>conectado a %1 en %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location filename="../../app/window/machine_state.py" line="+134"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la posición es desconocida: este dispositivo no puede informar de ella; buscar el origen o fijar el origen</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>connected again to %1: the position was read again</source>
         <translation>reconectado a %1: se ha vuelto a leer la posición</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>posición desconocida: no se puede consultar al dispositivo; pulsar Origen o Fijar origen para empezar a contar</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location filename="../../app/window/fit_controls.py" line="-41"/>
         <source>the device</source>
         <translation>el dispositivo</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>Go to the home position (0, 0, 0)</source>
         <translation>Ir a la posición de origen (0, 0, 0)</translation>
     </message>
@@ -1654,17 +1654,17 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Convertir la posición actual en el origen (pide confirmación)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Restart the panel&apos;s count of the position here (asks first); %1 has no set-home command, so nothing is sent</source>
         <translation>Reiniciar aquí el conteo de posición del panel (pide confirmación); %1 no tiene comando para fijar el origen, así que no se envía nada</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+24"/>
         <source>&amp;Drop queued commands</source>
         <translation>&amp;Descartar comandos en cola</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location filename="../../app/window/connection.py" line="+56"/>
         <source>port %1 appeared</source>
         <translation>apareció el puerto %1</translation>
     </message>
@@ -1674,12 +1674,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>reconectando con %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-259"/>
         <source>port %1 disappeared</source>
         <translation>desapareció el puerto %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+272"/>
         <source>%1 on %2</source>
         <translation>%1 en %2</translation>
     </message>
@@ -1694,7 +1694,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>límites de recorrido: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location filename="../../app/window/job_desk.py" line="+94"/>
         <source>not connected: %1 not sent</source>
         <translation>no conectado: %1 sin enviar</translation>
     </message>
@@ -1704,27 +1704,27 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>se rechaza %1: %2 está en curso; esperar a que termine o pulsar Detener</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>motion controls are off until %1 ends (Stop ends it now)</source>
         <translation>los controles de movimiento están desactivados hasta que termine %1 (Detener lo termina ahora)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>%1 is under way</source>
         <translation>%1 está en curso</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <source>jog refused: %1</source>
         <translation>desplazamiento rechazado: %1</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+92"/>
         <source>Send unchecked bytes?</source>
         <translation>¿Enviar bytes sin comprobar?</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>These bytes cannot be read as a command (%1), so they cannot be checked against the travel limits (%2): they might move the stage outside them.
 
 Send them anyway?</source>
@@ -1733,53 +1733,53 @@ Send them anyway?</source>
 ¿Enviarlos de todos modos?</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>not sent: the bytes could not be checked against the travel limits</source>
         <translation>sin enviar: los bytes no se pudieron comprobar con los límites de recorrido</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>stopping the macro under way</source>
         <translation>deteniendo la macro en curso</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>stopping the move under way</source>
         <translation>deteniendo el movimiento en curso</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>nothing queued; the move under way finishes</source>
         <translation>nada en cola; el movimiento en curso termina</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>stopped: %1 command(s) not sent: %2</source>
         <translation>detenido: %1 comando(s) sin enviar: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location filename="../../app/window/machine_state.py" line="+45"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nuevo origen: la trayectoria se desplaza (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="-96"/>
         <source>the device reported an error: %1</source>
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
-        <location line="-575"/>
-        <location line="+579"/>
+        <location filename="../../app/window/connection.py" line="-99"/>
+        <location filename="../../app/window/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>dispositivo: %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location filename="../../app/window/job_desk.py" line="+22"/>
         <source>%1 failed: %2</source>
         <translation>%1 falló: %2</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location filename="../../app/window/machine_state.py" line="+227"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origen confirmado: la posición se cuenta desde aquí</translation>
     </message>
@@ -1840,7 +1840,7 @@ Send them anyway?</source>
         <translation>Parámetros</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>Parameters (%1)</source>
         <translation>Parámetros (%1)</translation>
     </message>
@@ -3024,7 +3024,7 @@ Ahora no: %2</translation>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+76"/>
+        <location filename="../../app/window/traffic_display.py" line="+16"/>
         <source>text</source>
         <translation>texto</translation>
     </message>
@@ -3054,7 +3054,7 @@ Ahora no: %2</translation>
         <translation>delta</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location filename="../../app/window/traffic_export.py" line="+16"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
@@ -3074,32 +3074,32 @@ Ahora no: %2</translation>
         <translation>Exportar tráfico</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location filename="../../app/window/traffic_display.py" line="+26"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
         <translation>Bytes como texto (escapes \r \n \xNN), hex (47 45 54) o mixto (texto, &lt;0A&gt; para el resto)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Times: seconds since the session start, wall-clock time, or the gap since the line above</source>
         <translation>Tiempos: segundos desde el inicio de la sesión, hora del reloj o intervalo desde la línea anterior</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Time</source>
         <translation>Tiempo</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Show the time column</source>
         <translation>Mostrar la columna de tiempo</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../../app/window/traffic_filter_bar.py" line="+57"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Show what was sent to the device</source>
         <translation>Mostrar lo enviado al dispositivo</translation>
     </message>
@@ -3109,7 +3109,7 @@ Ahora no: %2</translation>
         <translation>RX</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Show what the device sent</source>
         <translation>Mostrar lo que envió el dispositivo</translation>
     </message>
@@ -3119,22 +3119,22 @@ Ahora no: %2</translation>
         <translation>Tipos</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Which kinds of lines to show</source>
         <translation>Qué tipos de líneas mostrar</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Poll</source>
         <translation>Consulta</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Show the idle position queries and their replies (hidden by default; counted below)</source>
         <translation>Mostrar las consultas de posición en reposo y sus respuestas (ocultas por defecto; se cuentan abajo)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>filter (regex)</source>
         <translation>filtro (regex)</translation>
     </message>
@@ -3144,7 +3144,7 @@ Ahora no: %2</translation>
         <translation>Mostrar solo las líneas que coinciden con esta expresión regular (sin distinguir mayúsculas) en su dirección, tipo, hex, texto o significado, p. ej. error|FA00</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../../app/window/traffic_console.py" line="+115"/>
         <source>paused</source>
         <translation>en pausa</translation>
     </message>
@@ -3154,32 +3154,32 @@ Ahora no: %2</translation>
         <translation>Las líneas nuevas no desplazan la vista: bajar hasta el final para seguirlas</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../../app/window/traffic_filter_bar.py" line="+12"/>
         <source>search (regex)</source>
         <translation>buscar (regex)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Highlight matching lines; Enter or F3: next, Shift+F3: previous</source>
         <translation>Resaltar las líneas coincidentes; Enter o F3: siguiente, Shift+F3: anterior</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>Previous match (Shift+F3)</source>
         <translation>Coincidencia anterior (Shift+F3)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Next match (F3)</source>
         <translation>Coincidencia siguiente (F3)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location filename="../../app/window/traffic_status.py" line="+44"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
         <translation>Líneas de la sesión, mostradas, consultas ocultas, errores, coincidencias</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../../app/window/traffic_console.py" line="+18"/>
         <source>Export…</source>
         <translation>Exportar…</translation>
     </message>
@@ -3199,17 +3199,17 @@ Ahora no: %2</translation>
         <translation>Olvidar las líneas (el registro de sesión las conserva)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
         <translation>TX (azul): enviado al dispositivo; RX (verde): recibido; gris: notas y texto propio del dispositivo; rojo: errores. Doble clic en una línea para ir a su petición, su respuesta o su primera copia.</translation>
     </message>
     <message>
-        <location line="+164"/>
+        <location line="+89"/>
         <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
         <translation>la consola conserva las %1 líneas más recientes: las más antiguas se descartan a medida que llegan otras nuevas; el registro de sesión conserva todas las líneas</translation>
     </message>
     <message>
-        <location line="+198"/>
+        <location line="+132"/>
         <source>line %1 is no longer in the console (its line limit dropped it); the session log has it</source>
         <translation>la línea %1 ya no está en la consola (la descartó su límite de líneas); está en el registro de sesión</translation>
     </message>
@@ -3218,7 +3218,7 @@ Ahora no: %2</translation>
         <translation type="vanished">%1 líneas alcanzaron el límite de la consola y se borraron; el registro de sesión las conserva</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location filename="../../app/window/traffic_status.py" line="+16"/>
         <source>%1 lines</source>
         <translation>%1 líneas</translation>
     </message>
@@ -3233,17 +3233,17 @@ Ahora no: %2</translation>
         <translation>%1 más antiguas en el registro de sesión</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 poll hidden</source>
         <translation>%1 de consulta ocultas</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 errors</source>
         <translation>%1 errores</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 matches</source>
         <translation>%1 coincidencias</translation>
     </message>
@@ -3253,7 +3253,7 @@ Ahora no: %2</translation>
         <translation>La consola conserva las %1 líneas más recientes (Ajustes): las más antiguas se descartan; el registro de sesión en disco conserva todas las líneas</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location filename="../../app/window/traffic_console.py" line="+110"/>
         <source>export failed: %1</source>
         <translation>exportación fallida: %1</translation>
     </message>
@@ -3263,7 +3263,7 @@ Ahora no: %2</translation>
         <translation>%1 líneas exportadas a %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+45"/>
+        <location filename="../../app/window/traffic_table.py" line="+46"/>
         <source>motion</source>
         <translation>movimiento</translation>
     </message>
@@ -4338,7 +4338,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+12"/>
+        <location filename="message_templates.py" line="+15"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>hacia ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -4418,7 +4418,22 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>uso: {usage} (se recibieron {count} argumentos)</translation>
     </message>
     <message>
+        <location line="-3"/>
+        <source>--force is for raw only</source>
+        <translation>--force solo sirve para raw</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>{command} needs --port (the device to talk to)</source>
+        <translation>{command} necesita --port (el dispositivo con el que comunicarse)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} needs --protocol ({choices})</source>
+        <translation>{command} necesita --protocol ({choices})</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>usage: {usage}</source>
         <translation>uso: {usage}</translation>
     </message>
@@ -4454,6 +4469,31 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+16"/>
+        <source>{file} names no protocol (no connection note: a motionctl --log file or a spy:// capture has none): give --protocol</source>
+        <translation>{file} no indica ningún protocolo (sin nota de conexión: un archivo de motionctl --log o una captura spy:// no la tienen): indicar --protocol</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: its connection note: {error}</source>
+        <translation>{file}: su nota de conexión: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its connection notes name {named}</source>
+        <translation>sus notas de conexión indican {named}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>try another --protocol</source>
+        <translation>probar con otro --protocol</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing in {file} decodes as {protocol} ({count} records of traffic, none a {protocol} frame); {hint}</source>
+        <translation>nada en {file} se decodifica como {protocol} ({count} entradas de tráfico, ninguna es una trama de {protocol}); {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>macro {name} ({count} step)</source>
         <translation>macro {name} ({count} paso)</translation>
     </message>
@@ -6479,6 +6519,31 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{protocol} has no stop command: the device finishes what it was sent</source>
+        <translation>{protocol} no tiene comando de parada: el dispositivo termina lo que se le envió</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} runs no programs: it has no command queue (laser-frame has one)</source>
+        <translation>{protocol} no ejecuta programas: no tiene cola de comandos (laser-frame sí la tiene)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timeout {timeout:g} s refused: it must be positive</source>
+        <translation>tiempo de espera de {timeout:g} s rechazado: debe ser positivo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>variant {variant!r} asked for a protocol made as {chosen!r}</source>
+        <translation>se pidió la variante {variant!r} para un protocolo creado como {chosen!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>baud {baud} refused: a positive number of bits per second</source>
+        <translation>{baud} baudios rechazado: debe ser un número positivo de bits por segundo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>capture with spy&apos;s default hexdump format: spy://PORT?file=FILE, without raw</source>
         <translation>capturar con el formato hexdump predeterminado de spy: spy://PORT?file=FILE, sin raw</translation>
     </message>
@@ -6566,6 +6631,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>setting {line} on {url} failed: {error}</source>
         <translation>falló el ajuste de {line} en {url}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the server did not confirm the control lines ({what} unanswered); they are set without confirmation (ser2net does not answer when the port it serves has no modem lines, e.g. a pseudo-terminal)</source>
+        <translation>el servidor no confirmó las líneas de control ({what} sin respuesta); se fijan sin confirmación (ser2net no responde cuando el puerto que sirve no tiene líneas de módem, p. ej. un pseudoterminal)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6716,6 +6786,26 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>cannot open {port}: {error}</source>
         <translation>no se puede abrir {port}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the server has not reported the modem lines</source>
+        <translation>el servidor no ha informado de las líneas de módem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing answers at {where} ({error}): is ser2net (or another RFC 2217 server) running there and serving that port?</source>
+        <translation>nada responde en {where} ({error}): ¿se está ejecutando allí ser2net (u otro servidor RFC 2217) y sirve ese puerto?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} answers, but not as an RFC 2217 server: serve the port with ser2net&apos;s `accepter: telnet(rfc2217),tcp,PORT`, or open a raw TCP server as socket://{where}</source>
+        <translation>{where} responde, pero no como servidor RFC 2217: servir el puerto con `accepter: telnet(rfc2217),tcp,PORT` de ser2net, o abrir un servidor TCP en bruto como socket://{where}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timeout while waiting for option &apos;purge&apos;</source>
+        <translation>tiempo de espera agotado al esperar la opción &apos;purge&apos;</translation>
     </message>
     <message>
         <location line="+1"/>

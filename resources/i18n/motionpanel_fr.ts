@@ -237,7 +237,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/window/bridge_session.py" line="+83"/>
+        <location filename="../../app/window/bridge_session.py" line="+86"/>
         <source>the bridge failed: %1</source>
         <translation>la passerelle a échoué&#xa0;: %1</translation>
     </message>
@@ -715,12 +715,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+83"/>
+        <location filename="../../app/window/device_docks.py" line="+88"/>
         <source>Not now: %1</source>
         <translation>Indisponible pour le moment&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>de %1 à %2 mm sur chaque axe (impulsions sur 16 bits)</translation>
     </message>
@@ -735,12 +735,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>programme enregistré dans %1 (%2 points)</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+33"/>
         <source>the program stopped: %1</source>
         <translation>le programme s&apos;est arrêté&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
         <translation>programme %1 terminé&#xa0;: %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
     </message>
@@ -1237,7 +1237,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Étapes (une par ligne, chacune attend l&apos;appareil)&#xa0;: home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXTE (envoyé tel que saisi, sa réponse attendue) · wait S (s, le panneau fait une pause) · check · id · limits&#xa0;; et si l&apos;appareil les possède&#xa0;: dwell MS (ms) · arc CX CY R DÉBUT FIN --cw|--ccw · step RPM PAS · status · stop · version.</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Macros (%1)</source>
         <translation>Macros (%1)</translation>
     </message>
@@ -1418,7 +1418,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/window/main_window.py" line="+111"/>
+        <location filename="../../app/window/fit_controls.py" line="+18"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>Aucune commande d&apos;arrêt sur %1&#xa0;: ceci vide les commandes pas encore envoyées&#xa0;; un mouvement déjà en cours sur l&apos;appareil se termine (Échap)</translation>
     </message>
@@ -1428,17 +1428,17 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Arrêter la platine immédiatement&#xa0;: interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location filename="../../app/window/connection.py" line="+49"/>
         <source>simulated %1 device</source>
         <translation>appareil %1 simulé</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../../app/window/main_window.py" line="+91"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location filename="../../app/window/worker_link.py" line="+114"/>
         <source>no session log: %1</source>
         <translation>pas de journal de session&#xa0;: %1</translation>
     </message>
@@ -1453,7 +1453,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>plus de journal de session à partir de maintenant</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location filename="../../app/window/main_window.py" line="+112"/>
         <source>Connection</source>
         <translation>Connexion</translation>
     </message>
@@ -1493,22 +1493,22 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Chronologie du trafic</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location filename="../../app/window/menus.py" line="+26"/>
         <source>&amp;File</source>
         <translation>&amp;Fichier</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>&amp;Export traffic log…</source>
         <translation>&amp;Exporter le journal de trafic…</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Save every byte sent and received, with timestamps, to a text file</source>
         <translation>Enregistrer chaque octet envoyé et reçu, horodaté, dans un fichier texte</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>&amp;Open log…</source>
         <translation>&amp;Ouvrir un journal…</translation>
     </message>
@@ -1518,17 +1518,17 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Parcourir un journal de trafic décodé (un des nôtres ou une capture pyserial spy://)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Open the session &amp;log folder</source>
         <translation>Ouvrir le &amp;dossier des journaux de session</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Every byte of every session is kept there, one file a session</source>
         <translation>Chaque octet de chaque session y est conservé, un fichier par session</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Quit</source>
         <translation>&amp;Quitter</translation>
     </message>
@@ -1538,18 +1538,18 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Mouvement</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+390"/>
+        <location filename="../../app/window/fit_controls.py" line="+49"/>
+        <location filename="../../app/window/menus.py" line="+1"/>
         <source>&amp;Stop</source>
         <translation>&amp;Arrêt</translation>
     </message>
     <message>
-        <location line="-385"/>
+        <location filename="../../app/window/menus.py" line="+4"/>
         <source>&amp;Travel limits…</source>
         <translation>&amp;Limites de course…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>The box the stage may move in, for this device</source>
         <translation>La zone où la platine peut se déplacer, pour cet appareil</translation>
     </message>
@@ -1569,22 +1569,22 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Effacer la trace</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location filename="../../app/window/connection.py" line="+71"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 indique son protocole&#xa0;: connexion en tant que %2</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>connecting to %1 (%2, %3 baud)</source>
         <translation>connexion à %1 (%2, %3 bauds)</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+79"/>
         <source>bridge refused: %1</source>
         <translation>passerelle refusée&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>bridge: %1</source>
         <translation>passerelle&#xa0;: %1</translation>
     </message>
@@ -1609,42 +1609,42 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>passerelle fermée</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+20"/>
         <source>connection error: %1</source>
         <translation>erreur de connexion&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>disconnected</source>
         <translation>déconnecté</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+16"/>
         <source>connected to %1 on %2</source>
         <translation>connecté à %1 sur %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location filename="../../app/window/machine_state.py" line="+134"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la position est inconnue&#xa0;: cet appareil ne peut pas l&apos;indiquer&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>connected again to %1: the position was read again</source>
         <translation>reconnecté à %1&#xa0;: la position a été relue</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé&#xa0;; «&#xa0;Origine&#xa0;» ou «&#xa0;Définir l&apos;origine&#xa0;» pour commencer le décompte</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location filename="../../app/window/fit_controls.py" line="-41"/>
         <source>the device</source>
         <translation>l&apos;appareil</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>Go to the home position (0, 0, 0)</source>
         <translation>Aller à la position d&apos;origine (0, 0, 0)</translation>
     </message>
@@ -1654,17 +1654,17 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Faire de la position actuelle l&apos;origine (avec confirmation)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Restart the panel&apos;s count of the position here (asks first); %1 has no set-home command, so nothing is sent</source>
         <translation>Faire repartir d&apos;ici le décompte de position du panneau (avec confirmation)&#xa0;; %1 n&apos;a pas de commande pour définir l&apos;origine, rien n&apos;est donc envoyé</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+24"/>
         <source>&amp;Drop queued commands</source>
         <translation>&amp;Vider la file d&apos;attente</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location filename="../../app/window/connection.py" line="+56"/>
         <source>port %1 appeared</source>
         <translation>port %1 apparu</translation>
     </message>
@@ -1674,12 +1674,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>reconnexion à %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-259"/>
         <source>port %1 disappeared</source>
         <translation>port %1 disparu</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+272"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -1694,7 +1694,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>limites de course&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location filename="../../app/window/job_desk.py" line="+94"/>
         <source>not connected: %1 not sent</source>
         <translation>non connecté&#xa0;: %1 non envoyé</translation>
     </message>
@@ -1704,27 +1704,27 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>%1 refusé&#xa0;: %2 est en cours&#xa0;; attendre sa fin ou appuyer sur Arrêt</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>motion controls are off until %1 ends (Stop ends it now)</source>
         <translation>les commandes de mouvement sont désactivées jusqu&apos;à la fin de %1 (Arrêt y met fin immédiatement)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>%1 is under way</source>
         <translation>%1 est en cours</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <source>jog refused: %1</source>
         <translation>déplacement refusé&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+92"/>
         <source>Send unchecked bytes?</source>
         <translation>Envoyer des octets non vérifiés&#xa0;?</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>These bytes cannot be read as a command (%1), so they cannot be checked against the travel limits (%2): they might move the stage outside them.
 
 Send them anyway?</source>
@@ -1733,53 +1733,53 @@ Send them anyway?</source>
 Les envoyer quand même&#xa0;?</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>not sent: the bytes could not be checked against the travel limits</source>
         <translation>non envoyés&#xa0;: les octets n&apos;ont pas pu être vérifiés par rapport aux limites de course</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>stopping the macro under way</source>
         <translation>arrêt de la macro en cours</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>stopping the move under way</source>
         <translation>arrêt du mouvement en cours</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>nothing queued; the move under way finishes</source>
         <translation>rien en file d&apos;attente&#xa0;; le mouvement en cours se termine</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>stopped: %1 command(s) not sent: %2</source>
         <translation>arrêté&#xa0;: %1 commande(s) non envoyée(s)&#xa0;: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location filename="../../app/window/machine_state.py" line="+45"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nouvelle origine&#xa0;: la trace est décalée de (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="-96"/>
         <source>the device reported an error: %1</source>
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="-575"/>
-        <location line="+579"/>
+        <location filename="../../app/window/connection.py" line="-99"/>
+        <location filename="../../app/window/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>appareil&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location filename="../../app/window/job_desk.py" line="+22"/>
         <source>%1 failed: %2</source>
         <translation>échec de %1&#xa0;: %2</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location filename="../../app/window/machine_state.py" line="+227"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origine confirmée&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
@@ -1840,7 +1840,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Paramètres</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>Parameters (%1)</source>
         <translation>Paramètres (%1)</translation>
     </message>
@@ -3024,7 +3024,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+76"/>
+        <location filename="../../app/window/traffic_display.py" line="+16"/>
         <source>text</source>
         <translation>texte</translation>
     </message>
@@ -3054,7 +3054,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>delta</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location filename="../../app/window/traffic_export.py" line="+16"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
@@ -3074,32 +3074,32 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Exporter le trafic</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location filename="../../app/window/traffic_display.py" line="+26"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
         <translation>Octets en texte (échappements \r \n \xNN), en hex (47 45 54) ou en mixte (texte, &lt;0A&gt; pour le reste)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Times: seconds since the session start, wall-clock time, or the gap since the line above</source>
         <translation>Temps&#xa0;: secondes depuis le début de la session, heure de l&apos;horloge, ou écart avec la ligne précédente</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Time</source>
         <translation>Temps</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Show the time column</source>
         <translation>Afficher la colonne du temps</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../../app/window/traffic_filter_bar.py" line="+57"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Show what was sent to the device</source>
         <translation>Afficher ce qui a été envoyé à l&apos;appareil</translation>
     </message>
@@ -3109,7 +3109,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>RX</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Show what the device sent</source>
         <translation>Afficher ce que l&apos;appareil a envoyé</translation>
     </message>
@@ -3119,22 +3119,22 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Types</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Which kinds of lines to show</source>
         <translation>Types de lignes à afficher</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Poll</source>
         <translation>Interrogation</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Show the idle position queries and their replies (hidden by default; counted below)</source>
         <translation>Afficher les interrogations de position au repos et leurs réponses (masquées par défaut&#xa0;; comptées ci-dessous)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>filter (regex)</source>
         <translation>filtre (regex)</translation>
     </message>
@@ -3144,7 +3144,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>N&apos;afficher que les lignes dont le sens, le type, l&apos;hex, le texte ou la signification correspondent à cette expression régulière (sans tenir compte de la casse), par ex. error|FA00</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../../app/window/traffic_console.py" line="+115"/>
         <source>paused</source>
         <translation>en pause</translation>
     </message>
@@ -3154,32 +3154,32 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Les nouvelles lignes ne font pas défiler la vue&#xa0;: faire défiler jusqu&apos;en bas pour suivre</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../../app/window/traffic_filter_bar.py" line="+12"/>
         <source>search (regex)</source>
         <translation>rechercher (regex)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Highlight matching lines; Enter or F3: next, Shift+F3: previous</source>
         <translation>Surligner les lignes correspondantes&#xa0;; Entrée ou F3&#xa0;: suivante, Maj+F3&#xa0;: précédente</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>Previous match (Shift+F3)</source>
         <translation>Correspondance précédente (Maj+F3)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Next match (F3)</source>
         <translation>Correspondance suivante (F3)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location filename="../../app/window/traffic_status.py" line="+44"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
         <translation>Lignes de la session, affichées, interrogations masquées, erreurs, correspondances</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../../app/window/traffic_console.py" line="+18"/>
         <source>Export…</source>
         <translation>Exporter…</translation>
     </message>
@@ -3199,17 +3199,17 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Oublier les lignes (le journal de session les conserve)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
         <translation>TX (bleu)&#xa0;: envoyé à l&apos;appareil&#xa0;; RX (vert)&#xa0;: reçu&#xa0;; gris&#xa0;: notes et texte propre à l&apos;appareil&#xa0;; rouge&#xa0;: erreurs. Double-cliquer sur une ligne pour aller à sa requête, à sa réponse ou à sa première copie.</translation>
     </message>
     <message>
-        <location line="+164"/>
+        <location line="+89"/>
         <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
         <translation>la console conserve les %1 lignes les plus récentes&#xa0;: les plus anciennes en sont retirées à mesure que de nouvelles arrivent&#xa0;; le journal de session conserve toutes les lignes</translation>
     </message>
     <message>
-        <location line="+198"/>
+        <location line="+132"/>
         <source>line %1 is no longer in the console (its line limit dropped it); the session log has it</source>
         <translation>la ligne %1 n&apos;est plus dans la console (retirée par sa limite de lignes)&#xa0;; le journal de session la contient</translation>
     </message>
@@ -3218,7 +3218,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation type="vanished">%1 lignes ont atteint la limite de la console et ont été effacées&#xa0;; le journal de session les conserve</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location filename="../../app/window/traffic_status.py" line="+16"/>
         <source>%1 lines</source>
         <translation>%1 lignes</translation>
     </message>
@@ -3233,17 +3233,17 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>%1 plus anciennes dans le journal de session</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 poll hidden</source>
         <translation>%1 interrogations masquées</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 errors</source>
         <translation>%1 erreurs</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 matches</source>
         <translation>%1 correspondances</translation>
     </message>
@@ -3253,7 +3253,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>La console conserve les %1 lignes les plus récentes (Réglages)&#xa0;: les plus anciennes en sont retirées, le journal de session sur disque conserve toutes les lignes</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location filename="../../app/window/traffic_console.py" line="+110"/>
         <source>export failed: %1</source>
         <translation>échec de l&apos;export&#xa0;: %1</translation>
     </message>
@@ -3263,7 +3263,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>%1 lignes exportées vers %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+45"/>
+        <location filename="../../app/window/traffic_table.py" line="+46"/>
         <source>motion</source>
         <translation>mouvement</translation>
     </message>
@@ -4338,7 +4338,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+12"/>
+        <location filename="message_templates.py" line="+15"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -4418,7 +4418,22 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>usage&#xa0;: {usage} ({count} arguments reçus)</translation>
     </message>
     <message>
+        <location line="-3"/>
+        <source>--force is for raw only</source>
+        <translation>--force ne s&apos;applique qu&apos;à raw</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>{command} needs --port (the device to talk to)</source>
+        <translation>{command} nécessite --port (l&apos;appareil avec lequel dialoguer)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} needs --protocol ({choices})</source>
+        <translation>{command} nécessite --protocol ({choices})</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>usage: {usage}</source>
         <translation>usage&#xa0;: {usage}</translation>
     </message>
@@ -4454,6 +4469,31 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+16"/>
+        <source>{file} names no protocol (no connection note: a motionctl --log file or a spy:// capture has none): give --protocol</source>
+        <translation>{file} n&apos;indique aucun protocole (pas de note de connexion&#xa0;: un fichier motionctl --log ou une capture spy:// n&apos;en a pas)&#xa0;: indiquer --protocol</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: its connection note: {error}</source>
+        <translation>{file}&#xa0;: sa note de connexion&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its connection notes name {named}</source>
+        <translation>ses notes de connexion indiquent {named}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>try another --protocol</source>
+        <translation>essayer un autre --protocol</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing in {file} decodes as {protocol} ({count} records of traffic, none a {protocol} frame); {hint}</source>
+        <translation>rien dans {file} ne se décode en {protocol} ({count} enregistrements de trafic, aucun n&apos;est une trame {protocol})&#xa0;; {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>macro {name} ({count} step)</source>
         <translation>macro {name} ({count} étape)</translation>
     </message>
@@ -6479,6 +6519,31 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{protocol} has no stop command: the device finishes what it was sent</source>
+        <translation>{protocol} n&apos;a pas de commande d&apos;arrêt&#xa0;: l&apos;appareil termine ce qui lui a été envoyé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} runs no programs: it has no command queue (laser-frame has one)</source>
+        <translation>{protocol} n&apos;exécute pas de programmes&#xa0;: il n&apos;a pas de file de commandes (laser-frame en a une)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timeout {timeout:g} s refused: it must be positive</source>
+        <translation>délai d&apos;attente de {timeout:g} s refusé&#xa0;: il doit être positif</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>variant {variant!r} asked for a protocol made as {chosen!r}</source>
+        <translation>variante {variant!r} demandée pour un protocole créé avec la variante {chosen!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>baud {baud} refused: a positive number of bits per second</source>
+        <translation>débit de {baud} bauds refusé&#xa0;: un nombre positif de bits par seconde est attendu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>capture with spy&apos;s default hexdump format: spy://PORT?file=FILE, without raw</source>
         <translation>capturer au format hexdump par défaut de spy&#xa0;: spy://PORT?file=FILE, sans raw</translation>
     </message>
@@ -6566,6 +6631,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>setting {line} on {url} failed: {error}</source>
         <translation>échec de la modification de {line} sur {url}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the server did not confirm the control lines ({what} unanswered); they are set without confirmation (ser2net does not answer when the port it serves has no modem lines, e.g. a pseudo-terminal)</source>
+        <translation>le serveur n&apos;a pas confirmé les lignes de contrôle ({what} sans réponse)&#xa0;; elles sont modifiées sans confirmation (ser2net ne répond pas quand le port qu&apos;il sert n&apos;a pas de lignes modem, par ex. un pseudo-terminal)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6716,6 +6786,26 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>cannot open {port}: {error}</source>
         <translation>impossible d&apos;ouvrir {port}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the server has not reported the modem lines</source>
+        <translation>le serveur n&apos;a pas signalé l&apos;état des lignes modem</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing answers at {where} ({error}): is ser2net (or another RFC 2217 server) running there and serving that port?</source>
+        <translation>rien ne répond à {where} ({error})&#xa0;: ser2net (ou un autre serveur RFC 2217) y tourne-t-il en servant ce port&#xa0;?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} answers, but not as an RFC 2217 server: serve the port with ser2net&apos;s `accepter: telnet(rfc2217),tcp,PORT`, or open a raw TCP server as socket://{where}</source>
+        <translation>{where} répond, mais pas en tant que serveur RFC 2217&#xa0;: servir le port avec la ligne ser2net `accepter: telnet(rfc2217),tcp,PORT`, ou ouvrir un serveur TCP brut via socket://{where}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timeout while waiting for option &apos;purge&apos;</source>
+        <translation>délai dépassé en attendant l&apos;option &apos;purge&apos;</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -237,7 +237,7 @@ the same as the start angle: a full circle</source>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/window/bridge_session.py" line="+83"/>
+        <location filename="../../app/window/bridge_session.py" line="+86"/>
         <source>the bridge failed: %1</source>
         <translation>桥接失败：%1</translation>
     </message>
@@ -715,12 +715,12 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+83"/>
+        <location filename="../../app/window/device_docks.py" line="+88"/>
         <source>Not now: %1</source>
         <translation>暂不可用：%1</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>各轴 %1 至 %2 mm（16 位计数）</translation>
     </message>
@@ -735,12 +735,12 @@ All coordinates will be measured from here from now on.</source>
         <translation>程序已保存到 %1（%2 个点）</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+33"/>
         <source>the program stopped: %1</source>
         <translation>程序已停止：%1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
         <translation>程序 %1 完成：已执行 %2/%3，%4 帧，重传 %5 次，%6 s</translation>
     </message>
@@ -1237,7 +1237,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>步骤（每行一个，每步都等待设备应答）：home · set-home · position · move X Y [Z] (mm) · jog DX DY [DZ] (mm) · speed V (mm/s) · raw TEXT（按输入原样发送，并等待其应答）· wait S（s，面板暂停）· check · id · limits；设备支持时还有：dwell MS (ms) · arc CX CY R START END --cw|--ccw · step RPM STEPS · status · stop · version。</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Macros (%1)</source>
         <translation>宏（%1）</translation>
     </message>
@@ -1418,7 +1418,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/window/main_window.py" line="+111"/>
+        <location filename="../../app/window/fit_controls.py" line="+18"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 没有停止命令：此操作会丢弃尚未发送的命令；设备上已在进行的移动会继续完成（Esc）</translation>
     </message>
@@ -1428,17 +1428,17 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>立即停止平台：中止正在进行的移动，并清空队列（Esc）</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location filename="../../app/window/connection.py" line="+49"/>
         <source>simulated %1 device</source>
         <translation>模拟的 %1 设备</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../../app/window/main_window.py" line="+91"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location filename="../../app/window/worker_link.py" line="+114"/>
         <source>no session log: %1</source>
         <translation>无会话日志：%1</translation>
     </message>
@@ -1453,7 +1453,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>此后不再记录会话日志</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location filename="../../app/window/main_window.py" line="+112"/>
         <source>Connection</source>
         <translation>连接</translation>
     </message>
@@ -1493,22 +1493,22 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>通信时间线</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location filename="../../app/window/menus.py" line="+26"/>
         <source>&amp;File</source>
         <translation>文件(&amp;F)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>&amp;Export traffic log…</source>
         <translation>导出通信日志(&amp;E)…</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Save every byte sent and received, with timestamps, to a text file</source>
         <translation>将收发的每个字节连同时间戳保存到文本文件</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>&amp;Open log…</source>
         <translation>打开日志(&amp;O)…</translation>
     </message>
@@ -1518,17 +1518,17 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>浏览解码后的通信日志（本程序的日志或 pyserial spy:// 捕获文件）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Open the session &amp;log folder</source>
         <translation>打开会话日志文件夹(&amp;L)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Every byte of every session is kept there, one file a session</source>
         <translation>每次会话的每个字节都保存在那里，每次会话一个文件</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Quit</source>
         <translation>退出(&amp;Q)</translation>
     </message>
@@ -1538,18 +1538,18 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>运动(&amp;M)</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+390"/>
+        <location filename="../../app/window/fit_controls.py" line="+49"/>
+        <location filename="../../app/window/menus.py" line="+1"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location line="-385"/>
+        <location filename="../../app/window/menus.py" line="+4"/>
         <source>&amp;Travel limits…</source>
         <translation>行程限位(&amp;T)…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>The box the stage may move in, for this device</source>
         <translation>此设备上平台允许移动的范围</translation>
     </message>
@@ -1569,22 +1569,22 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>清除轨迹(&amp;C)</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location filename="../../app/window/connection.py" line="+71"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 已指明其协议：按 %2 连接</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>connecting to %1 (%2, %3 baud)</source>
         <translation>正在连接 %1（%2，%3 波特）</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+79"/>
         <source>bridge refused: %1</source>
         <translation>桥接被拒绝：%1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>bridge: %1</source>
         <translation>桥接：%1</translation>
     </message>
@@ -1609,42 +1609,42 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>桥接已关闭</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+20"/>
         <source>connection error: %1</source>
         <translation>连接错误：%1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>disconnected</source>
         <translation>已断开连接</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+16"/>
         <source>connected to %1 on %2</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location filename="../../app/window/machine_state.py" line="+134"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>位置未知：此设备无法报告其位置；请回原点或设为原点</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>connected again to %1: the position was read again</source>
         <translation>已重新连接到 %1：已重新读取位置</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>位置未知：无法查询设备；请“回原点”或“设为原点”以开始计数</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location filename="../../app/window/fit_controls.py" line="-41"/>
         <source>the device</source>
         <translation>该设备</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>Go to the home position (0, 0, 0)</source>
         <translation>移动到原点位置 (0, 0, 0)</translation>
     </message>
@@ -1654,17 +1654,17 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>将当前位置设为原点（会先询问）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Restart the panel&apos;s count of the position here (asks first); %1 has no set-home command, so nothing is sent</source>
         <translation>在此处重新开始面板的位置计数（会先询问）；%1 没有设置原点命令，因此不会发送任何内容</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+24"/>
         <source>&amp;Drop queued commands</source>
         <translation>清空命令队列(&amp;D)</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location filename="../../app/window/connection.py" line="+56"/>
         <source>port %1 appeared</source>
         <translation>端口 %1 已出现</translation>
     </message>
@@ -1674,12 +1674,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在重新连接到 %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-259"/>
         <source>port %1 disappeared</source>
         <translation>端口 %1 已消失</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+272"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -1694,7 +1694,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>行程限位：%1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location filename="../../app/window/job_desk.py" line="+94"/>
         <source>not connected: %1 not sent</source>
         <translation>未连接：%1 未发送</translation>
     </message>
@@ -1704,27 +1704,27 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>%1 被拒绝：%2 正在进行；请等待其结束或按“停止”</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>motion controls are off until %1 ends (Stop ends it now)</source>
         <translation>%1 结束前运动控制不可用（按“停止”可立即结束）</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+22"/>
         <source>%1 is under way</source>
         <translation>%1 正在进行</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <source>jog refused: %1</source>
         <translation>点动被拒绝：%1</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+92"/>
         <source>Send unchecked bytes?</source>
         <translation>发送未经检查的字节？</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>These bytes cannot be read as a command (%1), so they cannot be checked against the travel limits (%2): they might move the stage outside them.
 
 Send them anyway?</source>
@@ -1733,53 +1733,53 @@ Send them anyway?</source>
 仍要发送吗？</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>not sent: the bytes could not be checked against the travel limits</source>
         <translation>未发送：无法对照行程限位检查这些字节</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>stopping the macro under way</source>
         <translation>正在停止执行中的宏</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>stopping the move under way</source>
         <translation>正在停止进行中的移动</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>nothing queued; the move under way finishes</source>
         <translation>队列为空；进行中的移动会继续完成</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>stopped: %1 command(s) not sent: %2</source>
         <translation>已停止：%1 条命令未发送：%2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location filename="../../app/window/machine_state.py" line="+45"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>新原点：轨迹已平移 (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="+117"/>
+        <location line="-96"/>
         <source>the device reported an error: %1</source>
         <translation>设备报告错误：%1</translation>
     </message>
     <message>
-        <location line="-575"/>
-        <location line="+579"/>
+        <location filename="../../app/window/connection.py" line="-99"/>
+        <location filename="../../app/window/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>设备：%1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location filename="../../app/window/job_desk.py" line="+22"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location filename="../../app/window/machine_state.py" line="+227"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>原点已确认：位置从此处开始计数</translation>
     </message>
@@ -1840,7 +1840,7 @@ Send them anyway?</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>Parameters (%1)</source>
         <translation>参数（%1）</translation>
     </message>
@@ -3024,7 +3024,7 @@ Not now: %2</source>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+76"/>
+        <location filename="../../app/window/traffic_display.py" line="+16"/>
         <source>text</source>
         <translation>文本</translation>
     </message>
@@ -3054,7 +3054,7 @@ Not now: %2</source>
         <translation>间隔</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location filename="../../app/window/traffic_export.py" line="+16"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
@@ -3074,32 +3074,32 @@ Not now: %2</source>
         <translation>导出通信记录</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location filename="../../app/window/traffic_display.py" line="+26"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
         <translation>字节显示方式：文本（\r \n \xNN 转义）、十六进制（47 45 54）或混合（文本，其余字节显示为 &lt;0A&gt;）</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>Times: seconds since the session start, wall-clock time, or the gap since the line above</source>
         <translation>时间显示方式：自会话开始起的秒数、时钟时间，或与上一行的间隔</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Time</source>
         <translation>时间</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Show the time column</source>
         <translation>显示时间列</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../../app/window/traffic_filter_bar.py" line="+57"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Show what was sent to the device</source>
         <translation>显示发送到设备的内容</translation>
     </message>
@@ -3109,7 +3109,7 @@ Not now: %2</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Show what the device sent</source>
         <translation>显示设备发送的内容</translation>
     </message>
@@ -3119,22 +3119,22 @@ Not now: %2</source>
         <translation>类型</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Which kinds of lines to show</source>
         <translation>要显示哪些类型的行</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Poll</source>
         <translation>轮询</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Show the idle position queries and their replies (hidden by default; counted below)</source>
         <translation>显示空闲时的位置查询及其应答（默认隐藏；数量见下方统计）</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>filter (regex)</source>
         <translation>过滤（正则表达式）</translation>
     </message>
@@ -3144,7 +3144,7 @@ Not now: %2</source>
         <translation>仅显示方向、类型、十六进制、文本或含义与此正则表达式匹配（不区分大小写）的行，例如 error|FA00</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../../app/window/traffic_console.py" line="+115"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
@@ -3154,32 +3154,32 @@ Not now: %2</source>
         <translation>新行不会滚动视图：滚动到底部即可继续跟随</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../../app/window/traffic_filter_bar.py" line="+12"/>
         <source>search (regex)</source>
         <translation>搜索（正则表达式）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Highlight matching lines; Enter or F3: next, Shift+F3: previous</source>
         <translation>高亮匹配的行；Enter 或 F3：下一个，Shift+F3：上一个</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>Previous match (Shift+F3)</source>
         <translation>上一个匹配项（Shift+F3）</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Next match (F3)</source>
         <translation>下一个匹配项（F3）</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location filename="../../app/window/traffic_status.py" line="+44"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
         <translation>会话中的行数、已显示、已隐藏的轮询、错误、匹配项</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../../app/window/traffic_console.py" line="+18"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3199,17 +3199,17 @@ Not now: %2</source>
         <translation>清除这些行（会话日志中仍保留）</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+43"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
         <translation>TX（蓝色）：发送到设备；RX（绿色）：已接收；灰色：说明及设备自身输出的文本；红色：错误。双击某行可跳转到其请求、应答或首次出现处。</translation>
     </message>
     <message>
-        <location line="+164"/>
+        <location line="+89"/>
         <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
         <translation>控制台只保留最新的 %1 行：新行到来时，较旧的行会从控制台中移除；会话日志保留所有行</translation>
     </message>
     <message>
-        <location line="+198"/>
+        <location line="+132"/>
         <source>line %1 is no longer in the console (its line limit dropped it); the session log has it</source>
         <translation>第 %1 行已不在控制台中（因行数上限被移除）；会话日志中仍有该行</translation>
     </message>
@@ -3218,7 +3218,7 @@ Not now: %2</source>
         <translation type="vanished">%1 行因达到控制台上限而被清除；会话日志中仍保留这些行</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location filename="../../app/window/traffic_status.py" line="+16"/>
         <source>%1 lines</source>
         <translation>%1 行</translation>
     </message>
@@ -3233,17 +3233,17 @@ Not now: %2</source>
         <translation>会话日志中另有较早的 %1 行</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 poll hidden</source>
         <translation>隐藏轮询 %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 errors</source>
         <translation>错误 %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 matches</source>
         <translation>匹配 %1</translation>
     </message>
@@ -3253,7 +3253,7 @@ Not now: %2</source>
         <translation>控制台只保留最新的 %1 行（见“设置”）：较旧的行会从中移除，磁盘上的会话日志保留所有行</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location filename="../../app/window/traffic_console.py" line="+110"/>
         <source>export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
@@ -3263,7 +3263,7 @@ Not now: %2</source>
         <translation>已将 %1 行导出到 %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+45"/>
+        <location filename="../../app/window/traffic_table.py" line="+46"/>
         <source>motion</source>
         <translation>运动</translation>
     </message>
@@ -4338,7 +4338,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+12"/>
+        <location filename="message_templates.py" line="+15"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>前往 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -4418,7 +4418,22 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>用法：{usage}（收到 {count} 个参数）</translation>
     </message>
     <message>
+        <location line="-3"/>
+        <source>--force is for raw only</source>
+        <translation>--force 仅适用于 raw</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>{command} needs --port (the device to talk to)</source>
+        <translation>{command} 需要 --port（要通信的设备）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{command} needs --protocol ({choices})</source>
+        <translation>{command} 需要 --protocol（{choices}）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>usage: {usage}</source>
         <translation>用法：{usage}</translation>
     </message>
@@ -4454,6 +4469,31 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+16"/>
+        <source>{file} names no protocol (no connection note: a motionctl --log file or a spy:// capture has none): give --protocol</source>
+        <translation>{file} 未指明协议（没有连接说明：motionctl --log 文件或 spy:// 捕获文件都不含连接说明）：请指定 --protocol</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: its connection note: {error}</source>
+        <translation>{file}：其连接说明：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>its connection notes name {named}</source>
+        <translation>其连接说明指明的是 {named}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>try another --protocol</source>
+        <translation>请尝试其他 --protocol</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing in {file} decodes as {protocol} ({count} records of traffic, none a {protocol} frame); {hint}</source>
+        <translation>{file} 中没有任何内容能按 {protocol} 解码（共 {count} 条通信记录，没有一条是 {protocol} 帧）；{hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>macro {name} ({count} step)</source>
         <translation>宏 {name}（{count} 步）</translation>
     </message>
@@ -6479,6 +6519,31 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>{protocol} has no stop command: the device finishes what it was sent</source>
+        <translation>{protocol} 没有停止命令：设备会完成已发给它的内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{protocol} runs no programs: it has no command queue (laser-frame has one)</source>
+        <translation>{protocol} 不能运行程序：它没有命令队列（laser-frame 有）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timeout {timeout:g} s refused: it must be positive</source>
+        <translation>超时 {timeout:g} s 被拒绝：必须为正数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>variant {variant!r} asked for a protocol made as {chosen!r}</source>
+        <translation>为按 {chosen!r} 创建的协议请求了变体 {variant!r}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>baud {baud} refused: a positive number of bits per second</source>
+        <translation>波特率 {baud} 被拒绝：应为正数（单位 bit/s）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>capture with spy&apos;s default hexdump format: spy://PORT?file=FILE, without raw</source>
         <translation>请用 spy 的默认 hexdump 格式捕获：spy://PORT?file=FILE，不加 raw</translation>
     </message>
@@ -6566,6 +6631,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>setting {line} on {url} failed: {error}</source>
         <translation>设置 {url} 的 {line} 失败：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the server did not confirm the control lines ({what} unanswered); they are set without confirmation (ser2net does not answer when the port it serves has no modem lines, e.g. a pseudo-terminal)</source>
+        <translation>服务器未确认控制信号线（{what} 未应答）；这些信号线已设置但未经确认（当 ser2net 所服务的端口没有调制解调器信号线时，例如伪终端，它不会应答）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6716,6 +6786,26 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>cannot open {port}: {error}</source>
         <translation>无法打开 {port}：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the server has not reported the modem lines</source>
+        <translation>服务器尚未报告调制解调器信号线</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>nothing answers at {where} ({error}): is ser2net (or another RFC 2217 server) running there and serving that port?</source>
+        <translation>{where} 处无任何应答（{error}）：ser2net（或其他 RFC 2217 服务器）是否在该处运行并提供该端口？</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} answers, but not as an RFC 2217 server: serve the port with ser2net&apos;s `accepter: telnet(rfc2217),tcp,PORT`, or open a raw TCP server as socket://{where}</source>
+        <translation>{where} 有应答，但不是 RFC 2217 服务器：请用 ser2net 的 `accepter: telnet(rfc2217),tcp,PORT` 提供该端口，或以 socket://{where} 打开原始 TCP 服务器</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>timeout while waiting for option &apos;purge&apos;</source>
+        <translation>等待选项 &apos;purge&apos; 时超时</translation>
     </message>
     <message>
         <location line="+1"/>
