@@ -14,6 +14,7 @@ from widgets._axes import AXES, Box, target_point
 from widgets._fast_grid import FastGrid
 from widgets._gl_scene import preview_array, preview_tuples
 from widgets._pacer import run_paced
+from widgets._plot_fit import PlotFit, fitted_plot_widget
 from widgets._view_common import REFRESH_INTERVAL_MS, BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
@@ -21,7 +22,7 @@ log = logging.getLogger(__name__)
 
 GRID_COLOUR = (60, 60, 60)
 TIME_WINDOWS_S = (10.0, 30.0, 60.0)  # the time plot's span grows in these steps
-TIME_AXIS_WIDTH_PX = 56  # the time plot's left axis: labels and title, "-1000.0" fits
+TIME_TICK_SAMPLE = "-1000.0"  # the time plot's left axis has room for this tick label
 TIME_PLOT_DELAY_MS = REFRESH_INTERVAL_MS // 3  # the timer draws the time plot this much later
 FOLLOW_PADDING = 0.25  # room added on each side when a view is widened
 MIN_MARGIN_MM = 1.0
@@ -79,7 +80,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self._estimated = False
         self._preview = np.zeros((0, 3))
 
-        self.xy_plot = pg.PlotWidget()
+        self.xy_plot = fitted_plot_widget()
         self.xy_plot.setObjectName("positionXYPlot")
         self.xy_plot.setToolTip(
             self.tr(
@@ -88,9 +89,14 @@ class PositionView2D(BufferedViewMixin, QWidget):
             )
         )
         xy = self.xy_plot.getPlotItem()
-        xy.setTitle(self.tr("XY (from above)"))
-        xy.setLabel("bottom", self.tr("X (mm)"))
-        xy.setLabel("left", self.tr("Y (mm)"))
+        self.xy_fit = PlotFit(
+            self.xy_plot,
+            self.tr("XY (from above)"),
+            {
+                "bottom": [self.tr("X (mm)"), self.tr("X")],
+                "left": [self.tr("Y (mm)"), self.tr("Y")],
+            },
+        )
         xy.addItem(_grid(), ignoreBounds=True)
         xy.setAspectLocked(True)
         self.workspace_outline = pg.PlotCurveItem(
@@ -114,16 +120,10 @@ class PositionView2D(BufferedViewMixin, QWidget):
         xy.addItem(self.current_marker)
         xy.addItem(self.target_marker)
 
-        self.time_plot = pg.PlotWidget()
+        self.time_plot = fitted_plot_widget()
         self.time_plot.setObjectName("positionTimePlot")
         self.time_plot.setToolTip(self.tr("X, Y and Z against time; dashed lines: target"))
         tp = self.time_plot.getPlotItem()
-        tp.setTitle(self.tr("Position against time"))
-        tp.setLabel("bottom", self.tr("time (s, 0 = latest sample)"))
-        tp.setLabel("left", self.tr("position (mm)"))
-        # Fixed axis room: a tick label of another width (the window stepping to 30 s, a range
-        # growing past 10 mm) otherwise re-lays the plot out, and the window's docks with it.
-        tp.getAxis("left").setWidth(TIME_AXIS_WIDTH_PX)
         tp.addItem(_grid(), ignoreBounds=True)
         tp.setClipToView(True)
         tp.setDownsampling(auto=True, mode="peak")
@@ -133,7 +133,24 @@ class PositionView2D(BufferedViewMixin, QWidget):
             )
             for axis in AXES
         }
-        self.legend = self._legend_row(tp)
+        self.legend = pg.LegendItem(colCount=len(AXES), horSpacing=4)
+        self.legend.layout.setContentsMargins(4, 2, 4, 2)  # 24 px high: fits the title row
+        for axis in AXES:
+            self.legend.addItem(self.curves[axis], axis.upper())
+        # The legend in the title row, above the data area, so it never covers a line. Fixed
+        # left axis room: a tick label of another width (the window stepping to 30 s, a range
+        # growing past 10 mm) otherwise re-lays the plot out, and the window's docks with it.
+        self.time_fit = PlotFit(
+            self.time_plot,
+            self.tr("Position against time"),
+            {
+                "bottom": [self.tr("time (s, 0 = latest sample)"), self.tr("t (s)")],
+                "left": [self.tr("position (mm)"), self.tr("mm")],
+            },
+            legend=self.legend,
+            left_ticks=TIME_TICK_SAMPLE,
+            keep_header=True,
+        )
         self.target_lines = {}
         for axis in AXES:
             line = pg.InfiniteLine(
@@ -184,22 +201,6 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self._xy_retry.setSingleShot(True)
         self._xy_retry.timeout.connect(self._timed_refresh)
         self.reset_view()
-
-    def _legend_row(self, tp: pg.PlotItem) -> pg.LegendItem:
-        """A one-row legend in the title row, above the data area, so it never covers a line."""
-        legend = pg.LegendItem(colCount=len(AXES), horSpacing=4)
-        legend.layout.setContentsMargins(4, 2, 4, 2)  # 24 px high: fits the 30 px title row
-        for axis in AXES:
-            legend.addItem(self.curves[axis], axis.upper())
-        title = tp.titleLabel
-        tp.layout.removeItem(title)
-        header = pg.GraphicsLayout()
-        header.setContentsMargins(0, 0, 0, 0)
-        header.addItem(title, row=0, col=0)
-        header.addItem(legend, row=0, col=1)
-        header.layout.setColumnStretchFactor(0, 1)
-        tp.layout.addItem(header, 0, 1)
-        return legend
 
     def refresh(self) -> None:
         """Redraw both plots from the buffer if it changed since the last refresh.
