@@ -7,7 +7,7 @@ from typing import NamedTuple
 
 import numpy as np
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Qt
-from PySide6.QtGui import QGuiApplication, QOffscreenSurface, QOpenGLContext
+from PySide6.QtGui import QColor, QGuiApplication, QOffscreenSurface, QOpenGLContext
 from PySide6.QtWidgets import QToolButton, QWidget
 
 from widgets._axes import Box
@@ -27,6 +27,8 @@ MIN_SPAN_MM = 10.0
 GRID_CELLS = 10
 FIELD_OF_VIEW = 35.0  # degrees across; pyqtgraph's 60 distorts the flat presets
 MARGINS_PX = np.array((8, 8, 20, 30))  # left, right, bottom (scale text), top (buttons)
+GRID_CONTRAST = 2.3  # the grid's grey against the background: visible, below the data
+LABEL_CONTRAST = 9.0  # the scale text's grey against the background (WCAG asks 4.5 at least)
 
 # (elevation, azimuth) in degrees, as pyqtgraph's GLViewWidget camera uses them
 VIEW_ANGLES: dict[str, tuple[float, float]] = {
@@ -233,6 +235,48 @@ def fit_camera(
         shift = (low - high) / 2 * distance * tan  # in mm at the centre's depth
         centre = centre + rotation[:2].T @ shift
     return centre, distance
+
+
+def relative_luminance(colour: QColor) -> float:
+    """The WCAG 2 relative luminance of `colour` (0 black .. 1 white), alpha ignored."""
+
+    def linear(channel: float) -> float:
+        return channel / 12.92 if channel <= 0.04045 else ((channel + 0.055) / 1.055) ** 2.4
+
+    return (
+        0.2126 * linear(colour.redF())
+        + 0.7152 * linear(colour.greenF())
+        + 0.0722 * linear(colour.blueF())
+    )
+
+
+def contrast_ratio(first: QColor, second: QColor) -> float:
+    """The WCAG 2 contrast ratio of two colours, 1 (the same) .. 21 (black on white)."""
+    high, low = sorted((relative_luminance(first), relative_luminance(second)), reverse=True)
+    return (high + 0.05) / (low + 0.05)
+
+
+def grey_at_contrast(background: QColor, ratio: float) -> QColor:
+    """The grey with contrast `ratio` to `background`: darker than a light one, lighter than a
+    dark one (as far as black or white allows)."""
+    lum = relative_luminance(background) + 0.05
+    if lum / 0.05 >= 1.05 / lum:  # more contrast to be had towards black
+        target = max(lum / ratio - 0.05, 0.0)
+    else:
+        target = min(lum * ratio - 0.05, 1.0)
+    channel = 12.92 * target if target <= 0.0031308 else 1.055 * target ** (1 / 2.4) - 0.055
+    return QColor.fromRgbF(channel, channel, channel)
+
+
+def grid_colour(background: QColor) -> tuple[float, float, float, float]:
+    """The 3D grid's line colour over `background`, as pyqtgraph.opengl takes it."""
+    grey = grey_at_contrast(background, GRID_CONTRAST)
+    return (grey.redF(), grey.greenF(), grey.blueF(), 1.0)
+
+
+def label_colour(background: QColor) -> QColor:
+    """The colour of text drawn over `background` (the grid's scale), well readable."""
+    return grey_at_contrast(background, LABEL_CONTRAST)
 
 
 def overlay_buttons(parent: QWidget) -> list[QToolButton]:

@@ -9,7 +9,7 @@ from functools import cache, partial
 from types import ModuleType
 
 import numpy as np
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QSize, Qt, QTimer
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QSize, Qt, QTimer, Signal
 from PySide6.QtGui import (
     QColor,
     QFont,
@@ -26,6 +26,7 @@ from PySide6.QtGui import (
 from PySide6.QtWidgets import QLabel, QToolButton, QWidget
 
 from widgets._axes import Box, target_point
+from widgets._buttons import overlay_button_style
 from widgets._gl_scene import (
     FIELD_OF_VIEW,
     MARGINS_PX,
@@ -37,7 +38,9 @@ from widgets._gl_scene import (
     box_edges,
     camera_rotation,
     fit_camera,
+    grid_colour,
     grid_for,
+    label_colour,
     opengl_problem,
     overlay_buttons,
     preview_array,
@@ -66,11 +69,9 @@ CURRENT_COLOUR = (1.0, 0.70, 0.0, 1.0)
 TARGET_COLOUR = (0.85, 0.11, 0.38, 1.0)
 ESTIMATED_COLOUR = (*CURRENT_COLOUR[:3], 0.5)  # a position estimated, not measured
 AXIS_COLOURS = ((0.90, 0.22, 0.21, 1.0), (0.26, 0.63, 0.28, 1.0), (0.12, 0.53, 0.90, 1.0))
-GRID_COLOUR = (1.0, 1.0, 1.0, 0.3)
 WORKSPACE_COLOUR = (0.30, 0.80, 0.78, 0.9)
 PREVIEW_COLOUR = (1.0, 0.80, 0.50, 1.0)  # light orange (#ffcc80): a planned path, not yet run
 BACKGROUND = (24, 24, 28, 255)
-SCALE_COLOUR = (200, 200, 200)
 NOTICE_COLOUR = (97, 97, 97)
 NOTICE_STYLE = "color: #616161; border: 1px dashed #9e9e9e;"
 NOTICE_TOOLTIP = QT_TRANSLATE_NOOP(
@@ -129,9 +130,16 @@ def _scene_class() -> type:
     """
 
     class GuardedScene(gl.GLViewWidget):
-        """A GLViewWidget that records, rather than raises, a failure to initialise or paint."""
+        """A GLViewWidget that records, rather than raises, a failure to initialise or paint,
+        and says when its background changes (the theme's: the view follows it)."""
 
         failure: str | None = None
+        background_changed = Signal()
+
+        def setBackgroundColor(self, *args: object, **kwds: object) -> None:
+            """pyqtgraph's, then `background_changed`."""
+            super().setBackgroundColor(*args, **kwds)
+            self.background_changed.emit()
 
         def initializeGL(self) -> None:
             """pyqtgraph's initialisation; a failure is recorded."""
@@ -270,6 +278,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._render_timer.timeout.connect(self._render_pending)
         self.failure: str | None = None
         self.scene = _scene_class()()  # no parent: it must stay out of this window
+        self._scale_colour = QColor()
         self.scene.setBackgroundColor(BACKGROUND)
         self.scene.opts["fov"] = FIELD_OF_VIEW
         self.destroyed.connect(self.scene.deleteLater)
@@ -277,7 +286,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._label_font = QFont()
         self._label_font.setPointSize(10)
 
-        self.grid_item = _lines(GRID_COLOUR, 1.0, glOptions="translucent")
+        self.grid_item = _lines(grid_colour(QColor(*BACKGROUND)), 1.0, glOptions="translucent")
         self.axes_item = _lines(np.repeat(np.array(AXIS_COLOURS), 2, axis=0), 2.0)
         self.workspace_item = _lines(WORKSPACE_COLOUR, 1.5)
         self.workspace_item.setVisible(False)
@@ -320,6 +329,8 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self.addItem(self.preview_item)
 
         self._make_buttons()
+        self._follow_background()
+        self.scene.background_changed.connect(self._follow_background)
         self.start_refresh_timer()
         self._fit_grid()
 
@@ -517,6 +528,37 @@ class PositionView3D(BufferedViewMixin, QWidget):
                 button.clicked.connect(partial(self.set_view_preset, preset))
         self.follow_button = self.findChild(QToolButton, "view3dFollow")
         self.follow_button.toggled.connect(self.set_follow)
+        self._buttons_light: bool | None = None
+        self._style_buttons()
+
+    def _style_buttons(self) -> None:
+        """The buttons in the style for the scene's background (the theme's), on a change."""
+        light = QColor.fromRgbF(*self.scene.opts["bgcolor"]).lightnessF() > 0.5
+        if light is self._buttons_light:
+            return
+        self._buttons_light = light
+        style = overlay_button_style(light)
+        for button in self.findChildren(QToolButton):
+            button.setStyleSheet(style)
+
+    def background(self) -> QColor:
+        """The scene's background colour (the theme's, once the window applied it)."""
+        return QColor.fromRgbF(*self.scene.opts["bgcolor"])
+
+    def grid_colour(self) -> QColor:
+        """The colour the grid's lines are drawn in."""
+        return QColor.fromRgbF(*self.grid_item.color)
+
+    def scale_colour(self) -> QColor:
+        """The colour of the "grid N mm" text."""
+        return QColor(self._scale_colour)
+
+    def _follow_background(self) -> None:
+        """The grid and its scale text in greys that contrast with the new background."""
+        background = self.background()
+        self.grid_item.setData(color=grid_colour(background))
+        self._scale_colour = label_colour(background)
+        self._redraw()  # painted once rendered: the scale with the image it belongs to
 
     # -- drawing -----------------------------------------------------------------------------
     def _redraw(self) -> None:
@@ -565,6 +607,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
         image.setDevicePixelRatio(ratio)
         self._image = image
         self._stale = False
+        self._style_buttons()  # the background may have changed with the theme
         return image
 
     def _fail(self, reason: str) -> None:
@@ -608,7 +651,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
             return
         painter = QPainter(self)
         painter.drawImage(0, 0, self._image)
-        painter.setPen(QColor(*SCALE_COLOUR))
+        painter.setPen(self._scale_colour)
         painter.drawText(
             self.rect().adjusted(6, 0, 0, -4),
             Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignBottom,
