@@ -317,21 +317,30 @@ class Motion:
         )
 
     def move_by(
-        self, dx: float, dy: float, dz: float = 0.0, kind: str = "linear"
+        self,
+        dx: float,
+        dy: float,
+        dz: float = 0.0,
+        kind: str = "linear",
+        *,
+        what: str | None = None,
     ) -> PositionReport:
-        """Relative move (`kind`: linear mm, or the protocol's rotational degrees or steps)."""
+        """Relative move (`kind`: linear mm, or the protocol's rotational degrees or steps);
+        `what` names it in messages (a Message; default "jog by (dx, dy, dz) unit")."""
         command = cmd.MoveBy(dx, dy, dz, kind)
         if kind == "linear":
             check_resolution((dx, dy, dz), ("dx", "dy", "dz"), self.capabilities.resolution)
         lx, ly, lz = self.client.protocol.kind_to_length(command)
-        return self._move(
-            Message(
+        if what is None:
+            what = Message(
                 "jog by ({dx:g}, {dy:g}, {dz:g}) {unit}",
                 dx=dx,
                 dy=dy,
                 dz=dz,
                 unit=KIND_UNITS.get(kind, kind),
-            ),
+            )
+        return self._move(
+            what,
             lambda here: (here.x + lx, here.y + ly, here.z + lz),
             lambda here, t: self._relative(command, here, t, (lx, ly, lz)),
             check=command if self.capabilities.relative_moves else cmd.MoveTo(dx, dy, dz),

@@ -108,7 +108,7 @@ def test_stop_reports_what_was_not_sent(qtbot, window: MainWindow) -> None:
     window.coordinates.go_requested.emit("relative", (0.0, 100.0, 0.0))
     window.job_desk.stop()
     window.console.flush()
-    assert "1 command(s) not sent: jog by (0, 100, 0) mm" in window.console.text()
+    assert "1 command(s) not sent: relative move by (0, 100, 0) mm" in window.console.text()
     assert "not sent" in window.status_line.message()
     assert window.jog_panel.held() is None  # Stop also ends a held jog
 
@@ -185,10 +185,11 @@ def test_menus_reset_views_and_toggle_panels(qtbot, window: MainWindow) -> None:
     names = [action.text() for action in view_menu.actions()]
     assert "&Reset views" in names and "Console" in names
     console_toggle = next(a for a in view_menu.actions() if a.text() == "Console")
-    console_toggle.trigger()
-    assert not window.console.isVisible()
+    assert not window.console.isVisible()  # Operate has no console
     console_toggle.trigger()
     assert window.console.isVisible()
+    console_toggle.trigger()
+    assert not window.console.isVisible()
     window.reset_views()
 
 

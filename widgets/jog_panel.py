@@ -56,10 +56,6 @@ _BUTTONS: tuple[tuple[str, float, int, int], ...] = (
 )
 
 
-def _fmt_mm(value: float) -> str:
-    return f"{value:g} mm"
-
-
 class JogPanel(QWidget):
     """Six jog buttons, a step size, Shift for a ten times bigger step.
 
@@ -117,11 +113,12 @@ class JogPanel(QWidget):
         step_label.setToolTip(self.tr("Distance of one jog"))
         self.preset_buttons: dict[float, QPushButton] = {}
         for value in STEP_PRESETS:
-            button = QPushButton(_fmt_mm(value))
+            text = fill(self.tr("%1 mm"), number_text(value, 2))  # the locale's decimal mark
+            button = QPushButton(text)
             button.setObjectName(f"jogStep{value:g}".replace(".", "_"))
             button.setCheckable(True)
             button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
-            button.setToolTip(fill(self.tr("Jog by %1 per press"), _fmt_mm(value)))
+            button.setToolTip(fill(self.tr("Jog by %1 per press"), text))
             button.clicked.connect(lambda _=False, v=value: self.set_step(v))
             self._preset_group.addButton(button)
             presets.addWidget(button)

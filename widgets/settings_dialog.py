@@ -12,7 +12,7 @@ import dataclasses
 from collections.abc import Callable
 from typing import Any
 
-from PySide6.QtCore import QCoreApplication, Signal
+from PySide6.QtCore import QCoreApplication, Qt, Signal
 from PySide6.QtGui import QKeySequence
 from PySide6.QtWidgets import (
     QAbstractSpinBox,
@@ -95,6 +95,9 @@ class SettingsDialog(QDialog):
         )
         self.tabs.addTab(self._page(self._keys_group()), self.tr("Keyboard jog"))
         self.tabs.addTab(self._page(self._looks_group()), self.tr("Appearance && language"))
+        # Every tab's title whole, in any language: the dialog is as wide as the tabs need.
+        self.tabs.setElideMode(Qt.TextElideMode.ElideNone)
+        self.tabs.setUsesScrollButtons(False)
 
         self.problem_label = QLabel()
         self.problem_label.setObjectName("settingsProblem")

@@ -239,7 +239,7 @@ class JobDesk(QObject):
         from app.window import jobs
 
         if mode == "relative":
-            self.submit(jobs.MoveByJob(*values))
+            self.submit(jobs.MoveByJob(*values, jog=False))
         else:
             self.submit(jobs.MoveToJob(*values))
 
@@ -351,8 +351,10 @@ class JobDesk(QObject):
         self.machine.job_failed()
         if job is self.jog_job:
             self.window.jog_panel.release()  # e.g. refused at the travel limits: stop stepping
-        text = translate("MainWindow", "%1 failed: %2")
-        self._tell(fill(text, job.describe(), message), status.FAILURE)
+        described = job.describe()
+        if described not in message:  # else the message names the job itself: said once
+            message = fill(translate("MainWindow", "%1 failed: %2"), described, message)
+        self._tell(message, status.FAILURE)
         self._job_ended(job)
         self.machine.show_status()
 

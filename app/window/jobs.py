@@ -24,6 +24,7 @@ def _t(template: str, *values: object) -> str:
 _TEMPLATES = (
     QT_TRANSLATE_NOOP("Jobs", "move to (%1, %2, %3) mm"),
     QT_TRANSLATE_NOOP("Jobs", "jog by (%1, %2, %3) %4"),
+    QT_TRANSLATE_NOOP("Jobs", "relative move by (%1, %2, %3) %4"),
     QT_TRANSLATE_NOOP("Jobs", "go home"),
     QT_TRANSLATE_NOOP("Jobs", "set home here"),
     QT_TRANSLATE_NOOP("Jobs", "set speed %1 mm/s"),
@@ -77,11 +78,15 @@ class MoveByJob(Job):
     dy: float
     dz: float
     kind: str = "linear"  # or the protocol's rotational (degrees) or steps
+    jog: bool = True  # False: a relative Go to, named "relative move" (not "jog")
 
     def describe(self) -> str:
-        """E.g. `jog by (1, 0, 0) mm`."""
+        """E.g. `jog by (1, 0, 0) mm`, or `relative move by (1, 0, 0) mm` (a Go to)."""
         unit = "mm" if self.kind == "linear" else self.kind
-        return _t("jog by (%1, %2, %3) %4", f"{self.dx:g}", f"{self.dy:g}", f"{self.dz:g}", unit)
+        deltas = (f"{self.dx:g}", f"{self.dy:g}", f"{self.dz:g}", unit)
+        if not self.jog:
+            return _t("relative move by (%1, %2, %3) %4", *deltas)
+        return _t("jog by (%1, %2, %3) %4", *deltas)
 
 
 @dataclass(frozen=True)

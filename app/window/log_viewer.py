@@ -14,7 +14,7 @@ from itertools import islice
 from pathlib import Path
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Qt, Signal, Slot
-from PySide6.QtGui import QCloseEvent
+from PySide6.QtGui import QCloseEvent, QKeySequence, QShortcut
 from PySide6.QtWidgets import (
     QComboBox,
     QFileDialog,
@@ -97,11 +97,21 @@ class LogViewer(QMainWindow):
         self.status = QLabel(self.tr("no log open"))
         self.status.setObjectName("logViewerStatus")
         self.status.setWordWrap(True)
+        # Closed from the window itself too: without a window manager there is no title bar.
+        close_button = QPushButton(self.tr("Close"))
+        close_button.setObjectName("logViewerClose")
+        close_button.setToolTip(self.tr("Close this log's window (Ctrl+W, Esc)"))
+        close_button.clicked.connect(self.close)
+        keys = [QKeySequence("Ctrl+W"), QKeySequence(Qt.Key.Key_Escape)]
+        standard = QKeySequence.keyBindings(QKeySequence.StandardKey.Close)  # Ctrl+F4 …
+        keys += [k for k in standard if k not in keys]
+        self.close_shortcuts = [QShortcut(k, self, self.close) for k in keys]
         top = QHBoxLayout()
         top.addWidget(QLabel(self.tr("Protocol:")))
         top.addWidget(self.protocol_combo)
         top.addWidget(open_button)
         top.addWidget(self.status, 1)
+        top.addWidget(close_button)
         self.console = RawConsole(self, sending=False)
         self.timeline = TrafficTimeline(self)
         self.feed = TimelineFeed(self.console, self.timeline)

@@ -29,7 +29,13 @@ from PySide6.QtWidgets import (
 
 from app.common.messages import localized
 from app.window.traffic_display import DisplayOptions
-from app.window.traffic_export import ask_save_path, write_csv, write_text
+from app.window.traffic_export import (
+    ask_save_path,
+    exported_text,
+    tell_window,
+    write_csv,
+    write_text,
+)
 from app.window.traffic_filter_bar import TrafficFilterBar
 from app.window.traffic_navigation import TrafficNavigator
 from app.window.traffic_pacing import FeedPacer, Incoming
@@ -515,10 +521,14 @@ class RawConsole(QWidget):
             count = self.export(path)
         except OSError as exc:
             log.warning("export to %s failed: %s", path, exc)
-            self.show_error(fill(self.tr("export failed: %1"), localized(exc)))
+            failed = fill(self.tr("export failed: %1"), localized(exc))
+            self.show_error(failed)
+            tell_window(self, failed, failed=True)
         else:
             self.show_error("")
-            self.append_note(fill(self.tr("exported %1 lines to %2"), count, path))
+            said = exported_text(count, path)
+            self.append_note(said)
+            tell_window(self, said)  # seen even where the console is hidden
 
     # -- sending (the SendLine does the work) ----------------------------------------------
 

@@ -9,6 +9,8 @@ from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QFileDialog, QWidget
 
 from app.window.traffic_table import CSV_COLUMNS, TrafficModel
+from widgets import status_line
+from widgets._i18n import fill
 
 
 def ask_save_path(parent: QWidget) -> str:
@@ -27,6 +29,25 @@ def ask_save_path(parent: QWidget) -> str:
     if path and chosen == csv_filter and not path.lower().endswith(".csv"):
         path += ".csv"
     return path
+
+
+def exported_text(count: int, path: str | Path) -> str:
+    """The confirmation of an export: `exported 12 lines to /tmp/traffic.txt`."""
+    if count == 1:
+        template = QCoreApplication.translate("RawConsole", "exported %1 line to %2")
+    else:
+        template = QCoreApplication.translate("RawConsole", "exported %1 lines to %2")
+    return fill(template, count, str(path))
+
+
+def tell_window(widget: QWidget, text: str, failed: bool = False) -> bool:
+    """Show `text` on the status line of `widget`'s window (the StatusLine named statusLine),
+    if it has one; whether it did."""
+    line = widget.window().findChild(status_line.StatusLine, "statusLine")
+    if line is None:
+        return False
+    line.show_message(text, status_line.FAILURE if failed else status_line.INFO)
+    return True
 
 
 def write_text(model: TrafficModel, path: str | Path, timestamps: bool) -> int:

@@ -56,8 +56,13 @@ class ConsoleStatus(QObject):
         self.timer.stop()
         self._at = time.perf_counter()
         figures = self._figures()
+        lines = (
+            QCoreApplication.translate("RawConsole", "%1 line")
+            if figures.kept == 1
+            else QCoreApplication.translate("RawConsole", "%1 lines")
+        )
         parts = [
-            fill(QCoreApplication.translate("RawConsole", "%1 lines"), f"{figures.kept:,}"),
+            fill(lines, f"{figures.kept:,}"),
             fill(QCoreApplication.translate("RawConsole", "%1 shown"), f"{figures.shown:,}"),
         ]
         if figures.older:
@@ -67,10 +72,18 @@ class ConsoleStatus(QObject):
             hidden = QCoreApplication.translate("RawConsole", "%1 poll hidden")
             parts.append(fill(hidden, f"{figures.poll_hidden:,}"))
         if figures.errors:
-            errors = QCoreApplication.translate("RawConsole", "%1 errors")
+            errors = (
+                QCoreApplication.translate("RawConsole", "%1 error")
+                if figures.errors == 1
+                else QCoreApplication.translate("RawConsole", "%1 errors")
+            )
             parts.append(fill(errors, f"{figures.errors:,}"))
         if figures.matches is not None:
-            matches = QCoreApplication.translate("RawConsole", "%1 matches")
+            matches = (
+                QCoreApplication.translate("RawConsole", "%1 match")
+                if figures.matches == 1
+                else QCoreApplication.translate("RawConsole", "%1 matches")
+            )
             parts.append(fill(matches, f"{figures.matches:,}"))
         self.label.setText(" · ".join(parts))
         tip = parts

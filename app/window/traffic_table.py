@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 import time
 from datetime import datetime
 from operator import methodcaller
@@ -18,7 +19,17 @@ from PySide6.QtCore import (
     QRect,
     Qt,
 )
-from PySide6.QtGui import QBrush, QColor, QFont, QFontDatabase, QPainter, QPaintEvent, QPalette
+from PySide6.QtGui import (
+    QBrush,
+    QColor,
+    QFont,
+    QFontDatabase,
+    QFontInfo,
+    QFontMetrics,
+    QPainter,
+    QPaintEvent,
+    QPalette,
+)
 from PySide6.QtWidgets import QHeaderView, QStyle, QTableView
 
 from drivers.traffic_index import TrafficIndex
@@ -73,6 +84,33 @@ def shown_bytes(data: bytes, mode: str) -> str:
     if mode == MIXED:
         return _to_mixed(data.decode("latin-1"))
     return escape(data)
+
+
+ELLIPSIS = "…"
+_UNITS = {  # what a shown byte is in each mode (the cell's "…" of bytes not shown is one too)
+    HEX: re.compile(r"[0-9A-F]{2} ?|…"),
+    MIXED: re.compile(r"<[0-9A-F]{2}>|.", re.DOTALL),
+    TEXT: re.compile(r"\\x[0-9A-Fa-f]{2}|\\.|.", re.DOTALL),
+}
+
+
+def byte_units(text: str, mode: str) -> list[str]:
+    """The shown bytes `text` (as shown_bytes gives them) cut into one piece a byte."""
+    return _UNITS[mode].findall(text)
+
+
+def elide_bytes(text: str, mode: str, room: int) -> str:
+    """`text` (shown bytes) in at most `room` characters: cut between two bytes, never inside
+    one (`41 42 …`, not `41 4`), with "…" where bytes are left out."""
+    if len(text) <= room:
+        return text
+    kept, used = [], 0
+    for unit in byte_units(text, mode):
+        if used + len(unit) + len(ELLIPSIS) > room:
+            break
+        kept.append(unit)
+        used += len(unit)
+    return "".join(kept) + ELLIPSIS if room >= len(ELLIPSIS) else ""
 
 
 def stamp(
@@ -362,6 +400,27 @@ class TrafficView(QTableView):
         rows.setSectionResizeMode(QHeaderView.ResizeMode.Fixed)
         rows.setDefaultSectionSize(self.fontMetrics().height() + 4)
 
+    def fit_bytes(
+        self, text: str, room: int, metrics: QFontMetrics | None = None, fixed: bool | None = None
+    ) -> str:
+        """A bytes cell's text as it fits in `room` pixels: whole, or cut between two bytes
+        with "…" (the tooltip has them all); `fixed`: whether the font is fixed-pitch."""
+        metrics = metrics or self.fontMetrics()
+        mode = self._model.mode
+        if fixed is None:
+            fixed = QFontInfo(self.font()).fixedPitch()
+        if fixed:
+            return elide_bytes(text, mode, room // max(metrics.horizontalAdvance("0"), 1))
+        if metrics.horizontalAdvance(text) <= room:
+            return text
+        kept, used = [], metrics.horizontalAdvance(ELLIPSIS)
+        for unit in byte_units(text, mode):
+            used += metrics.horizontalAdvance(unit)
+            if used > room:
+                break
+            kept.append(unit)
+        return "".join(kept) + ELLIPSIS
+
     def _selected(self, first: int, last: int) -> set[int]:
         """Rows first..last that are selected."""
         chosen: set[int] = set()
@@ -403,13 +462,13 @@ class TrafficView(QTableView):
         baseline = top + (height - metrics.height()) // 2 + metrics.ascent()
         margin = self.style().pixelMetric(QStyle.PixelMetric.PM_FocusFrameHMargin, None, self) + 1
         colours = model.colours
+        fixed = QFontInfo(plain).fixedPitch()
         for column in range(len(COLUMNS)):
             if self.isColumnHidden(column):
                 continue
             x = self.columnViewportPosition(column)
-            clip = QRect(
-                x + margin, area.top(), self.columnWidth(column) - 2 * margin, area.height()
-            )
+            room = self.columnWidth(column) - 2 * margin
+            clip = QRect(x + margin, area.top(), room, area.height())
             clip &= area
             if clip.isEmpty():
                 continue
@@ -419,6 +478,8 @@ class TrafficView(QTableView):
             y = baseline
             for row, (cells, direction, _, slanted) in enumerate(views, first):
                 text = cells[column] if column != REPLY else model.reply(row)
+                if column == BYTES:
+                    text = self.fit_bytes(text, room, metrics, fixed)
                 if text:
                     if slanted is not shown_italic:
                         shown_italic = slanted

@@ -29,8 +29,8 @@ from drivers.errors import (
     PortError,
 )
 from drivers.events import ErrorReport, Event, TextLine, Undecodable
-from drivers.messages import Message
-from drivers.motion import Motion, MoveStart
+from drivers.messages import Message, message_of
+from drivers.motion import KIND_UNITS, Motion, MoveStart
 from drivers.parameters import Parameter
 from drivers.protocol_sniff import looks_like
 from drivers.protocols.base import Reply, Setting
@@ -619,7 +619,7 @@ class SerialWorker(QObject):
             raise
         except MotionError as exc:
             self._flush_traffic()  # the console shows the traffic before the failure
-            self.job_failed.emit(job, localized(exc))
+            self.job_failed.emit(job, failure_text(job, exc))
         else:
             self._flush_traffic()
             self.job_finished.emit(job, result)
@@ -631,7 +631,16 @@ class SerialWorker(QObject):
         if isinstance(job, jobs.MoveToJob):
             return motion.move_to(job.x, job.y, job.z)
         if isinstance(job, jobs.MoveByJob):
-            return motion.move_by(job.dx, job.dy, job.dz, job.kind)
+            what = None
+            if not job.jog:  # a relative Go to: not a "jog" in its messages
+                what = Message(
+                    "relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}",
+                    dx=job.dx,
+                    dy=job.dy,
+                    dz=job.dz,
+                    unit=KIND_UNITS.get(job.kind, job.kind),
+                )
+            return motion.move_by(job.dx, job.dy, job.dz, job.kind, what=what)
         if isinstance(job, jobs.HomeJob):
             return motion.home()
         if isinstance(job, jobs.SetHomeJob):
@@ -787,6 +796,16 @@ class SerialWorker(QObject):
 def _file_name(stream: TextIO) -> str:
     """The path of a log's file, as far as the stream knows it."""
     return str(getattr(stream, "name", "another file"))
+
+
+def failure_text(job: jobs.Job, error: BaseException) -> str:
+    """Why `job` failed, for the operator; where the error names the move itself ({what}), it
+    is named as the window names the job, so that the window says it once, not twice."""
+    said = message_of(error)
+    if said is None or "what" not in said.values:
+        return localized(error)
+    values = {**said.values, "what": job.describe()}
+    return localized(Message(said.template, **values))
 
 
 def _described(dropped: list[jobs.Job]) -> str:
