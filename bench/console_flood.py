@@ -431,7 +431,7 @@ def flood(
     """The window's longest event-loop gap while the device floods 5,000 lines/s."""
     from PySide6.QtCore import QElapsedTimer, Qt, QTimer
     from PySide6.QtTest import QTest
-    from PySide6.QtWidgets import QApplication
+    from PySide6.QtWidgets import QApplication, QDockWidget
 
     from app.window.gc_main_thread import collect_for
     from app.window.main_window import MainWindow
@@ -444,6 +444,8 @@ def flood(
     collect_for(app, window.views.ready)  # garbage collected as the application does
     window.resize(1600, 1000)
     window.show()
+    # Operate hides the console; these figures are for the console on screen beside the views.
+    window.findChild(QDockWidget, "rawConsoleDock").show()
     window.activateWindow()
     QTest.qWaitForWindowActive(window, 5000)  # the jog keys act only in the active window
     window.jog_panel.set_step(1)

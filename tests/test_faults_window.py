@@ -246,3 +246,19 @@ def test_a_vanished_device_is_an_error_and_reconnects_when_back_slot_only(
         finally:
             window.disconnect_device()
             back.stop()
+
+
+def test_another_device_after_a_lost_link_is_a_fresh_connection(qtbot, window: MainWindow) -> None:
+    """COXIRIS vanishes; the operator then connects a Visiomex board: its position is unknown
+    because nothing is counted yet (fresh), not because "the link failed"."""
+    states = States(window)
+    with device(qtbot, window, "coxiris") as sim:
+        jog(qtbot, window, 2.0)
+        sim.fault("vanish")
+        first_error(qtbot, states)
+        assert window.machine.link_failed
+    with qtbot.waitSignal(window.settled, timeout=WAIT_MS):
+        window.connect_device("sim://visiomex?instant=1", "visiomex", 9600, "seed")
+    assert window.readout.status() == "uncounted"
+    assert "Home or Set Home to start counting" in window.status_line.message()
+    window.disconnect_device()

@@ -59,6 +59,8 @@ def test_piframe_ticks_per_mm_is_used_and_remembered(qtbot, window: MainWindow) 
 
 def test_firmata_one_axis_configure_and_jog(qtbot, window: MainWindow) -> None:
     _connect(qtbot, window, "sim://firmata?reset_delay=0.2&instant=1", "firmata", 57600)
+    assert not _dock(window, "firmataPanelDock").isVisible()  # a setup panel: in Set up
+    window.layouts.switch("setup")
     assert _dock(window, "firmataPanelDock").isVisible()
     assert not _dock(window, "arcEntryDock").isVisible()
     assert window.findChild(QPushButton, "jogXPlus").isEnabled()
@@ -96,8 +98,10 @@ def test_firmata_position_is_unknown_until_set_home_then_counted_for_motionctl(
     qtbot.waitUntil(window.coordinates.set_home_button.isEnabled, timeout=5000)
     qtbot.mouseClick(window.coordinates.set_home_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: window.readout.status() != "uncounted", timeout=5000)
-    qtbot.waitUntil(window.findChild(QPushButton, "jogXPlus").isEnabled, timeout=5000)
+    # A press while Set Home still runs is not queued (issue 19): wait until it has ended.
+    qtbot.waitUntil(lambda: window.status_line.state() == status.IDLE, timeout=5000)
     qtbot.mouseClick(window.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.readout.position() == (1.0, 0.0, 0.0), timeout=8000)
     qtbot.waitUntil(
         lambda: read_counted_position(window.settings, "firmata", url) == (1.0, 0.0, 0.0),
         timeout=8000,

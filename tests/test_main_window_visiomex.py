@@ -20,10 +20,12 @@ URL = "sim://visiomex?instant=1"
 def _connect(qtbot, win: MainWindow, url: str = URL) -> None:
     with qtbot.waitSignal(win.settled, timeout=8000):
         win.connect_device(url, "visiomex", 9600, "seed")
+    win.layouts.switch("setup")  # the parameter editor is in Set up (not shown in Operate)
 
 
 def test_the_window_adapts_to_two_axes_and_commanded_positions(qtbot, window: MainWindow) -> None:
     _connect(qtbot, window)
+    window.layouts.switch("setup")  # the parameters are in Set up
     dock = window.findChild(QDockWidget, "parameterEditor")
     assert dock is not None and dock.isVisible()
     assert window.readout.labels["z"].isHidden() and not window.readout.labels["y"].isHidden()

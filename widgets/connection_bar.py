@@ -5,8 +5,8 @@ from __future__ import annotations
 
 import logging
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QEvent, QObject, Qt, Signal
-from PySide6.QtGui import QIntValidator, QKeyEvent
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QEvent, QObject, QSize, Qt, Signal
+from PySide6.QtGui import QIntValidator, QKeyEvent, QResizeEvent
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -35,7 +35,9 @@ _STATE_STYLE = {
     ERROR: (QT_TRANSLATE_NOOP("ConnectionBar", "Error"), "#c62828"),
 }
 DESCRIPTION_WIDTH = 120  # px, fixed: a longer description is elided (whole in the tooltip)
+DESCRIPTION_MIN_WIDTH = 40  # px: narrower when the window is (a 1024 px screen, in Spanish)
 STATE_MAX_WIDTH = 360  # px: a longer state text is elided (whole in the tooltip)
+STATE_MIN_WIDTH = 110  # px: the state's word, at least
 
 
 def sim_protocol(port: str) -> str:
@@ -56,6 +58,47 @@ def _restore_edit(edit: QLineEdit, text: str, cursor: int, start: int, length: i
         edit.setSelection(start, length)
     else:
         edit.setCursorPosition(cursor)
+
+
+class ElidedLabel(QLabel):
+    """A text elided to the label's width (whole in the tooltip): between `minimum` and
+    `maximum` px wide, as wide as its text asks when there is room (`steady`: `maximum` whatever
+    the text, so that the widgets after it stay put); narrower only when the window is."""
+
+    def __init__(self, minimum: int, maximum: int, steady: bool = False) -> None:
+        super().__init__()
+        self.full = ""
+        self.steady = steady
+        self.setMinimumWidth(minimum)
+        self.setMaximumWidth(maximum)
+
+    def sizeHint(self) -> QSize:
+        """The whole text's width (at most the maximum; `steady`: the maximum)."""
+        text = self.fontMetrics().horizontalAdvance(self.full) + 8  # (room for rounding)
+        width = self.maximumWidth() if self.steady else min(text, self.maximumWidth())
+        return QSize(max(width, self.minimumWidth()), super().sizeHint().height())
+
+    def minimumSizeHint(self) -> QSize:
+        """The minimum width, whatever the text."""
+        return QSize(self.minimumWidth(), super().minimumSizeHint().height())
+
+    def set_full_text(self, text: str) -> None:
+        """Show `text`, elided to the width the label gets for it (the maximum before a
+        layout)."""
+        self.full = text
+        self.setText(self._elided(self.maximumWidth()))
+        parent = self.parentWidget()
+        if self.isVisible() and parent is not None and (layout := parent.layout()) is not None:
+            layout.activate()  # (its new width now: the resize elides it again)
+        self.setText(self._elided(self.width() if self.isVisible() else self.maximumWidth()))
+
+    def _elided(self, width: int) -> str:
+        return self.fontMetrics().elidedText(self.full, Qt.TextElideMode.ElideRight, width - 4)
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        """Elided again to the new width."""
+        super().resizeEvent(event)
+        self.setText(self._elided(self.width()))
 
 
 class ConnectionBar(QWidget):
@@ -94,10 +137,9 @@ class ConnectionBar(QWidget):
         # first to see Return takes it (the line edit's returnPressed would come twice or never).
         self.port_combo.installEventFilter(self)
         self.port_combo.lineEdit().installEventFilter(self)
-        self.description_label = QLabel()
+        self.description_label = ElidedLabel(DESCRIPTION_MIN_WIDTH, DESCRIPTION_WIDTH, steady=True)
         self.description_label.setObjectName("portDescription")
         self.description_label.setStyleSheet("color: #616161;")
-        self.description_label.setFixedWidth(DESCRIPTION_WIDTH)  # the widgets after it stay put
         self.refresh_button = QPushButton("⟳")
         self.refresh_button.setObjectName("refreshPortsButton")
         self.refresh_button.setToolTip(self.tr("Look for serial ports again"))
@@ -148,10 +190,8 @@ class ConnectionBar(QWidget):
         )
         self.connect_button.setMinimumWidth(max(96, widest + 24))
         self.connect_button.clicked.connect(self._connect_clicked)
-        self.state_label = QLabel()
+        self.state_label = ElidedLabel(STATE_MIN_WIDTH, STATE_MAX_WIDTH)
         self.state_label.setObjectName("connectionState")
-        self.state_label.setMinimumWidth(110)
-        self.state_label.setMaximumWidth(STATE_MAX_WIDTH)
 
         self.control_lines = ControlLinesBar(self)
         self.control_lines_label = QLabel(self.tr("Lines:"))
@@ -241,9 +281,7 @@ class ConnectionBar(QWidget):
             self.protocol_combo.setCurrentIndex(index)  # protocol_changed: the window adapts
         description = self.port_description(text)
         label = self.description_label
-        width = DESCRIPTION_WIDTH - 4  # fixed: also right before the first layout
-        elided = label.fontMetrics().elidedText(description, Qt.TextElideMode.ElideRight, width)
-        label.setText(elided)
+        label.set_full_text(description)
         label.setToolTip(description or self.tr("No description for this port"))
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
@@ -356,11 +394,10 @@ class ConnectionBar(QWidget):
         name, colour = _STATE_STYLE[state]
         text = self.tr(name)
         full = fill(self.tr("● %1: %2"), text, detail) if detail else f"● {text}"
-        metrics = self.state_label.fontMetrics()
-        width = STATE_MAX_WIDTH - 4  # the label's text is elided, never clipped
-        self.state_label.setText(metrics.elidedText(full, Qt.TextElideMode.ElideRight, width))
-        self.state_label.setToolTip(detail or text)
         self.state_label.setStyleSheet(f"color: {colour}; font-weight: bold;")
+        self.state_label.ensurePolished()  # (elided in the bold font)
+        self.state_label.set_full_text(full)  # elided, never clipped; the window not widened
+        self.state_label.setToolTip(detail or text)
         idle = state in (DISCONNECTED, ERROR)
         for widget in (
             self.port_combo,

@@ -12,12 +12,15 @@ from __future__ import annotations
 from itertools import pairwise
 from pathlib import Path
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, Qt, Signal
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QEvent, QObject, Qt, Signal
 from PySide6.QtWidgets import (
     QFileDialog,
+    QFrame,
     QHBoxLayout,
     QLabel,
     QProgressBar,
+    QScrollArea,
+    QSplitter,
     QVBoxLayout,
     QWidget,
 )
@@ -47,6 +50,7 @@ PROFILE_FILTER = QT_TRANSLATE_NOOP(
     "ParameterEditor", "Parameter profiles (*.toml);;All files (*)"
 )  # translated at use
 STATUSES = tuple(STATUS_COLOURS)  # not written, pending, confirmed, error, timed out, cancelled
+DERIVED_SHARE = 0.3  # of the table's and derived values' height, at most, until the user drags
 
 
 def _seconds(seconds: float) -> str:
@@ -91,6 +95,26 @@ class ParameterEditor(QWidget):
         self.message_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
         self.derived_box = DerivedValues()
         self.derived_box.hide()
+        # The derived values under the table, their own height at most a share of the room
+        # (they scroll); the operator may drag the split, or fold them away.
+        self.derived_area = QScrollArea()
+        self.derived_area.setObjectName("derivedValuesArea")
+        self.derived_area.setWidget(self.derived_box)
+        self.derived_area.setWidgetResizable(True)
+        self.derived_area.setFrameShape(QFrame.Shape.NoFrame)
+        self.derived_area.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+        self.derived_area.hide()
+        self.splitter = QSplitter(Qt.Orientation.Vertical)
+        self.splitter.setObjectName("parameterSplitter")
+        self.splitter.addWidget(self.table)
+        self.splitter.addWidget(self.derived_area)
+        self.splitter.setStretchFactor(0, 1)  # a taller window gives the table the room
+        self.splitter.setStretchFactor(1, 0)
+        self.splitter.setCollapsible(0, False)
+        self.splitter.setCollapsible(1, True)
+        self._split_by_user = False
+        self.splitter.splitterMoved.connect(self._split_moved)
+        self.splitter.installEventFilter(self)
         self.progress = QProgressBar()
         self.progress.setObjectName("writeProgress")
         self.progress.setToolTip(
@@ -149,9 +173,8 @@ class ParameterEditor(QWidget):
         self.changed_label.setWordWrap(True)
         layout = QVBoxLayout(self)
         layout.addLayout(top)
-        layout.addWidget(self.table, 1)
+        layout.addWidget(self.splitter, 1)
         layout.addWidget(self.message_label)
-        layout.addWidget(self.derived_box)
         layout.addWidget(self.progress)
         layout.addLayout(buttons)
         for first, second in pairwise(order):
@@ -228,7 +251,9 @@ class ParameterEditor(QWidget):
         """
         self._derivation = fn
         self.derived_box.setVisible(fn is not None)
+        self.derived_area.setVisible(fn is not None)
         self._derive()
+        self._fit_split()
 
     def derived_values(self) -> list[tuple[str, str]]:
         """The (label, text) pairs shown under the table."""
@@ -241,6 +266,26 @@ class ParameterEditor(QWidget):
     def _derive(self) -> None:
         if self._derivation is not None:
             self.derived_box.show_derivation(self._derivation, self.values())
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        """The split follows the editor's height until the operator drags it."""
+        if watched is self.splitter and event.type() == QEvent.Type.Resize:
+            self._fit_split()
+        return False
+
+    def _split_moved(self) -> None:
+        self._split_by_user = True
+
+    def _fit_split(self) -> None:
+        """The derived values their own height, at most DERIVED_SHARE; the table the rest."""
+        if self._split_by_user or self.derived_area.isHidden():
+            return
+        total = self.splitter.height() - self.splitter.handleWidth()
+        if total <= 0:
+            return
+        wanted = self.derived_box.sizeHint().height() + 2 * self.derived_area.frameWidth()
+        derived = min(wanted, int(total * DERIVED_SHARE))
+        self.splitter.setSizes([total - derived, derived])
 
     # -- writing ------------------------------------------------------------------------
 

@@ -76,6 +76,7 @@ class PositionReadout(QWidget):
 
     zero_requested = Signal(str)  # "x", "y", "z" or "xyz"
     clear_zero_requested = Signal()
+    shown_changed = Signal()  # the position, units or status shown changed
 
     def __init__(self, parent: QWidget | None = None, decimals: int = 2) -> None:
         super().__init__(parent)
@@ -378,6 +379,7 @@ class PositionReadout(QWidget):
             if font.italic() != italic:
                 font.setItalic(italic)
                 label.setFont(font)
+        self.shown_changed.emit()
 
     def value_style(self, axis: str) -> tuple[str, bool]:
         """The colour (#rrggbb) and slant of an axis's machine value, as shown."""
@@ -424,5 +426,6 @@ class PositionReadout(QWidget):
             else fill(self.tr("work zero at (%1) %2 (machine)"), shown, self._units)
         )
         self.clear_zero_button.setEnabled(not at_home)
+        self.shown_changed.emit()
         if self._outside:
             self._render_outside()  # in the units and decimals shown

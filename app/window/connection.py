@@ -38,6 +38,7 @@ if TYPE_CHECKING:
     from drivers.capabilities import Capabilities
     from drivers.protocols.base import Protocol
     from drivers.traffic import Traffic
+    from widgets._axes import Box
 
 translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
 
@@ -362,11 +363,19 @@ class Connection(QObject):
         )
         if dialog.exec() != TravelLimitsDialog.DialogCode.Accepted:
             return
-        box, clamp = dialog.result_limits()
+        self.set_travel_limits(*dialog.result_limits())
+
+    def set_travel_limits(self, box: Box | None, clamp: bool) -> None:
+        """Use and keep this travel box for the device connected (None: none), as the Travel
+        limits dialog's OK and the Set up layout's Travel limits dock do."""
+        if self.last is None:
+            return
+        port, protocol, _ = self.last
         from drivers.travel import TravelLimits
 
         limits = TravelLimits(box, clamp) if box is not None else None
         write_travel(self.settings, protocol, port, limits)
         self.machine.apply_travel(limits)
+        self.window.devices.travel_changed()  # the dock shows what is in use
         described = limits.describe() if limits else translate("MainWindow", "none")
         self._tell(fill(translate("MainWindow", "travel limits: %1"), described))

@@ -1,9 +1,11 @@
-"""Docks of one device kind: Firmata stepper setup, pi-frame ticks per mm, arcs and dwell."""
+"""Docks of one device kind: Firmata stepper setup, pi-frame ticks per mm, arcs and dwell; and
+the connected device's travel limits."""
 
 from __future__ import annotations
 
 import dataclasses
 import logging
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -27,6 +29,7 @@ from widgets.firmata_panel import FirmataPanel
 from widgets.panel_scroll_area import PanelScrollArea
 from widgets.piframe_panel import PiFramePanel
 from widgets.program_panel import ProgramPanel
+from widgets.travel_limits_form import TravelLimitsPanel
 
 if TYPE_CHECKING:
     from app.window.services import WindowServices
@@ -38,19 +41,24 @@ class DeviceDocks(QObject):
     """Shows the panels the connected device calls for, and turns their requests into jobs."""
 
     def __init__(
-        self, window: QMainWindow, services: WindowServices, moves_dock: QDockWidget
+        self,
+        window: QMainWindow,
+        services: WindowServices,
+        place: Callable[[dict[str, bool]], None],
     ) -> None:
-        """`moves_dock`: the dock the arc and dwell docks go beside (Go to)."""
+        """`place(wanted)`: shows the docks the device calls for (by object name, True) where
+        the window's layout has them, and hides the others (app/window/layouts.py)."""
         super().__init__(window)
         self.window = window  # the docks' parent
         self.services = services
-        self.moves_dock = moves_dock
+        self.place = place
         self.info: DeviceInfo | None = None
         self.firmata = FirmataPanel(window)
         self.piframe = PiFramePanel(window)
         self.arc = ArcEntry(window)
         self.dwell = DwellEntry(window)
         self.program = ProgramPanel(window)
+        self.travel = TravelLimitsPanel(window)
         self.points: list[ProgramPoint] = []
         self.program_name = ""
         self.firmata_dock = self._dock(self.firmata)
@@ -58,8 +66,9 @@ class DeviceDocks(QObject):
         self.arc_dock = self._dock(self.arc)
         self.dwell_dock = self._dock(self.dwell)
         self.program_dock = self._dock(self.program)
+        self.travel_dock = self._dock(self.travel)
         made = (self.firmata_dock, self.piframe_dock, self.arc_dock, self.dwell_dock)
-        by_name = {dock.objectName(): dock for dock in (*made, self.program_dock)}
+        by_name = {dock.objectName(): dock for dock in (*made, self.program_dock, self.travel_dock)}
         self.docks = tuple(by_name[name] for name in DEVICE_DOCKS)  # in tab order
         self._wire()
 
@@ -112,6 +121,7 @@ class DeviceDocks(QObject):
         self.program.pause_requested.connect(lambda: self._pause(True))
         self.program.resume_requested.connect(lambda: self._pause(False))
         self.program.stop_requested.connect(self.services.worker_thread.stream_stop)
+        self.travel.apply_requested.connect(self.services.set_travel_limits)
 
     # -- connection --------------------------------------------------------------------------
     def device_ready(self, info: DeviceInfo) -> None:
@@ -119,8 +129,6 @@ class DeviceDocks(QObject):
         self.info = info
         names = {s.name for s in info.settings}
         values = info.values
-        self.firmata_dock.setVisible("steps_per_rev" in names)
-        self.piframe_dock.setVisible("ticks_per_mm" in names)
         if "steps_per_rev" in names:
             pins = [int(values[f"pin{i}"]) for i in range(1, 5) if values.get(f"pin{i}", -1) >= 0]
             self.firmata.set_settings(
@@ -130,18 +138,31 @@ class DeviceDocks(QObject):
         if "ticks_per_mm" in names:
             self.piframe.set_ticks_per_mm(values["ticks_per_mm"])
         self.adapt(info.capabilities)
-        for dock in (self.arc_dock, self.dwell_dock):  # one place for moves: Go to, Arc, Dwell
-            if dock.isVisible():
-                self.window.tabifyDockWidget(self.moves_dock, dock)
-        self.moves_dock.raise_()
+        travel = self.services.travel
+        self.travel.set_device(
+            fill(self.tr("%1 on %2"), info.protocol, info.port),
+            travel.box if travel is not None else None,
+            travel.clamp if travel is not None else False,
+        )
+        self.place(
+            {
+                "parameterEditor": bool(info.parameters),
+                self.firmata_dock.objectName(): "steps_per_rev" in names,
+                self.piframe_dock.objectName(): "ticks_per_mm" in names,
+            }
+        )
 
     def adapt(self, caps: Capabilities) -> None:
         """Follow the capabilities (after a connection, or new settings)."""
         if self.info is not None:
             self.info = dataclasses.replace(self.info, capabilities=caps)
-        self.arc_dock.setVisible(caps.arcs)
-        self.dwell_dock.setVisible(caps.dwell)
-        self.program_dock.setVisible(caps.streaming)
+        self.place(
+            {
+                self.arc_dock.objectName(): caps.arcs,
+                self.dwell_dock.objectName(): caps.dwell,
+                self.program_dock.objectName(): caps.streaming,
+            }
+        )
         self.arc.set_resolution(caps.resolution)
         self.arc.set_box(
             self.services.travel.box if self.services.travel is not None else caps.travel
@@ -157,6 +178,17 @@ class DeviceDocks(QObject):
         """No device: the arc preview goes away."""
         self.info = None
         self._preview([])
+        self.travel.set_device("", None, False)
+
+    def travel_changed(self) -> None:
+        """New travel limits are in use (from the dock or the menu's dialog): show them."""
+        travel = self.services.travel
+        self.travel.show_limits(
+            travel.box if travel is not None else None,
+            travel.clamp if travel is not None else False,
+        )
+        if self.info is not None:
+            self.adapt(self.info.capabilities)  # the arc entry's box
 
     # -- requests ----------------------------------------------------------------------------
     def _set(self, values: dict[str, float]) -> None:

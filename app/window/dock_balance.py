@@ -26,10 +26,14 @@ def stacked(window: QMainWindow, area: Qt.DockWidgetArea) -> list[QDockWidget]:
     return sorted(shown, key=lambda dock: dock.geometry().top())
 
 
-def balanced_heights(heights: list[int], needs: list[int]) -> list[int] | None:
+def balanced_heights(heights: list[int], needs: list[int], grow: bool = False) -> list[int] | None:
     """New heights giving each dock what it needs and the spare to the last one; None when no
-    dock is short of room, or when the column cannot hold them all (then they scroll)."""
+    dock is short of room, or when the column cannot hold them all (then they scroll). `grow`:
+    the docks' area may grow or shrink (the central widget takes the rest): each gets exactly
+    what it needs."""
     total = sum(heights)
+    if grow:  # each exactly what it needs
+        return None if heights == needs else list(needs)
     if all(have >= need for have, need in zip(heights, needs, strict=True)):
         return None
     if sum(needs) > total:
@@ -42,12 +46,16 @@ def balanced_heights(heights: list[int], needs: list[int]) -> list[int] | None:
 class DockBalance(QObject):
     """Watches the window's size: once started and after each resize, a panel in `area` that would
     scroll while another panel has spare room is given its full height (the spare goes to the
-    bottom panel). A separator the operator drags stays where it is until the next resize."""
+    bottom panel). A separator the operator drags stays where it is until the next resize.
+    `grow`: the area may take room from the central widget for its panels (the panels under the
+    views)."""
 
-    def __init__(self, window: QMainWindow, area: Qt.DockWidgetArea) -> None:
+    def __init__(self, window: QMainWindow, area: Qt.DockWidgetArea, grow: bool = False) -> None:
         super().__init__(window)
         self.window = window
         self.area = area
+        self.grow = grow
+        self.started = False
         self._timer = QTimer(self)
         self._timer.setSingleShot(True)
         self._timer.setInterval(0)
@@ -57,7 +65,13 @@ class DockBalance(QObject):
         """Balance now (once the layout has settled) and after every resize of the window; called
         when the docks built after the first paint are in (their sizes count)."""
         self.window.installEventFilter(self)
+        self.started = True
         self._timer.start()
+
+    def request(self) -> None:
+        """Balance once the layout has settled (after a new layout; nothing before `start`)."""
+        if self.started:
+            self._timer.start()
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """Balance once the layout has settled after a resize."""
@@ -67,12 +81,18 @@ class DockBalance(QObject):
 
     def balance(self) -> None:
         """Give cramped panels their height now, if the column has room for all of them."""
+        central = self.window.centralWidget()
+        if self.grow and (central is None or central.isHidden()):
+            return  # nothing to take room from
         docks = stacked(self.window, self.area)
-        if len(docks) < 2:
+        if len(docks) < (1 if self.grow else 2):
             return
+        for dock in docks:  # (a scroll area does not pass on its panel's new size hint)
+            if (content := dock.widget()) is not None:
+                content.updateGeometry()
         heights = [dock.height() for dock in docks]
         needs = [dock.sizeHint().height() for dock in docks]
-        new = balanced_heights(heights, needs)
+        new = balanced_heights(heights, needs, self.grow)
         if new is None:
             return
         # resizeDocks lays out every area again: the others keep their heights only if named

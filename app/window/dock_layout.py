@@ -18,6 +18,7 @@ DEVICE_DOCKS: dict[str, tuple[str, Qt.DockWidgetArea]] = {
     "programPanelDock": (QT_TRANSLATE_NOOP("DockLayout", "Program"), BOTTOM),
     "arcEntryDock": (QT_TRANSLATE_NOOP("DockLayout", "Arc"), LEFT),
     "dwellEntryDock": (QT_TRANSLATE_NOOP("DockLayout", "Dwell"), LEFT),
+    "travelLimitsDock": (QT_TRANSLATE_NOOP("DockLayout", "Travel limits"), BOTTOM),
 }
 
 

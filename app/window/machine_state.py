@@ -125,10 +125,11 @@ class MachineState(QObject):
 
         self.info = info
         device = (info.port, info.protocol, info.identity)
-        if self.trail_device is not None and device != self.trail_device:
+        another = self.trail_device is not None and device != self.trail_device
+        if another:
             self.window.buffer.clear(keep_last=True)  # another device: a trail of its own
         self.trail_device = device
-        if self.link_failed:  # after a lost link or a restart: what is the position now?
+        if self.link_failed and not another:  # the same device after a lost link or a restart
             self.position_lost = not info.capabilities.position_feedback
             self.lost_status = "lost"
             self._tell(
@@ -153,6 +154,8 @@ class MachineState(QObject):
                 ),
                 status.WARNING,
             )
+        else:  # a fresh connection to a device that reports where it is
+            self.position_lost = False
         self.link_failed = False
         self.window.readout.set_status(self.settled_status())
 

@@ -18,6 +18,8 @@ from app.window.dock_balance import DockBalance
 from app.window.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
 from app.window.job_desk import JobDesk
 from app.window.keyboard_jog import KeyboardJog
+from app.window.layout_report import watch as watch_layout
+from app.window.layouts import DEVICE, OPERATE, Layouts
 from app.window.log_viewers import LogViewers
 from app.window.machine_state import MachineState
 from app.window.menus import build_menus
@@ -43,6 +45,7 @@ if TYPE_CHECKING:
     from app.window.worker import SerialWorker
     from app.window.worker_thread import WorkerThread
     from drivers.travel import TravelLimits
+    from widgets._axes import Box
     from widgets.position_buffer import PositionBuffer
     from widgets.traffic_timeline import TrafficTimeline
 
@@ -111,6 +114,7 @@ class MainWindow(QMainWindow):
         self.link.start_session_log(self.tools.prefs, self._log_note)
         if worker_thread is not None:
             self.link.get()
+        watch_layout(self)  # MOTIONPANEL_LAYOUT_REPORT: what Qt shows of the layout
 
     def _build_controllers(self) -> None:
         """The device's controllers (the widgets they drive are built)."""
@@ -171,6 +175,10 @@ class MainWindow(QMainWindow):
         self.view2d.set_preview(points)
         self.view3d.set_preview(points)  # type: ignore[attr-defined]
 
+    def set_travel_limits(self, box: Box | None, clamp: bool) -> None:
+        """Use and keep this travel box for the device connected (None: none)."""
+        self.connection.set_travel_limits(box, clamp)
+
     def say(self, text: str) -> None:
         """Tell the operator something (status line and console log)."""
         self.tell(text)
@@ -215,7 +223,10 @@ class MainWindow(QMainWindow):
         splitter.addWidget(self.view3d)
         splitter.addWidget(self.view2d)
         splitter.setSizes([600, 600])
+        splitter.setObjectName("viewSplitter")
+        splitter.setChildrenCollapsible(False)
         self.setCentralWidget(splitter)
+        self.view_splitter = splitter
 
         self.readout = PositionReadout(self)
         self.jog_panel = JogPanel(self)
@@ -239,39 +250,41 @@ class MainWindow(QMainWindow):
         parameter_dock = self._empty_dock(
             self.tr("Parameters"), "parameterEditor", bottom, hidden=True
         )
-        self.tabifyDockWidget(docks[-1], parameter_dock)
         docks.append(parameter_dock)
-        device_docks = [
+        docks.extend(
             self._empty_dock(QCoreApplication.translate("DockLayout", title), name, area, True)
             for name, (title, area) in DEVICE_DOCKS.items()
-        ]
-        for dock in device_docks[:3]:
-            self.tabifyDockWidget(docks[-2], dock)
-        docks.extend(device_docks)
+        )
         self.timeline_dock = self._empty_dock(
             self.tr("Traffic timeline"), "trafficTimelineDock", bottom
         )
-        self.tabifyDockWidget(docks[4], self.timeline_dock)
         docks.append(self.timeline_dock)
-        docks[4].raise_()  # the console is the tab shown first
         self.console_dock = docks[4]
         for part in (self.buffer, self.console, self.parameters, self.devices):
             self.views.add(part.build)
         self.tools = WindowTools(self)  # macros, work coordinates, control lines, settings
-        self.tabifyDockWidget(docks[3], self.tools.macro_dock)  # Macros beside Speed
-        docks[3].raise_()
         docks.append(self.tools.macro_dock)
+        # Three layouts, one a job (Operate, Set up, Traffic): they place the docks.
+        self.layouts = Layouts(self, self.settings, splitter, self.tell)
+        for dock in docks:
+            if dock.objectName() in DEVICE:
+                dock.toggleViewAction().triggered.connect(
+                    lambda shown, dock=dock: self.layouts.note_toggled(dock, shown)
+                )
         self._build_controllers()
         self._build_menus(docks)
-        # The left panels run the full height; the console sits under the views only.
-        self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
         # Once the docks built after the first paint are in: no left panel scrolls while the
-        # column has room for all of them.
+        # column has room for all of them, and the panels under the views get their height.
         self.dock_balance = DockBalance(self, LEFT)
-        self.views.ready.connect(self.dock_balance.start)
+        self.bottom_balance = DockBalance(self, BOTTOM, grow=True)
+        for balance in (self.dock_balance, self.bottom_balance):
+            self.views.ready.connect(balance.start)
+            self.layouts.after_apply.append(balance.request)
+        self.views.ready.connect(self.layouts.fit_device)
 
         self.status_line = StatusLine(self)
         self.statusBar().addWidget(self.status_line, 1)
+        self.statusBar().addPermanentWidget(self.layouts.switcher)
         self.statusBar().setSizeGripEnabled(True)
         self.resize(1400, 900)
 
@@ -290,6 +303,7 @@ class MainWindow(QMainWindow):
             },
         )
         self.stop_action, self.travel_action = actions["stop"], actions["travel"]
+        self.layouts.add_to_menu(view_menu, view_menu.actions()[0])
         self.tools.add_menus(file_menu, actions["quit"], view_menu)
 
     def reset_views(self) -> None:
@@ -354,7 +368,7 @@ class MainWindow(QMainWindow):
         """The device-specific panels, in their docks."""
         from app.window.device_docks import DeviceDocks
 
-        self.devices = DeviceDocks(self, self, self.coordinates_dock)
+        self.devices = DeviceDocks(self, self, self.layouts.device_docks)
         return self.devices
 
     # -- settings ------------------------------------------------------------------------------
@@ -363,16 +377,15 @@ class MainWindow(QMainWindow):
         geometry = s.value("geometry")
         if geometry is not None:
             self.restoreGeometry(geometry)
-        state = s.value("windowState")
-        if state is not None:
-            self.restoreState(state)
+        self.layouts.current = OPERATE  # the panel opens in Operate, as last left
+        self.layouts.apply()
         self.jog_panel.set_step(read_number(s, "jog_step", 1.0))
         self.connection.restore()
 
     def closeEvent(self, event: QCloseEvent) -> None:
         """Save the layout and stop the worker thread before closing."""
         self.settings.setValue("geometry", self.saveGeometry())
-        self.settings.setValue("windowState", self.saveState())
+        self.layouts.save()
         self.settings.setValue("jog_step", self.jog_panel.step())
         self.settings.sync()
         self.keyboard_jog.detach()

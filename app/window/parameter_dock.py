@@ -146,8 +146,8 @@ class ParameterDock(QObject):
         self.editor.set_connected(True)
         self.dock.setWindowTitle(fill(self.tr("Parameters (%1)"), info.protocol))
         self.dock.setToolTip(fill(self.tr("%1 on %2"), info.identity, info.port))
-        self.dock.show()
-        self.dock.raise_()
+        # Shown (and put in front) by the window's layout if it has the editor (layouts.py):
+        # shown here in another layout's place, it would widen the window for good.
 
     def disconnected(self) -> None:
         """No device: writing is off (the table stays editable, for profiles)."""

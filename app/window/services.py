@@ -19,6 +19,7 @@ if TYPE_CHECKING:
     from app.window.worker import SerialWorker
     from app.window.worker_thread import WorkerThread
     from drivers.travel import TravelLimits
+    from widgets._axes import Box
     from widgets.connection_bar import ConnectionBar
     from widgets.coordinate_entry import CoordinateEntry
     from widgets.jog_panel import JogPanel
@@ -61,6 +62,9 @@ class WindowServices(Protocol):
 
     def show_preview(self, points: list[Point] | None) -> None:
         """Draw `points` as the path to come in the 2D and 3D views (None: none)."""
+
+    def set_travel_limits(self, box: Box | None, clamp: bool) -> None:
+        """Use and keep this travel box for the device connected (None: none)."""
 
 
 class WindowParts(WindowServices, Protocol):

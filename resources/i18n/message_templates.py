@@ -82,6 +82,7 @@ QT_TRANSLATE_NOOP('messages', 'not sent: the device is being reconnected')  # ap
 QT_TRANSLATE_NOOP('messages', 'stopped before it was sent')  # app/window/worker.py
 QT_TRANSLATE_NOOP('messages', 'the connection was lost')  # app/window/worker.py
 QT_TRANSLATE_NOOP('messages', 'abandoned: disconnected while it was under way')  # app/window/worker.py
+QT_TRANSLATE_NOOP('messages', 'relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}')  # app/window/worker.py
 QT_TRANSLATE_NOOP('messages', 'unknown job {job!r}')  # app/window/worker.py
 QT_TRANSLATE_NOOP('messages', '{hint} ({error})')  # app/window/worker.py
 QT_TRANSLATE_NOOP('messages', '{error}; not sent: {jobs}')  # app/window/worker.py

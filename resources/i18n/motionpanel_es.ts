@@ -248,6 +248,20 @@ igual al ángulo inicial: una circunferencia completa</translation>
     </message>
 </context>
 <context>
+    <name>CompactReadout</name>
+    <message>
+        <location filename="../../widgets/compact_readout.py" line="+34"/>
+        <source>Stage position from the device&apos;s home</source>
+        <translation>Posición de la platina desde el origen del dispositivo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (%2)</source>
+        <comment>the position&apos;s tip, then its status</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionBar</name>
     <message>
         <location filename="../../widgets/connection_bar.py" line="+32"/>
@@ -270,7 +284,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>Error</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+93"/>
         <source>/dev/ttyUSB0, COM3 or a URL</source>
         <translation>/dev/ttyUSB0, COM3 o una URL</translation>
     </message>
@@ -280,7 +294,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>Puerto serie, o cualquier URL de pyserial (p. ej. sim://coxiris, socket://host:port, loop://)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>Look for serial ports again</source>
         <translation>Volver a buscar puertos serie</translation>
     </message>
@@ -317,24 +331,24 @@ igual al ángulo inicial: una circunferencia completa</translation>
     <message>
         <location line="+6"/>
         <location line="+6"/>
-        <location line="+228"/>
+        <location line="+223"/>
         <source>Connect</source>
         <translation>Conectar</translation>
     </message>
     <message>
-        <location line="-228"/>
-        <location line="+227"/>
+        <location line="-223"/>
+        <location line="+222"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="-227"/>
-        <location line="+227"/>
+        <location line="-222"/>
+        <location line="+222"/>
         <source>Disconnect</source>
         <translation>Desconectar</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-214"/>
         <source>Lines:</source>
         <translation>Líneas:</translation>
     </message>
@@ -358,7 +372,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>Baudios:</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+70"/>
         <source>No description for this port</source>
         <translation>Sin descripción para este puerto</translation>
     </message>
@@ -368,7 +382,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>● %1: %2</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Open the port and talk to the device</source>
         <translation>Abrir el puerto y comunicarse con el dispositivo</translation>
     </message>
@@ -715,17 +729,22 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+88"/>
+        <location filename="../../app/window/device_docks.py" line="+97"/>
         <source>Not now: %1</source>
         <translation>Ahora no: %1</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+46"/>
+        <source>%1 on %2</source>
+        <translation>%1 en %2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>%1 a %2 mm en cada eje (cuentas de 16 bits)</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+58"/>
         <source>program %1: %2 points, nothing sent yet</source>
         <translation>programa %1: %2 puntos, aún no se ha enviado nada</translation>
     </message>
@@ -776,6 +795,11 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <location line="+1"/>
         <source>Dwell</source>
         <translation>Espera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Travel limits</source>
+        <translation>Límites de recorrido</translation>
     </message>
 </context>
 <context>
@@ -934,6 +958,11 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>relative move by (%1, %2, %3) %4</source>
+        <translation>movimiento relativo de (%1, %2, %3) %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>go home</source>
         <translation>ir al origen</translation>
     </message>
@@ -1006,7 +1035,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Teclas: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+44"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
         <translation>Mover la platina un paso; mantener pulsado un botón o una tecla para seguir avanzando.
@@ -1023,7 +1052,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Distancia de un desplazamiento</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <location line="+13"/>
         <source>Jog by %1 per press</source>
         <translation>Desplazar %1 por pulsación</translation>
@@ -1199,11 +1233,21 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     </message>
     <message>
         <location line="+4"/>
+        <source>Close</source>
+        <translation>Cerrar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Close this log&apos;s window (Ctrl+W, Esc)</source>
+        <translation>Cerrar la ventana de este registro (Ctrl+W, Esc)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Protocol:</source>
         <translation>Protocolo:</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>reading %1…</source>
         <translation>leyendo %1…</translation>
     </message>
@@ -1428,12 +1472,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Detener la platina ahora: interrumpe el movimiento en curso y descarta lo que está en cola (Esc)</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+49"/>
+        <location filename="../../app/window/connection.py" line="+50"/>
         <source>simulated %1 device</source>
         <translation>dispositivo %1 simulado</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+91"/>
+        <location filename="../../app/window/main_window.py" line="+94"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1453,12 +1497,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>sin registro de sesión a partir de ahora</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+112"/>
+        <location filename="../../app/window/main_window.py" line="+117"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>Position</source>
         <translation>Posición</translation>
     </message>
@@ -1488,7 +1532,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Parámetros</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
         <source>Traffic timeline</source>
         <translation>Línea de tiempo del tráfico</translation>
     </message>
@@ -1624,7 +1668,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>conectado a %1 en %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+134"/>
+        <location filename="../../app/window/machine_state.py" line="+135"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la posición es desconocida: este dispositivo no puede informar de ella; buscar el origen o fijar el origen</translation>
     </message>
@@ -1684,7 +1728,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>%1 en %2</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+21"/>
         <source>none</source>
         <translation>ninguno</translation>
     </message>
@@ -1763,23 +1807,23 @@ Send them anyway?</source>
         <translation>nuevo origen: la trayectoria se desplaza (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-98"/>
         <source>the device reported an error: %1</source>
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="-99"/>
+        <location filename="../../app/window/connection.py" line="-107"/>
         <location filename="../../app/window/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>dispositivo: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+22"/>
+        <location filename="../../app/window/job_desk.py" line="+24"/>
         <source>%1 failed: %2</source>
         <translation>%1 falló: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+227"/>
+        <location filename="../../app/window/machine_state.py" line="+231"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origen confirmado: la posición se cuenta desde aquí</translation>
     </message>
@@ -1787,6 +1831,56 @@ Send them anyway?</source>
         <location line="+5"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>la velocidad %1 mm/s se relee como %2 mm/s (el dispositivo redondea)</translation>
+    </message>
+    <message>
+        <location filename="../../app/window/layouts.py" line="+122"/>
+        <source>&amp;Operate</source>
+        <translation>&amp;Operar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Set up</source>
+        <translation>&amp;Configurar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Traffic</source>
+        <translation>Trá&amp;fico</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Jog, go to and watch the stage: the views large</source>
+        <translation>Desplazar, ir a y observar la platina: las vistas en grande</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The device&apos;s parameters and setup panels, and macros</source>
+        <translation>Los parámetros y paneles de configuración del dispositivo, y las macros</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The traffic console and its timeline, full width</source>
+        <translation>La consola de tráfico y su línea de tiempo, a todo lo ancho</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>Reset &amp;layout</source>
+        <translation>Restablecer &amp;diseño</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Put the docks of this layout back as they were at first</source>
+        <translation>Devolver los paneles de este diseño a su disposición inicial</translation>
+    </message>
+    <message>
+        <location line="+260"/>
+        <source>this device has parameters: %1 for Set up</source>
+        <translation>este dispositivo tiene parámetros: %1 para Configurar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>this device has a setup panel: %1 for Set up</source>
+        <translation>este dispositivo tiene un panel de configuración: %1 para Configurar</translation>
     </message>
 </context>
 <context>
@@ -1893,17 +1987,17 @@ Send them anyway?</source>
 <context>
     <name>ParameterEditor</name>
     <message>
-        <location filename="../../widgets/parameter_editor.py" line="+46"/>
+        <location filename="../../widgets/parameter_editor.py" line="+49"/>
         <source>Parameter profiles (*.toml);;All files (*)</source>
         <translation>Perfiles de parámetros (*.toml);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>The device cannot be read back: this compares with what this panel last wrote</source>
         <translation>El dispositivo no se puede releer: se compara con lo último que escribió este panel</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+31"/>
         <source>Packets written so far; each is confirmed before the next</source>
         <translation>Paquetes escritos hasta ahora; cada uno se confirma antes del siguiente</translation>
     </message>
@@ -1967,12 +2061,12 @@ Send them anyway?</source>
         <translation>Guardar los valores en un archivo</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+53"/>
         <source>Not loaded: %1</source>
         <translation>No cargado: %1</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+142"/>
         <source>nothing sent</source>
         <translation>no se ha enviado nada</translation>
     </message>
@@ -2001,12 +2095,12 @@ Send them anyway?</source>
         <translation type="vanished">no hay diferencias</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-229"/>
         <source>Write the input values marked • (they differ from what the device holds); firmware outputs are not written by it</source>
         <translation>Escribir los valores de entrada marcados con • (difieren de lo que tiene el dispositivo); no escribe las salidas del firmware</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+238"/>
         <source>no input differs</source>
         <translation>ninguna entrada difiere</translation>
     </message>
@@ -2403,7 +2497,7 @@ Send them anyway?</source>
         <translation type="vanished">Posición de la platina en mm: desde el origen del dispositivo y desde el cero de pieza</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>Machine</source>
         <translation>Máquina</translation>
     </message>
@@ -2471,7 +2565,7 @@ Send them anyway?</source>
         <translation>fuera de los límites de recorrido: %1</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+85"/>
         <source>millimetres</source>
         <translation>milímetros</translation>
     </message>
@@ -2531,19 +2625,24 @@ Send them anyway?</source>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+86"/>
+        <location filename="../../widgets/position_view_2d.py" line="+87"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>Platina vista desde arriba: trayectoria, posición actual (punto; hueco si es estimada), destino (+), límites de recorrido (discontinuos)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>XY (from above)</source>
         <translation>XY (desde arriba)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>X</source>
+        <translation>X</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2551,19 +2650,29 @@ Send them anyway?</source>
         <translation>Y (mm)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+0"/>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y y Z en función del tiempo; líneas discontinuas: destino</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+20"/>
         <source>Position against time</source>
         <translation>Posición en función del tiempo</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>time (s, 0 = latest sample)</source>
         <translation>tiempo (s, 0 = última muestra)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2571,7 +2680,12 @@ Send them anyway?</source>
         <translation>posición (mm)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+0"/>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Clear trail</source>
         <translation>Borrar trayectoria</translation>
     </message>
@@ -2594,7 +2708,7 @@ Send them anyway?</source>
 <context>
     <name>PositionView3D</name>
     <message>
-        <location filename="../../widgets/_gl_scene.py" line="+43"/>
+        <location filename="../../widgets/_gl_scene.py" line="+45"/>
         <source>Top</source>
         <translation>Superior</translation>
     </message>
@@ -2654,7 +2768,7 @@ Send them anyway?</source>
         <translation>Mantener la cámara sobre la posición actual</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+76"/>
+        <location filename="../../widgets/position_view_3d.py" line="+77"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Requiere OpenGL 2.1 o posterior (p. ej. Mesa) en una pantalla; ver el README.</translation>
     </message>
@@ -2668,12 +2782,12 @@ The 2D view shows the same positions.</source>
 La vista 2D muestra las mismas posiciones.</translation>
     </message>
     <message>
-        <location line="+164"/>
+        <location line="+171"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
         <translation>Arrastrar para girar, rueda para hacer zoom, arrastrar con el botón central para mover la vista</translation>
     </message>
     <message>
-        <location line="+368"/>
+        <location line="+403"/>
         <source>grid %1 mm</source>
         <translation>cuadrícula %1 mm</translation>
     </message>
@@ -3054,7 +3168,7 @@ Ahora no: %2</translation>
         <translation>delta</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_export.py" line="+16"/>
+        <location filename="../../app/window/traffic_export.py" line="+18"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
@@ -3072,6 +3186,11 @@ Ahora no: %2</translation>
         <location line="+4"/>
         <source>Export traffic</source>
         <translation>Exportar tráfico</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>exported %1 line to %2</source>
+        <translation>%1 línea exportada a %2</translation>
     </message>
     <message>
         <location filename="../../app/window/traffic_display.py" line="+26"/>
@@ -3144,7 +3263,7 @@ Ahora no: %2</translation>
         <translation>Mostrar solo las líneas que coinciden con esta expresión regular (sin distinguir mayúsculas) en su dirección, tipo, hex, texto o significado, p. ej. error|FA00</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+115"/>
+        <location filename="../../app/window/traffic_console.py" line="+121"/>
         <source>paused</source>
         <translation>en pausa</translation>
     </message>
@@ -3219,11 +3338,16 @@ Ahora no: %2</translation>
     </message>
     <message>
         <location filename="../../app/window/traffic_status.py" line="+16"/>
+        <source>%1 line</source>
+        <translation>%1 línea</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 lines</source>
         <translation>%1 líneas</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>%1 shown</source>
         <translation>%1 mostradas</translation>
     </message>
@@ -3238,17 +3362,27 @@ Ahora no: %2</translation>
         <translation>%1 de consulta ocultas</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>%1 error</source>
+        <translation>%1 error</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 errors</source>
         <translation>%1 errores</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
+        <source>%1 match</source>
+        <translation>%1 coincidencia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 matches</source>
         <translation>%1 coincidencias</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>The console keeps the newest %1 lines (Settings): older lines are dropped from it, the session log on disk keeps every line</source>
         <translation>La consola conserva las %1 líneas más recientes (Ajustes): las más antiguas se descartan; el registro de sesión en disco conserva todas las líneas</translation>
     </message>
@@ -3258,12 +3392,12 @@ Ahora no: %2</translation>
         <translation>exportación fallida: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../../app/window/traffic_export.py" line="+2"/>
         <source>exported %1 lines to %2</source>
         <translation>%1 líneas exportadas a %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+46"/>
+        <location filename="../../app/window/traffic_table.py" line="+57"/>
         <source>motion</source>
         <translation>movimiento</translation>
     </message>
@@ -3391,7 +3525,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Apariencia &amp;&amp; idioma</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Use and save</source>
         <translation>Aplicar y guardar</translation>
     </message>
@@ -4016,7 +4150,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Respuesta</translation>
     </message>
     <message>
-        <location line="+279"/>
+        <location line="+306"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
@@ -4097,22 +4231,63 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>TravelLimitsDialog</name>
     <message>
-        <location filename="../../widgets/travel_limits_dialog.py" line="+32"/>
+        <location filename="../../widgets/travel_limits_dialog.py" line="+19"/>
         <source>Travel limits</source>
         <translation>Límites de recorrido</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
-        <translation>Zona por la que puede moverse la platina en %1. Un desplazamiento, un Ir a o un movimiento desde la línea de comandos que saldría de la caja se rechaza antes de enviar nada, o se ajusta a su borde.</translation>
+        <translation type="vanished">Zona por la que puede moverse la platina en %1. Un desplazamiento, un Ir a o un movimiento desde la línea de comandos que saldría de la caja se rechaza antes de enviar nada, o se ajusta a su borde.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <source>Limit moves to this box</source>
+        <translation type="vanished">Limitar los movimientos a esta caja</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation type="vanished">mín</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation type="vanished">máx</translation>
+    </message>
+    <message>
+        <source>%1:</source>
+        <comment>an axis field&apos;s label</comment>
+        <translation type="vanished">%1:</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <comment>an axis&apos; lower travel limit</comment>
+        <translation type="vanished">%1 mín</translation>
+    </message>
+    <message>
+        <source>%1 max</source>
+        <comment>an axis&apos; upper travel limit</comment>
+        <translation type="vanished">%1 máx</translation>
+    </message>
+    <message>
+        <source>Refuse a move that would leave the box</source>
+        <translation type="vanished">Rechazar un movimiento que saldría de la caja</translation>
+    </message>
+    <message>
+        <source>Clamp it: go as far as the edge, and say so</source>
+        <translation type="vanished">Ajustarlo: ir hasta el borde e indicarlo</translation>
+    </message>
+    <message>
+        <source>%1: the minimum must be below the maximum</source>
+        <translation type="vanished">%1: el mínimo debe ser menor que el máximo</translation>
+    </message>
+</context>
+<context>
+    <name>TravelLimitsForm</name>
+    <message>
+        <location filename="../../widgets/travel_limits_form.py" line="+45"/>
         <source>Limit moves to this box</source>
         <translation>Limitar los movimientos a esta caja</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>min</source>
         <translation>mín</translation>
     </message>
@@ -4122,7 +4297,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>máx</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
         <translation>%1:</translation>
@@ -4150,9 +4325,42 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Ajustarlo: ir hasta el borde e indicarlo</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+33"/>
+        <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
+        <translation>Zona por la que puede moverse la platina en %1. Un desplazamiento, un Ir a o un movimiento desde la línea de comandos que saldría de la caja se rechaza antes de enviar nada, o se ajusta a su borde.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Connect a device to set where its stage may go.</source>
+        <translation>Conecte un dispositivo para fijar por dónde puede moverse su platina.</translation>
+    </message>
+    <message>
+        <location line="+38"/>
         <source>%1: the minimum must be below the maximum</source>
         <translation>%1: el mínimo debe ser menor que el máximo</translation>
+    </message>
+</context>
+<context>
+    <name>TravelLimitsPanel</name>
+    <message>
+        <location line="+25"/>
+        <source>Apply</source>
+        <translation>Aplicar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use these limits for this device from now on (kept for it)</source>
+        <translation>Usar estos límites para este dispositivo a partir de ahora (se guardan para él)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Revert</source>
+        <translation>Revertir</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Show the limits in use again</source>
+        <translation>Volver a mostrar los límites en uso</translation>
     </message>
 </context>
 <context>
@@ -4741,6 +4949,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>abandoned: disconnected while it was under way</source>
         <translation>abandonado: se desconectó mientras estaba en curso</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}</source>
+        <translation>movimiento relativo de ({dx:g}, {dy:g}, {dz:g}) {unit}</translation>
     </message>
     <message>
         <location line="+1"/>

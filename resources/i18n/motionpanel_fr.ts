@@ -248,6 +248,20 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     </message>
 </context>
 <context>
+    <name>CompactReadout</name>
+    <message>
+        <location filename="../../widgets/compact_readout.py" line="+34"/>
+        <source>Stage position from the device&apos;s home</source>
+        <translation>Position de la platine depuis l&apos;origine de l&apos;appareil</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (%2)</source>
+        <comment>the position&apos;s tip, then its status</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionBar</name>
     <message>
         <location filename="../../widgets/connection_bar.py" line="+32"/>
@@ -270,7 +284,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>Erreur</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+93"/>
         <source>/dev/ttyUSB0, COM3 or a URL</source>
         <translation>/dev/ttyUSB0, COM3 ou une URL</translation>
     </message>
@@ -280,7 +294,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>Port série, ou toute URL pyserial (par ex. sim://coxiris, socket://host:port, loop://)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>Look for serial ports again</source>
         <translation>Rechercher à nouveau les ports série</translation>
     </message>
@@ -317,24 +331,24 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     <message>
         <location line="+6"/>
         <location line="+6"/>
-        <location line="+228"/>
+        <location line="+223"/>
         <source>Connect</source>
         <translation>Connecter</translation>
     </message>
     <message>
-        <location line="-228"/>
-        <location line="+227"/>
+        <location line="-223"/>
+        <location line="+222"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location line="-227"/>
-        <location line="+227"/>
+        <location line="-222"/>
+        <location line="+222"/>
         <source>Disconnect</source>
         <translation>Déconnecter</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-214"/>
         <source>Lines:</source>
         <translation>Lignes&#xa0;:</translation>
     </message>
@@ -358,7 +372,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>Bauds&#xa0;:</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+70"/>
         <source>No description for this port</source>
         <translation>Aucune description pour ce port</translation>
     </message>
@@ -368,7 +382,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>● %1&#xa0;: %2</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Open the port and talk to the device</source>
         <translation>Ouvrir le port et dialoguer avec l&apos;appareil</translation>
     </message>
@@ -715,17 +729,22 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+88"/>
+        <location filename="../../app/window/device_docks.py" line="+97"/>
         <source>Not now: %1</source>
         <translation>Indisponible pour le moment&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+46"/>
+        <source>%1 on %2</source>
+        <translation>%1 sur %2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>de %1 à %2 mm sur chaque axe (impulsions sur 16 bits)</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+58"/>
         <source>program %1: %2 points, nothing sent yet</source>
         <translation>programme %1&#xa0;: %2 points, rien n&apos;a encore été envoyé</translation>
     </message>
@@ -776,6 +795,11 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <location line="+1"/>
         <source>Dwell</source>
         <translation>Temporisation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Travel limits</source>
+        <translation>Limites de course</translation>
     </message>
 </context>
 <context>
@@ -934,6 +958,11 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     </message>
     <message>
         <location line="+1"/>
+        <source>relative move by (%1, %2, %3) %4</source>
+        <translation>mouvement relatif de (%1, %2, %3) %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>go home</source>
         <translation>retour à l&apos;origine</translation>
     </message>
@@ -1006,7 +1035,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Touches&#xa0;: ←/→ X, ↑/↓ Y, Page préc/Page suiv Z, Maj ×10</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+44"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
         <translation>Déplacer la platine d&apos;un pas&#xa0;; maintenir un bouton ou une touche enfoncé pour continuer.
@@ -1023,7 +1052,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Distance d&apos;un déplacement</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <location line="+13"/>
         <source>Jog by %1 per press</source>
         <translation>Déplacer de %1 par appui</translation>
@@ -1199,11 +1233,21 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     </message>
     <message>
         <location line="+4"/>
+        <source>Close</source>
+        <translation>Fermer</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Close this log&apos;s window (Ctrl+W, Esc)</source>
+        <translation>Fermer la fenêtre de ce journal (Ctrl+W, Échap)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Protocol:</source>
         <translation>Protocole&#xa0;:</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>reading %1…</source>
         <translation>lecture de %1…</translation>
     </message>
@@ -1428,12 +1472,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Arrêter la platine immédiatement&#xa0;: interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+49"/>
+        <location filename="../../app/window/connection.py" line="+50"/>
         <source>simulated %1 device</source>
         <translation>appareil %1 simulé</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+91"/>
+        <location filename="../../app/window/main_window.py" line="+94"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1453,12 +1497,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>plus de journal de session à partir de maintenant</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+112"/>
+        <location filename="../../app/window/main_window.py" line="+117"/>
         <source>Connection</source>
         <translation>Connexion</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>Position</source>
         <translation>Position</translation>
     </message>
@@ -1488,7 +1532,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Paramètres</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
         <source>Traffic timeline</source>
         <translation>Chronologie du trafic</translation>
     </message>
@@ -1624,7 +1668,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>connecté à %1 sur %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+134"/>
+        <location filename="../../app/window/machine_state.py" line="+135"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la position est inconnue&#xa0;: cet appareil ne peut pas l&apos;indiquer&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
@@ -1684,7 +1728,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>%1 sur %2</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+21"/>
         <source>none</source>
         <translation>aucune</translation>
     </message>
@@ -1763,23 +1807,23 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>nouvelle origine&#xa0;: la trace est décalée de (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-98"/>
         <source>the device reported an error: %1</source>
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="-99"/>
+        <location filename="../../app/window/connection.py" line="-107"/>
         <location filename="../../app/window/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>appareil&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+22"/>
+        <location filename="../../app/window/job_desk.py" line="+24"/>
         <source>%1 failed: %2</source>
         <translation>échec de %1&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+227"/>
+        <location filename="../../app/window/machine_state.py" line="+231"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origine confirmée&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
@@ -1787,6 +1831,56 @@ Les envoyer quand même&#xa0;?</translation>
         <location line="+5"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>vitesse %1 mm/s relue comme %2 mm/s (l&apos;appareil arrondit)</translation>
+    </message>
+    <message>
+        <location filename="../../app/window/layouts.py" line="+122"/>
+        <source>&amp;Operate</source>
+        <translation>&amp;Pilotage</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Set up</source>
+        <translation>&amp;Configuration</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Traffic</source>
+        <translation>&amp;Trafic</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Jog, go to and watch the stage: the views large</source>
+        <translation>Déplacer la platine, l&apos;envoyer à une position et la surveiller&#xa0;: les vues en grand</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The device&apos;s parameters and setup panels, and macros</source>
+        <translation>Les paramètres et panneaux de configuration de l&apos;appareil, et les macros</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The traffic console and its timeline, full width</source>
+        <translation>La console de trafic et sa chronologie, en pleine largeur</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>Reset &amp;layout</source>
+        <translation>Réinitialiser la di&amp;sposition</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Put the docks of this layout back as they were at first</source>
+        <translation>Remettre les panneaux de cette disposition comme au départ</translation>
+    </message>
+    <message>
+        <location line="+260"/>
+        <source>this device has parameters: %1 for Set up</source>
+        <translation>cet appareil a des paramètres&#xa0;: %1 pour «&#xa0;Configuration&#xa0;»</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>this device has a setup panel: %1 for Set up</source>
+        <translation>cet appareil a un panneau de configuration&#xa0;: %1 pour «&#xa0;Configuration&#xa0;»</translation>
     </message>
 </context>
 <context>
@@ -1893,17 +1987,17 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>ParameterEditor</name>
     <message>
-        <location filename="../../widgets/parameter_editor.py" line="+46"/>
+        <location filename="../../widgets/parameter_editor.py" line="+49"/>
         <source>Parameter profiles (*.toml);;All files (*)</source>
         <translation>Profils de paramètres (*.toml);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>The device cannot be read back: this compares with what this panel last wrote</source>
         <translation>L&apos;appareil ne peut pas être relu&#xa0;: la comparaison porte sur ce que ce panneau a écrit en dernier</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+31"/>
         <source>Packets written so far; each is confirmed before the next</source>
         <translation>Paquets écrits jusqu&apos;ici&#xa0;; chacun est confirmé avant le suivant</translation>
     </message>
@@ -1967,12 +2061,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Enregistrer les valeurs dans un fichier</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+53"/>
         <source>Not loaded: %1</source>
         <translation>Non chargé&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+142"/>
         <source>nothing sent</source>
         <translation>rien n&apos;a été envoyé</translation>
     </message>
@@ -2001,12 +2095,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation type="vanished">aucune différence</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-229"/>
         <source>Write the input values marked • (they differ from what the device holds); firmware outputs are not written by it</source>
         <translation>Écrire les valeurs d&apos;entrée marquées • (elles diffèrent de ce que contient l&apos;appareil)&#xa0;; les sorties du firmware ne sont pas écrites par ce bouton</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+238"/>
         <source>no input differs</source>
         <translation>aucune entrée ne diffère</translation>
     </message>
@@ -2403,7 +2497,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation type="vanished">Position de la platine en mm&#xa0;: depuis l&apos;origine de l&apos;appareil et depuis le zéro pièce</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>Machine</source>
         <translation>Machine</translation>
     </message>
@@ -2471,7 +2565,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>hors des limites de course&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+85"/>
         <source>millimetres</source>
         <translation>millimètres</translation>
     </message>
@@ -2531,19 +2625,24 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+86"/>
+        <location filename="../../widgets/position_view_2d.py" line="+87"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>Platine vue de dessus&#xa0;: trace, position actuelle (point&#xa0;; creux si estimée), cible (+), limites de course (pointillés)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>XY (from above)</source>
         <translation>XY (vue de dessus)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>X</source>
+        <translation>X</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2551,19 +2650,29 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Y (mm)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+0"/>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y et Z en fonction du temps&#xa0;; pointillés&#xa0;: cible</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+20"/>
         <source>Position against time</source>
         <translation>Position en fonction du temps</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>time (s, 0 = latest sample)</source>
         <translation>temps (s, 0 = dernier échantillon)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2571,7 +2680,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>position (mm)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+0"/>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Clear trail</source>
         <translation>Effacer la trace</translation>
     </message>
@@ -2594,7 +2708,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PositionView3D</name>
     <message>
-        <location filename="../../widgets/_gl_scene.py" line="+43"/>
+        <location filename="../../widgets/_gl_scene.py" line="+45"/>
         <source>Top</source>
         <translation>Dessus</translation>
     </message>
@@ -2654,7 +2768,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Garder la caméra sur la position actuelle</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+76"/>
+        <location filename="../../widgets/position_view_3d.py" line="+77"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Nécessite OpenGL 2.1 ou plus récent (par ex. Mesa) sur un affichage&#xa0;; voir le README.</translation>
     </message>
@@ -2668,12 +2782,12 @@ The 2D view shows the same positions.</source>
 La vue 2D montre les mêmes positions.</translation>
     </message>
     <message>
-        <location line="+164"/>
+        <location line="+171"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
         <translation>Glisser pour pivoter, molette pour zoomer, glisser avec le bouton du milieu pour déplacer la vue</translation>
     </message>
     <message>
-        <location line="+368"/>
+        <location line="+403"/>
         <source>grid %1 mm</source>
         <translation>grille %1 mm</translation>
     </message>
@@ -3054,7 +3168,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>delta</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_export.py" line="+16"/>
+        <location filename="../../app/window/traffic_export.py" line="+18"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
@@ -3072,6 +3186,11 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <location line="+4"/>
         <source>Export traffic</source>
         <translation>Exporter le trafic</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>exported %1 line to %2</source>
+        <translation>%1 ligne exportée vers %2</translation>
     </message>
     <message>
         <location filename="../../app/window/traffic_display.py" line="+26"/>
@@ -3144,7 +3263,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>N&apos;afficher que les lignes dont le sens, le type, l&apos;hex, le texte ou la signification correspondent à cette expression régulière (sans tenir compte de la casse), par ex. error|FA00</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+115"/>
+        <location filename="../../app/window/traffic_console.py" line="+121"/>
         <source>paused</source>
         <translation>en pause</translation>
     </message>
@@ -3219,11 +3338,16 @@ Indisponible pour le moment&#xa0;: %2</translation>
     </message>
     <message>
         <location filename="../../app/window/traffic_status.py" line="+16"/>
+        <source>%1 line</source>
+        <translation>%1 ligne</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 lines</source>
         <translation>%1 lignes</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>%1 shown</source>
         <translation>%1 affichées</translation>
     </message>
@@ -3238,17 +3362,27 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>%1 interrogations masquées</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>%1 error</source>
+        <translation>%1 erreur</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 errors</source>
         <translation>%1 erreurs</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
+        <source>%1 match</source>
+        <translation>%1 correspondance</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 matches</source>
         <translation>%1 correspondances</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>The console keeps the newest %1 lines (Settings): older lines are dropped from it, the session log on disk keeps every line</source>
         <translation>La console conserve les %1 lignes les plus récentes (Réglages)&#xa0;: les plus anciennes en sont retirées, le journal de session sur disque conserve toutes les lignes</translation>
     </message>
@@ -3258,12 +3392,12 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>échec de l&apos;export&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../../app/window/traffic_export.py" line="+2"/>
         <source>exported %1 lines to %2</source>
         <translation>%1 lignes exportées vers %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+46"/>
+        <location filename="../../app/window/traffic_table.py" line="+57"/>
         <source>motion</source>
         <translation>mouvement</translation>
     </message>
@@ -3391,7 +3525,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Apparence &amp;&amp; langue</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Use and save</source>
         <translation>Appliquer et enregistrer</translation>
     </message>
@@ -4016,7 +4150,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Réponse</translation>
     </message>
     <message>
-        <location line="+279"/>
+        <location line="+306"/>
         <source>line %1: %2</source>
         <translation>ligne %1&#xa0;: %2</translation>
     </message>
@@ -4097,22 +4231,63 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>TravelLimitsDialog</name>
     <message>
-        <location filename="../../widgets/travel_limits_dialog.py" line="+32"/>
+        <location filename="../../widgets/travel_limits_dialog.py" line="+19"/>
         <source>Travel limits</source>
         <translation>Limites de course</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
-        <translation>Zone où la platine peut se déplacer sur %1. Un déplacement pas à pas, un «&#xa0;Aller à&#xa0;» ou un mouvement en ligne de commande qui sortirait de la zone est refusé avant tout envoi, ou borné à sa limite.</translation>
+        <translation type="vanished">Zone où la platine peut se déplacer sur %1. Un déplacement pas à pas, un «&#xa0;Aller à&#xa0;» ou un mouvement en ligne de commande qui sortirait de la zone est refusé avant tout envoi, ou borné à sa limite.</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <source>Limit moves to this box</source>
+        <translation type="vanished">Limiter les mouvements à cette zone</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation type="vanished">min</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation type="vanished">max</translation>
+    </message>
+    <message>
+        <source>%1:</source>
+        <comment>an axis field&apos;s label</comment>
+        <translation type="vanished">%1&#xa0;:</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <comment>an axis&apos; lower travel limit</comment>
+        <translation type="vanished">%1 min</translation>
+    </message>
+    <message>
+        <source>%1 max</source>
+        <comment>an axis&apos; upper travel limit</comment>
+        <translation type="vanished">%1 max</translation>
+    </message>
+    <message>
+        <source>Refuse a move that would leave the box</source>
+        <translation type="vanished">Refuser un mouvement qui sortirait de la zone</translation>
+    </message>
+    <message>
+        <source>Clamp it: go as far as the edge, and say so</source>
+        <translation type="vanished">Le borner&#xa0;: aller jusqu&apos;à la limite, et le signaler</translation>
+    </message>
+    <message>
+        <source>%1: the minimum must be below the maximum</source>
+        <translation type="vanished">%1&#xa0;: le minimum doit être inférieur au maximum</translation>
+    </message>
+</context>
+<context>
+    <name>TravelLimitsForm</name>
+    <message>
+        <location filename="../../widgets/travel_limits_form.py" line="+45"/>
         <source>Limit moves to this box</source>
         <translation>Limiter les mouvements à cette zone</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>min</source>
         <translation>min</translation>
     </message>
@@ -4122,7 +4297,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>max</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
         <translation>%1&#xa0;:</translation>
@@ -4150,9 +4325,42 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Le borner&#xa0;: aller jusqu&apos;à la limite, et le signaler</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+33"/>
+        <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
+        <translation>Zone où la platine peut se déplacer sur %1. Un déplacement pas à pas, un «&#xa0;Aller à&#xa0;» ou un mouvement en ligne de commande qui sortirait de la zone est refusé avant tout envoi, ou borné à sa limite.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Connect a device to set where its stage may go.</source>
+        <translation>Connecter un appareil pour définir où sa platine peut se déplacer.</translation>
+    </message>
+    <message>
+        <location line="+38"/>
         <source>%1: the minimum must be below the maximum</source>
         <translation>%1&#xa0;: le minimum doit être inférieur au maximum</translation>
+    </message>
+</context>
+<context>
+    <name>TravelLimitsPanel</name>
+    <message>
+        <location line="+25"/>
+        <source>Apply</source>
+        <translation>Appliquer</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use these limits for this device from now on (kept for it)</source>
+        <translation>Utiliser désormais ces limites pour cet appareil (conservées pour lui)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Revert</source>
+        <translation>Rétablir</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Show the limits in use again</source>
+        <translation>Afficher de nouveau les limites en vigueur</translation>
     </message>
 </context>
 <context>
@@ -4741,6 +4949,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>abandoned: disconnected while it was under way</source>
         <translation>abandonné&#xa0;: déconnexion en cours d&apos;exécution</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}</source>
+        <translation>mouvement relatif de ({dx:g}, {dy:g}, {dz:g}) {unit}</translation>
     </message>
     <message>
         <location line="+1"/>

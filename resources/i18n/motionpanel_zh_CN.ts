@@ -248,6 +248,20 @@ the same as the start angle: a full circle</source>
     </message>
 </context>
 <context>
+    <name>CompactReadout</name>
+    <message>
+        <location filename="../../widgets/compact_readout.py" line="+34"/>
+        <source>Stage position from the device&apos;s home</source>
+        <translation>平台位置（相对设备原点）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (%2)</source>
+        <comment>the position&apos;s tip, then its status</comment>
+        <translation>%1（%2）</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionBar</name>
     <message>
         <location filename="../../widgets/connection_bar.py" line="+32"/>
@@ -270,7 +284,7 @@ the same as the start angle: a full circle</source>
         <translation>错误</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+93"/>
         <source>/dev/ttyUSB0, COM3 or a URL</source>
         <translation>/dev/ttyUSB0、COM3 或 URL</translation>
     </message>
@@ -280,7 +294,7 @@ the same as the start angle: a full circle</source>
         <translation>串口，或任意 pyserial URL（例如 sim://coxiris、socket://host:port、loop://）</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>Look for serial ports again</source>
         <translation>重新查找串口</translation>
     </message>
@@ -317,24 +331,24 @@ the same as the start angle: a full circle</source>
     <message>
         <location line="+6"/>
         <location line="+6"/>
-        <location line="+228"/>
+        <location line="+223"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-228"/>
-        <location line="+227"/>
+        <location line="-223"/>
+        <location line="+222"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="-227"/>
-        <location line="+227"/>
+        <location line="-222"/>
+        <location line="+222"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-214"/>
         <source>Lines:</source>
         <translation>信号线：</translation>
     </message>
@@ -358,7 +372,7 @@ the same as the start angle: a full circle</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+70"/>
         <source>No description for this port</source>
         <translation>此端口没有描述</translation>
     </message>
@@ -368,7 +382,7 @@ the same as the start angle: a full circle</source>
         <translation>● %1：%2</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Open the port and talk to the device</source>
         <translation>打开端口并与设备通信</translation>
     </message>
@@ -715,17 +729,22 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+88"/>
+        <location filename="../../app/window/device_docks.py" line="+97"/>
         <source>Not now: %1</source>
         <translation>暂不可用：%1</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+46"/>
+        <source>%1 on %2</source>
+        <translation>%2 上的 %1</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>%1 to %2 mm on every axis (16-bit ticks)</source>
         <translation>各轴 %1 至 %2 mm（16 位计数）</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+58"/>
         <source>program %1: %2 points, nothing sent yet</source>
         <translation>程序 %1：%2 个点，尚未发送</translation>
     </message>
@@ -776,6 +795,11 @@ All coordinates will be measured from here from now on.</source>
         <location line="+1"/>
         <source>Dwell</source>
         <translation>延时</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Travel limits</source>
+        <translation>行程限位</translation>
     </message>
 </context>
 <context>
@@ -934,6 +958,11 @@ All coordinates will be measured from here from now on.</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>relative move by (%1, %2, %3) %4</source>
+        <translation>相对移动 (%1, %2, %3) %4</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>go home</source>
         <translation>回原点</translation>
     </message>
@@ -1006,7 +1035,7 @@ All coordinates will be measured from here from now on.</source>
         <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift ×10</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+44"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
         <translation>将平台移动一步；按住按钮或按键可持续步进。
@@ -1023,7 +1052,12 @@ All coordinates will be measured from here from now on.</source>
         <translation>每次点动的距离</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <location line="+13"/>
         <source>Jog by %1 per press</source>
         <translation>每按一次点动 %1</translation>
@@ -1199,11 +1233,21 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     </message>
     <message>
         <location line="+4"/>
+        <source>Close</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Close this log&apos;s window (Ctrl+W, Esc)</source>
+        <translation>关闭此日志窗口（Ctrl+W、Esc）</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Protocol:</source>
         <translation>协议：</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+31"/>
         <source>reading %1…</source>
         <translation>正在读取 %1…</translation>
     </message>
@@ -1428,12 +1472,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>立即停止平台：中止正在进行的移动，并清空队列（Esc）</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+49"/>
+        <location filename="../../app/window/connection.py" line="+50"/>
         <source>simulated %1 device</source>
         <translation>模拟的 %1 设备</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+91"/>
+        <location filename="../../app/window/main_window.py" line="+94"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1453,12 +1497,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>此后不再记录会话日志</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+112"/>
+        <location filename="../../app/window/main_window.py" line="+117"/>
         <source>Connection</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>Position</source>
         <translation>位置</translation>
     </message>
@@ -1488,7 +1532,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
         <source>Traffic timeline</source>
         <translation>通信时间线</translation>
     </message>
@@ -1624,7 +1668,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+134"/>
+        <location filename="../../app/window/machine_state.py" line="+135"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>位置未知：此设备无法报告其位置；请回原点或设为原点</translation>
     </message>
@@ -1684,7 +1728,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>%2 上的 %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+21"/>
         <source>none</source>
         <translation>无</translation>
     </message>
@@ -1763,23 +1807,23 @@ Send them anyway?</source>
         <translation>新原点：轨迹已平移 (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-98"/>
         <source>the device reported an error: %1</source>
         <translation>设备报告错误：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="-99"/>
+        <location filename="../../app/window/connection.py" line="-107"/>
         <location filename="../../app/window/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>设备：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+22"/>
+        <location filename="../../app/window/job_desk.py" line="+24"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+227"/>
+        <location filename="../../app/window/machine_state.py" line="+231"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>原点已确认：位置从此处开始计数</translation>
     </message>
@@ -1787,6 +1831,56 @@ Send them anyway?</source>
         <location line="+5"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>速度 %1 mm/s 回读为 %2 mm/s（设备会取整）</translation>
+    </message>
+    <message>
+        <location filename="../../app/window/layouts.py" line="+122"/>
+        <source>&amp;Operate</source>
+        <translation>操作(&amp;P)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Set up</source>
+        <translation>配置(&amp;U)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Traffic</source>
+        <translation>通信(&amp;A)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Jog, go to and watch the stage: the views large</source>
+        <translation>点动、定位并观察平台：视图放大显示</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The device&apos;s parameters and setup panels, and macros</source>
+        <translation>设备的参数、设置面板以及宏</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The traffic console and its timeline, full width</source>
+        <translation>通信控制台及其时间线，全宽显示</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>Reset &amp;layout</source>
+        <translation>重置布局(&amp;Y)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Put the docks of this layout back as they were at first</source>
+        <translation>将此布局中的停靠窗口恢复到最初的位置</translation>
+    </message>
+    <message>
+        <location line="+260"/>
+        <source>this device has parameters: %1 for Set up</source>
+        <translation>此设备有参数：按 %1 切换到“配置”</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>this device has a setup panel: %1 for Set up</source>
+        <translation>此设备有设置面板：按 %1 切换到“配置”</translation>
     </message>
 </context>
 <context>
@@ -1893,17 +1987,17 @@ Send them anyway?</source>
 <context>
     <name>ParameterEditor</name>
     <message>
-        <location filename="../../widgets/parameter_editor.py" line="+46"/>
+        <location filename="../../widgets/parameter_editor.py" line="+49"/>
         <source>Parameter profiles (*.toml);;All files (*)</source>
         <translation>参数配置文件 (*.toml);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+41"/>
         <source>The device cannot be read back: this compares with what this panel last wrote</source>
         <translation>设备无法回读：此处与本面板上次写入的值比较</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+31"/>
         <source>Packets written so far; each is confirmed before the next</source>
         <translation>已写入的数据包；每个数据包确认后才发送下一个</translation>
     </message>
@@ -1967,12 +2061,12 @@ Send them anyway?</source>
         <translation>将这些值保存到文件</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+53"/>
         <source>Not loaded: %1</source>
         <translation>未加载：%1</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+142"/>
         <source>nothing sent</source>
         <translation>未发送任何内容</translation>
     </message>
@@ -2001,12 +2095,12 @@ Send them anyway?</source>
         <translation type="vanished">没有不同的值</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-229"/>
         <source>Write the input values marked • (they differ from what the device holds); firmware outputs are not written by it</source>
         <translation>写入标有 • 的输入值（它们与设备当前的值不同）；此按钮不写入固件输出参数</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+238"/>
         <source>no input differs</source>
         <translation>没有不同的输入值</translation>
     </message>
@@ -2403,7 +2497,7 @@ Send them anyway?</source>
         <translation type="vanished">平台位置（mm）：相对设备原点，以及相对工件零点</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>Machine</source>
         <translation>机床</translation>
     </message>
@@ -2471,7 +2565,7 @@ Send them anyway?</source>
         <translation>超出行程限位：%1</translation>
     </message>
     <message>
-        <location line="+84"/>
+        <location line="+85"/>
         <source>millimetres</source>
         <translation>毫米</translation>
     </message>
@@ -2531,19 +2625,24 @@ Send them anyway?</source>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+86"/>
+        <location filename="../../widgets/position_view_2d.py" line="+87"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>俯视平台：轨迹、当前位置（圆点；估算时为空心）、目标（+）、行程限位（虚线）</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>XY (from above)</source>
         <translation>XY（俯视）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>X</source>
+        <translation>X</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2551,19 +2650,29 @@ Send them anyway?</source>
         <translation>Y (mm)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+0"/>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X、Y、Z 随时间的变化；虚线：目标</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+20"/>
         <source>Position against time</source>
         <translation>位置随时间的变化</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>time (s, 0 = latest sample)</source>
         <translation>时间（s，0 = 最新采样）</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>t (s)</source>
+        <translation>t (s)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2571,7 +2680,12 @@ Send them anyway?</source>
         <translation>位置 (mm)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+0"/>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Clear trail</source>
         <translation>清除轨迹</translation>
     </message>
@@ -2594,7 +2708,7 @@ Send them anyway?</source>
 <context>
     <name>PositionView3D</name>
     <message>
-        <location filename="../../widgets/_gl_scene.py" line="+43"/>
+        <location filename="../../widgets/_gl_scene.py" line="+45"/>
         <source>Top</source>
         <translation>俯视</translation>
     </message>
@@ -2654,7 +2768,7 @@ Send them anyway?</source>
         <translation>使视角始终对准当前位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+76"/>
+        <location filename="../../widgets/position_view_3d.py" line="+77"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>需要在有显示器的环境中提供 OpenGL 2.1 或更高版本（例如 Mesa）；请参阅 README。</translation>
     </message>
@@ -2668,12 +2782,12 @@ The 2D view shows the same positions.</source>
 2D 视图显示相同的位置。</translation>
     </message>
     <message>
-        <location line="+164"/>
+        <location line="+171"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
         <translation>拖动旋转，滚轮缩放，中键拖动平移</translation>
     </message>
     <message>
-        <location line="+368"/>
+        <location line="+403"/>
         <source>grid %1 mm</source>
         <translation>网格 %1 mm</translation>
     </message>
@@ -3054,7 +3168,7 @@ Not now: %2</source>
         <translation>间隔</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_export.py" line="+16"/>
+        <location filename="../../app/window/traffic_export.py" line="+18"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
@@ -3072,6 +3186,11 @@ Not now: %2</source>
         <location line="+4"/>
         <source>Export traffic</source>
         <translation>导出通信记录</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>exported %1 line to %2</source>
+        <translation>已将 %1 行导出到 %2</translation>
     </message>
     <message>
         <location filename="../../app/window/traffic_display.py" line="+26"/>
@@ -3144,7 +3263,7 @@ Not now: %2</source>
         <translation>仅显示方向、类型、十六进制、文本或含义与此正则表达式匹配（不区分大小写）的行，例如 error|FA00</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+115"/>
+        <location filename="../../app/window/traffic_console.py" line="+121"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
@@ -3219,11 +3338,16 @@ Not now: %2</source>
     </message>
     <message>
         <location filename="../../app/window/traffic_status.py" line="+16"/>
+        <source>%1 line</source>
+        <translation>%1 行</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 lines</source>
         <translation>%1 行</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>%1 shown</source>
         <translation>显示 %1</translation>
     </message>
@@ -3238,17 +3362,27 @@ Not now: %2</source>
         <translation>隐藏轮询 %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>%1 error</source>
+        <translation>错误 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 errors</source>
         <translation>错误 %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
+        <source>%1 match</source>
+        <translation>匹配 %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 matches</source>
         <translation>匹配 %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>The console keeps the newest %1 lines (Settings): older lines are dropped from it, the session log on disk keeps every line</source>
         <translation>控制台只保留最新的 %1 行（见“设置”）：较旧的行会从中移除，磁盘上的会话日志保留所有行</translation>
     </message>
@@ -3258,12 +3392,12 @@ Not now: %2</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../../app/window/traffic_export.py" line="+2"/>
         <source>exported %1 lines to %2</source>
         <translation>已将 %1 行导出到 %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+46"/>
+        <location filename="../../app/window/traffic_table.py" line="+57"/>
         <source>motion</source>
         <translation>运动</translation>
     </message>
@@ -3391,7 +3525,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>外观 &amp;&amp; 语言</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>Use and save</source>
         <translation>应用并保存</translation>
     </message>
@@ -4016,7 +4150,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>应答</translation>
     </message>
     <message>
-        <location line="+279"/>
+        <location line="+306"/>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>
@@ -4097,22 +4231,63 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>TravelLimitsDialog</name>
     <message>
-        <location filename="../../widgets/travel_limits_dialog.py" line="+32"/>
+        <location filename="../../widgets/travel_limits_dialog.py" line="+19"/>
         <source>Travel limits</source>
         <translation>行程限位</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
-        <translation>平台在 %1 上允许到达的范围。若点动、定位或命令行移动会超出此范围，将在发送任何内容之前被拒绝，或被限制到边界。</translation>
+        <translation type="vanished">平台在 %1 上允许到达的范围。若点动、定位或命令行移动会超出此范围，将在发送任何内容之前被拒绝，或被限制到边界。</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <source>Limit moves to this box</source>
+        <translation type="vanished">将移动限制在此范围内</translation>
+    </message>
+    <message>
+        <source>min</source>
+        <translation type="vanished">最小</translation>
+    </message>
+    <message>
+        <source>max</source>
+        <translation type="vanished">最大</translation>
+    </message>
+    <message>
+        <source>%1:</source>
+        <comment>an axis field&apos;s label</comment>
+        <translation type="vanished">%1：</translation>
+    </message>
+    <message>
+        <source>%1 min</source>
+        <comment>an axis&apos; lower travel limit</comment>
+        <translation type="vanished">%1 最小值</translation>
+    </message>
+    <message>
+        <source>%1 max</source>
+        <comment>an axis&apos; upper travel limit</comment>
+        <translation type="vanished">%1 最大值</translation>
+    </message>
+    <message>
+        <source>Refuse a move that would leave the box</source>
+        <translation type="vanished">拒绝会超出范围的移动</translation>
+    </message>
+    <message>
+        <source>Clamp it: go as far as the edge, and say so</source>
+        <translation type="vanished">限制：移动到边界为止，并给出提示</translation>
+    </message>
+    <message>
+        <source>%1: the minimum must be below the maximum</source>
+        <translation type="vanished">%1：最小值必须小于最大值</translation>
+    </message>
+</context>
+<context>
+    <name>TravelLimitsForm</name>
+    <message>
+        <location filename="../../widgets/travel_limits_form.py" line="+45"/>
         <source>Limit moves to this box</source>
         <translation>将移动限制在此范围内</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>min</source>
         <translation>最小</translation>
     </message>
@@ -4122,7 +4297,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>最大</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>%1:</source>
         <comment>an axis field&apos;s label</comment>
         <translation>%1：</translation>
@@ -4150,9 +4325,42 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>限制：移动到边界为止，并给出提示</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+33"/>
+        <source>Where the stage may go on %1. A jog, go-to or command-line move that would leave the box is refused before anything is sent, or clamped to its edge.</source>
+        <translation>平台在 %1 上允许到达的范围。若点动、定位或命令行移动会超出此范围，将在发送任何内容之前被拒绝，或被限制到边界。</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Connect a device to set where its stage may go.</source>
+        <translation>请连接设备，以设置其平台允许到达的范围。</translation>
+    </message>
+    <message>
+        <location line="+38"/>
         <source>%1: the minimum must be below the maximum</source>
         <translation>%1：最小值必须小于最大值</translation>
+    </message>
+</context>
+<context>
+    <name>TravelLimitsPanel</name>
+    <message>
+        <location line="+25"/>
+        <source>Apply</source>
+        <translation>应用</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use these limits for this device from now on (kept for it)</source>
+        <translation>从现在起对此设备使用这些限位（为其保存）</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Revert</source>
+        <translation>还原</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Show the limits in use again</source>
+        <translation>重新显示正在使用的限位</translation>
     </message>
 </context>
 <context>
@@ -4741,6 +4949,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>abandoned: disconnected while it was under way</source>
         <translation>已放弃：执行期间连接已断开</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}</source>
+        <translation>相对移动 ({dx:g}, {dy:g}, {dz:g}) {unit}</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -124,9 +124,16 @@ class Rig:
         self.started.append(sim)
         return sim
 
-    def panel(self, x: XServer, *args: str, settings: Path | None = None) -> Panel:
-        """The panel on `x` with `args` (e.g. --port PATH --protocol NAME), in English."""
-        panel = Panel(x, self.tmp, "--lang", "en", *args, settings=settings)
+    def panel(
+        self,
+        x: XServer,
+        *args: str,
+        settings: Path | None = None,
+        env: dict[str, str] | None = None,
+    ) -> Panel:
+        """The panel on `x` with `args` (e.g. --port PATH --protocol NAME), in English; `env`
+        adds to its environment."""
+        panel = Panel(x, self.tmp, "--lang", "en", *args, settings=settings, env_extra=env)
         self.started.append(panel)
         return panel
 

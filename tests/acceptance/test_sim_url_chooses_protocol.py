@@ -6,7 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from tests.acceptance.conftest import Rig
-from tests.acceptance.xsession import XServer, motionctl, wait_for
+from tests.acceptance.xsession import XServer, motionctl
 
 
 def test_sim_url_sets_the_protocol_and_the_log_decodes_each_part(
@@ -20,15 +20,7 @@ def test_sim_url_sets_the_protocol_and_the_log_decodes_each_part(
     panel.wait_ready(b"DONE GET_SPEED")
     sim.kill()
     panel.wait_state("error", 15.0)
-    panel.key("alt+p")
-    panel.key("ctrl+a")
-    panel.type("sim://visiomex")
-    panel.key("Return")
-    wait_for(
-        lambda: any(n.startswith("connected to sim://") for n in panel.logs.notes()),
-        20.0,
-        "the connection to sim://visiomex",
-    )
+    panel.type_port("sim://visiomex")
     note = next(n for n in panel.logs.notes() if n.startswith("connected to sim://"))
     assert "(visiomex" in note, note
     panel.wait_state("idle", 20.0)

@@ -568,6 +568,7 @@ class Panel:
         *args: str,
         settings: Path | None = None,
         window_timeout: float = 30.0,
+        env_extra: dict[str, str] | None = None,
     ) -> None:
         self.x = x
         self.logs = SessionLog(tmp / "session-logs")
@@ -579,6 +580,7 @@ class Panel:
             MOTIONPANEL_SETTINGS=str(settings or tmp / "settings.ini"),
             MOTIONPANEL_LOG_DIR=str(self.logs.folder),
         )
+        env.update(env_extra or {})
         self.shots = tmp / "panel-screens"
         self.shots.mkdir(exist_ok=True)
         self.stderr_path = tmp / "panel-stderr.txt"
@@ -763,6 +765,19 @@ class Panel:
         counts = {name: colour_count(image, rgb) for name, rgb in STATE_COLOURS.items()}
         name, count = max(counts.items(), key=lambda item: item[1])
         return name if count >= BADGE_PIXELS else ""
+
+    def type_port(self, port: str, timeout: float = 20.0) -> None:
+        """Type `port` in the Port field (its label's mnemonic) and Enter; wait until the
+        session log notes the connection to it."""
+        self.key("alt+p")
+        self.key("ctrl+a")
+        self.type(port)
+        self.key("Return")
+        wait_for(
+            lambda: any(n.startswith(f"connected to {port}") for n in self.logs.notes()),
+            timeout,
+            f"the connection to {port}",
+        )
 
     def wait_state(self, state: str, timeout: float = 30.0) -> None:
         """Wait until the status bar shows the machine state `state` (e.g. "idle")."""

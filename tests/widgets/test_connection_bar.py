@@ -17,6 +17,7 @@ def bar(qtbot) -> ConnectionBar:
     qtbot.addWidget(widget)
     widget.set_ports(PORTS)
     widget.set_protocols(["coxiris", "visiomex"])
+    widget.resize(1400, widget.sizeHint().height())  # as in the window (a narrower one elides)
     widget.show()
     return widget
 
@@ -202,3 +203,18 @@ def test_a_refresh_while_typing_keeps_the_cursor_and_the_inline_completion(
     assert edit.cursorPosition() == 6
     qtbot.keyClicks(edit, "x")
     assert bar.port() == "sim://xcoxiris"
+
+
+def test_a_long_state_never_widens_the_bar(bar: ConnectionBar, qtbot) -> None:
+    """A long error is elided to the room the bar has (a 1024 px screen): its minimum width
+    stays, the whole text is in the tooltip."""
+    minimum = bar.minimumSizeHint().width()
+    bar.resize(minimum, bar.height())
+    qtbot.waitUntil(lambda: bar.width() == minimum, timeout=3000)
+    detail = "port /dev/ttyUSB0 is busy"
+    bar.set_state("error", detail)
+    assert bar.minimumSizeHint().width() == minimum
+    assert bar.state_label.text().endswith("…")
+    assert bar.state_label.toolTip() == detail
+    bar.resize(1400, bar.height())
+    qtbot.waitUntil(lambda: bar.state_label.text().endswith(detail), timeout=3000)  # whole

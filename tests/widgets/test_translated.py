@@ -110,6 +110,9 @@ WRAPPED = [
     "app/window/traffic_pacing.py",
     "app/window/traffic_status.py",
     "app/window/traffic_table.py",
+    "app/window/layouts.py",
+    "widgets/travel_limits_form.py",
+    "widgets/compact_readout.py",
 ]
 OPEN, CLOSE = "⟦", "⟧"
 # What is not a word to translate: numbers, units, axis letters, line endings, signs.
