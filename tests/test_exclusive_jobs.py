@@ -127,6 +127,7 @@ def test_motion_is_off_while_parameters_are_written_and_on_after_a_cancel(
 ) -> None:
     with qtbot.waitSignal(window.settled, timeout=8000):
         window.connect_device("sim://visiomex", "visiomex", 9600, "seed")
+    window.layouts.switch("setup")  # the parameter editor is in Set up
     editor = window.parameters.editor
     qtbot.mouseClick(editor.write_all_button, Qt.MouseButton.LeftButton)  # 27 writes
     assert editor.writing()

@@ -24,7 +24,19 @@ from PySide6.QtWidgets import (
 )
 
 if TYPE_CHECKING:
-    from app.window.main_window import MainWindow
+    from PySide6.QtCore import SignalInstance
+
+    from app.window.layouts import Layouts
+    from widgets.lazy_view import DeferredViews
+
+    class MainWindow(QMainWindow):
+        """What the report reads of the panel's window (app/window/main_window.py, which
+        imports this module: not imported back)."""
+
+        layouts: Layouts
+        views: DeferredViews
+        settled: SignalInstance
+        connected: bool
 
 log = logging.getLogger(__name__)
 

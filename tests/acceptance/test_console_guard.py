@@ -18,7 +18,9 @@ BOX = ((-50.0, 50.0), (-50.0, 50.0), (-50.0, 50.0))
 
 
 def _send_line(panel, text: str) -> None:
-    """Type `text` in the console's send line (Alt+D) and press Enter."""
+    """Type `text` in the console's send line (Alt+D, in the Traffic layout: Ctrl+3; the panel
+    opens in Operate, which has no console) and press Enter."""
+    panel.key("ctrl+3")
     panel.key("alt+d")
     panel.key("ctrl+a")
     panel.type(text)
