@@ -38,6 +38,7 @@ if TYPE_CHECKING:
         settled: SignalInstance
         connected: bool
 
+
 log = logging.getLogger(__name__)
 
 ENVIRONMENT = "MOTIONPANEL_LAYOUT_REPORT"
