@@ -37,7 +37,7 @@ from contextlib import ExitStack
 from types import FrameType
 from typing import TextIO
 
-from app.cli.report import plain_error
+from app.cli.report import log_to_stderr, plain_error, usage_exit
 from drivers.bridge import Bridge
 from drivers.decoding import DecodedFrame, StreamDecoder
 from drivers.errors import BadInput, CommunicationError, UnknownProtocol
@@ -159,14 +159,8 @@ def main(argv: Sequence[str]) -> int:
     try:
         options = build_parser().parse_args(arguments)
     except SystemExit as exc:
-        if exc.code != 0 and "--json" in arguments:
-            print(json.dumps({"error": "invalid command line (see the usage above)", "exit": 2}))
-        return EXIT_OK if exc.code == 0 else EXIT_BAD_INPUT
-    logging.basicConfig(
-        level=logging.INFO if options.verbose else logging.WARNING,
-        format="motionctl: %(message)s",
-        stream=sys.stderr,
-    )
+        return usage_exit(exc, arguments)
+    log_to_stderr(options.verbose)
     as_json = options.json
     try:
         protocol = create_protocol(options.protocol, options.variant)

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import json
 import logging
 import sys
 from collections.abc import Sequence
@@ -17,7 +16,7 @@ from app.cli.interrupt import MoveTracker, after_interrupt
 from app.cli.log import decode_log
 from app.cli.macro import every_macro, find_macro, macro_offline, run_macro
 from app.cli.params import param_rows
-from app.cli.report import Reporter
+from app.cli.report import Reporter, log_to_stderr, usage_exit
 from app.cli.saved_speed import SavedSpeed
 from app.common.settings import (
     open_settings,
@@ -104,14 +103,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         options = parse_command_line(arguments)
     except SystemExit as exc:
-        if exc.code != 0 and "--json" in arguments:
-            print(json.dumps({"error": "invalid command line (see the usage above)", "exit": 2}))
-        return EXIT_OK if exc.code == 0 else EXIT_BAD_INPUT
-    logging.basicConfig(
-        level=logging.INFO if options.verbose else logging.WARNING,
-        format="motionctl: %(message)s",
-        stream=sys.stderr,
-    )
+        return usage_exit(exc, arguments)
+    log_to_stderr(options.verbose)
     report = Reporter(options.json)
     try:
         check_arity(options.command, options.args)

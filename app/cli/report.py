@@ -4,6 +4,7 @@ one `motionctl: ` prefix and numbers in plain digits."""
 from __future__ import annotations
 
 import json
+import logging
 import re
 import sys
 from typing import Any
@@ -30,6 +31,23 @@ def plain_error(problem: object) -> str:
     if again is not None and text.count(again.group(2)) > 1:
         text = text[: again.start()] + again.group(1)
     return text
+
+
+def usage_exit(exc: SystemExit, arguments: list[str]) -> int:
+    """The exit status of a command line argparse refused (or of --help): 0 or 2, with a JSON
+    line saying so when --json was asked for."""
+    if exc.code != 0 and "--json" in arguments:
+        print(json.dumps({"error": "invalid command line (see the usage above)", "exit": 2}))
+    return 0 if exc.code == 0 else 2
+
+
+def log_to_stderr(verbose: bool) -> None:
+    """motionctl's logging: warnings on stderr (info too with -v), each line prefixed."""
+    logging.basicConfig(
+        level=logging.INFO if verbose else logging.WARNING,
+        format=PREFIX + "%(message)s",
+        stream=sys.stderr,
+    )
 
 
 def say(text: object) -> None:
