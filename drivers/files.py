@@ -158,6 +158,17 @@ def _line_at(text: str, index: int, lines_before: int) -> int:
     return lines_before + len((text[:index] + "x").splitlines())
 
 
+def read_bytes(path: str | Path, max_bytes: int, what: str, error: type[BadFile]) -> bytes:
+    """The whole content of a file of at most `max_bytes`, undecoded (for a format with its own
+    encodings or a binary form, such as DXF); checked and bounded as `read_text` is."""
+    file = Path(path)
+    with open_user_file(file, max_bytes, what, error) as stream:
+        raw = _read(stream, max_bytes + 1, file, what, error)
+    if len(raw) > max_bytes:  # it grew after its size was checked
+        raise _too_large(file, max_bytes, what, error)
+    return raw
+
+
 def read_text(
     path: str | Path, max_bytes: int, what: str, error: type[BadFile], encoding: str = "utf-8"
 ) -> str:

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from drivers import commands as cmd
 from drivers.errors import BadInput, FrameError
 from drivers.messages import Message, message_of
-from drivers.program import ProgramPoint
+from drivers.program import ProgramDwell, ProgramPoint
 from drivers.protocols.base import MoveSequence, Protocol
 from drivers.travel import Point, TravelLimits, check_resolution
 
@@ -110,12 +110,12 @@ class MotionGuard:
         for point in points:
             self.exact(point, what)
 
-    def program(self, points: Sequence[ProgramPoint]) -> None:
+    def program(self, points: Sequence[ProgramPoint | ProgramDwell]) -> None:
         """Refuse a program any point of which is outside the box, before anything is sent."""
         if self.travel is None:
             return
         for number, p in enumerate(points, start=1):
-            if not self.travel.contains((p.x, p.y, p.z)):
+            if isinstance(p, ProgramPoint) and not self.travel.contains((p.x, p.y, p.z)):
                 self.exact((p.x, p.y, p.z), Message("program point {number}", number=number))
 
     def read_raw(self, protocol: Protocol, data: bytes, force: bool = False) -> cmd.Command | None:

@@ -18,7 +18,7 @@ from drivers.protocols.base import Point, Protocol
 COUNTED_PROTOCOLS = frozenset({"visiomex", "firmata"})
 # The commands that start from the counted position (a relative-only device sends the
 # distance from it); `home` too where the device has no home move of its own.
-_NEEDS_COUNT = frozenset({"move", "position"})
+_NEEDS_COUNT = frozenset({"move", "position", "run"})
 # Packet variants whose move digits this firmware reads as µm whatever the type letter.
 _MICROMETRE_VARIANTS = frozenset({"seed", "prefixed"})
 _PACKET_LENGTH = 18

@@ -39,6 +39,13 @@ class ProgramPoint:
     speed: float
 
 
+@dataclass(frozen=True)
+class ProgramDwell:
+    """A pause of `ms` milliseconds in a streamed program (the device's queue waits)."""
+
+    ms: int
+
+
 def _point(values: list[str | float], place: Callable[[], Message]) -> ProgramPoint:
     """The point of one line (or JSON entry); `place()` names it for people, made only when a
     value is refused (a program has up to a million points)."""

@@ -39,7 +39,10 @@ from drivers.protocols.base import Protocol
 from drivers.session_parameters import DeviceParameters
 from drivers.session_setup import LogTarget, make_protocol, open_device_link, travel_limits
 from drivers.session_tap import TrafficTap
-from drivers.streaming import Streamer, StreamProgress
+from drivers.streaming import StreamProgress
+from drivers.toolpath.loader import from_points
+from drivers.toolpath.model import CHORD_TOLERANCE, Toolpath
+from drivers.toolpath.runner import ProgramRunner
 from drivers.traffic import TrafficLogWriter
 from drivers.transport import Link, TrafficListener
 from drivers.travel import TravelLimits
@@ -47,7 +50,7 @@ from drivers.travel import TravelLimits
 __all__ = ["DeviceSession", "NoPrograms", "NoStop", "ProgressListener", "open_device"]
 
 ProgressListener = Callable[[StreamProgress], None]
-"""Told how far a program has got (a StreamProgress) after each frame sent."""
+"""Told how far a program has got (a StreamProgress) after each frame or move."""
 
 
 class NoStop(BadInput):
@@ -55,7 +58,7 @@ class NoStop(BadInput):
 
 
 class NoPrograms(BadInput):
-    """The protocol streams no programs (only laser-frame has a command queue)."""
+    """Kept for scripts that catch it: every protocol runs programs now (none raises it)."""
 
 
 class DeviceSession:
@@ -87,7 +90,7 @@ class DeviceSession:
         """The device's parameters: `all`, `kept()`, `set`, `write`, `write_profile`."""
         self.tap = TrafficTap(link)
         """The traffic tap: listeners, logs (`remove_listener`, `note`)."""
-        self._streamer: Streamer | None = None
+        self._runner: ProgramRunner | None = None
         self._running_in: int | None = None  # the thread an operation runs in (None: idle)
 
     # -- life cycle ----------------------------------------------------------------------------
@@ -207,51 +210,51 @@ class DeviceSession:
     # -- programs ------------------------------------------------------------------------------
     def run_program(
         self,
-        points: Iterable[ProgramPoint],
+        program: Toolpath | Iterable[ProgramPoint],
         progress: ProgressListener | None = None,
         group: int | None = None,
+        *,
+        tolerance: float = CHORD_TOLERANCE,
     ) -> StreamProgress:
-        """Stream a program to the device's queue and wait until it has run it; `progress` is
-        told how far it got after each frame. A point outside the travel box refuses the whole
-        program before anything is sent; `stop` ends it early."""
-        if not self.capabilities.streaming:
-            raise NoPrograms(
-                Message(
-                    "{protocol} runs no programs: it has no command queue (laser-frame has one)",
-                    protocol=self.protocol.name,
-                )
-            )
-        streamer = Streamer(self.client, list(points), progress=progress, guard=self.motion.guard)
-        if group is not None:
-            streamer.group = max(1, min(group, streamer.group))
+        """Run a program and wait until the device has run it: a Toolpath (drivers.toolpath,
+        `load_toolpath` reads G-code, DXF, SVG, CSV and JSON) or points. `progress` is told how
+        far it got (its `source` names the line under way); arcs are cut into chords within
+        `tolerance` mm where the device has no arcs of its own. A program that would leave the
+        travel box, or asks a speed the device does not allow, is refused whole before
+        anything is sent; `stop` ends it early. Laser-frame streams it to its queue (`group`
+        instructions a frame at most), pi-frame gets arcs as arcs, other devices move by move."""
+        toolpath = program if isinstance(program, Toolpath) else from_points(list(program))
+        runner = ProgramRunner(
+            self.motion, toolpath, tolerance=tolerance, progress=progress, group=group
+        )
         with self._operation():
-            self._streamer = streamer
+            self._runner = runner
             try:
-                state = streamer.run()
+                state = runner.run()
             finally:
-                self._streamer = None
-            if streamer.stopped:
+                self._runner = None
+            if runner.stopped and self.capabilities.stop:
                 self.client.execute(cmd.Stop())  # flushes what the device has queued
             self.motion.position()
         return state
 
     def pause_program(self, paused: bool = True) -> None:
-        """Send nothing more of the program under way until resumed (`paused` False); the
-        device goes on with what it has queued. Any thread; nothing happens without a program."""
-        streamer = self._streamer
-        if streamer is not None:
+        """Send nothing more of the program under way until resumed (`paused` False); a
+        queue on the device goes on with what it has. Any thread; nothing happens without one."""
+        runner = self._runner
+        if runner is not None:
             if paused:
-                streamer.pause()
+                runner.pause()
             else:
-                streamer.resume()
+                runner.resume()
 
     def stop_program(self) -> bool:
-        """End the program under way early (any thread): `run_program` then flushes the
-        device's queue with its stop; whether a program was under way."""
-        streamer = self._streamer
-        if streamer is None:
+        """End the program under way early (any thread): `run_program` then stops the device
+        where it has a stop (flushing its queue); whether a program was under way."""
+        runner = self._runner
+        if runner is None:
             return False
-        streamer.stop()
+        runner.stop()
         return True
 
     # -- the traffic tap -----------------------------------------------------------------------

@@ -17,12 +17,13 @@ from drivers.client import ABANDONED, Client
 from drivers.errors import Aborted, DeviceTimeout, Retransmit
 from drivers.messages import Message
 from drivers.motion_guard import MotionGuard
-from drivers.program import ProgramPoint
+from drivers.program import ProgramDwell, ProgramPoint
 from drivers.protocols.laser import (
     GROUP,
     GetStatus,
     LaserProtocol,
     QueuedGroup,
+    dwell_instruction,
     move_instruction,
 )
 from drivers.protocols.laser_codec import Instruction
@@ -49,6 +50,10 @@ class StreamProgress:
     finished: bool = False
     paused_s: float = 0.0
     """Seconds spent paused so far (no instruction sent)."""
+    source: int | None = None
+    """The program's source (drivers/toolpath: its line, entity or element) under way."""
+    row: int = 0
+    """How far along the program's flattened path the stage has got (a row of its points)."""
 
     @property
     def seconds(self) -> float:
@@ -74,7 +79,7 @@ class Streamer:
     def __init__(
         self,
         client: Client,
-        points: list[ProgramPoint],
+        points: list[ProgramPoint | ProgramDwell],
         group: int = GROUP,
         progress: Callable[[StreamProgress], None] | None = None,
         guard: MotionGuard | None = None,
@@ -130,7 +135,7 @@ class Streamer:
             if self._stopped.is_set():
                 break
             chunk = self.points[start : start + size]
-            instructions = tuple(move_instruction(p.x, p.y, p.z, p.speed) for p in chunk)
+            instructions = tuple(_instruction(p) for p in chunk)
             self.state.sent += len(chunk)
             before = self.client.retransmissions
             self._send(instructions)
@@ -196,3 +201,10 @@ class Streamer:
         moving = bool(status["moving"]) if isinstance(status, dict) else False
         waiting = depth + (1 if moving and depth == 0 else 0)
         self.state.executed = max(self.state.executed, self.state.acknowledged - waiting)
+
+
+def _instruction(point: ProgramPoint | ProgramDwell) -> Instruction:
+    """The queued instruction of a program's point (MOVE_LINEAR) or dwell (DWELL)."""
+    if isinstance(point, ProgramDwell):
+        return dwell_instruction(point.ms)
+    return move_instruction(point.x, point.y, point.z, point.speed)

@@ -304,7 +304,11 @@ def test_run_a_thousand_points_over_a_corrupting_line(
     assert stream(record, "RX") == host_tx
     sent = frames(host_tx)
     queued = [f for f in sent if f[0] == SEQUENCE]
-    assert all(f == bytes((GET_STATUS,)) for f in sent if f[0] != SEQUENCE)
+    others = [f for f in sent if f[0] != SEQUENCE]
+    # Queue depths while it runs; once it has run, where the stage is (the result's position).
+    while others and others[-1] == bytes((GET_POSITION,)):
+        others.pop()
+    assert others and all(f == bytes((GET_STATUS,)) for f in others)
     by_number: dict[int, set[bytes]] = {}
     for frame in queued:
         by_number.setdefault(sequence_of(frame)[0], set()).add(frame)
@@ -317,7 +321,7 @@ def test_run_a_thousand_points_over_a_corrupting_line(
     # Every frame was acknowledged with its number (its CRC checked above); together the
     # acknowledged frames hold each move once, in the program's order.
     replies = [decode_instructions(f)[0] for f in frames(stream(host_log, "RX"))]
-    assert {r.word for r in replies} <= {SEQUENCE, ERROR, GET_STATUS}
+    assert {r.word for r in replies} <= {SEQUENCE, ERROR, GET_STATUS, GET_POSITION}
     acked = {int(r.values(INT16)[0]) for r in replies if r.word == SEQUENCE}
     assert acked == set(by_number)
     # In the order first sent: numbers start anywhere and wrap, so sorting them is no order.
@@ -432,7 +436,13 @@ def test_json_run_on_a_clean_line_sends_full_frames(
     result = ok(motionctl(sim.path, "--json", "run", str(program), log=host_log))
     [line] = result.stdout.splitlines()
     summary = json.loads(line)
-    assert set(summary) == {"instructions", "executed", "frames", "retransmissions", "seconds"}
+    # The keys scripts read since the first release stay; a program's name, where it ended
+    # and its last line were added with issue 23.
+    assert set(summary) == {
+        *("instructions", "executed", "frames", "retransmissions", "seconds"),
+        *("program", "finished", "position", "measured", "last_line"),
+    }
+    assert summary["finished"] is True
     assert summary["instructions"] == summary["executed"] == 70
     assert summary["frames"] == 10
     assert summary["retransmissions"] == 0

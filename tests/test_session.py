@@ -107,10 +107,20 @@ def test_stop_where_the_device_has_none_is_a_clear_error_and_sends_nothing() -> 
         stage.add_listener(sent.append)
         with pytest.raises(NoStop, match="coxiris has no stop command"):
             stage.stop()
-        with pytest.raises(NoPrograms, match="coxiris runs no programs"):
-            stage.run_program([ProgramPoint(1.0, 1.0, 0.0, 10.0)])
     assert isinstance(NoStop("x"), BadInput)
     assert sent == []
+
+
+def test_a_device_without_a_queue_runs_a_program_move_by_move() -> None:
+    with open_device("sim://coxiris?instant=1", "coxiris") as stage:
+        state = stage.run_program(
+            [ProgramPoint(1.0, 1.0, 0.0, 10.0), ProgramPoint(2.0, -1.0, 0.0, 12.0)]
+        )
+        here = stage.position()
+        assert state.finished and state.executed == state.total == 2
+        assert (here.x, here.y, here.z) == (2.0, -1.0, 0.0)
+        assert stage.speed() == 10.0  # the panel's speed is set back after the program
+    assert issubclass(NoPrograms, BadInput)  # kept for scripts that catch it; never raised now
 
 
 def test_a_program_outside_the_box_is_refused_whole() -> None:

@@ -9,6 +9,7 @@ from typing import Any
 from app.cli.devices import DEVICE_COMMANDS, check_device_offline, run_device
 from app.cli.log import check_log_offline
 from app.cli.params import check_param_offline, run_param
+from app.cli.run_program import check_run_offline
 from drivers import commands as cmd
 from drivers.errors import BadInput
 from drivers.events import PositionReport
@@ -248,5 +249,7 @@ def validate_offline(
         check_param_offline(protocol, args)
     elif command == "log":
         check_log_offline(args)
+    elif command == "run":
+        check_run_offline(protocol, args, travel)
     elif command in DEVICE_COMMANDS:
         check_device_offline(protocol, command, args)

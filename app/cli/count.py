@@ -23,7 +23,7 @@ from drivers.position_count import (
 )
 from drivers.protocols.base import Point, Protocol
 
-_MOVING = frozenset({"move", "jog", "home", "raw", "macro"})
+_MOVING = frozenset({"move", "jog", "home", "raw", "macro", "run"})
 
 
 class CliCount:

@@ -1,17 +1,17 @@
-"""motionctl commands of one device: Firmata config, step, version; pi-frame dwell, arc."""
+"""motionctl commands of some devices: Firmata config, step, version; pi-frame dwell, arc;
+laser-frame status, stop; and `run` (app/cli/run_program.py), which every device has."""
 
 from __future__ import annotations
 
 import logging
 import sys
-import time
 from typing import Any
 
+from app.cli.run_program import RUN_USAGE, run_program
 from drivers import commands as cmd
 from drivers.errors import BadInput
 from drivers.motion import Motion
 from drivers.numbers import parse_number
-from drivers.program import ProgramPoint, read_program
 from drivers.protocols.base import Protocol
 from drivers.protocols.firmata import (
     StepperConfig,
@@ -20,11 +20,11 @@ from drivers.protocols.firmata import (
     configure_stepper,
     step_parts,
 )
-from drivers.protocols.laser import GetStatus, move_instruction
-from drivers.streaming import Streamer, StreamProgress
+from drivers.protocols.laser import GetStatus
 
 log = logging.getLogger(__name__)
 
+ANY_PROTOCOL = "*"  # a command every protocol has
 DEVICE_COMMANDS = {
     "config": ("firmata", "config --steps-per-rev N --pins P1 P2 [P3 P4]"),
     "step": ("firmata", "step SPEED STEPS   (rpm; negative steps reverse)"),
@@ -33,18 +33,12 @@ DEVICE_COMMANDS = {
     "arc": ("pi-frame", "arc CX CY RADIUS START END --cw|--ccw"),
     "status": ("laser-frame", "status"),
     "stop": ("laser-frame", "stop"),
-    "run": ("laser-frame", "run FILE.csv|FILE.json"),
+    "run": (ANY_PROTOCOL, RUN_USAGE),
 }
-
-
-PROGRESS_EVERY = 0.5  # s between progress lines of `run`
 
 
 class DeviceUsageError(BadInput):
     """A device command's arguments are wrong (exit 2, nothing sent)."""
-
-
-_checked_programs: dict[str, list[ProgramPoint]] = {}  # `run FILE`: read before the port opened
 
 
 def _whole(text: str, what: str) -> int:
@@ -86,43 +80,10 @@ def _arc(args: list[str]) -> cmd.Arc:
     return cmd.Arc(cx, cy, radius, start, end, directions[0] == "--ccw")
 
 
-def _run_program(motion: Motion, points: list[ProgramPoint]) -> dict[str, Any]:
-    """Stream a program with progress on stderr; a summary at the end."""
-    shown = [0.0]
-
-    def progress(state: StreamProgress) -> None:
-        now = time.monotonic()
-        if now - shown[0] < PROGRESS_EVERY and not state.finished:
-            return
-        shown[0] = now
-        left = state.seconds_left()
-        print(
-            f"motionctl: {state.sent}/{state.total} sent, {state.acknowledged} acknowledged, "
-            f"{state.executed} executed, {state.rate:.0f}/s"
-            + (f", about {left:.0f} s left" if left is not None else ""),
-            file=sys.stderr,
-            flush=True,
-        )
-
-    streamer = Streamer(motion.client, points, progress=progress, guard=motion.guard)
-    try:
-        state = streamer.run()
-    except KeyboardInterrupt:
-        streamer.stop()  # motionctl then sends the device's stop (app/cli/interrupt.py)
-        raise
-    return {
-        "instructions": state.total,
-        "executed": state.executed,
-        "frames": state.frames,
-        "retransmissions": state.retransmissions,
-        "seconds": round(state.seconds, 3),
-    }
-
-
 def check_device_offline(protocol: Protocol, command: str, args: list[str]) -> None:
     """Refuse a device command that is wrong before the port is opened (BadInput)."""
     owner, usage = DEVICE_COMMANDS[command]
-    if protocol.name != owner:
+    if owner not in (ANY_PROTOCOL, protocol.name):
         raise DeviceUsageError(f"'{command}' is a {owner} command, not {protocol.name}'s")
     if command == "config":
         steps_per_rev, pins = _config_args(args)
@@ -142,18 +103,6 @@ def check_device_offline(protocol: Protocol, command: str, args: list[str]) -> N
         protocol.encode(_arc(args))
     elif command in ("status", "stop") and args:
         raise DeviceUsageError(f"usage: {usage}")
-    elif command == "run":
-        if len(args) != 1:
-            raise DeviceUsageError(f"usage: {usage}")
-        low, high = protocol.capabilities.speed_range or (0.0, float("inf"))
-        points = _checked_programs[args[0]] = read_program(args[0])
-        for index, point in enumerate(points, start=1):
-            if not low <= point.speed <= high:
-                raise DeviceUsageError(
-                    f"{args[0]} point {index}: speed {point.speed:g} mm/s refused: "
-                    f"the device takes {low:g} to {high:g} mm/s"
-                )
-            move_instruction(point.x, point.y, point.z, point.speed).encode()
 
 
 def run_device(motion: Motion, command: str, args: list[str]) -> dict[str, Any]:
@@ -192,10 +141,7 @@ def run_device(motion: Motion, command: str, args: list[str]) -> dict[str, Any]:
         client.execute(cmd.Stop())
         return {"ok": True}
     if command == "run":
-        # The program read and checked before the port opened: never read again once start-up
-        # commands have gone out (a file changed meanwhile would fail with traffic sent).
-        points = _checked_programs.pop(args[0], None) or read_program(args[0])
-        return _run_program(motion, points)
+        return run_program(motion, args)
     report = motion.arc(_arc(args))
     return {"position": [report.x, report.y, report.z], "measured": False}
 

@@ -60,10 +60,29 @@ def number(value: float) -> str:
     return plain_number(float(value))
 
 
+def _program_text(result: dict[str, Any]) -> str:
+    """`run`: how far the program got (a streamed one as before: frames, retransmissions), and
+    where the stage ended."""
+    if result["frames"]:
+        return (
+            f"{result['executed']}/{result['instructions']} instructions executed in "
+            f"{result['frames']} frames, {result['retransmissions']} retransmission(s), "
+            f"{result['seconds']:.1f} s"
+        )
+    ended = "done" if result["finished"] else "stopped"
+    text = f"{result['program']} {ended}: {result['executed']}/{result['instructions']} moves"
+    text += f" and dwells, {result['seconds']:.1f} s"
+    if result.get("position") is not None:
+        text += "; at " + _position_text(result)
+    return text
+
+
 def result_text(result: dict[str, Any]) -> str:
     """A command's result as the text motionctl prints."""
     if {"macros", "exported", "imported", "macro"} & result.keys():
         return macro_text(result, result_text)
+    if "program" in result:
+        return _program_text(result)
     if "position" in result:
         return _position_text(result)
     if "id" in result:

@@ -113,6 +113,13 @@ class LaserReply(Event):
         )
 
 
+def dwell_instruction(ms: int) -> Instruction:
+    """DWELL for `ms` milliseconds (an int16 field: 0 to 32767)."""
+    if not 0 <= ms <= 32767:
+        raise BadInput(Message("dwell {ms} ms refused: the field is an int16 (0 to 32767)", ms=ms))
+    return Instruction(DWELL, (Field(INT16, (ms,)),))
+
+
 def move_instruction(x: float, y: float, z: float, speed: float) -> Instruction:
     """MOVE_LINEAR to (x, y, z) mm at `speed` mm/s."""
     if not speed > 0:
@@ -253,13 +260,7 @@ class LaserProtocol(Protocol):
         elif isinstance(command, Home):
             queued = [Instruction(GO_HOME)]
         elif isinstance(command, Dwell):
-            if not 0 <= command.ms <= 32767:
-                raise BadInput(
-                    Message(
-                        "dwell {ms} ms refused: the field is an int16 (0 to 32767)", ms=command.ms
-                    )
-                )
-            queued = [Instruction(DWELL, (Field(INT16, (command.ms,)),))]
+            queued = [dwell_instruction(command.ms)]
         elif isinstance(command, QueuedGroup):
             queued = list(command.instructions)
             if not 1 <= len(queued) <= GROUP or any(i.word not in QUEUED for i in queued):

@@ -25,10 +25,24 @@ FAULT_COMMANDS = {
     "garbage N": "send N bytes of noise now",
     "wrong": "answer the next reply frame with an earlier, different frame",
     "reboot": "power-cycle: state lost, banner printed again",
+    "where": "tell where the simulated axes really are, in the device's own units",
 }
 MAX_GARBAGE = 1_000_000
 MAX_DELAY_S = 60.0
 HISTORY = 8  # frames kept to answer with a wrong one
+
+
+def true_position(device: SimulatedDevice) -> tuple[float, ...]:
+    """Where a simulated device's axes are now, in its own units (mm; pi-frame: ticks;
+    Firmata: steps), whatever the host was told."""
+    steps = getattr(device, "steps", None)
+    if callable(steps):  # the Firmata board's one motor
+        return (float(steps()),)
+    position = getattr(device, "position", None)
+    if callable(position):
+        return tuple(float(v) for v in position())
+    stage = device.stage  # type: ignore[attr-defined]  # COXIRIS
+    return tuple(float(v) for v in stage.position(device.clock()))
 
 
 class FaultError(ValueError):
@@ -157,6 +171,8 @@ class FaultyDevice:
                 self.device.boot()
                 self._out = b""
                 self.reboots += 1
+            elif name == "where":
+                return "where " + " ".join(f"{v:.6g}" for v in true_position(self.device))
             else:
                 raise FaultError(f"unknown fault {name!r}; one of: {', '.join(FAULT_COMMANDS)}")
         return " ".join(words)
