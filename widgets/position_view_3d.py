@@ -52,6 +52,7 @@ from widgets._gl_scene import (  # here for its callers of before; it imports no
 )
 from widgets._i18n import fill
 from widgets._pacer import run_paced
+from widgets._program_path import ProgramPath, program_arrays
 from widgets._view_common import REFRESH_INTERVAL_MS, BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
@@ -71,6 +72,7 @@ ESTIMATED_COLOUR = (*CURRENT_COLOUR[:3], 0.5)  # a position estimated, not measu
 AXIS_COLOURS = ((0.90, 0.22, 0.21, 1.0), (0.26, 0.63, 0.28, 1.0), (0.12, 0.53, 0.90, 1.0))
 WORKSPACE_COLOUR = (0.30, 0.80, 0.78, 0.9)
 PREVIEW_COLOUR = (1.0, 0.80, 0.50, 1.0)  # light orange (#ffcc80): a planned path, not yet run
+THEME_ROLE = "theme_role"  # an item's colour role in app.window.theme.PlotColors: recoloured
 BACKGROUND = (24, 24, 28, 255)
 NOTICE_COLOUR = (97, 97, 97)
 NOTICE_STYLE = "color: #616161; border: 1px dashed #9e9e9e;"
@@ -258,6 +260,8 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._target: tuple[float, float, float] | None = None
         self._workspace: Box | None = None
         self._preview = np.zeros((0, 3))
+        self._program: ProgramPath | None = None
+        self._program_done = 0
         self._current: np.ndarray | None = None
         self._follow = False
         self._estimated = False
@@ -321,11 +325,32 @@ class PositionView3D(BufferedViewMixin, QWidget):
             item.setGLOptions("translucent")
         for item in (self.grid_item, self.axes_item, self.workspace_item, *self.labels):
             self.addItem(item)
+        # A program's path, under the trail: its cut segments as lines, its travel (rapid) moves
+        # as dashes (GL has no dashed lines: each is cut into pieces), drawn as the trail's
+        # history is (1 px, no antialiasing: cheap in software OpenGL) from vertex buffers
+        # that hold the whole program in reverse order, so what is left to run is a prefix
+        # and the run's progress uploads nothing.
+        self.program_cut, self.program_rapid = (
+            _lines(
+                PREVIEW_COLOUR,
+                1.0,
+                mode="lines",
+                kind=_trail_class(),
+                antialias=False,
+                glOptions=_blended_without_depth(),
+            )
+            for _ in range(2)
+        )
+        for item in (self.program_cut, self.program_rapid):
+            item.setVisible(False)
+            setattr(item, THEME_ROLE, "preview")
+            self.addItem(item)
         for item in (self.trail_history, self.trail, self.current_marker, self.target_marker):
             item.setVisible(False)
             self.addItem(item)
         self.preview_item = _lines(PREVIEW_COLOUR, 1.5, mode="line_strip")
         self.preview_item.setVisible(False)
+        setattr(self.preview_item, THEME_ROLE, "preview")
         self.addItem(self.preview_item)
 
         self._make_buttons()
@@ -408,6 +433,49 @@ class PositionView3D(BufferedViewMixin, QWidget):
     def preview(self) -> list[tuple[float, float, float]]:
         """The planned path shown, as (x, y, z) points in mm; [] when none."""
         return preview_tuples(self._preview)
+
+    def set_program(self, points: np.ndarray | None, rapid: np.ndarray | None = None) -> None:
+        """Draw a whole program: `points` (n, 3) mm, row 0 its start and row i the end of
+        segment i; `rapid` (n,) whether segment i is a travel move (dashed; the others solid).
+        None or fewer than 2 points removes it. The grid grows to hold it."""
+        array, moves = program_arrays(points, rapid)
+        self._program = ProgramPath(array, moves) if len(array) >= 2 else None
+        self._program_done = 0
+        self._draw_program(fresh=True)
+        if self._program is not None:
+            corners = box_corners(tuple(zip(self._program.low, self._program.high, strict=True)))
+            if not self._grid.contains(corners):
+                self._fit_grid()
+        self._redraw()
+
+    def set_program_done(self, row: int) -> None:
+        """The program has run up to `row` (the trail shows it): draw only rows >= `row`."""
+        if self._program is None:
+            return
+        row = self._program.clamp(row)
+        if row != self._program_done:
+            self._program_done = row
+            self._draw_program(fresh=False)
+            self._redraw()
+
+    def program(self) -> np.ndarray:
+        """The program's points drawn, (n, 3) mm from the row it is done up to; (0, 3) when
+        none."""
+        if self._program is None:
+            return np.zeros((0, 3))
+        return self._program.points[self._program_done :]
+
+    def _draw_program(self, fresh: bool) -> None:
+        """Give the program's items what is left of it; `fresh`: a new program (uploaded
+        whole), else the same one further on (a shorter prefix: nothing uploaded)."""
+        program, row = self._program, self._program_done
+        for item, part in (
+            (self.program_cut, "cut_vertices"),
+            (self.program_rapid, "dash_vertices"),
+        ):
+            vertices = getattr(program, part)(row) if program is not None else np.zeros((0, 3))
+            item.set_vertices(vertices, 0 if fresh else len(vertices))
+            item.setVisible(len(vertices) >= 2)
 
     def grid_spacing(self) -> float:
         """The distance between grid lines, in mm."""
@@ -500,6 +568,10 @@ class PositionView3D(BufferedViewMixin, QWidget):
         if len(self._preview):
             low, high = self._preview.min(axis=0), self._preview.max(axis=0)
             parts.append(box_corners(tuple(zip(low, high, strict=True))))
+        if self._program is not None:  # the whole program's, done part included: no jumps
+            parts.append(
+                box_corners(tuple(zip(self._program.low, self._program.high, strict=True)))
+            )
         return np.vstack(parts)
 
     def _fit_points(self, data_only: bool) -> tuple[np.ndarray, np.ndarray]:
@@ -744,6 +816,16 @@ class PositionView3DPlaceholder(QLabel):
     def preview(self) -> list[tuple[float, float, float]]:
         """Nothing drawn: []."""
         return []
+
+    def set_program(self, points: np.ndarray | None, rapid: np.ndarray | None = None) -> None:
+        """Nothing to draw."""
+
+    def set_program_done(self, row: int) -> None:
+        """Nothing to draw."""
+
+    def program(self) -> np.ndarray:
+        """Nothing drawn: (0, 3)."""
+        return np.zeros((0, 3))
 
     def grid_spacing(self) -> float:
         """No grid: 0.0."""

@@ -27,6 +27,7 @@ log = logging.getLogger(__name__)
 ThemeChoice = Literal["system", "light", "dark"]
 THEME_CHOICES: tuple[ThemeChoice, ...] = ("system", "light", "dark")
 THEME_SETTING = "view/theme"  # a suggested QSettings key for the choice
+THEME_ROLE = "theme_role"  # a plot item's attribute naming its PlotColors field (recoloured)
 FUSION = "fusion"
 # Styles that draw a dark or a light scheme when asked (QStyleHints.setColorScheme, Qt 6.8+);
 # any other (e.g. "windowsvista") is replaced by Fusion for an explicit choice.
@@ -303,8 +304,9 @@ def apply_theme(app: QApplication, choice: str | None = "system") -> PlotColors:
 
 def apply_plot_colors(widget: pg.PlotWidget | pg.PlotItem, colors: PlotColors) -> None:
     """Recolour a pyqtgraph PlotWidget (or PlotItem): background, axes, tick labels, title,
-    legend text, and the pg.GridItem items in its view box. Curves and markers keep their pens:
-    set those from `colors.trail`, `colors.current`, ... yourself."""
+    legend text, the pg.GridItem items in its view box, and its curves that name a colour role
+    in a `theme_role` attribute (a PlotColors field: their pen's width and style kept). Other
+    curves and markers keep their pens: set those from `colors.trail`, ... yourself."""
     import pyqtgraph as pg
 
     if hasattr(widget, "setBackground"):
@@ -320,6 +322,12 @@ def apply_plot_colors(widget: pg.PlotWidget | pg.PlotItem, colors: PlotColors) -
     for child in item.getViewBox().addedItems:
         if isinstance(child, pg.GridItem):
             child.setPen(pg.mkPen(colors.grid))
+    for child in item.items:  # all the plot's items, those outside its auto-range too
+        role = getattr(child, THEME_ROLE, None)
+        if role is not None and isinstance(child, pg.PlotCurveItem):
+            pen = pg.mkPen(child.opts["pen"])  # a copy: its width and dashes kept
+            pen.setColor(colors.qcolor(role))
+            child.setPen(pen)
     legend = item.legend
     if legend is not None:
         legend.setLabelTextColor(colors.text)
@@ -332,7 +340,8 @@ def apply_plot_colors(widget: pg.PlotWidget | pg.PlotItem, colors: PlotColors) -
 
 
 def apply_gl_colors(view: Any, colors: PlotColors) -> None:
-    """Recolour a pyqtgraph GLViewWidget: its background and its GLGridItem items. Lines,
+    """Recolour a pyqtgraph GLViewWidget: its background, its GLGridItem items and its lines
+    that name a colour role in a `theme_role` attribute (a PlotColors field). Other lines,
     markers and text keep their colours: set those from `colors.gl(...)` yourself."""
     import pyqtgraph.opengl as gl
 
@@ -340,6 +349,9 @@ def apply_gl_colors(view: Any, colors: PlotColors) -> None:
     for item in view.items:
         if isinstance(item, gl.GLGridItem):
             item.setColor(colors.grid)
+        role = getattr(item, THEME_ROLE, None)
+        if role is not None and isinstance(item, gl.GLLinePlotItem):
+            item.setData(color=colors.gl(role))
 
 
 class ThemeMenu(QMenu):
