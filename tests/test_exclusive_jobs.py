@@ -50,6 +50,7 @@ def test_a_jog_during_a_program_is_refused_and_nothing_moves_after_it(
     path = _program(tmp_path / "line.csv", 30, speed=10.0)  # 0.5 mm at 10 mm/s: 1.5 s in all
     panel._choose_path = lambda: str(path)  # type: ignore[method-assign]
     qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: not window.devices.programs.reading, timeout=5000)
     qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: panel.stop_button.isEnabled(), timeout=5000)
 
@@ -108,13 +109,15 @@ def test_a_program_cannot_start_while_a_macro_runs(
     path = _program(tmp_path / "line.csv", 3, speed=100.0)
     panel._choose_path = lambda: str(path)  # type: ignore[method-assign]
     qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: not window.devices.programs.reading, timeout=5000)
     assert panel.run_button.isEnabled()
     macro = Macro("slow", "laser-frame", ("speed 5", "move 5 0", "move 0 0"))  # 2 s of moves
     assert window.submit_job(jobs.MacroJob(macro))
     assert not panel.run_button.isEnabled()
     assert "Not now" in panel.run_button.toolTip()
     assert not window.jog_panel.isEnabled()
-    assert not window.submit_job(jobs.StreamJob(tuple(window.devices.points), "line.csv"))
+    toolpath = window.devices.programs.toolpath
+    assert not window.submit_job(jobs.StreamJob(toolpath, name="line.csv"))
     assert not window.submit_job(jobs.MacroJob(macro))  # nor a second macro behind it
     assert "refused: macro slow" in window.status_line.message()
     qtbot.waitUntil(lambda: window.jog_panel.isEnabled(), timeout=15000)

@@ -40,6 +40,7 @@ def test_while_paused_the_count_and_position_follow_the_device(
     path.write_text("x,y,z,speed\n" + "\n".join(rows) + "\n")
     panel._choose_path = lambda: str(path)  # type: ignore[method-assign]
     qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: not window.devices.programs.reading, timeout=5000)
     qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: "s left" in panel.figures.text(), timeout=15000)
     qtbot.waitUntil(lambda: _figure(panel.figures.text(), "acknowledged") >= 40, timeout=15000)

@@ -1,13 +1,30 @@
-"""A program of points: load it, see it, stream it with progress, pause, resume and stop."""
+"""A program: load it (G-code, DXF, SVG, CSV or JSON), see its figures and lines, run it with
+progress line by line, pause, resume and stop."""
 
 from __future__ import annotations
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, Signal
+from collections.abc import Collection, Sequence
+from typing import Protocol
+
+from PySide6.QtCore import (
+    QT_TRANSLATE_NOOP,
+    QAbstractListModel,
+    QModelIndex,
+    QObject,
+    QPersistentModelIndex,
+    Qt,
+    QTimer,
+    Signal,
+)
+from PySide6.QtGui import QStandardItem, QStandardItemModel
 from PySide6.QtWidgets import (
+    QAbstractItemView,
+    QDoubleSpinBox,
     QFileDialog,
     QGridLayout,
     QHBoxLayout,
     QLabel,
+    QListView,
     QProgressBar,
     QVBoxLayout,
     QWidget,
@@ -16,12 +33,71 @@ from PySide6.QtWidgets import (
 from widgets._buttons import make_button
 from widgets._i18n import fill
 
-PROGRAM_FILTER = QT_TRANSLATE_NOOP("ProgramPanel", "Programs (*.csv *.json);;All files (*)")
+PROGRAM_FILTER = QT_TRANSLATE_NOOP(
+    "ProgramPanel",
+    "Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;"
+    "G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;"
+    "Points (*.csv *.json);;All files (*)",
+)
 NO_PROGRAM = QT_TRANSLATE_NOOP("ProgramPanel", "no program loaded")  # both translated at use
+ERROR_STYLE = "color: #c62828;"
+TOLERANCE_DEFAULT = 0.01  # mm, as drivers/toolpath/model.py CHORD_TOLERANCE
+TOLERANCE_SETTLE_MS = 400  # the path is made again once the tolerance stops changing
+
+
+class SourceLine(Protocol):
+    """What the program list shows of a line (drivers.toolpath.Source)."""
+
+    @property
+    def kind(self) -> str:
+        """ "line", "entity", "element" or "point"."""
+
+    @property
+    def number(self) -> int:
+        """Its number in the file, from 1."""
+
+    @property
+    def text(self) -> str:
+        """What it says."""
+
+
+class ProgramLines(QAbstractListModel):
+    """The program's lines ("line 12  G1 X10"), made as they are shown: a 100,000-line file
+    lists at once."""
+
+    def __init__(self, parent: QObject | None = None) -> None:
+        super().__init__(parent)
+        self._sources: Sequence[SourceLine] = ()
+        self._labels: dict[str, str] = {}
+
+    def set_sources(self, sources: Sequence[SourceLine], labels: dict[str, str]) -> None:
+        """Show these lines; `labels`: per kind, its template ("line %1")."""
+        self.beginResetModel()
+        self._sources = sources
+        self._labels = labels
+        self.endResetModel()
+
+    def rowCount(self, parent: QModelIndex | QPersistentModelIndex = QModelIndex()) -> int:  # noqa: B008
+        """The lines (a list: no children)."""
+        return 0 if parent.isValid() else len(self._sources)
+
+    def columnCount(self, parent: QModelIndex | QPersistentModelIndex = QModelIndex()) -> int:  # noqa: B008
+        """One column."""
+        return 0 if parent.isValid() else 1
+
+    def data(
+        self, index: QModelIndex | QPersistentModelIndex, role: int = Qt.ItemDataRole.DisplayRole
+    ) -> object:
+        """A line's text."""
+        if role != Qt.ItemDataRole.DisplayRole or not index.isValid():
+            return None
+        source = self._sources[index.row()]
+        label = fill(self._labels.get(source.kind, "%1"), source.number)
+        return f"{label}  {source.text}"
 
 
 class ProgramPanel(QWidget):
-    """Buttons and progress for streaming; the app loads files and runs the stream."""
+    """Buttons, figures, lines and progress of a program; the app reads files and runs it."""
 
     load_requested = Signal(str)  # a path
     save_requested = Signal(str)  # a path (the panel's JSON)
@@ -29,40 +105,65 @@ class ProgramPanel(QWidget):
     pause_requested = Signal()
     resume_requested = Signal()
     stop_requested = Signal()
+    tolerance_changed = Signal(float)  # mm, once it stops changing
+    layers_changed = Signal(list)  # the DXF layers checked (names)
 
     def __init__(self, parent: QWidget | None = None) -> None:
         super().__init__(parent)
         self.setObjectName("programPanel")
         self._loaded = False
         self._running = False
-        self._stopping = False  # Stop was pressed: the program is ending
+        self._stopping = False  # Stop was pressed: the program ends now
         self._figures: tuple[int, int, int, float, float | None, int] | None = None
-        self._blocked = ""  # why a program cannot start now ("": it can)
+        self._blocked = ""  # why no program may start now ("": it may)
+        self._refused = ""  # why this program cannot run ("": it can)
+        self._loading = False
+        self._saveable = False
         self.file_label = QLabel(self.tr(NO_PROGRAM))
         self.file_label.setObjectName("programFile")
         self.file_label.setWordWrap(True)
         self.load_button = make_button(
             self.tr("&Load…"),
             "programLoad",
-            self.tr("Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON"),
+            self.tr(
+                "Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm "
+                "and mm/s, or JSON)"
+            ),
         )
-        self.save_button = make_button(
-            self.tr("Save…"),
-            "programSave",
-            self.tr("Save the loaded program as JSON (x, y, z, speed per point)"),
-        )
-        self._run_tip = self.tr("Stream the program to the device, 7 moves a frame")
+        self._save_tip = self.tr("Save the loaded program as JSON (x, y, z, speed per point)")
+        self.save_button = make_button(self.tr("Save…"), "programSave", self._save_tip)
+        self._run_tip = self.tr("Run the program on the device (checked against the box first)")
         self.run_button = make_button(self.tr("&Run"), "programRun", self._run_tip)
         self.pause_button = make_button(
             self.tr("P&ause"),
             "programPause",
-            self.tr("Send nothing more until Resume (queued moves go on)"),
+            self.tr("Send nothing more until Resume (a device's queued moves go on)"),
         )
         self.stop_button = make_button(
             self.tr("&Stop"),
             "programStop",
-            self.tr("Send nothing more and flush the device's queue (STOP)"),
+            self.tr("Send nothing more and stop the device (its queue flushed)"),
         )
+        self.tolerance = QDoubleSpinBox()
+        self.tolerance.setObjectName("programTolerance")
+        self.tolerance.setDecimals(3)
+        self.tolerance.setRange(0.001, 1.0)
+        self.tolerance.setSingleStep(0.005)
+        self.tolerance.setValue(TOLERANCE_DEFAULT)
+        self.tolerance.setSuffix(self.tr(" mm"))
+        self.tolerance.setToolTip(
+            self.tr(
+                "Chord tolerance: how far the straight moves an arc or curve is cut into may "
+                "stray from it"
+            )
+        )
+        self._tolerance_timer = QTimer(self)
+        self._tolerance_timer.setSingleShot(True)
+        self._tolerance_timer.setInterval(TOLERANCE_SETTLE_MS)
+        self._tolerance_timer.timeout.connect(
+            lambda: self.tolerance_changed.emit(self.tolerance.value())
+        )
+        self.tolerance.valueChanged.connect(lambda _value: self._tolerance_timer.start())
         self.progress = QProgressBar()
         self.progress.setObjectName("programProgress")
         self.progress.setToolTip(self.tr("Instructions executed by the device"))
@@ -70,6 +171,35 @@ class ProgramPanel(QWidget):
         self.figures = QLabel()
         self.figures.setObjectName("programFigures")
         self.figures.setWordWrap(True)
+        self.summary = QLabel()
+        self.summary.setObjectName("programSummary")
+        self.summary.setWordWrap(True)
+        self.notices = QLabel()
+        self.notices.setObjectName("programNotices")
+        self.notices.setWordWrap(True)
+        self.notices.hide()
+        self.line_model = ProgramLines(self)
+        self.lines = QListView()
+        self.lines.setObjectName("programLines")
+        self.lines.setModel(self.line_model)
+        self.lines.setUniformItemSizes(True)
+        self.lines.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.lines.setSelectionMode(QAbstractItemView.SelectionMode.SingleSelection)
+        self.lines.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # the arrow keys stay with jogging
+        self.lines.setMinimumHeight(90)
+        self.lines.setToolTip(self.tr("The program's lines; the one under way is highlighted"))
+        self.layer_model = QStandardItemModel(self)
+        self.layers = QListView()
+        self.layers.setObjectName("programLayers")
+        self.layers.setModel(self.layer_model)
+        self.layers.setEditTriggers(QAbstractItemView.EditTrigger.NoEditTriggers)
+        self.layers.setFocusPolicy(Qt.FocusPolicy.NoFocus)
+        self.layers.setToolTip(self.tr("The drawing's layers: the checked ones are run"))
+        self.layers.setMaximumWidth(180)
+        self.layers.hide()
+        self.layer_model.itemChanged.connect(
+            lambda _item: self.layers_changed.emit(self.checked_layers())
+        )
         self.load_button.clicked.connect(self._load)
         self.save_button.clicked.connect(self._save)
         self.run_button.clicked.connect(self.run_requested)
@@ -87,17 +217,28 @@ class ProgramPanel(QWidget):
         grid = QGridLayout()
         grid.addWidget(QLabel(self.tr("Program:")), 0, 0)
         grid.addWidget(self.file_label, 0, 1)
+        tolerance_label = QLabel(self.tr("Chord tolerance:"))
+        tolerance_label.setBuddy(self.tolerance)
+        grid.addWidget(tolerance_label, 1, 0)
+        grid.addWidget(self.tolerance, 1, 1, Qt.AlignmentFlag.AlignLeft)
         grid.setColumnStretch(1, 1)
-        layout = QVBoxLayout(self)
-        layout.addLayout(grid)
-        layout.addLayout(buttons)
-        layout.addWidget(self.progress)
-        layout.addWidget(self.figures)
-        layout.addStretch(1)
+        controls = QVBoxLayout()
+        controls.addLayout(grid)
+        controls.addLayout(buttons)
+        controls.addWidget(self.progress)
+        controls.addWidget(self.figures)
+        controls.addWidget(self.summary)
+        controls.addWidget(self.notices)
+        controls.addStretch(1)
+        layout = QHBoxLayout(self)  # the lines beside the controls: seen in a low dock too
+        layout.addLayout(controls, 3)
+        layout.addWidget(self.lines, 2)
+        layout.addWidget(self.layers)
         self._paused = False
         self.set_program("", 0)
         self.set_running(False)
 
+    # -- files ---------------------------------------------------------------------------------
     def _choose_path(self) -> str:
         path, _ = QFileDialog.getOpenFileName(
             self, self.tr("Load a program"), "", self.tr(PROGRAM_FILTER)
@@ -120,6 +261,7 @@ class ProgramPanel(QWidget):
         if path:
             self.load_requested.emit(path)
 
+    # -- buttons -------------------------------------------------------------------------------
     def _stop_clicked(self) -> None:
         self._stopping = True  # no time left is shown any more: the program ends now
         self._show_figures()
@@ -131,30 +273,160 @@ class ProgramPanel(QWidget):
         else:
             self.pause_requested.emit()
 
-    def set_program(self, name: str, points: int) -> None:
-        """Show the loaded program (an empty name: none)."""
+    # -- the program ---------------------------------------------------------------------------
+    def set_loading(self, name: str) -> None:
+        """A file is being read: say so; Run off until it is in."""
+        self._loading = True
+        self.file_label.setText(fill(self.tr("reading %1…"), name))
+        self._show_run()
+
+    def set_program(self, name: str, points: int, kind: str = "point") -> None:
+        """Show the loaded program (an empty name: none) and its count of `kind` ("point",
+        "line", "entity", "element": what its sources are)."""
+        self._loading = False
         self._loaded = bool(name)
         if name:
-            self.file_label.setText(fill(self.tr("%1 (%2 points)"), name, points))
+            counts = {
+                "line": self.tr("%1 (%2 lines)"),
+                "entity": self.tr("%1 (%2 entities)"),
+                "element": self.tr("%1 (%2 elements)"),
+            }
+            template = counts.get(kind, self.tr("%1 (%2 points)"))
+            self.file_label.setText(fill(template, name, points))
         else:
             self.file_label.setText(self.tr(NO_PROGRAM))
+            self.set_lines([])
+            self.summary.clear()
+            self.set_notices([])
         self.progress.setRange(0, max(points, 1))
         self.progress.setValue(0)
         self.progress.setFormat(self.tr("%v / %m executed") if name else self.tr("no program"))
         self._show_run()
-        self.save_button.setEnabled(bool(name))
+        self.set_saveable(bool(name))
+
+    def set_lines(self, sources: Sequence[SourceLine]) -> None:
+        """List the program's lines (drivers.toolpath.Source: kind, number, text)."""
+        labels = {
+            "line": self.tr("line %1"),
+            "entity": self.tr("entity %1"),
+            "element": self.tr("element %1"),
+            "point": self.tr("point %1"),
+        }
+        self.line_model.set_sources(sources, labels)
+
+    def show_line(self, row: int | None) -> None:
+        """Highlight the line under way (a row of the list; None: none) and scroll to it."""
+        if row is None or not 0 <= row < self.line_model.rowCount():
+            self.lines.clearSelection()
+            return
+        index = self.line_model.index(row, 0)
+        if self.lines.currentIndex() == index:
+            return
+        self.lines.setCurrentIndex(index)
+        self.lines.scrollTo(index, QAbstractItemView.ScrollHint.EnsureVisible)
+
+    def current_line(self) -> int | None:
+        """The row of the line highlighted (None: none)."""
+        index = self.lines.currentIndex()
+        return index.row() if index.isValid() else None
+
+    def show_summary(
+        self,
+        length: float,
+        travel: float,
+        low: tuple[float, float, float],
+        high: tuple[float, float, float],
+        seconds: float,
+        speed: float,
+        segments: int,
+    ) -> None:
+        """The program's figures: length (travel part), box, time at `speed` mm/s, segments."""
+        whole = round(seconds)
+        clock = f"{whole // 3600}:{whole // 60 % 60:02d}:{whole % 60:02d}"
+        lines = [
+            fill(
+                self.tr("length %1 mm (travel moves %2 mm), %3 segments"),
+                f"{length:.1f}",
+                f"{travel:.1f}",
+                segments,
+            ),
+            fill(
+                self.tr("box X %1 to %2, Y %3 to %4, Z %5 to %6 mm"),
+                *(f"{value:.3g}" for pair in zip(low, high, strict=True) for value in pair),
+            ),
+            fill(
+                self.tr("about %1 (h:mm:ss) at %2 mm/s where the program sets no speed"),
+                clock,
+                f"{speed:g}",
+            ),
+        ]
+        self.summary.setText("\n".join(lines))
+
+    def set_notices(self, notices: Sequence[str]) -> None:
+        """What reading the file noticed (skipped codes, units assumed...); none: hidden."""
+        self.notices.setText("\n".join(notices))
+        self.notices.setVisible(bool(notices))
+
+    def set_layers(self, layers: Sequence[str], chosen: Collection[str] | None) -> None:
+        """The drawing's layers, `chosen` checked (None: all); none: the list is hidden."""
+        model = self.layer_model
+        model.blockSignals(True)
+        model.clear()
+        for name in layers:
+            item = QStandardItem(name)
+            item.setEditable(False)
+            item.setCheckable(True)
+            checked = chosen is None or name in chosen
+            item.setCheckState(Qt.CheckState.Checked if checked else Qt.CheckState.Unchecked)
+            model.appendRow(item)
+        model.blockSignals(False)
+        self.layers.reset()
+        self.layers.setVisible(bool(layers))
+
+    def checked_layers(self) -> list[str]:
+        """The layers checked in the list."""
+        model = self.layer_model
+        items = (model.item(row) for row in range(model.rowCount()))
+        return [i.text() for i in items if i.checkState() == Qt.CheckState.Checked]
+
+    def set_saveable(self, saveable: bool, reason: str = "") -> None:
+        """Save… on (a program of points) or off, saying why in its tooltip."""
+        self._saveable = saveable
+        self.save_button.setEnabled(saveable and not self._running)
+        tip = self._save_tip
+        if reason:
+            tip = fill(self.tr("%1\nNot for this program: %2"), tip, reason)
+        self.save_button.setToolTip(tip)
+
+    def set_refused(self, reason: str) -> None:
+        """Why the program loaded cannot run (it leaves the travel box...), in red and in
+        Run's tooltip; "": it can."""
+        self._refused = reason
+        if reason:
+            self.show_error(reason)
+        elif self.figures.styleSheet():
+            self.figures.clear()
+            self.figures.setStyleSheet("")
+        self._show_run()
+
+    def refused(self) -> str:
+        """Why the program loaded cannot run ("": it can)."""
+        return self._refused
 
     def show_error(self, text: str) -> None:
         """A load or run problem, in red (it stays until the next progress)."""
         self._figures = None
-        self.figures.setStyleSheet("color: #c62828;")
+        self.figures.setStyleSheet(ERROR_STYLE)
         self.figures.setText(text)
 
+    # -- running -------------------------------------------------------------------------------
     def set_running(self, running: bool) -> None:
-        """While streaming: Run and Load off, Pause and Stop on."""
+        """While a program runs: Run, Load, Save and the options off; Pause and Stop on."""
         self._running = running
         self._stopping = False
-        self.load_button.setEnabled(not running)
+        for widget in (self.load_button, self.tolerance, self.layers):
+            widget.setEnabled(not running)
+        self.save_button.setEnabled(self._saveable and not running)
         self._show_run()
         self.pause_button.setEnabled(running)
         self.stop_button.setEnabled(running)
@@ -168,8 +440,16 @@ class ProgramPanel(QWidget):
         self._show_run()
 
     def _show_run(self) -> None:
-        self.run_button.setEnabled(self._loaded and not self._running and not self._blocked)
+        self.run_button.setEnabled(
+            self._loaded
+            and not self._loading
+            and not self._running
+            and not self._blocked
+            and not self._refused
+        )
         tip = self._run_tip
+        if self._refused:
+            tip = fill(self.tr("%1\nRefused: %2"), tip, self._refused)
         if self._blocked:
             tip = fill(self.tr("%1\nNot now: %2"), tip, self._blocked)
         self.run_button.setToolTip(tip)
@@ -188,9 +468,12 @@ class ProgramPanel(QWidget):
         rate: float,
         seconds_left: float | None,
         retransmissions: int,
+        total: int | None = None,
     ) -> None:
         """Counts, rate, and the time left while the program runs ("paused" while paused;
-        nothing once it is stopped or has ended)."""
+        nothing once it is stopped or has ended); `total`: the instructions in all."""
+        if total is not None and total != self.progress.maximum():
+            self.progress.setRange(0, max(total, 1))
         self.progress.setValue(executed)
         self._figures = (sent, acknowledged, executed, rate, seconds_left, retransmissions)
         self._show_figures()

@@ -1,27 +1,23 @@
-"""Docks of one device kind: Firmata stepper setup, pi-frame ticks per mm, arcs and dwell; and
-the connected device's travel limits."""
+"""Docks of one device kind: Firmata stepper setup, pi-frame ticks per mm, arcs and dwell; the
+Program dock (app/window/program_dock.py drives it); and the connected device's travel limits."""
 
 from __future__ import annotations
 
 import dataclasses
 import logging
 from collections.abc import Callable
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QObject, Qt
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QWidget
 
-from app.common.messages import localized
 from app.common.settings import write_protocol_settings
 from app.window import jobs
 from app.window.dock_layout import DEVICE_DOCKS
+from app.window.program_dock import ProgramDock
 from app.window.worker import DeviceInfo
 from drivers.capabilities import Capabilities
 from drivers.commands import Arc
-from drivers.errors import BadInput
-from drivers.program import ProgramPoint, read_program, write_program
-from drivers.streaming import StreamProgress
 from widgets._i18n import fill
 from widgets.arc_entry import ArcEntry
 from widgets.dwell_entry import DwellEntry
@@ -59,8 +55,6 @@ class DeviceDocks(QObject):
         self.dwell = DwellEntry(window)
         self.program = ProgramPanel(window)
         self.travel = TravelLimitsPanel(window)
-        self.points: list[ProgramPoint] = []
-        self.program_name = ""
         self.firmata_dock = self._dock(self.firmata)
         self.piframe_dock = self._dock(self.piframe)
         self.arc_dock = self._dock(self.arc)
@@ -70,6 +64,7 @@ class DeviceDocks(QObject):
         made = (self.firmata_dock, self.piframe_dock, self.arc_dock, self.dwell_dock)
         by_name = {dock.objectName(): dock for dock in (*made, self.program_dock, self.travel_dock)}
         self.docks = tuple(by_name[name] for name in DEVICE_DOCKS)  # in tab order
+        self.programs = ProgramDock(self.program, services, self)
         self._wire()
 
     def _dock(self, widget: QWidget) -> QDockWidget:
@@ -100,6 +95,7 @@ class DeviceDocks(QObject):
     def set_speed(self, speed: float) -> None:
         """The device's speed (mm/s), for the panels that show it."""
         self.firmata.set_speed_mm_s(speed)
+        self.programs.set_speed(speed)
 
     def _wire(self) -> None:
         self.firmata.configure_requested.connect(self._configure_stepper)
@@ -113,14 +109,6 @@ class DeviceDocks(QObject):
         self.dwell.dwell_requested.connect(lambda ms: self.services.submit_job(jobs.DwellJob(ms)))
         self.dwell.refused.connect(self.services.say)  # a typed dwell that cannot be sent
         self.services.worker.job_finished.connect(self._on_job_finished)
-        self.services.worker.job_failed.connect(self._on_job_failed)
-        self.services.worker.stream_progress.connect(self._on_stream_progress)
-        self.program.load_requested.connect(self.load_program)
-        self.program.save_requested.connect(self.save_program)
-        self.program.run_requested.connect(self.run_program)
-        self.program.pause_requested.connect(lambda: self._pause(True))
-        self.program.resume_requested.connect(lambda: self._pause(False))
-        self.program.stop_requested.connect(self.services.worker_thread.stream_stop)
         self.travel.apply_requested.connect(self.services.set_travel_limits)
 
     # -- connection --------------------------------------------------------------------------
@@ -137,7 +125,9 @@ class DeviceDocks(QObject):
             )  # fmt: skip
         if "ticks_per_mm" in names:
             self.piframe.set_ticks_per_mm(values["ticks_per_mm"])
+        self.programs.set_speed(info.capabilities.default_speed)  # until the device tells
         self.adapt(info.capabilities)
+        self.programs.travel_changed()
         travel = self.services.travel
         self.travel.set_device(
             fill(self.tr("%1 on %2"), info.protocol, info.port),
@@ -160,7 +150,7 @@ class DeviceDocks(QObject):
             {
                 self.arc_dock.objectName(): caps.arcs,
                 self.dwell_dock.objectName(): caps.dwell,
-                self.program_dock.objectName(): caps.streaming,
+                self.program_dock.objectName(): caps.absolute_moves or caps.relative_moves,
             }
         )
         self.arc.set_resolution(caps.resolution)
@@ -189,6 +179,7 @@ class DeviceDocks(QObject):
         )
         if self.info is not None:
             self.adapt(self.info.capabilities)  # the arc entry's box
+        self.programs.travel_changed()  # the program loaded is checked again
 
     # -- requests ----------------------------------------------------------------------------
     def _set(self, values: dict[str, float]) -> None:
@@ -216,92 +207,12 @@ class DeviceDocks(QObject):
         )
         self.services.submit_job(jobs.ArcJob(arc))
 
-    # -- programs ----------------------------------------------------------------------------
-    def load_program(self, path: str) -> None:
-        """Read a program and draw its whole path; nothing is sent."""
-        try:
-            points = read_program(path)
-        except BadInput as exc:
-            self.program.show_error(localized(exc))
-            return
-        self.points = points
-        self.program_name = Path(path).name
-        self.program.set_program(self.program_name, len(points))
-        self._show_path(0)
-        loaded = self.tr("program %1: %2 points, nothing sent yet")
-        self.services.say(fill(loaded, self.program_name, len(points)))
-
-    def save_program(self, path: str) -> None:
-        """Save the loaded program as the panel's JSON."""
-        try:
-            write_program(path, self.points)
-        except BadInput as exc:
-            self.program.show_error(localized(exc))
-            return
-        self.services.say(fill(self.tr("program saved to %1 (%2 points)"), path, len(self.points)))
-
-    def run_program(self) -> None:
-        """Stream the loaded program (the worker runs it; progress comes by signal)."""
-        if not self.points:
-            return
-        job = jobs.StreamJob(tuple(self.points), self.program_name)
-        if self.services.submit_job(job):
-            self.program.set_running(True)
-
-    def _pause(self, paused: bool) -> None:
-        self.services.worker_thread.stream_pause(paused)
-        self.program.set_paused(paused)
-
-    def _show_path(self, executed: int) -> None:
-        """What is left of the program, drawn as the preview; what is done is the trail."""
-        left = [(p.x, p.y, p.z) for p in self.points[max(executed - 1, 0) :]]
-        self.services.show_preview(left or None)
-
-    def _on_stream_progress(self, state: StreamProgress) -> None:
-        self.program.show_progress(
-            state.sent,
-            state.acknowledged,
-            state.executed,
-            state.rate,
-            state.seconds_left(),
-            state.retransmissions,
-        )
-        self._show_path(state.executed)
-
-    def _on_job_failed(self, job: jobs.Job, message: str) -> None:
-        if isinstance(job, jobs.StreamJob):
-            self.program.set_running(False)
-            self.program.show_error(fill(self.tr("the program stopped: %1"), message))
-
     def _preview(self, points: list[tuple[float, float, float]]) -> None:
         if self.info is None or not self.info.capabilities.arcs:
             points = []  # no arcs on this device: nothing to preview
         self.services.show_preview(points or None)
 
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
-        if isinstance(job, jobs.StreamJob) and isinstance(result, StreamProgress):
-            self.program.set_running(False)
-            self._on_stream_progress(result)
-            if result.finished:
-                done = self.tr(
-                    "program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s"
-                )
-            else:
-                done = self.tr(
-                    "program %1 stopped, the device's queue flushed: %2/%3 executed, %4 frames, "
-                    "%5 retransmission(s), %6 s"
-                )
-            self.services.say(
-                fill(
-                    done,
-                    job.name,
-                    result.executed,
-                    result.total,
-                    result.frames,
-                    result.retransmissions,
-                    f"{result.seconds:.1f}",
-                )
-            )
         if isinstance(job, (jobs.StepperConfigJob, jobs.StepperVersionJob)):
             self.firmata.set_library_version(str(result))
         if isinstance(job, jobs.StepperConfigJob) and self.info is not None:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QObject, Qt, QTimer
-from PySide6.QtWidgets import QDockWidget, QMainWindow
+from PySide6.QtWidgets import QDockWidget, QMainWindow, QTabBar
 
 OTHER_AREAS = (
     Qt.DockWidgetArea.LeftDockWidgetArea,
@@ -41,6 +41,18 @@ def balanced_heights(heights: list[int], needs: list[int], grow: bool = False) -
     new = list(needs)
     new[-1] += total - sum(needs)
     return new
+
+
+def _tab_bar_height(window: QMainWindow, dock: QDockWidget) -> int:
+    """The height of the tab bar under `dock` when it is in a tab group (0: it is not): the
+    group's height holds it besides the dock's."""
+    if not window.tabifiedDockWidgets(dock):
+        return 0
+    title = dock.windowTitle()
+    for bar in window.findChildren(QTabBar, options=Qt.FindChildOption.FindDirectChildrenOnly):
+        if bar.isVisible() and any(bar.tabText(i) == title for i in range(bar.count())):
+            return bar.height()
+    return 0
 
 
 class DockBalance(QObject):
@@ -90,8 +102,9 @@ class DockBalance(QObject):
         for dock in docks:  # (a scroll area does not pass on its panel's new size hint)
             if (content := dock.widget()) is not None:
                 content.updateGeometry()
-        heights = [dock.height() for dock in docks]
-        needs = [dock.sizeHint().height() for dock in docks]
+        tabs = [_tab_bar_height(self.window, dock) for dock in docks]  # a tab group's bar
+        heights = [dock.height() + tab for dock, tab in zip(docks, tabs, strict=True)]
+        needs = [dock.sizeHint().height() + tab for dock, tab in zip(docks, tabs, strict=True)]
         new = balanced_heights(heights, needs, self.grow)
         if new is None:
             return

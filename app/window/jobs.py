@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, ClassVar
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
 from drivers.commands import Arc
-from drivers.program import ProgramPoint
+from drivers.toolpath.model import CHORD_TOLERANCE, Toolpath
 from widgets._i18n import fill
 
 if TYPE_CHECKING:
@@ -36,9 +36,18 @@ _TEMPLATES = (
     QT_TRANSLATE_NOOP("Jobs", "configure the stepper: %1 steps/rev on pins %2"),
     QT_TRANSLATE_NOOP("Jobs", "ask the stepper library version"),
     QT_TRANSLATE_NOOP("Jobs", "run %1 (%2 points)"),
+    QT_TRANSLATE_NOOP("Jobs", "run %1 (%2 lines)"),
+    QT_TRANSLATE_NOOP("Jobs", "run %1 (%2 entities)"),
+    QT_TRANSLATE_NOOP("Jobs", "run %1 (%2 elements)"),
     QT_TRANSLATE_NOOP("Jobs", 'send "%1"'),
     QT_TRANSLATE_NOOP("Jobs", "refresh position and speed"),
 )
+_RUN = {  # a program's run, by what its sources are
+    "point": "run %1 (%2 points)",
+    "line": "run %1 (%2 lines)",
+    "entity": "run %1 (%2 entities)",
+    "element": "run %1 (%2 elements)",
+}
 
 
 @dataclass(frozen=True)
@@ -202,16 +211,20 @@ class StepperVersionJob(Job):
 
 @dataclass(frozen=True, eq=False)
 class StreamJob(Job):
-    """Stream a program to the device's queue."""
+    """Run a program (any device: streamed to a queue, arcs as arcs, or move by move); arcs
+    are cut into chords within `tolerance` mm where the device has none."""
 
     moves = True
 
-    points: tuple[ProgramPoint, ...]
+    toolpath: Toolpath
+    tolerance: float = CHORD_TOLERANCE
     name: str = "program"
 
     def describe(self) -> str:
-        """E.g. `run square.csv (1000 points)`."""
-        return _t("run %1 (%2 points)", self.name, len(self.points))
+        """E.g. `run square.csv (1000 points)`, `run part.nc (420 lines)`."""
+        sources = self.toolpath.sources
+        kind = sources[0].kind if sources else "point"
+        return _t(_RUN.get(kind, _RUN["point"]), self.name, len(sources))
 
 
 @dataclass(frozen=True)

@@ -44,6 +44,7 @@ if TYPE_CHECKING:
     from app.window.traffic_console import RawConsole
     from app.window.worker import SerialWorker
     from app.window.worker_thread import WorkerThread
+    from drivers.toolpath.geometry import FlatPath
     from drivers.travel import TravelLimits
     from widgets._axes import Box
     from widgets.position_buffer import PositionBuffer
@@ -174,6 +175,19 @@ class MainWindow(QMainWindow):
         """Draw `points` as the path to come in the 2D and 3D views (None: none)."""
         self.view2d.set_preview(points)
         self.view3d.set_preview(points)  # type: ignore[attr-defined]
+
+    def show_program(self, flat: FlatPath | None) -> None:
+        """Draw a program's whole path in the 2D and 3D views, travel moves dashed (None:
+        none)."""
+        points = None if flat is None else flat.points
+        rapid = None if flat is None else flat.rapid
+        self.view2d.set_program(points, rapid)
+        self.view3d.set_program(points, rapid)  # type: ignore[attr-defined]
+
+    def show_program_done(self, row: int) -> None:
+        """The program has run up to `row` of its flat path: the views draw only the rest."""
+        self.view2d.set_program_done(row)
+        self.view3d.set_program_done(row)  # type: ignore[attr-defined]
 
     def set_travel_limits(self, box: Box | None, clamp: bool) -> None:
         """Use and keep this travel box for the device connected (None: none)."""

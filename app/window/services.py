@@ -18,6 +18,7 @@ if TYPE_CHECKING:
     from app.window.keyboard_jog import KeyboardJog
     from app.window.worker import SerialWorker
     from app.window.worker_thread import WorkerThread
+    from drivers.toolpath.geometry import FlatPath
     from drivers.travel import TravelLimits
     from widgets._axes import Box
     from widgets.connection_bar import ConnectionBar
@@ -62,6 +63,13 @@ class WindowServices(Protocol):
 
     def show_preview(self, points: list[Point] | None) -> None:
         """Draw `points` as the path to come in the 2D and 3D views (None: none)."""
+
+    def show_program(self, flat: FlatPath | None) -> None:
+        """Draw a program's whole path in the 2D and 3D views, travel moves dashed (None:
+        none)."""
+
+    def show_program_done(self, row: int) -> None:
+        """The program has run up to `row` of its flat path: the views draw only the rest."""
 
     def set_travel_limits(self, box: Box | None, clamp: bool) -> None:
         """Use and keep this travel box for the device connected (None: none)."""

@@ -44,6 +44,7 @@ from drivers.travel import TravelLimits
 log = logging.getLogger(__name__)
 
 STREAM_POSITION_S = 0.2  # s between position reads while a program streams
+STREAM_PROGRESS_S = 0.05  # s between progress reports to the window (it draws at 10 Hz)
 TICK_MS = 20  # the worker's loop period: queue, unsolicited input, polling
 TRAFFIC_BATCH_S = 0.05  # traffic is handed to the GUI at most this often (20 Hz)
 RECOVER_S = 1.0  # s between attempts to talk again to a device that stopped answering
@@ -438,6 +439,13 @@ class SerialWorker(QObject):
         if force or lines != before:
             self.control_lines_changed.emit(lines)
 
+    @Slot(str)
+    def add_note(self, text: str) -> None:
+        """Write what the operator did (a program loaded) into the session log, in order with
+        the traffic."""
+        self._flush_traffic()
+        self._log_note(text)
+
     def _on_link_note(self, text: str) -> None:
         """A control-line change or break: to the session log and the console, in order with
         the traffic."""
@@ -689,17 +697,24 @@ class SerialWorker(QObject):
         return run_macro(motion, macro, step)
 
     def _stream(self, motion: Motion, job: jobs.StreamJob) -> StreamProgress:
+        last_emit = 0.0
+        queued = motion.capabilities.streaming  # moves run elsewhere report their own position
+
         def progress(state: StreamProgress) -> None:
-            self.stream_progress.emit(dataclasses.replace(state))
+            nonlocal last_emit
             now = time.monotonic()
-            if now - self._last_stream_position >= STREAM_POSITION_S:
+            if now - last_emit >= STREAM_PROGRESS_S or state.finished:
+                last_emit = now  # the final state comes with job_finished anyway
+                self.stream_progress.emit(dataclasses.replace(state))
+            if queued and now - self._last_stream_position >= STREAM_POSITION_S:
                 self._last_stream_position = now
                 motion.position()  # the live position moves along the program
             self._flush_traffic_if_due()
 
         assert self._session is not None
-        # Stopped early, the device's queue is flushed; the position is read at the end.
-        return self._session.run_program(job.points, progress)
+        # Stopped early, the device is stopped (its queue flushed); the position is read at
+        # the end.
+        return self._session.run_program(job.toolpath, progress, tolerance=job.tolerance)
 
     def _refresh(self) -> None:
         motion = self._motion

@@ -18,6 +18,7 @@ class WorkerThread(QObject):
     control_line_requested = Signal(str, bool)
     break_requested = Signal()
     poll_rates_requested = Signal(float, float)
+    note_requested = Signal(str)
 
     def __init__(self, worker: SerialWorker | None = None, parent: QObject | None = None) -> None:
         super().__init__(parent)
@@ -34,6 +35,7 @@ class WorkerThread(QObject):
         self.control_line_requested.connect(self.worker.set_control_line)
         self.break_requested.connect(self.worker.send_break)
         self.poll_rates_requested.connect(self.worker.set_poll_rates)
+        self.note_requested.connect(self.worker.add_note)
         self.thread.start()
 
     def open(self, url: str, protocol: str, baud: int, options: object = None) -> None:
@@ -60,6 +62,10 @@ class WorkerThread(QObject):
     def set_poll_rates(self, moving_hz: float, idle_s: float) -> None:
         """Ask the worker to poll at these rates from now on."""
         self.poll_rates_requested.emit(moving_hz, idle_s)
+
+    def note(self, text: str) -> None:
+        """Write a note (English) into the session log."""
+        self.note_requested.emit(text)
 
     def stream_pause(self, paused: bool) -> None:
         """Pause or resume the program under way."""

@@ -110,10 +110,25 @@ class ProgramRunner:
                             high=high,
                         )
                     )
+        panel_speed = self._panel_speed()
+        own = [s.speed is not None for s in moving]
+        if panel_speed is not None and any(own) and not all(own) and self.mode != "stream":
+            # Moves without a speed go at the panel's, set again after those with one.
+            low, high = self.motion.speed_limits()
+            if not low <= panel_speed <= high:
+                raise BadInput(
+                    Message(
+                        "the program's moves without a speed would go at the device's speed, "
+                        "{speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set "
+                        "the speed first; nothing was sent",
+                        speed=panel_speed,
+                        low=low,
+                        high=high,
+                    )
+                )
         if self.mode == "stream":
             return  # the laser's fields are float32 and its speeds checked above
         protocol = self.motion.client.protocol
-        panel_speed = self._panel_speed()
         for source, command in self._commands(panel_speed):
             try:
                 protocol.encode(command)

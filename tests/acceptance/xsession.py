@@ -685,11 +685,23 @@ class Panel:
         """Release `key`."""
         self.x.xdotool("keyup", key)
 
-    def load_program(self, path: Path) -> None:
+    def load_program(self, path: Path, timeout: float = 30.0) -> str:
         """Load a program file as an operator does with the keyboard: the Program panel's Load
-        (Alt+L), its path typed in the file dialog, Return."""
+        (Alt+L), its path typed in the file dialog, Return; then wait until the panel has read
+        it (it reads in the background; the session log notes it). Returns that note."""
+
+        def loaded() -> list[str]:
+            return [n for n in self.logs.notes() if n.startswith(f"program loaded: {path.name},")]
+
+        before = len(loaded())
         self.key("alt+l")
         self.answer_file_dialog("^Load a program$", path)
+        wait_for(
+            lambda: self.alive() and len(loaded()) > before,
+            timeout,
+            f"the program {path.name} read (the session log's note)",
+        )
+        return loaded()[-1]
 
     def dialog(self, title: str, timeout: float = 15.0) -> str:
         """The panel's visible window titled `title` (a regular expression), once it is shown."""

@@ -72,6 +72,7 @@ WRAPPED = [
     "widgets/macro_editor.py",
     "app/window/parameter_dock.py",
     "app/window/device_docks.py",
+    "app/window/program_dock.py",
     "app/window/log_viewer.py",
     "app/window/bridge_session.py",
     "app/window/macro_dock.py",
