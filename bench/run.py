@@ -218,6 +218,17 @@ def bench_trail(points: int) -> dict[str, float]:
     return _script(*args, timeout=600)
 
 
+def bench_program_preview(lines: int) -> dict[str, float]:
+    """A `lines`-line G-code program read, checked and drawn, and the 3D frame with it beside
+    the 1,000,000-point trail (bench/program_preview.py, OpenGL; skipped without a display)."""
+    import shutil
+
+    args = [str(ROOT / "bench" / "program_preview.py"), "--lines", str(lines)]
+    if not os.environ.get("DISPLAY") and shutil.which("xvfb-run"):
+        args.append("--xvfb")
+    return _script(*args, timeout=600)
+
+
 def bench_bridge(count: int) -> dict[str, float]:
     """Latency the bridge adds to a round trip (bare, and motionctl bridge with log and print)."""
     figures = {}
@@ -264,6 +275,7 @@ def main() -> int:
         "ser2net": bench_ser2net(40 if options.quick else 200),
         "startup": startup.measure(3 if options.quick else 5),
         "trail": bench_trail(1_000_000),  # --quick too: about 10 s
+        "program_preview": bench_program_preview(100_000),  # --quick too: about 20 s
     }
     results["console_lines_per_s"] = results["console"]["console_lines_per_s"]
     trips = results["round_trips"]
@@ -273,6 +285,9 @@ def main() -> int:
     results["trail_frame_ms_1e6"] = results["trail"].get("trail_frame_ms")  # None: no display
     results["gui_max_stall_ms"] = results["console"]["flood_max_stall_ms"]
     results["ser2net_added_ms_p50"] = results["ser2net"]["ser2net_added_ms_p50"]
+    preview = results["program_preview"]
+    results["program_parse_preview_s_1e5"] = preview.get("parse_preview_s")  # None: no display
+    results["program_frame_ratio"] = preview.get("frame_ratio")
     if options.json:
         print(json.dumps(results, indent=None))
     else:

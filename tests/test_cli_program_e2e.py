@@ -54,7 +54,8 @@ G4 P0.1
 G1 X6 F300
 M30
 """
-ILLUSTRATION_SVG_X = """<svg xmlns="http://www.w3.org/2000/svg" width="30mm" height="10mm" viewBox="0 0 30 10">
+ILLUSTRATION_SVG_X = """<svg xmlns="http://www.w3.org/2000/svg"
+     width="30mm" height="10mm" viewBox="0 0 30 10">
   <path d="M 2 10 H 12 M 15 10 H 8" stroke="black" fill="none"/>
 </svg>
 """

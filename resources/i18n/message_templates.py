@@ -32,6 +32,7 @@ QT_TRANSLATE_NOOP('messages', '{file}: its connection note: {error}')  # app/cli
 QT_TRANSLATE_NOOP('messages', 'its connection notes name {named}')  # app/cli/log.py
 QT_TRANSLATE_NOOP('messages', 'try another --protocol')  # app/cli/log.py
 QT_TRANSLATE_NOOP('messages', 'nothing in {file} decodes as {protocol} ({count} records of traffic, none a {protocol} frame); {hint}')  # app/cli/log.py
+QT_TRANSLATE_NOOP('messages', 'SVG scale {value:g} refused: it must be above 0')  # app/cli/run_program.py
 QT_TRANSLATE_NOOP('messages', 'macro {name} ({count} step)')  # app/common/macros.py
 QT_TRANSLATE_NOOP('messages', 'macro {name} ({count} steps)')  # app/common/macros.py
 QT_TRANSLATE_NOOP('messages', 'a macro needs a name')  # app/common/macros.py
@@ -296,6 +297,7 @@ QT_TRANSLATE_NOOP('messages', 'bad arguments')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'queue full')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'undocumented')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'error {code} ({meaning}) for {command}')  # drivers/protocols/laser.py
+QT_TRANSLATE_NOOP('messages', 'dwell {ms} ms refused: the field is an int16 (0 to 32767)')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'speed {speed:g} mm/s refused: it must be above 0')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'the position reply holds {count} numbers, not 3')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'the status reply holds {count} numbers, not 2')  # drivers/protocols/laser.py
@@ -303,7 +305,6 @@ QT_TRANSLATE_NOOP('messages', 'undocumented code {code}')  # drivers/protocols/l
 QT_TRANSLATE_NOOP('messages', '{command}: the device answered error {code} ({meaning})')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'moves are queued on the device; the position is read back while they run')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', "The next queued frame's number (0: random)")  # drivers/protocols/laser.py
-QT_TRANSLATE_NOOP('messages', 'dwell {ms} ms refused: the field is an int16 (0 to 32767)')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'a queued frame holds 1 to {most} queued instructions')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'the laser link has no instruction for {command}')  # drivers/protocols/laser.py
 QT_TRANSLATE_NOOP('messages', 'MOVE_LINEAR with {count} float values, not x, y, z and speed')  # drivers/protocols/laser.py
@@ -431,7 +432,6 @@ QT_TRANSLATE_NOOP('messages', '0 belt pulley, 1 lead screw (this firmware forces
 QT_TRANSLATE_NOOP('messages', 'protocol {name!r} is not implemented yet')  # drivers/registry.py
 QT_TRANSLATE_NOOP('messages', 'unknown protocol {name!r} (known: {known})')  # drivers/registry.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no stop command: the device finishes what it was sent')  # drivers/session.py
-QT_TRANSLATE_NOOP('messages', '{protocol} runs no programs: it has no command queue (laser-frame has one)')  # drivers/session.py
 QT_TRANSLATE_NOOP('messages', 'timeout {timeout:g} s refused: it must be positive')  # drivers/session.py
 QT_TRANSLATE_NOOP('messages', 'variant {variant!r} asked for a protocol made as {chosen!r}')  # drivers/session_setup.py
 QT_TRANSLATE_NOOP('messages', 'baud {baud} refused: a positive number of bits per second')  # drivers/session_setup.py
@@ -443,6 +443,62 @@ QT_TRANSLATE_NOOP('messages', '{source} line {number}: bytes at offset {offset:#
 QT_TRANSLATE_NOOP('messages', '{source}: no traffic in it, only control-line events')  # drivers/spy_log.py
 QT_TRANSLATE_NOOP('messages', "{source}: no traffic in it (nor spy's raw format); {hint}")  # drivers/spy_log.py
 QT_TRANSLATE_NOOP('messages', '{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)')  # drivers/streaming.py
+QT_TRANSLATE_NOOP('messages', '{name}')  # drivers/toolpath/drawing.py
+QT_TRANSLATE_NOOP('messages', '{where}: more than {count:,} steps (lines, arcs and travel moves)')  # drivers/toolpath/drawing.py
+QT_TRANSLATE_NOOP('messages', '{where}: a coordinate that is not a finite number')  # drivers/toolpath/drawing.py
+QT_TRANSLATE_NOOP('messages', 'chord tolerance {tolerance:g} mm must be above 0')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', 'DXF drawing')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{where}: not a drawing the panel reads: {why}')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name}: no lines, arcs or curves on the chosen layers')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name}: skipped what is not a path: {what}')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name}: binary DXF cut short (no EOF at its end)')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name}: a DWG drawing, not DXF (save it as DXF)')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name}: not a DXF drawing the panel reads: {why}')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name}: $INSUNITS {value!r} is not a unit code')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name}: no units given ($INSUNITS 0), taken as mm')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name}: units $INSUNITS {code} the panel cannot convert to mm')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name} entity {number} ({kind} on layer {layer}): not a drawing the panel reads: {why}')  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', "{name}: no layer {layer} with lines, arcs or curves; the drawing's layers: {layers}")  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', '{name} line {number}')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: a comment opened with ( is not closed')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word} with R: a full circle needs I/J')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word}: R {radius:g} mm is less than half the way to the end point ({half:g} mm)')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word}: the feed rate must be above 0')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word} needs P, the seconds to dwell')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word}: a dwell cannot be negative')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word} with no motion mode (G0, G1, G2 or G3) set')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: no feed rate (F) set before this {word}')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{name}: no moves and no dwells')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word}: arcs in the {plane} plane ({code}) are not supported: only G17 (XY)')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word} needs I and J, or R')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word}: the centre is {start:g} mm from the start point and {end:g} mm from the end point, not on one circle')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word}: an arc of radius 0')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word} is not used by anything on the line')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {first} and {second} cannot be on one line')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{name}: more than {count:,} lines, too many for a program')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word!r} is not a G-code word (a letter and a number)')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {word} is not understood')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{name}: skipped what the panel does not do: {words} (on {count} of {total} lines)')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', 'chord tolerance {value:g} mm refused: it must be above 0')  # drivers/toolpath/geometry.py
+QT_TRANSLATE_NOOP('messages', '{where}: the program moves {axis} to {value:g} mm, an axis the device does not have (it has {axes}); nothing was sent')  # drivers/toolpath/geometry.py
+QT_TRANSLATE_NOOP('messages', '{where}: the program would leave the travel box at ({x:g}, {y:g}, {z:g}) mm ({box}); nothing was sent')  # drivers/toolpath/geometry.py
+QT_TRANSLATE_NOOP('messages', '{file}: layers are chosen in DXF files only')  # drivers/toolpath/loader.py
+QT_TRANSLATE_NOOP('messages', '{name} entity {number} ({text})')  # drivers/toolpath/model.py
+QT_TRANSLATE_NOOP('messages', '{name} element {number} ({text})')  # drivers/toolpath/model.py
+QT_TRANSLATE_NOOP('messages', '{name} point {number}')  # drivers/toolpath/model.py
+QT_TRANSLATE_NOOP('messages', '{where}: speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s; nothing was sent')  # drivers/toolpath/runner.py
+QT_TRANSLATE_NOOP('messages', "the program's moves without a speed would go at the device's speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent")  # drivers/toolpath/runner.py
+QT_TRANSLATE_NOOP('messages', '{where}: {error}; nothing was sent')  # drivers/toolpath/runner.py
+QT_TRANSLATE_NOOP('messages', 'the program was abandoned during a dwell')  # drivers/toolpath/runner.py
+QT_TRANSLATE_NOOP('messages', 'SVG scale {scale:g} mm per unit must be above 0')  # drivers/toolpath/svg.py
+QT_TRANSLATE_NOOP('messages', 'SVG drawing')  # drivers/toolpath/svg.py
+QT_TRANSLATE_NOOP('messages', '{where}: not a shape the panel reads: {why}')  # drivers/toolpath/svg.py
+QT_TRANSLATE_NOOP('messages', '{name}: no stroked paths or shapes to run')  # drivers/toolpath/svg.py
+QT_TRANSLATE_NOOP('messages', '{name}: skipped {what}')  # drivers/toolpath/svg.py
+QT_TRANSLATE_NOOP('messages', '{name} line {line}: not SVG: {why}')  # drivers/toolpath/svg.py
+QT_TRANSLATE_NOOP('messages', '{name}: not an SVG drawing the panel reads: {why}')  # drivers/toolpath/svg.py
+QT_TRANSLATE_NOOP('messages', '{name}: not an SVG drawing (no svg element)')  # drivers/toolpath/svg.py
+QT_TRANSLATE_NOOP('messages', '{name}: no width and height in mm, cm, in, pt, pc or px; 1 unit taken as {scale:g} mm')  # drivers/toolpath/svg.py
 QT_TRANSLATE_NOOP('messages', '{pattern!r} is not a regular expression: {error}')  # drivers/traffic_search.py
 QT_TRANSLATE_NOOP('messages', '{pattern!r} is not valid text')  # drivers/traffic_search.py
 QT_TRANSLATE_NOOP('messages', '{pattern!r}… is too large a regular expression: {error}')  # drivers/traffic_search.py

@@ -729,12 +729,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+97"/>
+        <location filename="../../app/window/device_docks.py" line="+92"/>
         <source>Not now: %1</source>
         <translation>Ahora no: %1</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+41"/>
         <source>%1 on %2</source>
         <translation>%1 en %2</translation>
     </message>
@@ -744,29 +744,24 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>%1 a %2 mm en cada eje (cuentas de 16 bits)</translation>
     </message>
     <message>
-        <location line="+58"/>
         <source>program %1: %2 points, nothing sent yet</source>
-        <translation>programa %1: %2 puntos, aún no se ha enviado nada</translation>
+        <translation type="vanished">programa %1: %2 puntos, aún no se ha enviado nada</translation>
     </message>
     <message>
-        <location line="+10"/>
         <source>program saved to %1 (%2 points)</source>
-        <translation>programa guardado en %1 (%2 puntos)</translation>
+        <translation type="vanished">programa guardado en %1 (%2 puntos)</translation>
     </message>
     <message>
-        <location line="+33"/>
         <source>the program stopped: %1</source>
-        <translation>el programa se detuvo: %1</translation>
+        <translation type="vanished">el programa se detuvo: %1</translation>
     </message>
     <message>
-        <location line="+13"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation>programa %1 terminado: %2/%3 ejecutadas, %4 tramas, %5 retransmisión(es), %6 s</translation>
+        <translation type="vanished">programa %1 terminado: %2/%3 ejecutadas, %4 tramas, %5 retransmisión(es), %6 s</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>program %1 stopped, the device&apos;s queue flushed: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation>programa %1 detenido, cola del dispositivo vaciada: %2/%3 ejecutadas, %4 tramas, %5 retransmisión(es), %6 s</translation>
+        <translation type="vanished">programa %1 detenido, cola del dispositivo vaciada: %2/%3 ejecutadas, %4 tramas, %5 retransmisión(es), %6 s</translation>
     </message>
 </context>
 <context>
@@ -1015,6 +1010,21 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <location line="+1"/>
         <source>run %1 (%2 points)</source>
         <translation>ejecutar %1 (%2 puntos)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 lines)</source>
+        <translation>ejecutar %1 (%2 líneas)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 entities)</source>
+        <translation>ejecutar %1 (%2 entidades)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 elements)</source>
+        <translation>ejecutar %1 (%2 elementos)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1477,7 +1487,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>dispositivo %1 simulado</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+94"/>
+        <location filename="../../app/window/main_window.py" line="+95"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1497,7 +1507,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>sin registro de sesión a partir de ahora</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+117"/>
+        <location filename="../../app/window/main_window.py" line="+130"/>
         <source>Connection</source>
         <translation>Conexión</translation>
     </message>
@@ -1668,7 +1678,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>conectado a %1 en %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+135"/>
+        <location filename="../../app/window/machine_state.py" line="+136"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la posición es desconocida: este dispositivo no puede informar de ella; buscar el origen o fijar el origen</translation>
     </message>
@@ -1802,12 +1812,12 @@ Send them anyway?</source>
         <translation>detenido: %1 comando(s) sin enviar: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+45"/>
+        <location filename="../../app/window/machine_state.py" line="+47"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nuevo origen: la trayectoria se desplaza (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-101"/>
         <source>the device reported an error: %1</source>
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
@@ -1823,7 +1833,7 @@ Send them anyway?</source>
         <translation>%1 falló: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+231"/>
+        <location filename="../../app/window/machine_state.py" line="+234"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origen confirmado: la posición se cuenta desde aquí</translation>
     </message>
@@ -2625,7 +2635,7 @@ Send them anyway?</source>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+87"/>
+        <location filename="../../widgets/position_view_2d.py" line="+98"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>Platina vista desde arriba: trayectoria, posición actual (punto; hueco si es estimada), destino (+), límites de recorrido (discontinuos)</translation>
     </message>
@@ -2655,7 +2665,7 @@ Send them anyway?</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+48"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y y Z en función del tiempo; líneas discontinuas: destino</translation>
     </message>
@@ -2768,7 +2778,7 @@ Send them anyway?</source>
         <translation>Mantener la cámara sobre la posición actual</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+77"/>
+        <location filename="../../widgets/position_view_3d.py" line="+79"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Requiere OpenGL 2.1 o posterior (p. ej. Mesa) en una pantalla; ver el README.</translation>
     </message>
@@ -2787,7 +2797,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>Arrastrar para girar, rueda para hacer zoom, arrastrar con el botón central para mover la vista</translation>
     </message>
     <message>
-        <location line="+403"/>
+        <location line="+473"/>
         <source>grid %1 mm</source>
         <translation>cuadrícula %1 mm</translation>
     </message>
@@ -2983,14 +2993,66 @@ La vista 2D muestra las mismas posiciones.</translation>
     </message>
 </context>
 <context>
-    <name>ProgramPanel</name>
+    <name>ProgramDock</name>
     <message>
-        <location filename="../../widgets/program_panel.py" line="+19"/>
-        <source>Programs (*.csv *.json);;All files (*)</source>
-        <translation>Programas (*.csv *.json);;Todos los archivos (*)</translation>
+        <location filename="../../app/window/program_dock.py" line="+165"/>
+        <source>program %1 refused: %2</source>
+        <translation>programa %1 rechazado: %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+19"/>
+        <source>only programs of points (CSV, JSON) are saved as JSON</source>
+        <translation>solo los programas de puntos (CSV, JSON) se guardan como JSON</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>program %1 cannot run: %2</source>
+        <translation>el programa %1 no se puede ejecutar: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>program %1: %2 segments, nothing sent yet</source>
+        <translation>programa %1: %2 segmentos, aún no se ha enviado nada</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>the program has no moves</source>
+        <translation>el programa no tiene movimientos</translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>program saved to %1 (%2 points)</source>
+        <translation>programa guardado en %1 (%2 puntos)</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>the program stopped: %1</source>
+        <translation>el programa se detuvo: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>program %1 done: %2/%3 executed in %4 s</source>
+        <translation>programa %1 terminado: %2/%3 ejecutados en %4 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>program %1 stopped: %2/%3 executed in %4 s</source>
+        <translation>programa %1 detenido: %2/%3 ejecutados en %4 s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1; %2 frames, %3 retransmission(s)</source>
+        <translation>%1; %2 tramas, %3 retransmisión(es)</translation>
+    </message>
+</context>
+<context>
+    <name>ProgramPanel</name>
+    <message>
+        <source>Programs (*.csv *.json);;All files (*)</source>
+        <translation type="vanished">Programas (*.csv *.json);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/program_panel.py" line="+42"/>
         <source>no program loaded</source>
         <translation>ningún programa cargado</translation>
     </message>
@@ -2999,17 +3061,16 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">Cargar…</translation>
     </message>
     <message>
-        <location line="+27"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
-        <translation>Cargar un programa: CSV con x,y,z,speed (mm, mm/s) o JSON</translation>
+        <translation type="vanished">Cargar un programa: CSV con x,y,z,speed (mm, mm/s) o JSON</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+92"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-1"/>
         <source>Save the loaded program as JSON (x, y, z, speed per point)</source>
         <translation>Guardar el programa cargado como JSON (x, y, z, speed por punto)</translation>
     </message>
@@ -3018,25 +3079,23 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">Ejecutar</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Stream the program to the device, 7 moves a frame</source>
-        <translation>Enviar el programa al dispositivo en flujo continuo, 7 movimientos por trama</translation>
+        <translation type="vanished">Enviar el programa al dispositivo en flujo continuo, 7 movimientos por trama</translation>
     </message>
     <message>
         <source>Pause</source>
         <translation type="vanished">Pausa</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>Send nothing more until Resume (queued moves go on)</source>
-        <translation>No enviar nada más hasta Reanudar (los movimientos en cola continúan)</translation>
+        <translation type="vanished">No enviar nada más hasta Reanudar (los movimientos en cola continúan)</translation>
     </message>
     <message>
         <source>Stop</source>
         <translation type="vanished">Detener</translation>
     </message>
     <message>
-        <location line="-14"/>
+        <location line="-7"/>
         <source>&amp;Load…</source>
         <translation>&amp;Cargar…</translation>
     </message>
@@ -3047,38 +3106,87 @@ La vista 2D muestra las mismas posiciones.</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+123"/>
+        <location line="+322"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;usa</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-317"/>
         <source>&amp;Stop</source>
         <translation>&amp;Detener</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Send nothing more and flush the device&apos;s queue (STOP)</source>
-        <translation>No enviar nada más y vaciar la cola del dispositivo (STOP)</translation>
+        <translation type="vanished">No enviar nada más y vaciar la cola del dispositivo (STOP)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-107"/>
+        <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
+        <translation>Programas (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;Dibujos DXF (*.dxf);;Dibujos SVG (*.svg);;Puntos (*.csv *.json);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <location line="+93"/>
+        <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
+        <translation>Cargar un programa: G-code, DXF o SVG, o puntos (CSV con x,y,z,speed en mm y mm/s, o JSON)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Run the program on the device (checked against the box first)</source>
+        <translation>Ejecutar el programa en el dispositivo (comprobado antes con la caja)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Send nothing more until Resume (a device&apos;s queued moves go on)</source>
+        <translation>No enviar nada más hasta Reanudar (los movimientos en cola del dispositivo continúan)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Send nothing more and stop the device (its queue flushed)</source>
+        <translation>No enviar nada más y detener el dispositivo (se vacía su cola)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Chord tolerance: how far the straight moves an arc or curve is cut into may stray from it</source>
+        <translation>Tolerancia de cuerda: cuánto pueden apartarse de un arco o curva los movimientos rectos en que se divide</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Instructions executed by the device</source>
         <translation>Instrucciones ejecutadas por el dispositivo</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+74"/>
+        <location line="+133"/>
         <source>%v / %m executed</source>
         <translation>%v / %m ejecutadas</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-113"/>
+        <source>The program&apos;s lines; the one under way is highlighted</source>
+        <translation>Las líneas del programa; la que está en curso aparece resaltada</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The drawing&apos;s layers: the checked ones are run</source>
+        <translation>Las capas del dibujo: se ejecutan las marcadas</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Program:</source>
         <translation>Programa:</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+2"/>
+        <source>Chord tolerance:</source>
+        <translation>Tolerancia de cuerda:</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Load a program</source>
         <translation>Cargar un programa</translation>
     </message>
@@ -3093,22 +3201,91 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>JSON (*.json)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
+        <source>reading %1…</source>
+        <translation>leyendo %1…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 (%2 lines)</source>
+        <translation>%1 (%2 líneas)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2 entities)</source>
+        <translation>%1 (%2 entidades)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2 elements)</source>
+        <translation>%1 (%2 elementos)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 (%2 points)</source>
         <translation>%1 (%2 puntos)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>no program</source>
         <translation>sin programa</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>line %1</source>
+        <translation>línea %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>entity %1</source>
+        <translation>entidad %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>element %1</source>
+        <translation>elemento %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point %1</source>
+        <translation>punto %1</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>length %1 mm (travel moves %2 mm), %3 segments</source>
+        <translation>longitud %1 mm (movimientos en vacío %2 mm), %3 segmentos</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>box X %1 to %2, Y %3 to %4, Z %5 to %6 mm</source>
+        <translation>caja X de %1 a %2, Y de %3 a %4, Z de %5 a %6 mm</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>about %1 (h:mm:ss) at %2 mm/s where the program sets no speed</source>
+        <translation>aprox. %1 (h:mm:ss) a %2 mm/s donde el programa no fija velocidad</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1
+Not for this program: %2</source>
+        <translation>%1
+No apto para este programa: %2</translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>motion is off</source>
         <translation>el movimiento está desactivado</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
+        <source>%1
+Refused: %2</source>
+        <translation>%1
+Rechazado: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1
 Not now: %2</source>
         <translation>%1
@@ -3120,7 +3297,7 @@ Ahora no: %2</translation>
         <translation>Reanudar</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+28"/>
         <source>, paused</source>
         <translation>, en pausa</translation>
     </message>
@@ -4069,7 +4246,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>ThemeMenu</name>
     <message>
-        <location filename="../../app/window/theme.py" line="+354"/>
+        <location filename="../../app/window/theme.py" line="+366"/>
         <source>&amp;Theme</source>
         <translation>&amp;Tema</translation>
     </message>
@@ -4699,6 +4876,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>nothing in {file} decodes as {protocol} ({count} records of traffic, none a {protocol} frame); {hint}</source>
         <translation>nada en {file} se decodifica como {protocol} ({count} entradas de tráfico, ninguna es una trama de {protocol}); {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SVG scale {value:g} refused: it must be above 0</source>
+        <translation>se rechaza la escala SVG {value:g}: debe ser mayor que 0</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6021,7 +6203,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>error {code} ({meaning}) en {command}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>speed {speed:g} mm/s refused: it must be above 0</source>
         <translation>velocidad {speed:g} mm/s rechazada: debe ser mayor que 0</translation>
     </message>
@@ -6056,12 +6238,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Número de la siguiente trama en cola (0: aleatorio)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>dwell {ms} ms refused: the field is an int16 (0 to 32767)</source>
         <translation>espera de {ms} ms rechazada: el campo es un int16 (de 0 a 32767)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>a queued frame holds 1 to {most} queued instructions</source>
         <translation>una trama en cola contiene de 1 a {most} instrucciones en cola</translation>
     </message>
@@ -6736,9 +6918,10 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{protocol} no tiene comando de parada: el dispositivo termina lo que se le envió</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>{protocol} runs no programs: it has no command queue (laser-frame has one)</source>
-        <translation>{protocol} no ejecuta programas: no tiene cola de comandos (laser-frame sí la tiene)</translation>
+        <location line="+0"/>
+        <source>{protocol} has no stop command: the device finishes what it was sent</source>
+        <oldsource>{protocol} runs no programs: it has no command queue (laser-frame has one)</oldsource>
+        <translation>{protocol} no tiene comando de parada: el dispositivo termina lo que se le envió</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6794,6 +6977,286 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)</source>
         <translation>{error} (tras {rounds} rondas; antes se confirmaron {acknowledged} de {total} instrucciones)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}</source>
+        <translation>{name}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: more than {count:,} steps (lines, arcs and travel moves)</source>
+        <translation>{where}: más de {count:,} pasos (líneas, arcos y movimientos en vacío)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: a coordinate that is not a finite number</source>
+        <translation>{where}: una coordenada que no es un número finito</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chord tolerance {tolerance:g} mm must be above 0</source>
+        <translation>la tolerancia de cuerda {tolerance:g} mm debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DXF drawing</source>
+        <translation>dibujo DXF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: not a drawing the panel reads: {why}</source>
+        <translation>{where}: no es un dibujo que el panel pueda leer: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no lines, arcs or curves on the chosen layers</source>
+        <translation>{name}: no hay líneas, arcos ni curvas en las capas elegidas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: skipped what is not a path: {what}</source>
+        <translation>{name}: se omitió lo que no es un trazado: {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: binary DXF cut short (no EOF at its end)</source>
+        <translation>{name}: DXF binario truncado (sin EOF al final)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: a DWG drawing, not DXF (save it as DXF)</source>
+        <translation>{name}: es un dibujo DWG, no DXF (guárdelo como DXF)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: not a DXF drawing the panel reads: {why}</source>
+        <translation>{name}: no es un dibujo DXF que el panel pueda leer: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: $INSUNITS {value!r} is not a unit code</source>
+        <translation>{name}: $INSUNITS {value!r} no es un código de unidad</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no units given ($INSUNITS 0), taken as mm</source>
+        <translation>{name}: sin unidades indicadas ($INSUNITS 0), se toman como mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: units $INSUNITS {code} the panel cannot convert to mm</source>
+        <translation>{name}: unidades $INSUNITS {code} que el panel no puede convertir a mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} entity {number} ({kind} on layer {layer}): not a drawing the panel reads: {why}</source>
+        <translation>{name} entidad {number} ({kind} en la capa {layer}): no es un dibujo que el panel pueda leer: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no layer {layer} with lines, arcs or curves; the drawing&apos;s layers: {layers}</source>
+        <translation>{name}: no hay ninguna capa {layer} con líneas, arcos o curvas; capas del dibujo: {layers}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} line {number}</source>
+        <translation>{name} línea {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: a comment opened with ( is not closed</source>
+        <translation>{where}: un comentario abierto con ( no está cerrado</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} with R: a full circle needs I/J</source>
+        <translation>{where}: {word} con R: un círculo completo necesita I/J</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: R {radius:g} mm is less than half the way to the end point ({half:g} mm)</source>
+        <translation>{where}: {word}: R {radius:g} mm es menor que la mitad de la distancia al punto final ({half:g} mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: the feed rate must be above 0</source>
+        <translation>{where}: {word}: el avance debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} needs P, the seconds to dwell</source>
+        <translation>{where}: {word} necesita P, los segundos de espera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: a dwell cannot be negative</source>
+        <translation>{where}: {word}: una espera no puede ser negativa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} with no motion mode (G0, G1, G2 or G3) set</source>
+        <translation>{where}: {word} sin modo de movimiento (G0, G1, G2 o G3) definido</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: no feed rate (F) set before this {word}</source>
+        <translation>{where}: no se ha definido avance (F) antes de este {word}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no moves and no dwells</source>
+        <translation>{name}: ni movimientos ni esperas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: arcs in the {plane} plane ({code}) are not supported: only G17 (XY)</source>
+        <translation>{where}: {word}: los arcos en el plano {plane} ({code}) no se admiten: solo G17 (XY)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} needs I and J, or R</source>
+        <translation>{where}: {word} necesita I y J, o R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: the centre is {start:g} mm from the start point and {end:g} mm from the end point, not on one circle</source>
+        <translation>{where}: {word}: el centro está a {start:g} mm del punto inicial y a {end:g} mm del punto final, no en un mismo círculo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: an arc of radius 0</source>
+        <translation>{where}: {word}: un arco de radio 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} is not used by anything on the line</source>
+        <translation>{where}: {word} no lo usa nada en la línea</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {first} and {second} cannot be on one line</source>
+        <translation>{where}: {first} y {second} no pueden estar en una misma línea</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: more than {count:,} lines, too many for a program</source>
+        <translation>{name}: más de {count:,} líneas, demasiadas para un programa</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word!r} is not a G-code word (a letter and a number)</source>
+        <translation>{where}: {word!r} no es una palabra G-code (una letra y un número)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} is not understood</source>
+        <translation>{where}: {word} no se entiende</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: skipped what the panel does not do: {words} (on {count} of {total} lines)</source>
+        <translation>{name}: se omitió lo que el panel no hace: {words} (en {count} de {total} líneas)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chord tolerance {value:g} mm refused: it must be above 0</source>
+        <translation>se rechaza la tolerancia de cuerda {value:g} mm: debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: the program moves {axis} to {value:g} mm, an axis the device does not have (it has {axes}); nothing was sent</source>
+        <translation>{where}: el programa mueve {axis} a {value:g} mm, un eje que el dispositivo no tiene (tiene {axes}); no se ha enviado nada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: the program would leave the travel box at ({x:g}, {y:g}, {z:g}) mm ({box}); nothing was sent</source>
+        <translation>{where}: el programa saldría de la caja de recorrido en ({x:g}, {y:g}, {z:g}) mm ({box}); no se ha enviado nada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: layers are chosen in DXF files only</source>
+        <translation>{file}: las capas solo se eligen en archivos DXF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} entity {number} ({text})</source>
+        <translation>{name} entidad {number} ({text})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} element {number} ({text})</source>
+        <translation>{name} elemento {number} ({text})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} point {number}</source>
+        <translation>{name} punto {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s; nothing was sent</source>
+        <translation>{where}: se rechaza la velocidad {speed:g} mm/s: el dispositivo admite de {low:g} a {high:g} mm/s; no se ha enviado nada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
+        <translation>los movimientos del programa sin velocidad irían a la velocidad del dispositivo, {speed:g} mm/s, fuera de los {low:g} a {high:g} mm/s que admite: fijar antes la velocidad; no se ha enviado nada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {error}; nothing was sent</source>
+        <translation>{where}: {error}; no se ha enviado nada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the program was abandoned during a dwell</source>
+        <translation>el programa se abandonó durante una espera</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SVG scale {scale:g} mm per unit must be above 0</source>
+        <translation>la escala SVG {scale:g} mm por unidad debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SVG drawing</source>
+        <translation>dibujo SVG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: not a shape the panel reads: {why}</source>
+        <translation>{where}: no es una forma que el panel pueda leer: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no stroked paths or shapes to run</source>
+        <translation>{name}: no hay trazados ni formas con trazo que ejecutar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: skipped {what}</source>
+        <translation>{name}: se omitió {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} line {line}: not SVG: {why}</source>
+        <translation>{name} línea {line}: no es SVG: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: not an SVG drawing the panel reads: {why}</source>
+        <translation>{name}: no es un dibujo SVG que el panel pueda leer: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: not an SVG drawing (no svg element)</source>
+        <translation>{name}: no es un dibujo SVG (sin elemento svg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no width and height in mm, cm, in, pt, pc or px; 1 unit taken as {scale:g} mm</source>
+        <translation>{name}: sin ancho ni alto en mm, cm, in, pt, pc o px; 1 unidad se toma como {scale:g} mm</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -729,12 +729,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+97"/>
+        <location filename="../../app/window/device_docks.py" line="+92"/>
         <source>Not now: %1</source>
         <translation>Indisponible pour le moment&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+41"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -744,29 +744,24 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>de %1 à %2 mm sur chaque axe (impulsions sur 16 bits)</translation>
     </message>
     <message>
-        <location line="+58"/>
         <source>program %1: %2 points, nothing sent yet</source>
-        <translation>programme %1&#xa0;: %2 points, rien n&apos;a encore été envoyé</translation>
+        <translation type="vanished">programme %1&#xa0;: %2 points, rien n&apos;a encore été envoyé</translation>
     </message>
     <message>
-        <location line="+10"/>
         <source>program saved to %1 (%2 points)</source>
-        <translation>programme enregistré dans %1 (%2 points)</translation>
+        <translation type="vanished">programme enregistré dans %1 (%2 points)</translation>
     </message>
     <message>
-        <location line="+33"/>
         <source>the program stopped: %1</source>
-        <translation>le programme s&apos;est arrêté&#xa0;: %1</translation>
+        <translation type="vanished">le programme s&apos;est arrêté&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+13"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation>programme %1 terminé&#xa0;: %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
+        <translation type="vanished">programme %1 terminé&#xa0;: %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>program %1 stopped, the device&apos;s queue flushed: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation>programme %1 arrêté, file de l&apos;appareil vidée&#xa0;: %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
+        <translation type="vanished">programme %1 arrêté, file de l&apos;appareil vidée&#xa0;: %2/%3 exécutées, %4 trames, %5 retransmission(s), %6 s</translation>
     </message>
 </context>
 <context>
@@ -1015,6 +1010,21 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <location line="+1"/>
         <source>run %1 (%2 points)</source>
         <translation>lancement de %1 (%2 points)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 lines)</source>
+        <translation>lancement de %1 (%2 lignes)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 entities)</source>
+        <translation>lancement de %1 (%2 entités)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 elements)</source>
+        <translation>lancement de %1 (%2 éléments)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1477,7 +1487,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>appareil %1 simulé</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+94"/>
+        <location filename="../../app/window/main_window.py" line="+95"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1497,7 +1507,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>plus de journal de session à partir de maintenant</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+117"/>
+        <location filename="../../app/window/main_window.py" line="+130"/>
         <source>Connection</source>
         <translation>Connexion</translation>
     </message>
@@ -1668,7 +1678,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>connecté à %1 sur %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+135"/>
+        <location filename="../../app/window/machine_state.py" line="+136"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la position est inconnue&#xa0;: cet appareil ne peut pas l&apos;indiquer&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
@@ -1802,12 +1812,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>arrêté&#xa0;: %1 commande(s) non envoyée(s)&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+45"/>
+        <location filename="../../app/window/machine_state.py" line="+47"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nouvelle origine&#xa0;: la trace est décalée de (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-101"/>
         <source>the device reported an error: %1</source>
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
@@ -1823,7 +1833,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>échec de %1&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+231"/>
+        <location filename="../../app/window/machine_state.py" line="+234"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origine confirmée&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
@@ -2625,7 +2635,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+87"/>
+        <location filename="../../widgets/position_view_2d.py" line="+98"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>Platine vue de dessus&#xa0;: trace, position actuelle (point&#xa0;; creux si estimée), cible (+), limites de course (pointillés)</translation>
     </message>
@@ -2655,7 +2665,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Y</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+48"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y et Z en fonction du temps&#xa0;; pointillés&#xa0;: cible</translation>
     </message>
@@ -2768,7 +2778,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Garder la caméra sur la position actuelle</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+77"/>
+        <location filename="../../widgets/position_view_3d.py" line="+79"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Nécessite OpenGL 2.1 ou plus récent (par ex. Mesa) sur un affichage&#xa0;; voir le README.</translation>
     </message>
@@ -2787,7 +2797,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>Glisser pour pivoter, molette pour zoomer, glisser avec le bouton du milieu pour déplacer la vue</translation>
     </message>
     <message>
-        <location line="+403"/>
+        <location line="+473"/>
         <source>grid %1 mm</source>
         <translation>grille %1 mm</translation>
     </message>
@@ -2983,14 +2993,66 @@ La vue 2D montre les mêmes positions.</translation>
     </message>
 </context>
 <context>
-    <name>ProgramPanel</name>
+    <name>ProgramDock</name>
     <message>
-        <location filename="../../widgets/program_panel.py" line="+19"/>
-        <source>Programs (*.csv *.json);;All files (*)</source>
-        <translation>Programmes (*.csv *.json);;Tous les fichiers (*)</translation>
+        <location filename="../../app/window/program_dock.py" line="+165"/>
+        <source>program %1 refused: %2</source>
+        <translation>programme %1 refusé&#xa0;: %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+19"/>
+        <source>only programs of points (CSV, JSON) are saved as JSON</source>
+        <translation>seuls les programmes de points (CSV, JSON) s&apos;enregistrent en JSON</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>program %1 cannot run: %2</source>
+        <translation>le programme %1 ne peut pas être exécuté&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>program %1: %2 segments, nothing sent yet</source>
+        <translation>programme %1&#xa0;: %2 segments, rien n&apos;a encore été envoyé</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>the program has no moves</source>
+        <translation>le programme ne contient aucun mouvement</translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>program saved to %1 (%2 points)</source>
+        <translation>programme enregistré dans %1 (%2 points)</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>the program stopped: %1</source>
+        <translation>le programme s&apos;est arrêté&#xa0;: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>program %1 done: %2/%3 executed in %4 s</source>
+        <translation>programme %1 terminé&#xa0;: %2/%3 exécutées en %4 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>program %1 stopped: %2/%3 executed in %4 s</source>
+        <translation>programme %1 arrêté&#xa0;: %2/%3 exécutées en %4 s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1; %2 frames, %3 retransmission(s)</source>
+        <translation>%1&#xa0;; %2 trames, %3 retransmission(s)</translation>
+    </message>
+</context>
+<context>
+    <name>ProgramPanel</name>
+    <message>
+        <source>Programs (*.csv *.json);;All files (*)</source>
+        <translation type="vanished">Programmes (*.csv *.json);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/program_panel.py" line="+42"/>
         <source>no program loaded</source>
         <translation>aucun programme chargé</translation>
     </message>
@@ -2999,17 +3061,16 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Charger…</translation>
     </message>
     <message>
-        <location line="+27"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
-        <translation>Charger un programme&#xa0;: CSV avec x,y,z,speed (mm, mm/s) ou JSON</translation>
+        <translation type="vanished">Charger un programme&#xa0;: CSV avec x,y,z,speed (mm, mm/s) ou JSON</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+92"/>
         <source>Save…</source>
         <translation>Enregistrer…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-1"/>
         <source>Save the loaded program as JSON (x, y, z, speed per point)</source>
         <translation>Enregistrer le programme chargé en JSON (x, y, z, speed par point)</translation>
     </message>
@@ -3018,25 +3079,23 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Exécuter</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Stream the program to the device, 7 moves a frame</source>
-        <translation>Envoyer le programme en continu à l&apos;appareil, 7 mouvements par trame</translation>
+        <translation type="vanished">Envoyer le programme en continu à l&apos;appareil, 7 mouvements par trame</translation>
     </message>
     <message>
         <source>Pause</source>
         <translation type="vanished">Pause</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>Send nothing more until Resume (queued moves go on)</source>
-        <translation>Ne plus rien envoyer jusqu&apos;à Reprendre (les mouvements en file se poursuivent)</translation>
+        <translation type="vanished">Ne plus rien envoyer jusqu&apos;à Reprendre (les mouvements en file se poursuivent)</translation>
     </message>
     <message>
         <source>Stop</source>
         <translation type="vanished">Arrêt</translation>
     </message>
     <message>
-        <location line="-14"/>
+        <location line="-7"/>
         <source>&amp;Load…</source>
         <translation>&amp;Charger…</translation>
     </message>
@@ -3047,38 +3106,87 @@ La vue 2D montre les mêmes positions.</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+123"/>
+        <location line="+322"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;use</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-317"/>
         <source>&amp;Stop</source>
         <translation>Arrê&amp;t</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Send nothing more and flush the device&apos;s queue (STOP)</source>
-        <translation>Ne plus rien envoyer et vider la file de l&apos;appareil (STOP)</translation>
+        <translation type="vanished">Ne plus rien envoyer et vider la file de l&apos;appareil (STOP)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-107"/>
+        <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
+        <translation>Programmes (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;Dessins DXF (*.dxf);;Dessins SVG (*.svg);;Points (*.csv *.json);;Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <location line="+93"/>
+        <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
+        <translation>Charger un programme&#xa0;: G-code, DXF ou SVG, ou des points (CSV avec x,y,z,vitesse en mm et mm/s, ou JSON)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Run the program on the device (checked against the box first)</source>
+        <translation>Exécuter le programme sur l&apos;appareil (vérifié d&apos;abord par rapport à la zone)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Send nothing more until Resume (a device&apos;s queued moves go on)</source>
+        <translation>Ne plus rien envoyer jusqu&apos;à Reprendre (les mouvements en file de l&apos;appareil se poursuivent)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Send nothing more and stop the device (its queue flushed)</source>
+        <translation>Ne plus rien envoyer et arrêter l&apos;appareil (sa file est vidée)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Chord tolerance: how far the straight moves an arc or curve is cut into may stray from it</source>
+        <translation>Tolérance de corde&#xa0;: écart permis entre un arc ou une courbe et les mouvements rectilignes qui le découpent</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Instructions executed by the device</source>
         <translation>Instructions exécutées par l&apos;appareil</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+74"/>
+        <location line="+133"/>
         <source>%v / %m executed</source>
         <translation>%v / %m exécutées</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-113"/>
+        <source>The program&apos;s lines; the one under way is highlighted</source>
+        <translation>Les lignes du programme&#xa0;; celle en cours est surlignée</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The drawing&apos;s layers: the checked ones are run</source>
+        <translation>Les calques du dessin&#xa0;: les calques cochés sont exécutés</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Program:</source>
         <translation>Programme&#xa0;:</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+2"/>
+        <source>Chord tolerance:</source>
+        <translation>Tolérance de corde&#xa0;:</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Load a program</source>
         <translation>Charger un programme</translation>
     </message>
@@ -3093,22 +3201,91 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>JSON (*.json)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
+        <source>reading %1…</source>
+        <translation>lecture de %1…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 (%2 lines)</source>
+        <translation>%1 (%2 lignes)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2 entities)</source>
+        <translation>%1 (%2 entités)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2 elements)</source>
+        <translation>%1 (%2 éléments)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 (%2 points)</source>
         <translation>%1 (%2 points)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>no program</source>
         <translation>aucun programme</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>line %1</source>
+        <translation>ligne %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>entity %1</source>
+        <translation>entité %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>element %1</source>
+        <translation>élément %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point %1</source>
+        <translation>point %1</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>length %1 mm (travel moves %2 mm), %3 segments</source>
+        <translation>longueur %1 mm (déplacements à vide %2 mm), %3 segments</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>box X %1 to %2, Y %3 to %4, Z %5 to %6 mm</source>
+        <translation>zone X de %1 à %2, Y de %3 à %4, Z de %5 à %6 mm</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>about %1 (h:mm:ss) at %2 mm/s where the program sets no speed</source>
+        <translation>environ %1 (h:mm:ss) à %2 mm/s là où le programme ne fixe pas de vitesse</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1
+Not for this program: %2</source>
+        <translation>%1
+Non applicable à ce programme&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>motion is off</source>
         <translation>les mouvements sont désactivés</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
+        <source>%1
+Refused: %2</source>
+        <translation>%1
+Refusé&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1
 Not now: %2</source>
         <translation>%1
@@ -3120,7 +3297,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Reprendre</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+28"/>
         <source>, paused</source>
         <translation>, en pause</translation>
     </message>
@@ -4069,7 +4246,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>ThemeMenu</name>
     <message>
-        <location filename="../../app/window/theme.py" line="+354"/>
+        <location filename="../../app/window/theme.py" line="+366"/>
         <source>&amp;Theme</source>
         <translation>&amp;Thème</translation>
     </message>
@@ -4699,6 +4876,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>nothing in {file} decodes as {protocol} ({count} records of traffic, none a {protocol} frame); {hint}</source>
         <translation>rien dans {file} ne se décode en {protocol} ({count} enregistrements de trafic, aucun n&apos;est une trame {protocol})&#xa0;; {hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SVG scale {value:g} refused: it must be above 0</source>
+        <translation>échelle SVG {value:g} refusée&#xa0;: elle doit être supérieure à 0</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6021,7 +6203,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>erreur {code} ({meaning}) pour {command}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>speed {speed:g} mm/s refused: it must be above 0</source>
         <translation>vitesse {speed:g} mm/s refusée&#xa0;: elle doit être supérieure à 0</translation>
     </message>
@@ -6056,12 +6238,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Numéro de la prochaine trame en file (0&#xa0;: aléatoire)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>dwell {ms} ms refused: the field is an int16 (0 to 32767)</source>
         <translation>temporisation de {ms} ms refusée&#xa0;: le champ est un int16 (0 à 32767)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>a queued frame holds 1 to {most} queued instructions</source>
         <translation>une trame en file contient de 1 à {most} instructions en file</translation>
     </message>
@@ -6736,9 +6918,10 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{protocol} n&apos;a pas de commande d&apos;arrêt&#xa0;: l&apos;appareil termine ce qui lui a été envoyé</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>{protocol} runs no programs: it has no command queue (laser-frame has one)</source>
-        <translation>{protocol} n&apos;exécute pas de programmes&#xa0;: il n&apos;a pas de file de commandes (laser-frame en a une)</translation>
+        <location line="+0"/>
+        <source>{protocol} has no stop command: the device finishes what it was sent</source>
+        <oldsource>{protocol} runs no programs: it has no command queue (laser-frame has one)</oldsource>
+        <translation>{protocol} n&apos;a pas de commande d&apos;arrêt&#xa0;: l&apos;appareil termine ce qui lui a été envoyé</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6794,6 +6977,286 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)</source>
         <translation>{error} (après {rounds} séries de tentatives&#xa0;; {acknowledged} instructions sur {total} avaient été acquittées auparavant)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}</source>
+        <translation>{name}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: more than {count:,} steps (lines, arcs and travel moves)</source>
+        <translation>{where}&#xa0;: plus de {count:,} étapes (lignes, arcs et déplacements à vide)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: a coordinate that is not a finite number</source>
+        <translation>{where}&#xa0;: une coordonnée qui n&apos;est pas un nombre fini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chord tolerance {tolerance:g} mm must be above 0</source>
+        <translation>la tolérance de corde {tolerance:g} mm doit être supérieure à 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DXF drawing</source>
+        <translation>Dessin DXF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: not a drawing the panel reads: {why}</source>
+        <translation>{where}&#xa0;: pas un dessin que le panneau sait lire&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no lines, arcs or curves on the chosen layers</source>
+        <translation>{name}&#xa0;: aucune ligne, aucun arc ni aucune courbe sur les calques choisis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: skipped what is not a path: {what}</source>
+        <translation>{name}&#xa0;: ignoré ce qui n&apos;est pas un tracé&#xa0;: {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: binary DXF cut short (no EOF at its end)</source>
+        <translation>{name}&#xa0;: DXF binaire tronqué (pas d&apos;EOF à la fin)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: a DWG drawing, not DXF (save it as DXF)</source>
+        <translation>{name}&#xa0;: un dessin DWG, pas DXF (l&apos;enregistrer en DXF)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: not a DXF drawing the panel reads: {why}</source>
+        <translation>{name}&#xa0;: pas un dessin DXF que le panneau sait lire&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: $INSUNITS {value!r} is not a unit code</source>
+        <translation>{name}&#xa0;: $INSUNITS {value!r} n&apos;est pas un code d&apos;unité</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no units given ($INSUNITS 0), taken as mm</source>
+        <translation>{name}&#xa0;: aucune unité indiquée ($INSUNITS 0), mm par défaut</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: units $INSUNITS {code} the panel cannot convert to mm</source>
+        <translation>{name}&#xa0;: unités $INSUNITS {code} que le panneau ne sait pas convertir en mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} entity {number} ({kind} on layer {layer}): not a drawing the panel reads: {why}</source>
+        <translation>{name} entité {number} ({kind} sur le calque {layer})&#xa0;: pas un dessin que le panneau sait lire&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no layer {layer} with lines, arcs or curves; the drawing&apos;s layers: {layers}</source>
+        <translation>{name}&#xa0;: aucun calque {layer} avec des lignes, arcs ou courbes&#xa0;; calques du dessin&#xa0;: {layers}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} line {number}</source>
+        <translation>{name} ligne {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: a comment opened with ( is not closed</source>
+        <translation>{where}&#xa0;: un commentaire ouvert par ( n&apos;est pas fermé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} with R: a full circle needs I/J</source>
+        <translation>{where}&#xa0;: {word} avec R&#xa0;: un cercle complet exige I/J</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: R {radius:g} mm is less than half the way to the end point ({half:g} mm)</source>
+        <translation>{where}&#xa0;: {word}&#xa0;: R {radius:g} mm est inférieur à la moitié de la distance jusqu&apos;au point d&apos;arrivée ({half:g} mm)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: the feed rate must be above 0</source>
+        <translation>{where}&#xa0;: {word}&#xa0;: la vitesse d&apos;avance doit être supérieure à 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} needs P, the seconds to dwell</source>
+        <translation>{where}&#xa0;: {word} exige P, la durée de temporisation en secondes</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: a dwell cannot be negative</source>
+        <translation>{where}&#xa0;: {word}&#xa0;: une temporisation ne peut pas être négative</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} with no motion mode (G0, G1, G2 or G3) set</source>
+        <translation>{where}&#xa0;: {word} sans mode de mouvement (G0, G1, G2 ou G3) défini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: no feed rate (F) set before this {word}</source>
+        <translation>{where}&#xa0;: aucune vitesse d&apos;avance (F) définie avant ce {word}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no moves and no dwells</source>
+        <translation>{name}&#xa0;: aucun mouvement et aucune temporisation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: arcs in the {plane} plane ({code}) are not supported: only G17 (XY)</source>
+        <translation>{where}&#xa0;: {word}&#xa0;: les arcs dans le plan {plane} ({code}) ne sont pas pris en charge&#xa0;: seulement G17 (XY)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} needs I and J, or R</source>
+        <translation>{where}&#xa0;: {word} exige I et J, ou R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: the centre is {start:g} mm from the start point and {end:g} mm from the end point, not on one circle</source>
+        <translation>{where}&#xa0;: {word}&#xa0;: le centre est à {start:g} mm du point de départ et à {end:g} mm du point d&apos;arrivée, pas sur un même cercle</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: an arc of radius 0</source>
+        <translation>{where}&#xa0;: {word}&#xa0;: un arc de rayon 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} is not used by anything on the line</source>
+        <translation>{where}&#xa0;: {word} n&apos;est utilisé par rien sur la ligne</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {first} and {second} cannot be on one line</source>
+        <translation>{where}&#xa0;: {first} et {second} ne peuvent pas figurer sur une même ligne</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: more than {count:,} lines, too many for a program</source>
+        <translation>{name}&#xa0;: plus de {count:,} lignes, trop pour un programme</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word!r} is not a G-code word (a letter and a number)</source>
+        <translation>{where}&#xa0;: {word!r} n&apos;est pas un mot G-code (une lettre et un nombre)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} is not understood</source>
+        <translation>{where}&#xa0;: {word} n&apos;est pas compris</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: skipped what the panel does not do: {words} (on {count} of {total} lines)</source>
+        <translation>{name}&#xa0;: ignoré ce que le panneau ne fait pas&#xa0;: {words} (sur {count} des {total} lignes)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chord tolerance {value:g} mm refused: it must be above 0</source>
+        <translation>tolérance de corde {value:g} mm refusée&#xa0;: elle doit être supérieure à 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: the program moves {axis} to {value:g} mm, an axis the device does not have (it has {axes}); nothing was sent</source>
+        <translation>{where}&#xa0;: le programme déplace {axis} à {value:g} mm, un axe que l&apos;appareil n&apos;a pas (il a {axes})&#xa0;; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: the program would leave the travel box at ({x:g}, {y:g}, {z:g}) mm ({box}); nothing was sent</source>
+        <translation>{where}&#xa0;: le programme sortirait de la zone de course en ({x:g}, {y:g}, {z:g}) mm ({box})&#xa0;; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: layers are chosen in DXF files only</source>
+        <translation>{file}&#xa0;: les calques ne se choisissent que dans les fichiers DXF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} entity {number} ({text})</source>
+        <translation>{name} entité {number} ({text})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} element {number} ({text})</source>
+        <translation>{name} élément {number} ({text})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} point {number}</source>
+        <translation>{name} point {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s; nothing was sent</source>
+        <translation>{where}&#xa0;: vitesse {speed:g} mm/s refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} mm/s&#xa0;; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
+        <translation>les mouvements du programme sans vitesse se feraient à la vitesse de l&apos;appareil, {speed:g} mm/s, hors de la plage de {low:g} à {high:g} mm/s qu&apos;il accepte&#xa0;: régler d&apos;abord la vitesse&#xa0;; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {error}; nothing was sent</source>
+        <translation>{where}&#xa0;: {error}&#xa0;; rien n&apos;a été envoyé</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the program was abandoned during a dwell</source>
+        <translation>le programme a été abandonné pendant une temporisation</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SVG scale {scale:g} mm per unit must be above 0</source>
+        <translation>l&apos;échelle SVG {scale:g} mm par unité doit être supérieure à 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SVG drawing</source>
+        <translation>Dessin SVG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: not a shape the panel reads: {why}</source>
+        <translation>{where}&#xa0;: pas une forme que le panneau sait lire&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no stroked paths or shapes to run</source>
+        <translation>{name}&#xa0;: aucun tracé ni aucune forme avec contour à exécuter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: skipped {what}</source>
+        <translation>{name}&#xa0;: ignoré {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} line {line}: not SVG: {why}</source>
+        <translation>{name} ligne {line}&#xa0;: pas du SVG&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: not an SVG drawing the panel reads: {why}</source>
+        <translation>{name}&#xa0;: pas un dessin SVG que le panneau sait lire&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: not an SVG drawing (no svg element)</source>
+        <translation>{name}&#xa0;: pas un dessin SVG (aucun élément svg)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no width and height in mm, cm, in, pt, pc or px; 1 unit taken as {scale:g} mm</source>
+        <translation>{name}&#xa0;: pas de largeur ni de hauteur en mm, cm, in, pt, pc ou px&#xa0;; 1 unité comptée pour {scale:g} mm</translation>
     </message>
     <message>
         <location line="+1"/>

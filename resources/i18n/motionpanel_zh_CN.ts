@@ -729,12 +729,12 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+97"/>
+        <location filename="../../app/window/device_docks.py" line="+92"/>
         <source>Not now: %1</source>
         <translation>暂不可用：%1</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+41"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -744,29 +744,24 @@ All coordinates will be measured from here from now on.</source>
         <translation>各轴 %1 至 %2 mm（16 位计数）</translation>
     </message>
     <message>
-        <location line="+58"/>
         <source>program %1: %2 points, nothing sent yet</source>
-        <translation>程序 %1：%2 个点，尚未发送</translation>
+        <translation type="vanished">程序 %1：%2 个点，尚未发送</translation>
     </message>
     <message>
-        <location line="+10"/>
         <source>program saved to %1 (%2 points)</source>
-        <translation>程序已保存到 %1（%2 个点）</translation>
+        <translation type="vanished">程序已保存到 %1（%2 个点）</translation>
     </message>
     <message>
-        <location line="+33"/>
         <source>the program stopped: %1</source>
-        <translation>程序已停止：%1</translation>
+        <translation type="vanished">程序已停止：%1</translation>
     </message>
     <message>
-        <location line="+13"/>
         <source>program %1 done: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation>程序 %1 完成：已执行 %2/%3，%4 帧，重传 %5 次，%6 s</translation>
+        <translation type="vanished">程序 %1 完成：已执行 %2/%3，%4 帧，重传 %5 次，%6 s</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>program %1 stopped, the device&apos;s queue flushed: %2/%3 executed, %4 frames, %5 retransmission(s), %6 s</source>
-        <translation>程序 %1 已停止，设备队列已清空：已执行 %2/%3，%4 帧，重传 %5 次，%6 s</translation>
+        <translation type="vanished">程序 %1 已停止，设备队列已清空：已执行 %2/%3，%4 帧，重传 %5 次，%6 s</translation>
     </message>
 </context>
 <context>
@@ -1015,6 +1010,21 @@ All coordinates will be measured from here from now on.</source>
         <location line="+1"/>
         <source>run %1 (%2 points)</source>
         <translation>运行 %1（%2 个点）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 lines)</source>
+        <translation>运行 %1（%2 行）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 entities)</source>
+        <translation>运行 %1（%2 个图元）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>run %1 (%2 elements)</source>
+        <translation>运行 %1（%2 个元素）</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1477,7 +1487,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>模拟的 %1 设备</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+94"/>
+        <location filename="../../app/window/main_window.py" line="+95"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1497,7 +1507,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>此后不再记录会话日志</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+117"/>
+        <location filename="../../app/window/main_window.py" line="+130"/>
         <source>Connection</source>
         <translation>连接</translation>
     </message>
@@ -1668,7 +1678,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+135"/>
+        <location filename="../../app/window/machine_state.py" line="+136"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>位置未知：此设备无法报告其位置；请回原点或设为原点</translation>
     </message>
@@ -1802,12 +1812,12 @@ Send them anyway?</source>
         <translation>已停止：%1 条命令未发送：%2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+45"/>
+        <location filename="../../app/window/machine_state.py" line="+47"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>新原点：轨迹已平移 (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-98"/>
+        <location line="-101"/>
         <source>the device reported an error: %1</source>
         <translation>设备报告错误：%1</translation>
     </message>
@@ -1823,7 +1833,7 @@ Send them anyway?</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+231"/>
+        <location filename="../../app/window/machine_state.py" line="+234"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>原点已确认：位置从此处开始计数</translation>
     </message>
@@ -2625,7 +2635,7 @@ Send them anyway?</source>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+87"/>
+        <location filename="../../widgets/position_view_2d.py" line="+98"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>俯视平台：轨迹、当前位置（圆点；估算时为空心）、目标（+）、行程限位（虚线）</translation>
     </message>
@@ -2655,7 +2665,7 @@ Send them anyway?</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+48"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X、Y、Z 随时间的变化；虚线：目标</translation>
     </message>
@@ -2768,7 +2778,7 @@ Send them anyway?</source>
         <translation>使视角始终对准当前位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+77"/>
+        <location filename="../../widgets/position_view_3d.py" line="+79"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>需要在有显示器的环境中提供 OpenGL 2.1 或更高版本（例如 Mesa）；请参阅 README。</translation>
     </message>
@@ -2787,7 +2797,7 @@ The 2D view shows the same positions.</source>
         <translation>拖动旋转，滚轮缩放，中键拖动平移</translation>
     </message>
     <message>
-        <location line="+403"/>
+        <location line="+473"/>
         <source>grid %1 mm</source>
         <translation>网格 %1 mm</translation>
     </message>
@@ -2983,14 +2993,66 @@ The 2D view shows the same positions.</source>
     </message>
 </context>
 <context>
-    <name>ProgramPanel</name>
+    <name>ProgramDock</name>
     <message>
-        <location filename="../../widgets/program_panel.py" line="+19"/>
-        <source>Programs (*.csv *.json);;All files (*)</source>
-        <translation>程序 (*.csv *.json);;所有文件 (*)</translation>
+        <location filename="../../app/window/program_dock.py" line="+165"/>
+        <source>program %1 refused: %2</source>
+        <translation>程序 %1 被拒绝：%2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+19"/>
+        <source>only programs of points (CSV, JSON) are saved as JSON</source>
+        <translation>只有由点组成的程序（CSV、JSON）才能保存为 JSON</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>program %1 cannot run: %2</source>
+        <translation>程序 %1 无法运行：%2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>program %1: %2 segments, nothing sent yet</source>
+        <translation>程序 %1：%2 段，尚未发送</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>the program has no moves</source>
+        <translation>程序中没有移动</translation>
+    </message>
+    <message>
+        <location line="+67"/>
+        <source>program saved to %1 (%2 points)</source>
+        <translation>程序已保存到 %1（%2 个点）</translation>
+    </message>
+    <message>
+        <location line="+71"/>
+        <source>the program stopped: %1</source>
+        <translation>程序已停止：%1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>program %1 done: %2/%3 executed in %4 s</source>
+        <translation>程序 %1 完成：已执行 %2/%3，用时 %4 s</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>program %1 stopped: %2/%3 executed in %4 s</source>
+        <translation>程序 %1 已停止：已执行 %2/%3，用时 %4 s</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1; %2 frames, %3 retransmission(s)</source>
+        <translation>%1；%2 帧，重传 %3 次</translation>
+    </message>
+</context>
+<context>
+    <name>ProgramPanel</name>
+    <message>
+        <source>Programs (*.csv *.json);;All files (*)</source>
+        <translation type="vanished">程序 (*.csv *.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location filename="../../widgets/program_panel.py" line="+42"/>
         <source>no program loaded</source>
         <translation>未加载程序</translation>
     </message>
@@ -2999,17 +3061,16 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">加载…</translation>
     </message>
     <message>
-        <location line="+27"/>
         <source>Load a program: CSV with x,y,z,speed (mm, mm/s) or JSON</source>
-        <translation>加载程序：含 x,y,z,speed 列的 CSV（mm、mm/s）或 JSON</translation>
+        <translation type="vanished">加载程序：含 x,y,z,speed 列的 CSV（mm、mm/s）或 JSON</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+92"/>
         <source>Save…</source>
         <translation>保存…</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-1"/>
         <source>Save the loaded program as JSON (x, y, z, speed per point)</source>
         <translation>将已加载的程序保存为 JSON（每个点含 x, y, z, speed）</translation>
     </message>
@@ -3018,25 +3079,23 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">运行</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Stream the program to the device, 7 moves a frame</source>
-        <translation>将程序流式发送到设备，每帧 7 个移动</translation>
+        <translation type="vanished">将程序流式发送到设备，每帧 7 个移动</translation>
     </message>
     <message>
         <source>Pause</source>
         <translation type="vanished">暂停</translation>
     </message>
     <message>
-        <location line="+5"/>
         <source>Send nothing more until Resume (queued moves go on)</source>
-        <translation>在“继续”之前不再发送（已排队的移动照常执行）</translation>
+        <translation type="vanished">在“继续”之前不再发送（已排队的移动照常执行）</translation>
     </message>
     <message>
         <source>Stop</source>
         <translation type="vanished">停止</translation>
     </message>
     <message>
-        <location line="-14"/>
+        <location line="-7"/>
         <source>&amp;Load…</source>
         <translation>加载(&amp;L)…</translation>
     </message>
@@ -3047,38 +3106,87 @@ The 2D view shows the same positions.</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+123"/>
+        <location line="+322"/>
         <source>P&amp;ause</source>
         <translation>暂停(&amp;A)</translation>
     </message>
     <message>
-        <location line="-118"/>
+        <location line="-317"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
     <message>
-        <location line="+2"/>
         <source>Send nothing more and flush the device&apos;s queue (STOP)</source>
-        <translation>不再发送，并清空设备队列（STOP）</translation>
+        <translation type="vanished">不再发送，并清空设备队列（STOP）</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-107"/>
+        <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
+        <translation>程序 (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF 图纸 (*.dxf);;SVG 图纸 (*.svg);;点 (*.csv *.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <location line="+93"/>
+        <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
+        <translation>加载程序：G-code、DXF 或 SVG，或点（含 x,y,z,speed 列的 CSV，单位 mm 和 mm/s，或 JSON）</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Run the program on the device (checked against the box first)</source>
+        <translation>在设备上运行程序（先对照行程范围进行检查）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Send nothing more until Resume (a device&apos;s queued moves go on)</source>
+        <translation>在“继续”之前不再发送（设备已排队的移动照常执行）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Send nothing more and stop the device (its queue flushed)</source>
+        <translation>不再发送，并停止设备（清空其队列）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Chord tolerance: how far the straight moves an arc or curve is cut into may stray from it</source>
+        <translation>弦公差：圆弧或曲线被切分成直线移动时，直线与其之间允许的最大偏差</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Instructions executed by the device</source>
         <translation>设备已执行的指令</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+74"/>
+        <location line="+133"/>
         <source>%v / %m executed</source>
         <translation>已执行 %v / %m</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-113"/>
+        <source>The program&apos;s lines; the one under way is highlighted</source>
+        <translation>程序的各行；正在执行的行会高亮显示</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The drawing&apos;s layers: the checked ones are run</source>
+        <translation>图纸的图层：勾选的图层会被运行</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Program:</source>
         <translation>程序：</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+2"/>
+        <source>Chord tolerance:</source>
+        <translation>弦公差：</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Load a program</source>
         <translation>加载程序</translation>
     </message>
@@ -3093,22 +3201,91 @@ The 2D view shows the same positions.</source>
         <translation>JSON (*.json)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
+        <source>reading %1…</source>
+        <translation>正在读取 %1…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 (%2 lines)</source>
+        <translation>%1（%2 行）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2 entities)</source>
+        <translation>%1（%2 个图元）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (%2 elements)</source>
+        <translation>%1（%2 个元素）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1 (%2 points)</source>
         <translation>%1（%2 个点）</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>no program</source>
         <translation>无程序</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>line %1</source>
+        <translation>第 %1 行</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>entity %1</source>
+        <translation>图元 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>element %1</source>
+        <translation>元素 %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>point %1</source>
+        <translation>点 %1</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>length %1 mm (travel moves %2 mm), %3 segments</source>
+        <translation>长度 %1 mm（空移 %2 mm），%3 段</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>box X %1 to %2, Y %3 to %4, Z %5 to %6 mm</source>
+        <translation>范围 X %1 至 %2，Y %3 至 %4，Z %5 至 %6 mm</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>about %1 (h:mm:ss) at %2 mm/s where the program sets no speed</source>
+        <translation>约 %1（h:mm:ss），程序未设定速度处按 %2 mm/s 计</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1
+Not for this program: %2</source>
+        <translation>%1
+不适用于此程序：%2</translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>motion is off</source>
         <translation>运动控制不可用</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
+        <source>%1
+Refused: %2</source>
+        <translation>%1
+已拒绝：%2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1
 Not now: %2</source>
         <translation>%1
@@ -3120,7 +3297,7 @@ Not now: %2</source>
         <translation>继续</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+28"/>
         <source>, paused</source>
         <translation>，已暂停</translation>
     </message>
@@ -4069,7 +4246,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>ThemeMenu</name>
     <message>
-        <location filename="../../app/window/theme.py" line="+354"/>
+        <location filename="../../app/window/theme.py" line="+366"/>
         <source>&amp;Theme</source>
         <translation>主题(&amp;T)</translation>
     </message>
@@ -4699,6 +4876,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>nothing in {file} decodes as {protocol} ({count} records of traffic, none a {protocol} frame); {hint}</source>
         <translation>{file} 中没有任何内容能按 {protocol} 解码（共 {count} 条通信记录，没有一条是 {protocol} 帧）；{hint}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SVG scale {value:g} refused: it must be above 0</source>
+        <translation>SVG 缩放比例 {value:g} 被拒绝：必须大于 0</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6021,7 +6203,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{command} 出错 {code}（{meaning}）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>speed {speed:g} mm/s refused: it must be above 0</source>
         <translation>速度 {speed:g} mm/s 被拒绝：必须大于 0</translation>
     </message>
@@ -6056,12 +6238,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>下一个排队帧的编号（0：随机）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>dwell {ms} ms refused: the field is an int16 (0 to 32767)</source>
         <translation>延时 {ms} ms 被拒绝：该字段为 int16（0 至 32767）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+8"/>
         <source>a queued frame holds 1 to {most} queued instructions</source>
         <translation>一个排队帧包含 1 至 {most} 条排队指令</translation>
     </message>
@@ -6736,9 +6918,10 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{protocol} 没有停止命令：设备会完成已发给它的内容</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>{protocol} runs no programs: it has no command queue (laser-frame has one)</source>
-        <translation>{protocol} 不能运行程序：它没有命令队列（laser-frame 有）</translation>
+        <location line="+0"/>
+        <source>{protocol} has no stop command: the device finishes what it was sent</source>
+        <oldsource>{protocol} runs no programs: it has no command queue (laser-frame has one)</oldsource>
+        <translation>{protocol} 没有停止命令：设备会完成已发给它的内容</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6794,6 +6977,286 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)</source>
         <translation>{error}（经过 {rounds} 轮重试；此前 {total} 条指令中已有 {acknowledged} 条得到确认）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}</source>
+        <translation>{name}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: more than {count:,} steps (lines, arcs and travel moves)</source>
+        <translation>{where}：超过 {count:,} 步（直线、圆弧和空移）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: a coordinate that is not a finite number</source>
+        <translation>{where}：坐标不是有限数值</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chord tolerance {tolerance:g} mm must be above 0</source>
+        <translation>弦公差 {tolerance:g} mm 必须大于 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>DXF drawing</source>
+        <translation>DXF 图纸</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: not a drawing the panel reads: {why}</source>
+        <translation>{where}：不是面板可读取的图形：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no lines, arcs or curves on the chosen layers</source>
+        <translation>{name}：所选图层上没有直线、圆弧或曲线</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: skipped what is not a path: {what}</source>
+        <translation>{name}：已跳过非路径的内容：{what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: binary DXF cut short (no EOF at its end)</source>
+        <translation>{name}：二进制 DXF 被截断（末尾没有 EOF）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: a DWG drawing, not DXF (save it as DXF)</source>
+        <translation>{name}：这是 DWG 图纸，不是 DXF（请另存为 DXF）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: not a DXF drawing the panel reads: {why}</source>
+        <translation>{name}：不是面板可读取的 DXF 图纸：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: $INSUNITS {value!r} is not a unit code</source>
+        <translation>{name}：$INSUNITS {value!r} 不是单位代码</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no units given ($INSUNITS 0), taken as mm</source>
+        <translation>{name}：未指定单位（$INSUNITS 0），按 mm 处理</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: units $INSUNITS {code} the panel cannot convert to mm</source>
+        <translation>{name}：面板无法将单位 $INSUNITS {code} 换算为 mm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} entity {number} ({kind} on layer {layer}): not a drawing the panel reads: {why}</source>
+        <translation>{name} 图元 {number}（图层 {layer} 上的 {kind}）：不是面板可读取的图形：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no layer {layer} with lines, arcs or curves; the drawing&apos;s layers: {layers}</source>
+        <translation>{name}：没有包含直线、圆弧或曲线的图层 {layer}；图纸的图层：{layers}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} line {number}</source>
+        <translation>{name} 第 {number} 行</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: a comment opened with ( is not closed</source>
+        <translation>{where}：以 ( 开始的注释没有闭合</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} with R: a full circle needs I/J</source>
+        <translation>{where}：{word} 使用 R：整圆需要 I/J</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: R {radius:g} mm is less than half the way to the end point ({half:g} mm)</source>
+        <translation>{where}：{word}：R {radius:g} mm 小于到终点距离的一半（{half:g} mm）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: the feed rate must be above 0</source>
+        <translation>{where}：{word}：进给速度必须大于 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} needs P, the seconds to dwell</source>
+        <translation>{where}：{word} 需要 P，即停留的秒数</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: a dwell cannot be negative</source>
+        <translation>{where}：{word}：停留时间不能为负</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} with no motion mode (G0, G1, G2 or G3) set</source>
+        <translation>{where}：{word} 未设置运动模式（G0、G1、G2 或 G3）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: no feed rate (F) set before this {word}</source>
+        <translation>{where}：此 {word} 之前未设置进给速度（F）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no moves and no dwells</source>
+        <translation>{name}：没有移动，也没有停留</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: arcs in the {plane} plane ({code}) are not supported: only G17 (XY)</source>
+        <translation>{where}：{word}：不支持 {plane} 平面（{code}）中的圆弧：仅支持 G17（XY）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} needs I and J, or R</source>
+        <translation>{where}：{word} 需要 I 和 J，或 R</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: the centre is {start:g} mm from the start point and {end:g} mm from the end point, not on one circle</source>
+        <translation>{where}：{word}：圆心距起点 {start:g} mm，距终点 {end:g} mm，不在同一个圆上</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word}: an arc of radius 0</source>
+        <translation>{where}：{word}：半径为 0 的圆弧</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} is not used by anything on the line</source>
+        <translation>{where}：{word} 未被该行中的任何内容使用</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {first} and {second} cannot be on one line</source>
+        <translation>{where}：{first} 和 {second} 不能在同一行</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: more than {count:,} lines, too many for a program</source>
+        <translation>{name}：超过 {count:,} 行，程序过长</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word!r} is not a G-code word (a letter and a number)</source>
+        <translation>{where}：{word!r} 不是 G-code 字（一个字母加一个数字）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {word} is not understood</source>
+        <translation>{where}：无法理解 {word}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: skipped what the panel does not do: {words} (on {count} of {total} lines)</source>
+        <translation>{name}：已跳过面板不支持的内容：{words}（共 {total} 行中的 {count} 行）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chord tolerance {value:g} mm refused: it must be above 0</source>
+        <translation>弦公差 {value:g} mm 被拒绝：必须大于 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: the program moves {axis} to {value:g} mm, an axis the device does not have (it has {axes}); nothing was sent</source>
+        <translation>{where}：程序将 {axis} 移动到 {value:g} mm，但设备没有该轴（设备的轴为 {axes}）；未发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: the program would leave the travel box at ({x:g}, {y:g}, {z:g}) mm ({box}); nothing was sent</source>
+        <translation>{where}：程序会在 ({x:g}, {y:g}, {z:g}) mm 处超出行程范围（{box}）；未发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{file}: layers are chosen in DXF files only</source>
+        <translation>{file}：只有 DXF 文件才能选择图层</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} entity {number} ({text})</source>
+        <translation>{name} 图元 {number}（{text}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} element {number} ({text})</source>
+        <translation>{name} 元素 {number}（{text}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} point {number}</source>
+        <translation>{name} 点 {number}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s; nothing was sent</source>
+        <translation>{where}：速度 {speed:g} mm/s 被拒绝：设备允许 {low:g} 至 {high:g} mm/s；未发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
+        <translation>程序中未指定速度的移动将以设备的速度 {speed:g} mm/s 运行，超出其允许的 {low:g} 至 {high:g} mm/s：请先设置速度；未发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: {error}; nothing was sent</source>
+        <translation>{where}：{error}；未发送任何内容</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the program was abandoned during a dwell</source>
+        <translation>程序在停留期间被放弃</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SVG scale {scale:g} mm per unit must be above 0</source>
+        <translation>SVG 缩放比例（每单位 {scale:g} mm）必须大于 0</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>SVG drawing</source>
+        <translation>SVG 图纸</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: not a shape the panel reads: {why}</source>
+        <translation>{where}：不是面板可读取的形状：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no stroked paths or shapes to run</source>
+        <translation>{name}：没有可运行的描边路径或形状</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: skipped {what}</source>
+        <translation>{name}：已跳过 {what}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name} line {line}: not SVG: {why}</source>
+        <translation>{name} 第 {line} 行：不是 SVG：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: not an SVG drawing the panel reads: {why}</source>
+        <translation>{name}：不是面板可读取的 SVG 图纸：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: not an SVG drawing (no svg element)</source>
+        <translation>{name}：不是 SVG 图纸（没有 svg 元素）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{name}: no width and height in mm, cm, in, pt, pc or px; 1 unit taken as {scale:g} mm</source>
+        <translation>{name}：没有以 mm、cm、in、pt、pc 或 px 表示的宽度和高度；1 个单位按 {scale:g} mm 计</translation>
     </message>
     <message>
         <location line="+1"/>
