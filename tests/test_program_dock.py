@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QDockWidget, QLabel, QPushButton
+from PySide6.QtWidgets import QDockWidget
 
 from app.window.main_window import MainWindow
 from app.window.program_dock import ProgramDock
@@ -213,46 +213,6 @@ def test_a_file_with_an_error_is_refused_and_nothing_is_loaded(
     assert dock.toolpath is None and panel.line_model.rowCount() == 0
     assert len(window.view2d.program()) == 0 and len(window.view3d.program()) == 0
     assert not panel.run_button.isEnabled() and "no program" in panel.file_label.text()
-
-
-@pytest.mark.parametrize(
-    ("url", "protocol", "baud", "variant", "points"),
-    [
-        ("sim://visiomex?instant=1", "visiomex", 9600, "seed", [(3, 0), (3, 2), (5, 4)]),
-        ("sim://firmata?reset_delay=0.2&instant=1", "firmata", 57600, None, [(2, 0), (5, 0)]),
-    ],
-)
-def test_the_dock_runs_points_on_visiomex_and_firmata(
-    qtbot,
-    window: MainWindow,
-    tmp_path: Path,
-    url: str,
-    protocol: str,
-    baud: int,
-    variant: str | None,
-    points: list[tuple[int, int]],
-) -> None:
-    with qtbot.waitSignal(window.settled, timeout=10000):
-        window.connect_device(url, protocol, baud, variant)
-    dock = window.findChild(QDockWidget, "programPanelDock")
-    assert dock is not None and dock.isVisible()
-    if protocol == "firmata":  # its stepper is configured first, as an operator does
-        firmata = window.devices.firmata
-        qtbot.mouseClick(
-            firmata.findChild(QPushButton, "firmataConfigure"), Qt.MouseButton.LeftButton
-        )
-        version = firmata.findChild(QLabel, "firmataVersionLabel")
-        qtbot.waitUntil(lambda: version.text() == "5", timeout=5000)
-    panel, _ = _parts(window)
-    path = tmp_path / "points.csv"
-    path.write_text("x,y,z,speed\n" + "".join(f"{x},{y},0,5\n" for x, y in points))
-    _load(qtbot, window, path)
-    _run_to_end(qtbot, window)
-    x, y = points[-1]
-    position = window.readout.position()
-    assert position is not None and position[:2] == pytest.approx((x, y), abs=0.05)
-    assert panel.current_line() == len(points) - 1
-    assert "done" in window.status_line.message()
 
 
 def test_dxf_layers_are_chosen_in_the_dock(qtbot, window: MainWindow, tmp_path: Path) -> None:

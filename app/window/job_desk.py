@@ -40,6 +40,13 @@ def _runs_alone(job: object) -> bool:
     return isinstance(job, (jobs.StreamJob, jobs.MacroJob, jobs.SetParameterJob))
 
 
+def _is_program(job: object) -> bool:
+    """Whether `job` runs a program (the worker is built: app.window.jobs is imported)."""
+    from app.window import jobs
+
+    return isinstance(job, jobs.StreamJob)
+
+
 def _may_run_beside(job: object, running: list[jobs.Job]) -> bool:
     """Whether `job` may be queued while the jobs that run alone in `running` are under way:
     reading the device, or more parameter writes beside parameter writes; nothing that moves."""
@@ -94,6 +101,20 @@ class JobDesk(QObject):
                 fill(translate("MainWindow", "not connected: %1 not sent"), job.describe()),
                 status.WARNING,
                 note=False,
+            )
+            return False
+        if _is_program(job) and self.machine.position_lost:
+            # A program's coordinates are absolute: from an unknown place they go elsewhere.
+            self._tell(
+                fill(
+                    translate(
+                        "MainWindow",
+                        "%1 refused: the position is unknown, so the program's coordinates "
+                        "would not be where it goes; Home or Set Home first",
+                    ),
+                    job.describe(),
+                ),
+                status.WARNING,
             )
             return False
         running = list(self.running_alone)
