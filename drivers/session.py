@@ -190,8 +190,11 @@ class DeviceSession:
             return self.motion.speed_limits()
 
     def stop(self) -> None:
-        """Stop the move or program under way and flush the device's queue; NoStop where the
-        protocol has no stop command."""
+        """Stop the move or program under way and flush the device's queue. A program is
+        ended on every device (nothing more is sent; the move under way finishes where the
+        protocol has no stop); otherwise NoStop where the protocol has no stop command."""
+        if self.stop_program():  # run_program sends the device's stop once sending ends
+            return
         if not self.capabilities.stop:
             raise NoStop(
                 Message(
@@ -199,8 +202,6 @@ class DeviceSession:
                     protocol=self.protocol.name,
                 )
             )
-        if self.stop_program():  # run_program sends the device's stop once sending ends
-            return
         if self._running_in not in (None, threading.get_ident()):
             self.motion.stop_requested.set()  # the move being waited on is stopped
             return

@@ -203,3 +203,20 @@ def test_stop_from_another_thread_halts_the_move_being_waited_on() -> None:
         stopper.join(10)
         assert here.x < 50.0  # stopped on the way, where the device says it is
         assert laser.position().x == here.x
+
+
+def test_stop_ends_a_program_on_a_device_without_a_stop_command() -> None:
+    points = [ProgramPoint(float(i), 0.0, 0.0, 10.0) for i in range(1, 30)]
+    with open_device("sim://coxiris?instant=1", "coxiris") as stage:
+        seen: list[int] = []
+
+        def progress(state: StreamProgress) -> None:
+            seen.append(state.executed)
+            if state.executed == 3:
+                stage.stop()  # from the progress callback: the program ends, no NoStop
+
+        state = stage.run_program(points, progress)
+        assert not state.finished and state.executed == 3
+        assert stage.position().x == 3.0  # the move under way finished; nothing more was sent
+        with pytest.raises(NoStop):
+            stage.stop()  # no program now: COXIRIS has no stop command
