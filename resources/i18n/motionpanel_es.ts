@@ -1748,12 +1748,17 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>límites de recorrido: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+94"/>
+        <location filename="../../app/window/job_desk.py" line="+101"/>
         <source>not connected: %1 not sent</source>
         <translation>no conectado: %1 sin enviar</translation>
     </message>
     <message>
         <location line="+9"/>
+        <source>%1 refused: the position is unknown, so the program&apos;s coordinates would not be where it goes; Home or Set Home first</source>
+        <translation>%1 rechazado: la posición es desconocida, así que las coordenadas del programa no corresponderían a donde va; haga primero Origen o Fijar origen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>%1 refused: %2 is under way; wait for its end or press Stop</source>
         <translation>se rechaza %1: %2 está en curso; esperar a que termine o pulsar Detener</translation>
     </message>
@@ -3052,7 +3057,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">Programas (*.csv *.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/program_panel.py" line="+42"/>
+        <location filename="../../widgets/program_panel.py" line="+38"/>
         <source>no program loaded</source>
         <translation>ningún programa cargado</translation>
     </message>
@@ -3065,7 +3070,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">Cargar un programa: CSV con x,y,z,speed (mm, mm/s) o JSON</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+41"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
@@ -3120,12 +3125,12 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">No enviar nada más y vaciar la cola del dispositivo (STOP)</translation>
     </message>
     <message>
-        <location line="-107"/>
+        <location line="-56"/>
         <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
         <translation>Programas (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;Dibujos DXF (*.dxf);;Dibujos SVG (*.svg);;Puntos (*.csv *.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+42"/>
         <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
         <translation>Cargar un programa: G-code, DXF o SVG, o puntos (CSV con x,y,z,speed en mm y mm/s, o JSON)</translation>
     </message>
@@ -6915,12 +6920,6 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     <message>
         <location line="+1"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
-        <translation>{protocol} no tiene comando de parada: el dispositivo termina lo que se le envió</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>{protocol} has no stop command: the device finishes what it was sent</source>
-        <oldsource>{protocol} runs no programs: it has no command queue (laser-frame has one)</oldsource>
         <translation>{protocol} no tiene comando de parada: el dispositivo termina lo que se le envió</translation>
     </message>
     <message>

@@ -1748,12 +1748,17 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>limites de course&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+94"/>
+        <location filename="../../app/window/job_desk.py" line="+101"/>
         <source>not connected: %1 not sent</source>
         <translation>non connecté&#xa0;: %1 non envoyé</translation>
     </message>
     <message>
         <location line="+9"/>
+        <source>%1 refused: the position is unknown, so the program&apos;s coordinates would not be where it goes; Home or Set Home first</source>
+        <translation>%1 refusé : la position est inconnue, les coordonnées du programme ne seraient donc pas là où il va ; faites d&apos;abord Origine ou Définir l&apos;origine</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>%1 refused: %2 is under way; wait for its end or press Stop</source>
         <translation>%1 refusé&#xa0;: %2 est en cours&#xa0;; attendre sa fin ou appuyer sur Arrêt</translation>
     </message>
@@ -3052,7 +3057,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Programmes (*.csv *.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/program_panel.py" line="+42"/>
+        <location filename="../../widgets/program_panel.py" line="+38"/>
         <source>no program loaded</source>
         <translation>aucun programme chargé</translation>
     </message>
@@ -3065,7 +3070,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Charger un programme&#xa0;: CSV avec x,y,z,speed (mm, mm/s) ou JSON</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+41"/>
         <source>Save…</source>
         <translation>Enregistrer…</translation>
     </message>
@@ -3120,12 +3125,12 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Ne plus rien envoyer et vider la file de l&apos;appareil (STOP)</translation>
     </message>
     <message>
-        <location line="-107"/>
+        <location line="-56"/>
         <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
         <translation>Programmes (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;Dessins DXF (*.dxf);;Dessins SVG (*.svg);;Points (*.csv *.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+42"/>
         <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
         <translation>Charger un programme&#xa0;: G-code, DXF ou SVG, ou des points (CSV avec x,y,z,vitesse en mm et mm/s, ou JSON)</translation>
     </message>
@@ -6915,12 +6920,6 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     <message>
         <location line="+1"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
-        <translation>{protocol} n&apos;a pas de commande d&apos;arrêt&#xa0;: l&apos;appareil termine ce qui lui a été envoyé</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>{protocol} has no stop command: the device finishes what it was sent</source>
-        <oldsource>{protocol} runs no programs: it has no command queue (laser-frame has one)</oldsource>
         <translation>{protocol} n&apos;a pas de commande d&apos;arrêt&#xa0;: l&apos;appareil termine ce qui lui a été envoyé</translation>
     </message>
     <message>

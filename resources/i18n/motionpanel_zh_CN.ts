@@ -1748,12 +1748,17 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>行程限位：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+94"/>
+        <location filename="../../app/window/job_desk.py" line="+101"/>
         <source>not connected: %1 not sent</source>
         <translation>未连接：%1 未发送</translation>
     </message>
     <message>
         <location line="+9"/>
+        <source>%1 refused: the position is unknown, so the program&apos;s coordinates would not be where it goes; Home or Set Home first</source>
+        <translation>%1 被拒绝：位置未知，程序的坐标将不是它实际去的地方；请先执行“回原点”或“设为原点”</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>%1 refused: %2 is under way; wait for its end or press Stop</source>
         <translation>%1 被拒绝：%2 正在进行；请等待其结束或按“停止”</translation>
     </message>
@@ -3052,7 +3057,7 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">程序 (*.csv *.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/program_panel.py" line="+42"/>
+        <location filename="../../widgets/program_panel.py" line="+38"/>
         <source>no program loaded</source>
         <translation>未加载程序</translation>
     </message>
@@ -3065,7 +3070,7 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">加载程序：含 x,y,z,speed 列的 CSV（mm、mm/s）或 JSON</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location line="+41"/>
         <source>Save…</source>
         <translation>保存…</translation>
     </message>
@@ -3120,12 +3125,12 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">不再发送，并清空设备队列（STOP）</translation>
     </message>
     <message>
-        <location line="-107"/>
+        <location line="-56"/>
         <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
         <translation>程序 (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF 图纸 (*.dxf);;SVG 图纸 (*.svg);;点 (*.csv *.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+42"/>
         <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
         <translation>加载程序：G-code、DXF 或 SVG，或点（含 x,y,z,speed 列的 CSV，单位 mm 和 mm/s，或 JSON）</translation>
     </message>
@@ -6915,12 +6920,6 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     <message>
         <location line="+1"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
-        <translation>{protocol} 没有停止命令：设备会完成已发给它的内容</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>{protocol} has no stop command: the device finishes what it was sent</source>
-        <oldsource>{protocol} runs no programs: it has no command queue (laser-frame has one)</oldsource>
         <translation>{protocol} 没有停止命令：设备会完成已发给它的内容</translation>
     </message>
     <message>
