@@ -10,7 +10,8 @@ prefix, and the vertices already on the GPU stay there as the run goes on (none 
 The 3D cut segments are simplified, as the trail's history is decimated: a run of points in one
 cell of a grid of GL_CELLS across the program's extent keeps its first point only (an error
 under two cells: a pixel or two in a view of the whole program). Software OpenGL spends its time
-on the vertices: 200,000 of them added 8-14 ms to a frame of a 1,000,000-point trail (~12 ms).
+on the vertices: 200,000 of them added 8-14 ms to a frame of a 1,000,000-point trail (~12 ms),
+so a dense program is simplified on a coarser grid until at most MAX_GL_SEGMENTS remain.
 The 2D segments are exact.
 """
 
@@ -21,6 +22,8 @@ import numpy as np
 DASHES_PER_SPAN = 60  # a travel move across the program's whole extent: this many dashes (3D)
 MAX_DASHES = 200_000  # the 3D travel dashes of a whole program, at most (longer dashes else)
 GL_CELLS = 500  # the 3D cut segments are simplified to about this many cells across
+MAX_GL_SEGMENTS = 30_000  # ... or fewer, down to MIN_GL_CELLS, while more segments remain
+MIN_GL_CELLS = 60
 
 
 def program_arrays(
@@ -102,10 +105,19 @@ class ProgramPath:
 
     def _simplified_cut(self) -> tuple[np.ndarray, np.ndarray]:
         """The cut segments simplified (see the module's docstring) as "lines" vertices in
-        reverse order, and how many of them end after each row."""
-        points, travel = self.points, self.rapid[1:]
+        reverse order, and how many of them end after each row: a coarser grid while more than
+        MAX_GL_SEGMENTS remain (a dense program would cost the 3D frame its budget)."""
         span = float(np.max(self.high - self.low))
-        cell = span / GL_CELLS if span > 0 else 1.0
+        across = GL_CELLS
+        while True:
+            vertices, left = self._cut_on_grid(span / across if span > 0 else 1.0)
+            if len(vertices) <= 2 * MAX_GL_SEGMENTS or across <= MIN_GL_CELLS:
+                return vertices, left
+            across //= 2
+
+    def _cut_on_grid(self, cell: float) -> tuple[np.ndarray, np.ndarray]:
+        """The cut segments simplified on a grid of `cell` mm (see `_simplified_cut`)."""
+        points, travel = self.points, self.rapid[1:]
         cells = np.floor((points - self.low) / cell).astype(np.int64)
         keep = np.ones(len(points), dtype=bool)
         keep[1:-1] = (cells[1:-1] != cells[:-2]).any(axis=1)

@@ -12,7 +12,7 @@ import pytest
 
 from app.window.theme import DARK_PLOT_COLORS, LIGHT_PLOT_COLORS, apply_gl_colors, apply_plot_colors
 from widgets import position_view_3d
-from widgets._program_path import ProgramPath, program_arrays
+from widgets._program_path import MAX_GL_SEGMENTS, ProgramPath, program_arrays
 from widgets.position_buffer import PositionBuffer
 from widgets.position_view_2d import PositionView2D
 from widgets.position_view_3d import PositionView3DPlaceholder, make_position_view_3d
@@ -310,3 +310,16 @@ def test_3d_big_program_is_drawn_fast(gl_view) -> None:
         assert len(gl_view.program()) == len(points) - row
     assert max(steps) < 0.05, steps
     assert not gl_view.render_scene().isNull()
+
+
+def test_a_dense_program_is_simplified_within_the_3d_budget() -> None:
+    """200,000 short cuts in a 50 mm field: the 3D view draws at most MAX_GL_SEGMENTS of them
+    (a coarser grid), each vertex still on the program's path."""
+    count = 200_000
+    t = np.arange(count + 1)
+    points = np.column_stack(((t % 500) * 0.1, (t // 500) * 0.125, np.zeros(count + 1)))
+    path = ProgramPath(points, np.zeros(count + 1, dtype=bool))
+    vertices = path.cut_vertices(0)
+    assert 0 < len(vertices) <= 2 * MAX_GL_SEGMENTS
+    on_path = {tuple(p) for p in points.astype(np.float32)}
+    assert all(tuple(v) in on_path for v in vertices[:: max(1, len(vertices) // 500)])
