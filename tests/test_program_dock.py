@@ -250,3 +250,16 @@ def test_dxf_layers_are_chosen_in_the_dock(qtbot, window: MainWindow, tmp_path: 
     cut.setCheckState(Qt.CheckState.Checked)
     qtbot.waitUntil(lambda: dock.toolpath is not None and not dock.reading, timeout=5000)
     assert panel.run_button.isEnabled() and dock.layers == ["cut"]
+
+
+def test_a_program_moving_an_axis_the_device_lacks_is_refused_when_read(
+    qtbot, window: MainWindow, tmp_path: Path
+) -> None:
+    with qtbot.waitSignal(window.settled, timeout=10000):
+        window.connect_device("sim://firmata?reset_delay=0.2&instant=1", "firmata", 57600)
+    panel, _ = _parts(window)
+    _load(qtbot, window, _gcode(tmp_path))  # a square in X and Y: Firmata turns X only
+    assert "square.nc line 4: the program moves Y to 1 mm" in panel.refused()
+    assert "it has X" in panel.refused()
+    assert not panel.run_button.isEnabled()
+    assert len(window.view2d.program()) > 2  # drawn all the same, to see why

@@ -127,7 +127,7 @@ class DeviceDocks(QObject):
             self.piframe.set_ticks_per_mm(values["ticks_per_mm"])
         self.programs.set_speed(info.capabilities.default_speed)  # until the device tells
         self.adapt(info.capabilities)
-        self.programs.travel_changed()
+        self.programs.set_axes(info.capabilities.axes)  # checks the program loaded again
         travel = self.services.travel
         self.travel.set_device(
             fill(self.tr("%1 on %2"), info.protocol, info.port),

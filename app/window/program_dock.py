@@ -50,10 +50,21 @@ class Reading:
 
 
 def read_program(
-    reading: Reading, kept: Toolpath | None, travel: TravelLimits | None, speed: float
+    reading: Reading,
+    kept: Toolpath | None,
+    travel: TravelLimits | None,
+    speed: float,
+    axes: tuple[str, ...] = ("x", "y", "z"),
 ) -> Reading:
-    """Read (or take `kept`), flatten, measure and check a program: any thread."""
-    from drivers.toolpath.geometry import ProgramOutside, check_travel, flatten, summarize
+    """Read (or take `kept`), flatten, measure and check a program against the travel box and
+    the device's axes: any thread."""
+    from drivers.toolpath.geometry import (
+        ProgramOutside,
+        check_axes,
+        check_travel,
+        flatten,
+        summarize,
+    )
     from drivers.toolpath.loader import load_toolpath
 
     try:
@@ -65,6 +76,11 @@ def read_program(
         flat = flatten(toolpath, reading.tolerance)
         reading.toolpath, reading.flat = toolpath, flat
         reading.summary = summarize(toolpath, flat, speed)
+        try:
+            check_axes(toolpath, flat, axes)
+        except BadInput as exc:  # drawn all the same: the operator sees why it cannot run
+            reading.outside = exc
+            return reading
         check_travel(toolpath, flat, travel)
     except ProgramOutside as exc:
         reading.outside = exc
@@ -92,6 +108,7 @@ class ProgramDock(QObject):
         self.layers: list[str] | None = None  # the DXF layers chosen (None: all)
         self._all_layers: tuple[str, ...] = ()  # the DXF file's layers
         self.speed = 10.0  # mm/s: the device's, for the time estimate
+        self.axes: tuple[str, ...] = ("x", "y", "z")  # the device's, checked when read
         self.running = False
         self._generation = 0  # of the last reading asked for: older ones are dropped
         self._reading = False
@@ -138,10 +155,10 @@ class ProgramDock(QObject):
         self._generation += 1
         self._reading = True
         reading = Reading(self._generation, path, layers, self.tolerance)
-        travel, speed = self.services.travel, self.speed
+        travel, speed, axes = self.services.travel, self.speed, self.axes
 
         def work() -> None:
-            result = read_program(reading, kept, travel, speed)
+            result = read_program(reading, kept, travel, speed, axes)
             try:
                 self._done_reading.emit(result)
             except RuntimeError:  # the window closed meanwhile
@@ -256,6 +273,11 @@ class ProgramDock(QObject):
         """New travel limits: the program loaded is checked against them again."""
         if self.path is not None and self.toolpath is not None and not self.running:
             self._start(self.path, self.layers, self.toolpath)
+
+    def set_axes(self, axes: tuple[str, ...]) -> None:
+        """The connected device's axes: a program moving another is refused when read."""
+        self.axes = axes
+        self.travel_changed()  # the program loaded is checked again
 
     def set_speed(self, speed: float) -> None:
         """The device's speed (mm/s): the time estimate follows it."""
