@@ -6,6 +6,10 @@ import gc
 import os
 from collections.abc import Iterator
 
+from tests.worker_display import own_display_per_worker
+
+own_display_per_worker()  # two test files at a time: a display each (tests/worker_display.py)
+
 # Qt tests run headless unless a display is there (Xvfb in CI, for the OpenGL tests).
 _PLATFORM = os.environ.get("QT_QPA_PLATFORM")  # as the run was started
 if "DISPLAY" not in os.environ and "WAYLAND_DISPLAY" not in os.environ:
