@@ -7,6 +7,7 @@ import logging
 
 from drivers.errors import MotionError
 from drivers.events import Event, TextLine, Undecodable
+from drivers.framers.lines import LineFramer
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol, protocol_names
@@ -32,7 +33,12 @@ def recognised(protocol: Protocol, data: bytes) -> int:
     """How many frames in `data` the protocol reads as something of its own: a reply, a report,
     its boot banner; plain text lines and undecodable frames do not count."""
     try:
-        frames, _ = protocol.new_framer().split(data)
+        framer = protocol.new_framer()
+        frames, rest = framer.split(data)
+        if rest and isinstance(framer, LineFramer):
+            # A line the device was still printing when the wait gave up counts too: a
+            # Visiomex banner's `Checkpoint 2` can come a few ms before its CR LF.
+            frames += framer.split(rest + framer.terminator)[0]
     except MotionError:
         return 0
     count = 0
