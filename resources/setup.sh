@@ -64,10 +64,12 @@ run_tests() {
   "$VENV/bin/ruff" format --check .
   "$VENV/bin/mypy" drivers
   export LIBGL_ALWAYS_SOFTWARE=1
-  # Two workers, one test file each at a time (pytest-xdist): most tests wait on simulated
-  # devices' real time, so two side by side take about half as long on two cores
-  # (MOTIONPANEL_TEST_WORKERS=0: every test in this one process).
-  set -- -n "${MOTIONPANEL_TEST_WORKERS:-2}" --dist loadfile "$@"
+  # MOTIONPANEL_TEST_WORKERS=2 runs two test files at a time (pytest-xdist, each worker on an
+  # X server of its own): about half the time, but the timing of the held-key and
+  # lost-device scenarios is not yet reliable beside another worker, so CI runs one process.
+  if [ "${MOTIONPANEL_TEST_WORKERS:-0}" != "0" ]; then
+    set -- -n "$MOTIONPANEL_TEST_WORKERS" --dist loadfile "$@"
+  fi
   if command -v xvfb-run >/dev/null 2>&1; then
     exec xvfb-run -a -s "-screen 0 1600x1000x24 +extension GLX" "$VENV/bin/python" -m pytest "$@"
   fi
