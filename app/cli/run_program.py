@@ -15,7 +15,7 @@ from drivers.motion import Motion
 from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
 from drivers.streaming import StreamProgress
-from drivers.toolpath.geometry import check_axes, check_travel, flatten
+from drivers.toolpath.geometry import check_fits, check_speeds, flatten
 from drivers.toolpath.loader import load_toolpath
 from drivers.toolpath.model import CHORD_TOLERANCE, Toolpath
 from drivers.toolpath.runner import ProgramRunner
@@ -90,25 +90,10 @@ def check_run_offline(protocol: Protocol, args: list[str], travel: TravelLimits 
         svg_scale=request.svg_scale,
         tolerance=request.tolerance,
     )
-    flat = flatten(toolpath, request.tolerance)
     caps = protocol.capabilities
-    check_axes(toolpath, flat, caps.axes)
-    check_travel(toolpath, flat, travel)
+    check_fits(toolpath, flatten(toolpath, request.tolerance), caps.axes, travel)
     if caps.speed_range is not None and caps.speed and not caps.speed_limits_queryable:
-        low, high = caps.speed_range
-        for step in toolpath.steps:
-            speed = getattr(step, "speed", None)
-            if speed is not None and not low <= round(speed, caps.speed_decimals) <= high:
-                raise BadInput(
-                    Message(
-                        "{where}: speed {speed:g} mm/s refused: the device allows "
-                        "{low:g} to {high:g} mm/s; nothing was sent",
-                        where=toolpath.where(step.source),
-                        speed=speed,
-                        low=low,
-                        high=high,
-                    )
-                )
+        check_speeds(toolpath, *caps.speed_range, caps.speed_decimals)
     _checked[request] = toolpath
 
 

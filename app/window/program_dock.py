@@ -58,13 +58,7 @@ def read_program(
 ) -> Reading:
     """Read (or take `kept`), flatten, measure and check a program against the travel box and
     the device's axes: any thread."""
-    from drivers.toolpath.geometry import (
-        ProgramOutside,
-        check_axes,
-        check_travel,
-        flatten,
-        summarize,
-    )
+    from drivers.toolpath.geometry import check_fits, flatten, summarize
     from drivers.toolpath.loader import load_toolpath
 
     try:
@@ -77,13 +71,9 @@ def read_program(
         reading.toolpath, reading.flat = toolpath, flat
         reading.summary = summarize(toolpath, flat, speed)
         try:
-            check_axes(toolpath, flat, axes)
+            check_fits(toolpath, flat, axes, travel)
         except BadInput as exc:  # drawn all the same: the operator sees why it cannot run
             reading.outside = exc
-            return reading
-        check_travel(toolpath, flat, travel)
-    except ProgramOutside as exc:
-        reading.outside = exc
     except (BadInput, OSError) as exc:
         reading.error = exc
     except Exception as exc:  # a reader's bug must not kill the thread silently

@@ -201,6 +201,33 @@ def check_axes(toolpath: Toolpath, flat: FlatPath, axes: tuple[str, ...]) -> Non
             )
 
 
+def check_fits(
+    toolpath: Toolpath, flat: FlatPath, axes: tuple[str, ...], travel: TravelLimits | None
+) -> None:
+    """Refuse a program that moves an axis the device lacks or leaves the travel box."""
+    check_axes(toolpath, flat, axes)
+    check_travel(toolpath, flat, travel)
+
+
+def check_speeds(toolpath: Toolpath, low: float, high: float, decimals: int) -> None:
+    """Refuse a program a speed of which (as the device takes it: rounded to `decimals`) is
+    outside `low` to `high` mm/s, naming the first line that asks it."""
+    for step in toolpath.steps:
+        if isinstance(step, Dwell) or step.speed is None:
+            continue
+        if not low <= round(step.speed, decimals) <= high:
+            raise BadInput(
+                Message(
+                    "{where}: speed {speed:g} mm/s refused: the device allows "
+                    "{low:g} to {high:g} mm/s; nothing was sent",
+                    where=toolpath.where(step.source),
+                    speed=step.speed,
+                    low=low,
+                    high=high,
+                )
+            )
+
+
 def _first_arc_outside(
     toolpath: Toolpath, flat: FlatPath, travel: TravelLimits
 ) -> tuple[int, int, Point] | None:

@@ -27,7 +27,7 @@ from drivers.messages import Message
 from drivers.motion import Motion
 from drivers.program import ProgramDwell, ProgramPoint
 from drivers.streaming import Streamer, StreamProgress
-from drivers.toolpath.geometry import FlatPath, check_axes, check_travel, flatten
+from drivers.toolpath.geometry import FlatPath, check_fits, check_speeds, flatten
 from drivers.toolpath.model import CHORD_TOLERANCE, ArcTo, Dwell, Toolpath, arc_angles
 
 log = logging.getLogger(__name__)
@@ -58,6 +58,7 @@ class ProgramRunner:
         self._running.set()
         self._stopped = threading.Event()
         self._streamer: Streamer | None = None
+        self._set_speed: float | None = None  # the speed last set (the panel's at the start)
         caps = motion.capabilities
         self.mode = "stream" if caps.streaming else "arcs" if caps.arcs else "moves"
         self.state = StreamProgress(self._count())
@@ -89,27 +90,16 @@ class ProgramRunner:
         return self._stopped.is_set()
 
     # -- the run -------------------------------------------------------------------------------
-    def check(self) -> None:
+    def check(self) -> float | None:
         """Refuse the program before anything is sent: the device's axes, the travel box, the
-        speeds, and every command it would send, read by the protocol's encoder."""
-        check_axes(self.toolpath, self.flat, self.motion.capabilities.axes)
-        check_travel(self.toolpath, self.flat, self.motion.guard.travel)
+        speeds (the panel's for the moves without one), and every command it would send, read
+        by the protocol's encoder. Returns the panel's speed, read once the box has passed."""
+        caps = self.motion.capabilities
+        check_fits(self.toolpath, self.flat, caps.axes, self.motion.guard.travel)
         moving = [s for s in self.toolpath.steps if not isinstance(s, Dwell)]
-        if any(s.speed is not None for s in moving) and self.motion.capabilities.speed:
+        if any(s.speed is not None for s in moving) and caps.speed:
             low, high = self.motion.speed_limits()
-            for step in moving:
-                speed = step.speed
-                if speed is not None and not low <= self._speed_of(speed) <= high:
-                    raise BadInput(
-                        Message(
-                            "{where}: speed {speed:g} mm/s refused: the device allows "
-                            "{low:g} to {high:g} mm/s; nothing was sent",
-                            where=self.toolpath.where(step.source),
-                            speed=speed,
-                            low=low,
-                            high=high,
-                        )
-                    )
+            check_speeds(self.toolpath, low, high, caps.speed_decimals)
         panel_speed = self._panel_speed()
         own = [s.speed is not None for s in moving]
         if panel_speed is not None and any(own) and not all(own) and self.mode != "stream":
@@ -127,7 +117,7 @@ class ProgramRunner:
                     )
                 )
         if self.mode == "stream":
-            return  # the laser's fields are float32 and its speeds checked above
+            return panel_speed  # the laser's fields are float32 and its speeds checked above
         protocol = self.motion.client.protocol
         for source, command in self._commands(panel_speed):
             try:
@@ -140,6 +130,7 @@ class ProgramRunner:
                         error=exc,
                     )
                 ) from None
+        return panel_speed
 
     def _commands(self, panel_speed: float | None) -> Iterator[tuple[int, cmd.Command]]:
         """Every command the run will send, with the source it comes from."""
@@ -202,10 +193,9 @@ class ProgramRunner:
 
     def run(self) -> StreamProgress:
         """Check the program, then run it to its end (or to `stop`); the final progress."""
-        self.check()
+        panel_speed = self.check()
         if self.mode == "stream":
-            return self._stream()
-        panel_speed = self._panel_speed()
+            return self._stream(panel_speed)
         self._set_speed = panel_speed
         try:
             if self.mode == "arcs":
@@ -221,8 +211,8 @@ class ProgramRunner:
         return self.state
 
     # -- streaming (laser-frame) ---------------------------------------------------------------
-    def _stream(self) -> StreamProgress:
-        panel = self._panel_speed() or self.motion.capabilities.default_speed
+    def _stream(self, panel_speed: float | None) -> StreamProgress:
+        panel = panel_speed or self.motion.capabilities.default_speed
         items: list[ProgramPoint | ProgramDwell] = []
         rows: list[int] = []
         points, speeds = self.flat.points, self.flat.speed
@@ -363,8 +353,6 @@ class ProgramRunner:
             return
         self.motion.set_speed(wanted)
         self._set_speed = wanted
-
-    _set_speed: float | None = None
 
 
 def _speed_or_none(speed: float) -> float | None:

@@ -481,12 +481,12 @@ QT_TRANSLATE_NOOP('messages', '{where}: {word} is not understood')  # drivers/to
 QT_TRANSLATE_NOOP('messages', '{name}: skipped what the panel does not do: {words} (on {count} of {total} lines)')  # drivers/toolpath/gcode.py
 QT_TRANSLATE_NOOP('messages', 'chord tolerance {value:g} mm refused: it must be above 0')  # drivers/toolpath/geometry.py
 QT_TRANSLATE_NOOP('messages', '{where}: the program moves {axis} to {value:g} mm, an axis the device does not have (it has {axes}); nothing was sent')  # drivers/toolpath/geometry.py
+QT_TRANSLATE_NOOP('messages', '{where}: speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s; nothing was sent')  # drivers/toolpath/geometry.py
 QT_TRANSLATE_NOOP('messages', '{where}: the program would leave the travel box at ({x:g}, {y:g}, {z:g}) mm ({box}); nothing was sent')  # drivers/toolpath/geometry.py
 QT_TRANSLATE_NOOP('messages', '{file}: layers are chosen in DXF files only')  # drivers/toolpath/loader.py
 QT_TRANSLATE_NOOP('messages', '{name} entity {number} ({text})')  # drivers/toolpath/model.py
 QT_TRANSLATE_NOOP('messages', '{name} element {number} ({text})')  # drivers/toolpath/model.py
 QT_TRANSLATE_NOOP('messages', '{name} point {number}')  # drivers/toolpath/model.py
-QT_TRANSLATE_NOOP('messages', '{where}: speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s; nothing was sent')  # drivers/toolpath/runner.py
 QT_TRANSLATE_NOOP('messages', "the program's moves without a speed would go at the device's speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent")  # drivers/toolpath/runner.py
 QT_TRANSLATE_NOOP('messages', '{where}: {error}; nothing was sent')  # drivers/toolpath/runner.py
 QT_TRANSLATE_NOOP('messages', 'the program was abandoned during a dwell')  # drivers/toolpath/runner.py

@@ -3000,7 +3000,7 @@ La vista 2D muestra las mismas posiciones.</translation>
 <context>
     <name>ProgramDock</name>
     <message>
-        <location filename="../../app/window/program_dock.py" line="+165"/>
+        <location filename="../../app/window/program_dock.py" line="+172"/>
         <source>program %1 refused: %2</source>
         <translation>programa %1 rechazado: %2</translation>
     </message>
@@ -3025,7 +3025,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>el programa no tiene movimientos</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+72"/>
         <source>program saved to %1 (%2 points)</source>
         <translation>programa guardado en %1 (%2 puntos)</translation>
     </message>
@@ -7168,7 +7168,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{where}: el programa mueve {axis} a {value:g} mm, un eje que el dispositivo no tiene (tiene {axes}); no se ha enviado nada</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{where}: the program would leave the travel box at ({x:g}, {y:g}, {z:g}) mm ({box}); nothing was sent</source>
         <translation>{where}: el programa saldría de la caja de recorrido en ({x:g}, {y:g}, {z:g}) mm ({box}); no se ha enviado nada</translation>
     </message>
@@ -7193,12 +7193,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{name} punto {number}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-5"/>
         <source>{where}: speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s; nothing was sent</source>
         <translation>{where}: se rechaza la velocidad {speed:g} mm/s: el dispositivo admite de {low:g} a {high:g} mm/s; no se ha enviado nada</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
         <translation>los movimientos del programa sin velocidad irían a la velocidad del dispositivo, {speed:g} mm/s, fuera de los {low:g} a {high:g} mm/s que admite: fijar antes la velocidad; no se ha enviado nada</translation>
     </message>

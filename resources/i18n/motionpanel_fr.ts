@@ -3000,7 +3000,7 @@ La vue 2D montre les mêmes positions.</translation>
 <context>
     <name>ProgramDock</name>
     <message>
-        <location filename="../../app/window/program_dock.py" line="+165"/>
+        <location filename="../../app/window/program_dock.py" line="+172"/>
         <source>program %1 refused: %2</source>
         <translation>programme %1 refusé&#xa0;: %2</translation>
     </message>
@@ -3025,7 +3025,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>le programme ne contient aucun mouvement</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+72"/>
         <source>program saved to %1 (%2 points)</source>
         <translation>programme enregistré dans %1 (%2 points)</translation>
     </message>
@@ -7168,7 +7168,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{where}&#xa0;: le programme déplace {axis} à {value:g} mm, un axe que l&apos;appareil n&apos;a pas (il a {axes})&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{where}: the program would leave the travel box at ({x:g}, {y:g}, {z:g}) mm ({box}); nothing was sent</source>
         <translation>{where}&#xa0;: le programme sortirait de la zone de course en ({x:g}, {y:g}, {z:g}) mm ({box})&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
@@ -7193,12 +7193,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{name} point {number}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-5"/>
         <source>{where}: speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s; nothing was sent</source>
         <translation>{where}&#xa0;: vitesse {speed:g} mm/s refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} mm/s&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
         <translation>les mouvements du programme sans vitesse se feraient à la vitesse de l&apos;appareil, {speed:g} mm/s, hors de la plage de {low:g} à {high:g} mm/s qu&apos;il accepte&#xa0;: régler d&apos;abord la vitesse&#xa0;; rien n&apos;a été envoyé</translation>
     </message>

@@ -3000,7 +3000,7 @@ The 2D view shows the same positions.</source>
 <context>
     <name>ProgramDock</name>
     <message>
-        <location filename="../../app/window/program_dock.py" line="+165"/>
+        <location filename="../../app/window/program_dock.py" line="+172"/>
         <source>program %1 refused: %2</source>
         <translation>程序 %1 被拒绝：%2</translation>
     </message>
@@ -3025,7 +3025,7 @@ The 2D view shows the same positions.</source>
         <translation>程序中没有移动</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+72"/>
         <source>program saved to %1 (%2 points)</source>
         <translation>程序已保存到 %1（%2 个点）</translation>
     </message>
@@ -7168,7 +7168,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{where}：程序将 {axis} 移动到 {value:g} mm，但设备没有该轴（设备的轴为 {axes}）；未发送任何内容</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{where}: the program would leave the travel box at ({x:g}, {y:g}, {z:g}) mm ({box}); nothing was sent</source>
         <translation>{where}：程序会在 ({x:g}, {y:g}, {z:g}) mm 处超出行程范围（{box}）；未发送任何内容</translation>
     </message>
@@ -7193,12 +7193,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{name} 点 {number}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-5"/>
         <source>{where}: speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s; nothing was sent</source>
         <translation>{where}：速度 {speed:g} mm/s 被拒绝：设备允许 {low:g} 至 {high:g} mm/s；未发送任何内容</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
         <translation>程序中未指定速度的移动将以设备的速度 {speed:g} mm/s 运行，超出其允许的 {low:g} 至 {high:g} mm/s：请先设置速度；未发送任何内容</translation>
     </message>
