@@ -12,9 +12,10 @@ from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication
 
 from app.common.i18n import LANGUAGES, install_translations, language_arg
-from app.common.settings import DEFAULT_PORT, DEFAULT_PROTOCOL
+from app.common.settings import DEFAULT_PORT, DEFAULT_PROTOCOL, open_settings
 from app.window.gc_main_thread import collect_for
 from app.window.main_window import MainWindow
+from app.window.preferences import read_preferences
 from drivers.registry import get_protocol_class, protocol_names
 from widgets.gl_share import share_opengl_contexts  # imports no OpenGL, no numpy
 
@@ -43,7 +44,8 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="CODE",
         type=language_arg,
         help=f"interface language: {', '.join(LANGUAGES)} (zh, zh-CN and zh_Hans are zh_CN;"
-        " default: $MOTIONPANEL_LANG, else the system locale, else en)",
+        " default: $MOTIONPANEL_LANG, else the one chosen in Settings, else the system locale,"
+        " else en)",
     )
     parser.add_argument("-v", "--verbose", action="store_true", help="log on stderr")
     return parser
@@ -72,6 +74,11 @@ def take_screenshot(window: MainWindow, path: str, app: QApplication) -> None:
     QTimer.singleShot(SCREENSHOT_TIMEOUT_MS, shoot)
 
 
+def saved_language() -> str:
+    """The language chosen in Settings -> Language ("system": none chosen)."""
+    return read_preferences(open_settings()).language
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of motionpanel; returns the exit status."""
     options = build_parser().parse_args(argv)
@@ -82,7 +89,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     share_opengl_contexts()  # before the QApplication exists
     app = QApplication.instance() or QApplication(sys.argv[:1])
     app.setApplicationName("Motion Panel")
-    install_translations(app, options.lang)  # before any widget is made
+    install_translations(app, options.lang, saved=saved_language())  # before any widget
     window = MainWindow()
     collect_for(app, window.views.ready)  # collections from the event loop only
     signal.signal(signal.SIGINT, lambda *_: window.close())

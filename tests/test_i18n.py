@@ -1,7 +1,8 @@
-"""app/common/i18n.py: the language from --lang, $MOTIONPANEL_LANG or the locale; the .qm files."""
+"""app/common/i18n.py: the language from --lang, $MOTIONPANEL_LANG, Settings or the locale; .qm."""
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterator
 
 import pytest
@@ -133,3 +134,27 @@ def test_lang_option() -> None:
     assert "--lang CODE" in parser.format_help()
     with pytest.raises(SystemExit):
         parser.parse_args(["--lang", "de"])
+
+
+def test_the_language_saved_in_settings_comes_after_the_environment_and_before_the_locale(
+    app: QApplication, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    assert i18n.choose_language(None, QLocale("fr_FR"), saved="es") == ("es", "Settings")
+    assert i18n.install_translations(app, None, locale=QLocale("fr_FR"), saved="es") == "es"
+    assert cancel_text() == QT_CANCEL["es"]
+    assert i18n.install_translations(app, None, locale=QLocale("fr_FR"), saved="system") == "fr"
+    assert i18n.install_translations(app, "zh_CN", locale=QLocale("fr_FR"), saved="es") == "zh_CN"
+    monkeypatch.setenv(i18n.ENV_VAR, "fr")
+    assert i18n.install_translations(app, None, locale=QLocale("C"), saved="es") == "fr"
+
+
+def test_motionpanel_reads_the_language_saved_in_settings(settings_file: object) -> None:
+    from app.common.settings import open_settings
+    from app.main import saved_language
+    from app.window.preferences import read_preferences, write_preferences
+
+    assert saved_language() == "system"
+    settings = open_settings()
+    prefs = read_preferences(settings)
+    write_preferences(settings, dataclasses.replace(prefs, language="fr"))
+    assert saved_language() == "fr"

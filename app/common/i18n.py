@@ -27,6 +27,7 @@ SOURCE_LANGUAGE = "en"
 LANGUAGES = ("en", "es", "fr", "zh_CN")
 LANGUAGE_NAMES = {"en": "English", "es": "Español", "fr": "Français", "zh_CN": "简体中文"}
 ENV_VAR = "MOTIONPANEL_LANG"
+SYSTEM_CHOICE = "system"  # the Settings choice that leaves the language to the locale
 CATALOG = "motionpanel"
 QT_CATALOGS = ("qtbase",)
 SOURCE_DIR = Path(__file__).resolve().parents[2] / "resources" / "i18n"
@@ -91,11 +92,15 @@ def _locale_language(locale: QLocale) -> str | None:
     return None
 
 
-def choose_language(lang: str | None, locale: QLocale | None = None) -> tuple[str, str]:
-    """(language, where it came from): --lang, else $MOTIONPANEL_LANG, else the locale."""
+def choose_language(
+    lang: str | None, locale: QLocale | None = None, saved: str | None = None
+) -> tuple[str, str]:
+    """(language, where it came from): --lang, else $MOTIONPANEL_LANG, else the language saved
+    in Settings (`saved`; "system" or None: none), else the locale."""
     candidates: Iterable[tuple[str | None, str]] = (
         (lang, "--lang"),
         (os.environ.get(ENV_VAR), f"${ENV_VAR}"),
+        (None if saved == SYSTEM_CHOICE else saved, "Settings"),
     )
     for code, source in candidates:
         if code:
@@ -136,16 +141,20 @@ def _load(app: QCoreApplication, name: str, folder: str | Path) -> bool:
 
 
 def install_translations(
-    app: QCoreApplication, lang: str | None = None, locale: QLocale | None = None
+    app: QCoreApplication,
+    lang: str | None = None,
+    locale: QLocale | None = None,
+    saved: str | None = None,
 ) -> str:
-    """Install our and Qt's translations for --lang, $MOTIONPANEL_LANG or the system locale.
+    """Install our and Qt's translations for --lang, $MOTIONPANEL_LANG, the language saved in
+    Settings (`saved`) or the system locale.
 
     Returns the language in effect ("en" when nothing matched or no catalog was found). Called
     again, it replaces the translators it installed before. `locale` stands for the system's.
     """
     global _default_set
     remove_translations(app)
-    language, source = choose_language(lang, locale)
+    language, source = choose_language(lang, locale, saved)
     system = locale if locale is not None else QLocale.system()
     if language != SOURCE_LANGUAGE:
         path = catalog_path(language)
