@@ -23,7 +23,7 @@ from drivers.control_lines import BREAK_S, OUTPUTS, ControlLines
 from drivers.errors import BadInput, NoControlLines, PortBusy, PortError
 from drivers.messages import Message
 from drivers.traffic import RX, TX, Traffic
-from drivers.urlhandler.rfc2217_port import Rfc2217Port
+from drivers.urlhandler.rfc2217_port import PortInUse, Rfc2217Port
 
 log = logging.getLogger(__name__)
 
@@ -378,6 +378,8 @@ def open_link(url: str, baud: int, *, dtr: bool | None = None, rts: bool | None 
             port.rts = rts
         port.open()
     except (serial.SerialException, OSError, ValueError) as exc:
+        if isinstance(exc, PortInUse):
+            raise PortBusy(str(exc)) from exc
         if _busy(exc):
             raise PortBusy(
                 Message("{url} is in use by another program", url=_port_name(url))

@@ -15,17 +15,18 @@ START_TIMEOUT = 10.0  # seconds ser2net may take to accept connections
 PORT_ATTEMPTS = 5  # free ports tried when another program takes the one picked first
 
 
+SAFE_OPTIONS = ("max-connections: 1",)  # the README's: one client at a time
+
+
 def ser2net_yaml(device: str, port: int, baud: int = 115200, *options: str) -> str:
-    """The configuration serving `device` as rfc2217://127.0.0.1:`port` (the README's), with
-    connection `options` ("chardelay: false")."""
+    """The configuration serving `device` as rfc2217://127.0.0.1:`port` (the README's: loopback
+    only, one client at a time), with more connection `options` ("chardelay: false")."""
     text = (
         "connection: &motionsim\n"
         f"  accepter: telnet(rfc2217),tcp,127.0.0.1,{port}\n"
         f"  connector: serialdev,{device},{baud}n81,local\n"
     )
-    if options:
-        text += "  options:\n" + "".join(f"    {option}\n" for option in options)
-    return text
+    return text + "  options:\n" + "".join(f"    {o}\n" for o in (*SAFE_OPTIONS, *options))
 
 
 def free_port() -> int:

@@ -89,6 +89,24 @@ def test_the_scripting_api_over_ser2net(served: Ser2netProcess) -> None:
     assert len(notes) == 1 and "did not confirm the control lines" in notes[0], notes
 
 
+def test_a_second_client_is_refused_while_the_first_holds_the_port(
+    served: Ser2netProcess,
+) -> None:
+    """The README's set-up serves one client at a time: a second program is told that another
+    holds the port (exit 3, no traceback), and the first goes on unharmed."""
+    with drivers.open_device(served.url, "coxiris") as stage:
+        stage.move_to(1, 2)
+        second = motionctl(served.url, "move", "9", "9", "0")
+        assert second.returncode == 3, second.stderr
+        assert "accepted this connection and closed it at once" in second.stderr, second.stderr
+        assert "another client probably holds the port" in second.stderr, second.stderr
+        assert "Traceback" not in second.stderr, second.stderr
+        here = stage.position()
+        assert (here.x, here.y, here.measured) == (1.0, 2.0, True)
+    after = motionctl(served.url, "position")  # the first has let go: the port is free again
+    assert (after.returncode, after.stdout.strip()) == (0, "1.00 2.00 0.00"), after.stderr
+
+
 class RecordingRelay:
     """A TCP relay between one client and `port`, keeping what crosses each way."""
 
