@@ -7,6 +7,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from app.cli.devices import DEVICE_COMMANDS, check_device_offline, run_device
+from app.cli.log import USAGE as LOG_USAGE
 from app.cli.log import check_log_offline
 from app.cli.params import check_param_offline, run_param
 from app.cli.run_program import check_run_offline
@@ -46,6 +47,15 @@ _MACRO_ARITY = {"list": 0, "run": 1, "import": 1, "export": 1}
 
 class UsageError(BadInput):
     """The command line itself is wrong (exit 2, nothing sent)."""
+
+
+def usage_of(command: str) -> str:
+    """How a command is typed, its arguments named (`move X Y [Z]`)."""
+    if command in DEVICE_COMMANDS:
+        return DEVICE_COMMANDS[command][1]
+    if command == "log":
+        return LOG_USAGE
+    return _USAGE.get(command, command)
 
 
 def check_arity(command: str, args: list[str]) -> None:

@@ -10,6 +10,7 @@ from contextlib import ExitStack
 from typing import Any
 
 from app.cli.arguments import build_parser, check_needs, join_travel, parse_command_line
+from app.cli.command_help import command_help, wants_help
 from app.cli.command_line import UsageError, check_arity, run_command, validate_offline
 from app.cli.count import CliCount
 from app.cli.interrupt import MoveTracker, after_interrupt
@@ -104,6 +105,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         options = parse_command_line(arguments)
     except SystemExit as exc:
         return usage_exit(exc, arguments)
+    if wants_help(options.args):  # `motionctl macro --help`: that command's own help
+        print(command_help(options.command), end="")
+        return EXIT_OK
     log_to_stderr(options.verbose)
     report = Reporter(options.json)
     try:
