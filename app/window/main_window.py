@@ -8,7 +8,7 @@ import time
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QCoreApplication, Qt, Signal
+from PySide6.QtCore import QCoreApplication, QSize, Qt, Signal
 from PySide6.QtGui import QCloseEvent
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QSplitter, QToolBar, QWidget
 
@@ -24,6 +24,7 @@ from app.window.log_viewers import LogViewers
 from app.window.machine_state import MachineState
 from app.window.menus import build_menus
 from app.window.ports import PortWatcher
+from app.window.screen_fit import ScreenFit
 from app.window.window_tools import WindowTools
 from app.window.worker_link import WorkerLink
 from widgets import status_line as status
@@ -51,6 +52,8 @@ if TYPE_CHECKING:
     from widgets.traffic_timeline import TrafficTimeline
 
 log = logging.getLogger(__name__)
+
+PREFERRED_SIZE = QSize(1400, 900)  # a first start's window, where the screen has the room
 
 # Built just after the window's first paint (they import numpy and build many widgets): the
 # calls the window makes on them before that are kept and replayed, in order.
@@ -300,7 +303,7 @@ class MainWindow(QMainWindow):
         self.statusBar().addWidget(self.status_line, 1)
         self.statusBar().addPermanentWidget(self.layouts.switcher)
         self.statusBar().setSizeGripEnabled(True)
-        self.resize(1400, 900)
+        self.screen_fit = ScreenFit(self)  # the first size, a remembered one, on this screen
 
     def _build_menus(self, docks: list[QDockWidget]) -> None:
         file_menu, view_menu, actions = build_menus(
@@ -389,8 +392,10 @@ class MainWindow(QMainWindow):
     def _restore(self) -> None:
         s = self.settings
         geometry = s.value("geometry")
-        if geometry is not None:
-            self.restoreGeometry(geometry)
+        if geometry is None or not self.restoreGeometry(geometry):
+            self.screen_fit.first_size(PREFERRED_SIZE)
+        else:
+            self.screen_fit.keep_inside()  # remembered from a larger screen: fitted to this one
         self.layouts.current = OPERATE  # the panel opens in Operate, as last left
         self.layouts.apply()
         self.jog_panel.set_step(read_number(s, "jog_step", 1.0))
