@@ -279,7 +279,7 @@ class Motion:
         if self.capabilities.speed_readback:
             reported = self.speed()
             if reported != speed:
-                log.info(
+                log.debug(
                     "speed %g %s reads back as %g (the device rounds it)", speed, unit, reported
                 )
             return reported
@@ -550,7 +550,7 @@ class Motion:
                 self._late_replies += 1
             if first_at - sent < 0.5 * duration or self._late_replies >= LATE_REPLIES:
                 self.arrives_on_reply = True
-                log.info("the device replies to a move once it has ended")
+                log.debug("the device replies to a move once it has ended")
         return report
 
     def arc(self, arc: cmd.Arc) -> PositionReport:

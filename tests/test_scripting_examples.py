@@ -80,3 +80,11 @@ def test_the_laser_example_reports_progress_until_all_are_executed() -> None:
         assert sent <= later_sent and done <= later_done  # never goes back
     assert steps[-1] == (49, 49)
     assert lines[-1] == "done: 49 of 49 executed in 7 frames"
+
+
+def test_the_grid_example_prints_only_its_own_lines() -> None:
+    """The example configures logging at INFO for itself: the library adds no line of its own
+    (how the device replies to a move is the library's business, logged at DEBUG)."""
+    lines = _run(_example('"sim://coxiris"'))
+    own = re.compile(r"device \S+|\d,\d: \S+ \S+ \S+")
+    assert [line for line in lines if not own.fullmatch(line)] == []
