@@ -188,7 +188,7 @@ def run_macro(
         if motion.stop_requested.is_set():
             raise MacroStopped(
                 Message(
-                    "{name} stopped before step {number} ({step})",
+                    "macro {name} stopped before step {number} ({step})",
                     name=macro.name,
                     number=number,
                     step=step,
@@ -197,7 +197,9 @@ def run_macro(
         on_step(number, step)
         command, args = split_step(step)
         if command == "wait":
-            stopped = Message("{name} stopped during step {number}", name=macro.name, number=number)
+            stopped = Message(
+                "macro {name} stopped during step {number}", name=macro.name, number=number
+            )
             _wait(motion, wait_seconds(args), stopped)
             results.append({"waited": wait_seconds(args)})
         else:

@@ -86,6 +86,7 @@ class JobDesk(QObject):
 
     def _wire_worker(self, w: SerialWorker) -> None:
         w.job_failed.connect(self._on_job_failed)
+        w.job_stopped.connect(self._on_job_stopped)
         w.job_finished.connect(self._on_job_finished)
 
     def _tell(self, text: str, kind: str = status.INFO, note: bool = True) -> None:
@@ -356,7 +357,10 @@ class JobDesk(QObject):
         )
         if any(job is self.jog_job for job in dropped):
             self.jog_job = None
+        if any(job is self.machine.busy_job for job in dropped):
+            self.machine.busy_job = None  # never started: nothing is busy with it
         self.jobs_dropped(dropped)
+        self.machine.show_status()
 
     # -- the worker's results ----------------------------------------------------------------
     def _job_ended(self, job: jobs.Job) -> None:
@@ -376,6 +380,17 @@ class JobDesk(QObject):
         if described not in message:  # else the message names the job itself: said once
             message = fill(translate("MainWindow", "%1 failed: %2"), described, message)
         self._tell(message, status.FAILURE)
+        self._job_ended(job)
+        self.machine.show_status()
+
+    def _on_job_stopped(self, job: jobs.Job, message: str) -> None:
+        """A stop the operator asked for ended `job`: said as a stop, not as an error."""
+        self.machine.job_stopped()
+        if job is self.jog_job:
+            self.window.jog_panel.release()
+        if not _is_macro(job):  # a macro's stop names the macro and the step
+            message = fill(translate("MainWindow", "%1: %2"), job.describe(), message)
+        self._tell(message)
         self._job_ended(job)
         self.machine.show_status()
 

@@ -301,6 +301,12 @@ class MachineState(QObject):
             self.undo_move()
         self.failed = True
 
+    def job_stopped(self) -> None:
+        """The operator's stop ended a job: a move it had started and no position confirmed
+        is taken back, and nothing failed."""
+        if self.unconfirmed_move:
+            self.undo_move()
+
     def job_ended(self, job: jobs.Job) -> None:
         """`job` ended (done or failed): nothing runs, nothing moves any more."""
         from app.window import jobs

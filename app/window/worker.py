@@ -13,7 +13,7 @@ from typing import TextIO
 
 from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, Slot
 
-from app.common.macros import Macro, run_macro
+from app.common.macros import Macro, MacroStopped, run_macro
 from app.common.messages import localized
 from app.window import jobs
 from drivers.capabilities import Capabilities
@@ -130,6 +130,7 @@ class SerialWorker(QObject):
     busy_changed = Signal(bool)
     job_finished = Signal(object, object)  # Job, result
     job_failed = Signal(object, str)  # Job, message
+    job_stopped = Signal(object, str)  # Job, message: the operator's stop ended it (not a failure)
     move_started = Signal(object)  # MoveStart: from, to, speed, when
     notice = Signal(str)  # something the operator should know, e.g. a move clamped to the limits
     device_error = Signal(str)  # an error the device reported unasked (e.g. to a console line)
@@ -604,7 +605,11 @@ class SerialWorker(QObject):
         if number <= self._stop_covers and job.moves:
             # Queued when a stop was asked (a held jog let go during a step): not sent.
             motion.stop_requested.clear()
-            self.job_failed.emit(job, localized(Message("stopped before it was sent")))
+            stopped = localized(Message("stopped before it was sent"))
+            if isinstance(job, jobs.StreamJob):  # the Program dock follows its end as a failure
+                self.job_failed.emit(job, stopped)
+            else:
+                self.job_stopped.emit(job, stopped)
             return
         motion.stop_requested.clear()  # a stop asked before this job is not for it
         self.busy_changed.emit(True)
@@ -625,6 +630,9 @@ class SerialWorker(QObject):
             abandoned = Message("abandoned: disconnected while it was under way")
             self.job_failed.emit(job, localized(abandoned))
             raise
+        except MacroStopped as exc:  # the operator's stop, between two steps
+            self._flush_traffic()
+            self.job_stopped.emit(job, localized(exc))
         except MotionError as exc:
             self._flush_traffic()  # the console shows the traffic before the failure
             self.job_failed.emit(job, failure_text(job, exc))
@@ -632,6 +640,8 @@ class SerialWorker(QObject):
             self._flush_traffic()
             self.job_finished.emit(job, result)
         finally:
+            if job.moves and number <= self._stop_covers:
+                self.target_changed.emit(None)  # stopped short of it: no target any more
             self.busy_changed.emit(False)
             self._next_poll = time.monotonic() + self.poll_idle_s
 
