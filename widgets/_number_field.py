@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 import re
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QEvent, QLocale, Qt
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QEvent, QLocale, QObject, Qt
 from PySide6.QtGui import (
     QCloseEvent,
     QColor,
@@ -26,6 +26,7 @@ from PySide6.QtWidgets import QAbstractSpinBox, QDoubleSpinBox, QSpinBox, QWidge
 from widgets._i18n import fill, number_text
 
 INVALID_PROPERTY = "invalidInput"  # True on a field whose text cannot be used
+WHEEL_PROPERTY = "wheelNeedsFocus"  # True on a field the wheel changes only while focused
 INVALID_TEXT = "#c62828"
 INVALID_TEXT_DARK = "#ff8a80"
 _DECIMAL = re.compile(r"[+-]?(?:\d+(?:\.(\d*))?|\.(\d+))")
@@ -113,6 +114,32 @@ def mark_invalid(widget: QWidget, invalid: bool) -> None:
         palette.setColor(group, QPalette.ColorRole.Text, red)
         palette.setColor(group, QPalette.ColorRole.Base, tint)
     widget.setPalette(palette)
+
+
+class _WheelNeedsFocus(QObject):
+    """Lets a wheel event over an unfocused field go on to what holds it (a dock scrolls)."""
+
+    def eventFilter(self, watched: QObject, event: QEvent) -> bool:
+        """A wheel over `watched` without the focus: ignored there, passed to its parents."""
+        wheel = event.type() == QEvent.Type.Wheel
+        if wheel and isinstance(watched, QWidget) and not watched.hasFocus():
+            event.ignore()  # not accepted: Qt offers it to the parent (the scroll area)
+            return True
+        return False
+
+
+_wheel_filter: _WheelNeedsFocus | None = None
+
+
+def wheel_needs_focus(widget: QWidget) -> None:
+    """The mouse wheel changes `widget` (a number field, a slider, a list of choices) only
+    while it has the focus (a click or Tab gives it); over it unfocused, the dock scrolls."""
+    global _wheel_filter
+    if _wheel_filter is None:
+        _wheel_filter = _WheelNeedsFocus()
+    widget.setFocusPolicy(Qt.FocusPolicy.StrongFocus)  # not WheelFocus: the wheel gives none
+    widget.installEventFilter(_wheel_filter)
+    widget.setProperty(WHEEL_PROPERTY, True)
 
 
 class TypedNumber:
@@ -235,6 +262,7 @@ class TypedNumber:
         self.lineEdit().textChanged.connect(self._refresh_problem)  # type: ignore[attr-defined]
         self.textChanged.connect(self._refresh_problem)  # type: ignore[attr-defined]
         self._refresh_problem()
+        wheel_needs_focus(self)  # type: ignore[arg-type]
 
     def setValue(self, value: float) -> None:
         """Qt's setValue (the text shows the value), and the mark refreshed."""

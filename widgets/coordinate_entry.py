@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
 from widgets._axes import AXES, Box, decimals_for, normalize_axes
 from widgets._buttons import make_button
 from widgets._i18n import fill
+from widgets._number_field import wheel_needs_focus
 from widgets._units import INCH, MM, UnitSpinBox, check_units
 
 log = logging.getLogger(__name__)
@@ -108,6 +109,7 @@ class CoordinateEntry(QWidget):
         self.frame_combo.addItem(self.tr("Work"), WORK)
         self._unit_tips()
         self.frame_combo.currentIndexChanged.connect(self._frame_changed)
+        wheel_needs_focus(self.frame_combo)
 
         self.go_button = make_button(
             self.tr("Go"), "goButton", self.tr("Start the move (Enter in a field)")

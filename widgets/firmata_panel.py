@@ -20,6 +20,7 @@ from PySide6.QtWidgets import (
 
 from widgets._buttons import make_button
 from widgets._i18n import fill
+from widgets._number_field import wheel_needs_focus
 
 log = logging.getLogger(__name__)
 
@@ -61,6 +62,7 @@ class FirmataPanel(QWidget):
             )
         )
         self.steps_per_rev_spin.valueChanged.connect(self._update_rpm)
+        wheel_needs_focus(self.steps_per_rev_spin)
 
         self.pin_count_combo = QComboBox()
         self.pin_count_combo.setObjectName("firmataPinCount")
@@ -73,6 +75,7 @@ class FirmataPanel(QWidget):
             )
         )
         self.pin_count_combo.currentIndexChanged.connect(self._pin_count_changed)
+        wheel_needs_focus(self.pin_count_combo)
 
         self.pin_spins: list[QSpinBox] = []
         self.pin_labels: list[QLabel] = []
@@ -84,6 +87,7 @@ class FirmataPanel(QWidget):
             spin.setValue(default)
             spin.setPrefix(self.tr("pin "))
             spin.setMinimumWidth(70)
+            wheel_needs_focus(spin)
             label = QLabel(f"{index}:")
             label.setBuddy(spin)
             pins_row.addWidget(label)
@@ -98,6 +102,7 @@ class FirmataPanel(QWidget):
         self.steps_per_mm_spin.setValue(100.0)
         self.steps_per_mm_spin.setSuffix(" steps/mm")
         self.steps_per_mm_spin.setKeyboardTracking(False)
+        wheel_needs_focus(self.steps_per_mm_spin)
         self.steps_per_mm_spin.setAccelerated(True)
         self.steps_per_mm_spin.setMinimumWidth(120)
         self.steps_per_mm_spin.setToolTip(

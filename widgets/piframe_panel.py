@@ -11,6 +11,8 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from widgets._number_field import wheel_needs_focus
+
 DTR_TEXT = {  # translated at use
     True: QT_TRANSLATE_NOOP("PiFramePanel", "DTR on"),
     False: QT_TRANSLATE_NOOP("PiFramePanel", "DTR off"),
@@ -35,6 +37,7 @@ class PiFramePanel(QWidget):
         self.ticks_spin.setValue(100.0)
         self.ticks_spin.setSuffix(" ticks/mm")
         self.ticks_spin.setKeyboardTracking(False)
+        wheel_needs_focus(self.ticks_spin)
         self.ticks_spin.setAccelerated(True)
         self.ticks_spin.setMinimumWidth(130)
         self.ticks_spin.setToolTip(

@@ -27,6 +27,7 @@ from PySide6.QtWidgets import (
 
 from widgets._buttons import make_button
 from widgets._i18n import fill
+from widgets._number_field import wheel_needs_focus
 from widgets.program_lines import ProgramLines, SourceLine
 
 PROGRAM_FILTER = QT_TRANSLATE_NOOP(
@@ -96,6 +97,7 @@ class ProgramPanel(QWidget):
         self.tolerance.setSingleStep(0.005)
         self.tolerance.setValue(TOLERANCE_DEFAULT)
         self.tolerance.setSuffix(self.tr(" mm"))
+        wheel_needs_focus(self.tolerance)
         self.tolerance.setToolTip(
             self.tr(
                 "Chord tolerance: how far the straight moves an arc or curve is cut into may "

@@ -15,7 +15,7 @@ from PySide6.QtWidgets import (
 )
 
 from widgets._i18n import fill, number_text
-from widgets._number_field import label_name
+from widgets._number_field import label_name, wheel_needs_focus
 from widgets._units import INCH, MM, MM_PER_INCH, UnitSpinBox, check_units
 
 log = logging.getLogger(__name__)
@@ -44,6 +44,7 @@ class SpeedControl(QWidget):
         self.slider.setRange(0, SLIDER_STEPS)
         self.slider.setTracking(False)  # valueChanged on release, not on every drag tick
         self.slider.setMinimumWidth(120)
+        wheel_needs_focus(self.slider)  # a wheel step would send a speed
         self.slider.sliderMoved.connect(self._slider_moved)
         self.slider.valueChanged.connect(self._slider_committed)
 
