@@ -15,6 +15,7 @@ from urllib.parse import quote, urlsplit
 
 from PySide6.QtCore import QSettings, QStandardPaths
 
+from app.common.kept_positions import positions_file, read_kept, write_kept
 from app.common.messages import localized
 from drivers.errors import BadFile, BadInput
 from drivers.files import SETTINGS_MAX_BYTES, check_user_file
@@ -228,11 +229,26 @@ def write_protocol_settings(
     _write_numbers(settings, f"{device_key(protocol, port)}/settings", values)
 
 
+def _kept_file(settings: QSettings) -> Path:
+    """The file of kept positions beside these settings (the settings' folder where they are
+    not a file, e.g. the Windows registry)."""
+    name = settings.fileName()
+    if settings.format() == QSettings.Format.NativeFormat and sys.platform == "win32":
+        folder = QStandardPaths.writableLocation(QStandardPaths.StandardLocation.AppConfigLocation)
+        name = str(Path(folder) / APPLICATION)
+    return positions_file(name)
+
+
 def read_counted_position(
     settings: QSettings, protocol: str, port: str
 ) -> tuple[float, float, float] | None:
-    """Where a device without position feedback was last counted to be (None: no count kept)."""
-    values = _read_numbers(settings, f"{device_key(protocol, port)}/counted_position")
+    """Where a device without position feedback was last counted, or commanded, to be (None:
+    no position kept), read from the file as it is now (another panel or motionctl run may have
+    written it)."""
+    entry, kept = read_kept(_kept_file(settings), device_key(protocol, port))
+    if entry:
+        return kept
+    values = _read_numbers(settings, f"{device_key(protocol, port)}/counted_position")  # (old)
     if not all(axis in values for axis in "xyz"):
         return None
     return (values["x"], values["y"], values["z"])
@@ -241,13 +257,13 @@ def read_counted_position(
 def write_counted_position(
     settings: QSettings, protocol: str, port: str, position: tuple[float, float, float] | None
 ) -> None:
-    """Keep the position counted for a device (None: the count is lost, e.g. a failed move)."""
-    group = f"{device_key(protocol, port)}/counted_position"
-    if position is None:
+    """Keep the position counted, or commanded, for a device (None: the count is lost, e.g. a
+    failed move): that device's entry alone, safe against other writers (kept_positions)."""
+    write_kept(_kept_file(settings), device_key(protocol, port), position)
+    group = f"{device_key(protocol, port)}/counted_position"  # where older versions kept it
+    if settings.contains(f"{group}/x"):
         settings.remove(group)
-    else:
-        _write_numbers(settings, group, dict(zip("xyz", position, strict=True)))
-    settings.sync()
+        settings.sync()
 
 
 def read_speed(settings: QSettings, protocol: str, port: str) -> float | None:
