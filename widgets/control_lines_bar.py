@@ -15,10 +15,15 @@ ON, OFF, UNKNOWN = "on", "off", "unknown"
 BREAK_MS = 250  # the break the worker sends (drivers.control_lines.BREAK_S)
 LINES = ("dtr", "rts", "cts", "dsr", "cd", "ri")
 UNKNOWN_MARK = "\N{EN DASH}"  # after the name of a line the port cannot report
-_STYLE = {  # off and unknown follow the palette (light or dark theme); on is always green
+# Off and unknown follow the palette (light or dark theme), their outline and text of a contrast
+# with the window of 3:1 and more in both (palette(mid) was 1.1:1 on the dark window); on is
+# always green.
+_STYLE = {
     ON: "background: #2e7d32; color: white; border: 1px solid #1b5e20;",
-    OFF: "background: palette(mid); color: palette(button-text); border: 1px solid palette(dark);",
-    UNKNOWN: "background: transparent; color: palette(mid); border: 1px dashed palette(mid);",
+    OFF: "background: palette(button); color: palette(button-text);"
+    " border: 1px solid palette(placeholder-text);",
+    UNKNOWN: "background: transparent; color: palette(placeholder-text);"
+    " border: 1px dashed palette(placeholder-text);",
 }
 _INDICATOR_STYLE = "QLabel {{ {colours} border-radius: 3px; padding: 0px 3px; }}"
 

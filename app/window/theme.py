@@ -19,6 +19,8 @@ from PySide6.QtCore import QCoreApplication, QObject, Qt, QTimer, Signal
 from PySide6.QtGui import QAction, QActionGroup, QColor, QGuiApplication, QPalette
 from PySide6.QtWidgets import QApplication, QMenu, QWidget
 
+from app.window.theme_indicators import apply_indicator_palettes
+
 if TYPE_CHECKING:
     import pyqtgraph as pg
 
@@ -238,7 +240,11 @@ class ThemeNotifier(QObject):
 
     def _follow_system(self) -> None:
         if self.choice == "system":
-            self.update("system", plot_colors(is_dark()))
+            dark = is_dark()
+            app = QApplication.instance()
+            if isinstance(app, QApplication):
+                apply_indicator_palettes(app, dark)
+            self.update("system", plot_colors(dark))
 
 
 _notifier: ThemeNotifier | None = None
@@ -295,6 +301,7 @@ def apply_theme(app: QApplication, choice: str | None = "system") -> PlotColors:
             app.setStyle(FUSION)
         app.setPalette(dark_palette() if dark else light_palette())
         colors = plot_colors(dark)
+    apply_indicator_palettes(app, colors.dark)
     log.info(
         "theme %s (%s, style %s)", chosen, "dark" if colors.dark else "light", _style_name(app)
     )
