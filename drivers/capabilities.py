@@ -49,6 +49,7 @@ class Capabilities:
     move_kinds: tuple[str, ...] = ("linear",)  # MoveBy kinds: linear, rotational, steps
     speed_decimals: int = 2  # the decimals a speed may have (Visiomex: whole mm/s)
     speed_note: str = ""  # what setting the speed does on this device, where it is not obvious
+    speed_fixed: bool = False  # setting the speed changes no move (speed_note says why)
     home_note: str = ""  # how Home is done, where the device has no homing of its own
     speed_in_moves: bool = False  # the speed goes with every move (MoveTo/MoveBy.speed)
     dtr: bool | None = None  # the DTR line the device needs when the port opens (None: as is)

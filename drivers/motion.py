@@ -8,7 +8,7 @@ import math
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from drivers import commands as cmd
 from drivers.capabilities import Capabilities, Completion
@@ -48,6 +48,9 @@ class MoveStart:
     duration: float
     path: Callable[[float], Point] | None = None
     """The point at a fraction 0..1 of the move (an arc); None: a straight line."""
+    recomputed: dict[str, float] = field(default_factory=dict)
+    """Parameters the device recomputes as it makes this move (Visiomex 15, 16, 19, 20), by
+    name: what it holds once the move has run, by its own arithmetic."""
 
     def estimate(self, now: float) -> Point:
         """Where the stage should be at `now`, moving along its path at `speed`."""
@@ -214,6 +217,9 @@ class Motion:
     def speed(self) -> float:
         """The speed as the device reports it (or as last set, where it cannot be read back)."""
         if not self.capabilities.speed_readback:
+            real = self.client.protocol.moving_speed()  # Visiomex: its step delays' speed
+            if real is not None:
+                return real
             return self._speed if self._speed is not None else self.capabilities.default_speed
         value = self._number(cmd.GetSpeed())
         self._speed = value
@@ -265,6 +271,9 @@ class Motion:
                     high=high,
                 )
             )
+        fixed = self.client.protocol.moving_speed()
+        if fixed is not None and math.isclose(speed, fixed):
+            return fixed  # the device moves so already (a program's end setting it back)
         # Where the speed goes with every move (pi-frame, Firmata), nothing is sent now.
         speed_in_moves = self.capabilities.speed_in_moves
         parts = [] if speed_in_moves else self.client.protocol.expand(cmd.SetSpeed(speed))
@@ -276,6 +285,19 @@ class Motion:
             else:
                 self.client.execute(part)
         self._speed = speed
+        if fixed is not None:  # Visiomex: 21/22 are written, its step delays time the steps
+            real = self.client.protocol.moving_speed()
+            assert real is not None
+            self._notify(
+                Message(
+                    "speed {speed:g} {unit} written, but this firmware times its steps from its "
+                    "step delays (15, 16) alone: moves go at {real:.3f} {unit}",
+                    speed=speed,
+                    unit=unit,
+                    real=real,
+                )
+            )
+            return real
         if self.capabilities.speed_readback:
             reported = self.speed()
             if reported != speed:
@@ -498,8 +520,17 @@ class Motion:
         else:
             delay, duration = timing
             speed = math.dist(start, target) / duration if duration > 0 else 0.0
+        # Where the device's own arithmetic leaves the stage (Visiomex: whole steps, its Y
+        # loop), said before anything is sent where that is not the target asked for.
+        outcome = protocol.move_outcome(cmd.Raw(raw[0]) if raw else command, start, target)
+        if outcome.warning:
+            self._notify(outcome.warning)
+        if outcome.end != target and path is None:
+            target = outcome.end
         completion = self.capabilities.completion
-        started = MoveStart(start, target, speed, time.monotonic() + delay, duration, path)
+        started = MoveStart(
+            start, target, speed, time.monotonic() + delay, duration, path, outcome.recomputed
+        )
         for move_listener in list(self.move_listeners):
             move_listener(started)
         heard, sent, self._reply_times = self._heard, time.monotonic(), []

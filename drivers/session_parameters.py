@@ -11,7 +11,7 @@ from collections.abc import Callable, Mapping
 from contextlib import AbstractContextManager
 from pathlib import Path
 
-from drivers.motion import Motion
+from drivers.motion import Motion, MoveStart
 from drivers.param_profile import read_profile
 from drivers.parameters import Parameter, ParameterWritten
 
@@ -35,6 +35,7 @@ class DeviceParameters:
         self._kept: dict[str, float] = dict(kept or {})
         self._operation = operation
         motion.parameter_listeners.append(self._keep)
+        motion.move_listeners.append(self._moved)
 
     @property
     def all(self) -> tuple[Parameter, ...]:
@@ -43,7 +44,8 @@ class DeviceParameters:
 
     def kept(self) -> dict[str, float]:
         """The values known to be on the device, by name: those given when it was opened
-        (written earlier) and those written since (the device cannot be asked for them)."""
+        (written earlier), those written since (the device cannot be asked for them), and those
+        its firmware recomputed by itself after a set or at a move (Visiomex 15, 16, 19, 20)."""
         return dict(self._kept)
 
     def set(self, key: str | int, value: float) -> ParameterWritten:
@@ -79,3 +81,6 @@ class DeviceParameters:
     def _keep(self, written: ParameterWritten) -> None:
         self._kept[written.parameter.name] = written.value
         self._kept.update(written.device_values)
+
+    def _moved(self, move: MoveStart) -> None:
+        self._kept.update(move.recomputed)

@@ -1,28 +1,31 @@
-"""motionctl and the counted position of a device that cannot be asked where it is (Visiomex,
-Firmata): read from the settings the panel keeps, checked before anything is sent, kept after
-the run."""
+"""motionctl and the position kept for a device that cannot be asked where it is (counted on
+Visiomex and Firmata, commanded on the pi-frame): read from the settings the panel keeps,
+checked before anything is sent, kept after the run."""
 
 from __future__ import annotations
 
+import logging
 from typing import Any
 
 from PySide6.QtCore import QSettings
 
 from app.common.settings import read_counted_position, write_counted_position
 from drivers import commands as cmd
-from drivers.errors import FrameError
+from drivers.errors import BadInput, FrameError
 from drivers.events import PositionReport
 from drivers.motion import Motion
 from drivers.position_count import (
-    firmware_move_mm,
+    commanded,
     keeps_count,
     needs_count,
     no_count,
+    resume,
     starts_count,
     unknown_note,
 )
 from drivers.protocols.base import Point, Protocol
 
+log = logging.getLogger(__name__)
 _MOVING = frozenset({"move", "jog", "home", "raw", "macro", "run"})
 
 
@@ -35,6 +38,12 @@ class CliCount:
         self.before: Point | None = None
         if self.active:
             self.before = read_counted_position(settings, protocol.name, port)
+        if self.before is not None:
+            try:
+                resume(protocol, self.before)
+            except BadInput as exc:  # e.g. off the grid of ticks per mm changed since
+                log.warning("the position kept for this port is not used: %s", exc)
+                self.before = None
 
     def check(self, command: str, steps: tuple[str, ...] = ()) -> None:
         """Refuse (NoCount) a command, or a macro's step, that needs a count none is kept of."""
@@ -68,7 +77,8 @@ class CliCount:
                 write_counted_position(self.settings, self.protocol.name, self.port, after)
             if "position" in result or command == "set-home":
                 result["position"] = list(after)
-                result["measured"], result["counted"] = False, True
+                result["measured"] = False
+                result["commanded" if commanded(caps) else "counted"] = True
         elif command in _MOVING:
             if self.before is not None:  # raw bytes sent unread: where they went is not known
                 write_counted_position(self.settings, self.protocol.name, self.port, None)
@@ -81,8 +91,8 @@ class CliCount:
             write_counted_position(self.settings, self.protocol.name, self.port, None)
 
     def _after_raw(self, motion: Motion, text: str) -> Point | None:
-        """The count after raw bytes: moved as the firmware reads them, unchanged by a packet
-        that moves nothing, None where they could not be read."""
+        """The count after raw bytes: moved as the firmware makes the move, unchanged by a
+        packet that moves nothing, None where they could not be read."""
         assert self.before is not None
         frame = self.protocol.encode(cmd.Raw(text.encode("utf-8")))
         try:
@@ -91,10 +101,6 @@ class CliCount:
             return None
         if not any(c is not None for c in commands):
             return self.before
-        moved = firmware_move_mm(self.protocol, frame)
-        if moved is None:
-            here = motion.last_position
-            return (here.x, here.y, here.z) if here is not None else None
-        x, y, z = (a + b for a, b in zip(self.before, moved, strict=True))
-        motion.last_position = PositionReport(x, y, z, measured=False)
-        return (x, y, z)
+        # The move was followed as the firmware makes it (Motion: the protocol's move_outcome).
+        here = motion.last_position
+        return (here.x, here.y, here.z) if here is not None else None

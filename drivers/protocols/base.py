@@ -12,6 +12,7 @@ from drivers.errors import BadInput, FrameError, MotionError
 from drivers.events import Event
 from drivers.framers.base import Framer
 from drivers.messages import Message, message_of
+from drivers.move_outcome import MoveOutcome
 from drivers.parameters import Parameter, ParameterWritten, find_parameter
 
 Point = tuple[float, float, float]
@@ -247,6 +248,16 @@ class Protocol(ABC):
         self, command: Command, start: Point, target: Point
     ) -> tuple[float, float] | None:
         """Seconds before a move starts and how long it runs (None: distance over speed)."""
+        return None
+
+    def move_outcome(self, command: Command, start: Point, target: Point) -> MoveOutcome:
+        """Where a move leaves the stage by the device's own arithmetic, before it is sent
+        (default: at `target`, as asked)."""
+        return MoveOutcome(target)
+
+    def moving_speed(self) -> float | None:
+        """The speed moves really go at, where the device sets it itself and cannot be asked
+        (Visiomex: from its step delays); None: the speed set."""
         return None
 
     def kind_to_length(self, command: MoveBy) -> Point:

@@ -17,6 +17,7 @@ from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
 from drivers.events import ErrorReport, Event, Feedback, TextLine
 from drivers.framers.lines import LineFramer
 from drivers.messages import Message
+from drivers.move_outcome import MoveOutcome
 from drivers.parameters import ParameterWritten
 from drivers.position_count import firmware_move_mm
 from drivers.protocols import visiomex_advice
@@ -40,6 +41,7 @@ from drivers.protocols.visiomex_params import (
     PARAMETERS,
     SPEED_IDS,
 )
+from drivers.protocols.visiomex_where import firmware_move, move_warning, stepping_speeds
 
 REPLY_MARGIN = 0.5  # s beyond the silence window before a reply counts as missing
 PAD = "N"
@@ -104,9 +106,12 @@ CAPABILITIES = Capabilities(
     raw_line_end="",  # a packet has no terminator: the silence after it ends it
     move_kinds=tuple(MOVE_TYPES),
     speed_note=Message(
-        "Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times "
-        "its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace."
+        "The speed cannot be set here: this firmware revision times its steps from "
+        "step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). "
+        '"device:" is the speed X steps at (15 high plus 16 low a step); change 15 and 16 '
+        "in the parameter table to change it."
     ),
+    speed_fixed=True,
     home_note=Message(
         "Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move "
         "from the position the panel counted"
@@ -563,6 +568,11 @@ class VisiomexProtocol(Protocol):
 
     def _move_reads(self, command: Command) -> tuple[float, float, int] | None:
         """What the firmware reads from a move command's packet (None: not a move packet)."""
+        text = self._move_text(command)
+        return None if text is None else self._firmware_reads(text)
+
+    def _move_text(self, command: Command) -> str | None:
+        """A move command's packet text (None: not a move packet)."""
         if isinstance(command, Raw):
             text = command.data.decode("latin-1")
         elif isinstance(command, (MoveBy, Home)):
@@ -572,9 +582,27 @@ class VisiomexProtocol(Protocol):
                 return None
         else:
             return None
-        if not text.startswith("M"):
-            return None
-        return self._firmware_reads(text)
+        return text if text.startswith("M") else None
+
+    def move_outcome(self, command: Command, start: Point, target: Point) -> MoveOutcome:
+        """Where the packet leaves the stage by the firmware's arithmetic (truncated step
+        counts, the Y loop's ramp count), what to say when that is not `target`, and what the
+        move leaves in 15, 16, 19 and 20 (visiomex_where)."""
+        text = self._move_text(command)
+        if text is None:  # `D` (board12) goes back by the firmware's own count
+            return MoveOutcome(target)
+        x_um, y_um, _ = self._firmware_reads(text)
+        d = self.format.digits
+        signs = (-1 if text[2:3] == "N" else 1, -1 if text[3 + d : 4 + d] == "N" else 1)
+        move = firmware_move(self.firmware, x_um, y_um, signs)
+        end = (start[0] + move.moved[0], start[1] + move.moved[1], start[2])
+        left = {BY_ID[i].name: BY_ID[i].from_wire(value) for i, value in move.left.items()}
+        return MoveOutcome(end, move_warning(move), left)
+
+    def moving_speed(self) -> float | None:
+        """X's stepping speed now (15 high plus 16 low a step): the firmware times its steps
+        from the step delays alone, whatever 21/22 say."""
+        return stepping_speeds(self.firmware)[0]
 
     def move_timing(self, command: Command, start: Point, target: Point) -> tuple[float, float]:
         """Until stepping starts (the packet, 1 s of silence, the debug lines going out), then
