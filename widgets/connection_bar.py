@@ -211,10 +211,12 @@ class ConnectionBar(QWidget):
             (None, self.description_label),
             (None, self.refresh_button),
             (self.tr("Protocol:"), self.protocol_combo),
-            (self.variant_label, self.variant_combo),
             (self.tr("Baud:"), self.baud_combo),
             (None, self.bridge_check),
             (None, self.connect_button),
+            # After Connect: shown for a protocol with variants, it moves nothing under the
+            # pointer (before Baud, choosing Visiomex slid Connect away from it).
+            (self.variant_label, self.variant_combo),
         ):
             if isinstance(text, QLabel):
                 layout.addWidget(text)

@@ -218,3 +218,18 @@ def test_a_long_state_never_widens_the_bar(bar: ConnectionBar, qtbot) -> None:
     assert bar.state_label.toolTip() == detail
     bar.resize(1400, bar.height())
     qtbot.waitUntil(lambda: bar.state_label.text().endswith(detail), timeout=3000)  # whole
+
+
+def test_the_variant_box_moves_nothing_before_it(bar: ConnectionBar, qtbot) -> None:
+    """Issue 28 item 29: choosing a protocol with variants (Visiomex) shows the Variant box
+    without moving Connect (or anything else the pointer may be on) along the bar."""
+    bar.resize(1200, bar.sizeHint().height())
+    bar.show()
+    qtbot.waitExposed(bar)
+    watched = (bar.protocol_combo, bar.baud_combo, bar.bridge_check, bar.connect_button)
+    before = [widget.x() for widget in watched]
+    bar.set_variants([("seed", "the seed firmware"), ("board12", "the 12-bit board")])
+    qtbot.waitUntil(lambda: bar.variant_combo.isVisible() and bar.variant_combo.width() > 0)
+    bar.layout().activate()
+    assert [widget.x() for widget in watched] == before
+    assert bar.variant_combo.x() > bar.connect_button.x()
