@@ -32,7 +32,7 @@ def test_the_window_adapts_to_two_axes_and_commanded_positions(qtbot, window: Ma
     assert not window.coordinates.isHidden()
     assert window.readout.position() == (0.0, 0.0, 0.0)
     assert window.readout.measured_label.text() == "commanded, not measured"
-    assert "21 and 22" in window.speed.note_label.text()
+    assert "(15, 16) alone" in window.speed.note_label.text()
     assert window.connection_bar.variant() == "seed" and window.connection_bar.baud() == 9600
     assert window.console.send_line.ending_combo.currentText() == "none"
     assert "relative move" in window.coordinates.home_button.toolTip()
@@ -156,15 +156,6 @@ def test_cancel_stops_after_the_packet_in_flight(qtbot, window: MainWindow) -> N
     assert statuses.count("cancelled") >= 20
     assert statuses[0] == "confirmed"
     assert "pending" not in statuses
-
-
-def test_speed_sets_parameters_21_and_22(qtbot, window: MainWindow) -> None:
-    _connect(qtbot, window)
-    editor = window.parameters.editor
-    window.speed.set_value(20)
-    window.speed.apply()
-    qtbot.waitUntil(lambda: editor.last_written().get("input_speed_steady_y") == 20, timeout=8000)
-    assert editor.last_written()["input_speed_steady_x"] == 20
 
 
 def test_a_set_of_21_shows_the_25_the_firmware_recomputed(qtbot, window: MainWindow) -> None:

@@ -36,6 +36,7 @@ class SpeedControl(QWidget):
         self._min, self._max = 0.0, 100.0
         self._units = MM
         self._reported: float | None = None
+        self._fixed = ""  # why the speed cannot be set here ("" when it can)
 
         label = QLabel(self.tr("Speed:"))
         label.setToolTip(self.tr("Speed of the next moves"))
@@ -96,6 +97,24 @@ class SpeedControl(QWidget):
         tip = self.tr("Send the speed in the field to the device")
         self.apply_button.setToolTip(tip + (f"\n{text}" if text else ""))
 
+    def set_fixed(self, reason: str) -> None:
+        """The device sets its speed itself (`reason` says how; "" lifts it): the field, the
+        slider and Apply are off, with the reason as their tooltip, and Apply sends nothing."""
+        self._fixed = reason
+        for widget in (self.spin, self.apply_button):
+            widget.setEnabled(not reason)
+        self.slider.setEnabled(not reason and self._max > self._min)
+        if reason:
+            for widget in (self.spin, self.slider, self.apply_button):
+                widget.setToolTip(reason)
+        else:
+            self._range_tips()
+            self.set_note(self.note_label.text())
+
+    def fixed(self) -> str:
+        """Why the speed cannot be set on this device ("" when it can)."""
+        return self._fixed
+
     def set_decimals(self, decimals: int) -> None:
         """The decimals the device takes (0: whole mm/s); in in/s, two more (at most 4), and
         the speed is sent rounded to the device's decimals."""
@@ -143,12 +162,14 @@ class SpeedControl(QWidget):
         step = (self._max - self._min) / 100.0
         self.spin.set_single_steps(max(step, 0.01), max(step / MM_PER_INCH, 0.0001))
         self.spin.blockSignals(False)
-        self.slider.setEnabled(self._max > self._min)
+        self.slider.setEnabled(self._max > self._min and not self._fixed)
         self._range_tips()
         self.set_value(current)
 
     def _range_tips(self) -> None:
         """The field's and the slider's tooltips, with the range in the unit shown."""
+        if self._fixed:
+            return  # they say why the speed cannot be set
         if self._units == INCH:
             low, high = self.spin.range_texts()
             tip = self.tr("Speed, %1 to %2 in/s; press Enter or Apply to send")
@@ -180,6 +201,9 @@ class SpeedControl(QWidget):
     def apply(self) -> None:
         """Send the speed in the field (what Enter and Apply do); if it cannot be used, say why
         (`refused`) and send nothing."""
+        if self._fixed:
+            self.refused.emit(fill(self.tr("%1; nothing sent"), self._fixed))
+            return
         if self.problem():
             why = fill(self.tr("%1; nothing sent"), self.problem())
             log.info("speed refused: %s", why)

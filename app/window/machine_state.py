@@ -158,6 +158,8 @@ class MachineState(QObject):
             self.position_lost = False
         self.link_failed = False
         self.window.readout.set_status(self.settled_status())
+        caps = info.capabilities  # a speed the device sets itself (Visiomex): the field is off
+        self.window.speed.set_fixed(localized(caps.speed_note) if caps.speed_fixed else "")
 
     def known_position(self) -> Point | None:
         """The position as last shown, unless the device lost track of it."""
