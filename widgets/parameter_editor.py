@@ -218,6 +218,15 @@ class ParameterEditor(QWidget):
         """What this device was last sent, by name; names left out count as never written."""
         self.model.set_written(values)
 
+    def set_computed(self, values: dict[str, float], when: str) -> None:
+        """What the firmware recomputed itself, by name (`when`: parameter_values.AFTER_SET or
+        AT_MOVE): shown as the device's, marked computed; unedited values follow."""
+        self.model.set_computed(values, when)
+
+    def computed(self) -> dict[str, str]:
+        """The rows whose device value the firmware computed, by name: when."""
+        return {s.row.name: s.computed for s in self.model.states() if s.computed}
+
     def last_written(self) -> dict[str, float]:
         states = self.model.states()
         return {s.row.name: s.written for s in states if s.written is not None}

@@ -173,6 +173,9 @@ class ParameterModel(QAbstractTableModel):
             return f"• {text}" if state.changed() else text
         if column == WRITTEN_COL:
             written = state.written
+            if written is not None and state.computed:  # the firmware's value, not a write
+                shown = with_unit(format_value(row, written), row.unit)
+                return fill(self.tr("%1 (computed)"), shown)
             if written is not None:
                 return with_unit(format_value(row, written), row.unit)
             if row.power_on is not None:  # what the device holds until written
@@ -211,6 +214,13 @@ class ParameterModel(QAbstractTableModel):
             if state.written is None:
                 return fill(self.tr("%1: never written to this device from this panel"), row.name)
             shown = with_unit(format_value(row, state.written), row.unit)
+            if state.computed:
+                return fill(
+                    self.tr("%1: the device holds %2, computed by its firmware %3"),
+                    row.name,
+                    shown,
+                    translated(state.computed),
+                )
             return fill(self.tr("%1: last written %2"), row.name, shown)
         lines = [
             f"{row.id} {row.name}: {row.description}",
@@ -295,10 +305,27 @@ class ParameterModel(QAbstractTableModel):
         """What the device holds, by name (unknown names ignored); replace forgets the rest."""
         for state in self._states:
             if state.row.name in values:
-                state.written = float(values[state.row.name])
+                new = float(values[state.row.name])
+                if new != state.written:  # a computed value kept as it is stays marked
+                    state.computed = ""
+                state.written = new
             elif replace:
-                state.written = None
+                state.written, state.computed = None, ""
         self._all_changed()
+        self.written_changed.emit()
+
+    def set_computed(self, values: dict[str, float], when: str) -> None:
+        """Values the firmware recomputed itself (`when`: AFTER_SET or AT_MOVE), by name: what
+        the device holds, marked computed; a value not being edited follows (unknown names
+        ignored)."""
+        for state in self._states:
+            if state.row.name in values:
+                edited = state.changed()
+                state.written, state.computed = float(values[state.row.name]), when
+                if not edited:
+                    state.value = state.written
+        self._all_changed()
+        self.values_changed.emit()
         self.written_changed.emit()
 
     def set_status(self, position: int, status: str, message: str = "") -> None:

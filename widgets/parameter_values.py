@@ -52,6 +52,10 @@ STATUS_COLOURS = {
     TIMED_OUT: "#ad1457",
     CANCELLED: "#6d4c41",
 }
+AFTER_SET, AT_MOVE = (  # when the firmware recomputed a value; shown translated
+    QT_TRANSLATE_NOOP("ParameterValues", "after the last set"),
+    QT_TRANSLATE_NOOP("ParameterValues", "at the last move"),
+)
 OUTPUT_TIP = QT_TRANSLATE_NOOP(
     "ParameterValues",
     "Output: computed by the firmware. Writing it is allowed, but the firmware may replace "
@@ -152,6 +156,7 @@ class RowState:
     status: str = NOT_WRITTEN
     message: str = ""
     note: str = ""
+    computed: str = ""  # when the firmware recomputed `written` itself (e.g. at the last move)
 
     def held(self) -> float | None:
         """What the device holds as far as the panel knows: the value last written, else the

@@ -22,10 +22,11 @@ from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
 from widgets._i18n import fill
 from widgets.parameter_editor import ParameterEditor, ParameterRow
-from widgets.parameter_values import CANCELLED, CONFIRMED, ERROR, TIMED_OUT
+from widgets.parameter_values import AFTER_SET, AT_MOVE, CANCELLED, CONFIRMED, ERROR, TIMED_OUT
 
 if TYPE_CHECKING:
     from app.window.services import WindowServices
+    from drivers.motion import MoveStart
 
 log = logging.getLogger(__name__)
 
@@ -126,6 +127,7 @@ class ParameterDock(QObject):
         w.job_finished.connect(self._on_job_finished)
         w.job_failed.connect(self._on_job_failed)
         w.job_timed_out.connect(self._on_job_timed_out)
+        w.move_started.connect(self._on_move_started)
 
     # -- connection --------------------------------------------------------------------------
     def device_ready(self, info: DeviceInfo) -> None:
@@ -214,8 +216,26 @@ class ParameterDock(QObject):
         recomputed = {n: v for n, v in written.device_values.items() if n in untouched}
         if recomputed:
             self.editor.set_values(recomputed)
+        self.editor.set_computed(written.device_values, AFTER_SET)
         for other, value in written.device_values.items():
             self.editor.set_row_note(other, fill(self.tr(FORCED_NOTE), f"{value:g}"))
+
+    def _on_move_started(self, move: MoveStart) -> None:
+        """A move went out: what the firmware recomputes as it makes it (Visiomex 15, 16, 19,
+        20) is what the device holds from now on, shown marked computed and kept."""
+        info = self.info
+        if info is None or self.protocol is None or not move.recomputed:
+            return
+        held = {row.name: row.power_on for row in self.editor.parameters()}
+        held.update(self.editor.last_written())
+        changed = {n: v for n, v in move.recomputed.items() if held.get(n) != v}
+        if not changed:
+            return
+        write_parameters(self.services.settings, info.protocol, info.port, changed)
+        self.protocol.assume_parameters(changed)
+        self.editor.set_computed(changed, AT_MOVE)
+        for name in changed:
+            self.editor.set_row_note(name, self.tr("recomputed by the firmware at the last move"))
 
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
         if job in self._writing:
