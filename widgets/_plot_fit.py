@@ -15,7 +15,7 @@ import math
 from collections.abc import Sequence
 
 import pyqtgraph as pg
-from PySide6.QtCore import QEvent, QObject, QRectF, Qt
+from PySide6.QtCore import QEvent, QLocale, QObject, QRectF, Qt
 from PySide6.QtGui import QFont, QFontMetricsF
 from PySide6.QtWidgets import QApplication, QGraphicsGridLayout, QGraphicsWidget
 
@@ -23,6 +23,7 @@ MIN_VIEW_PX = 40  # the data area keeps at least this much on each side before a
 TICK_GAP_PX = 6  # room between two tick labels on one axis
 HEADER_GAP_PX = 2  # above and below the title row's text
 LABEL_GAP_PX = 2  # between an axis label and the tick labels
+RIGHT_TICK_SAMPLE = "00"  # a label centred on the bottom axis's right end (its half past it)
 
 
 class FittedAxis(pg.AxisItem):
@@ -48,6 +49,13 @@ class FittedAxis(pg.AxisItem):
             kept.append(spec[0])
             texts.append(spec)
         return axis_spec, tick_specs, texts
+
+    def tickStrings(self, values, scale, spacing):
+        """pyqtgraph's tick labels with the interface's decimal mark ("0,5" in French, as the
+        readout writes it)."""
+        strings = super().tickStrings(values, scale, spacing)
+        point = QLocale().decimalPoint()
+        return strings if point == "." else [text.replace(".", point) for text in strings]
 
     def label_text_rect(self) -> QRectF:
         """The label's text (its box less the document's margin) in scene coordinates."""
@@ -148,6 +156,11 @@ class PlotFit(QObject):
         self.tick_height = _text_box(metrics, "0").height()
         line = self.tick_height / 0.8
         self.overhang = math.ceil(line / 2) + 1
+        # The bottom axis's last tick label is centred on the data area's right end: half of it
+        # lies past that end, kept inside the widget by the right margin.
+        right = math.ceil(_text_box(metrics, RIGHT_TICK_SAMPLE).width() / 2) + 1
+        m_left, m_top, m_right, m_bottom = plot.layout.getContentsMargins()
+        plot.layout.setContentsMargins(m_left, m_top, max(m_right, right), m_bottom)
         plot.getAxis("left").setStyle(hideOverlappingLabels=math.floor(line / 2 - line * 0.1))
         self._left_width = -1.0  # the left axis's width as last fitted
         widget.installEventFilter(self)

@@ -305,3 +305,43 @@ def test_wider_tick_labels_later_still_fit(qtbot) -> None:
     assert not view.xy_fit.title.isVisible()  # no room left for it
     assert item.sceneBoundingRect().right() <= view.xy_plot.width()
     assert not _check_fit(view.xy_plot, view.xy_fit)
+
+
+def test_french_tick_labels_use_the_decimal_comma(qtbot) -> None:
+    """Issue 28 item 29: the axes write 0,5 where the readout does (the interface's locale)."""
+    from PySide6.QtCore import QLocale
+
+    axis = FittedAxis("bottom")
+    try:
+        QLocale.setDefault(QLocale("fr_FR"))
+        assert axis.tickStrings([-0.5, 0.0, 1.5], 1.0, 0.5) == ["-0,5", "0", "1,5"]
+    finally:
+        QLocale.setDefault(QLocale.system())
+    QLocale.setDefault(QLocale("en_US"))
+    try:
+        assert axis.tickStrings([-0.5, 1.5], 1.0, 0.5) == ["-0.5", "1.5"]
+    finally:
+        QLocale.setDefault(QLocale.system())
+
+
+def test_the_data_area_leaves_room_for_the_last_tick_label(qtbot) -> None:
+    """Issue 28 item 20: the bottom axis's last tick label, centred on the data area's right end,
+    lies inside the widget: the data area ends half a label short of the edge."""
+    from PySide6.QtGui import QFontMetricsF
+
+    from widgets._plot_fit import RIGHT_TICK_SAMPLE, _text_box, _tick_font
+
+    view = _build(qtbot, "circle")
+    for width, height in READABLE:
+        _size_plots(view, width, height)
+        for plot, _fit in _plots(view):
+            item = plot.getPlotItem()
+            half = (
+                _text_box(
+                    QFontMetricsF(_tick_font(item.getAxis("bottom"))), RIGHT_TICK_SAMPLE
+                ).width()
+                / 2
+            )
+            data = item.getViewBox().sceneBoundingRect()
+            edge = plot.mapToScene(plot.rect()).boundingRect().right()
+            assert edge - data.right() >= half - TOLERANCE, (plot.objectName(), width, height)
