@@ -8,6 +8,7 @@ device's queue depth, asked now and then, tells how many have been executed.
 from __future__ import annotations
 
 import logging
+import math
 import threading
 import time
 from collections.abc import Callable
@@ -54,6 +55,13 @@ class StreamProgress:
     """The program's source (drivers/toolpath: its line, entity or element) under way."""
     row: int = 0
     """How far along the program's flattened path the stage has got (a row of its points)."""
+    held_s: float = 0.0
+    """Seconds the device needs, at most, to run what it holds (acknowledged, not executed)."""
+
+    @property
+    def held(self) -> int:
+        """Instructions the device holds: acknowledged and not yet executed."""
+        return max(self.acknowledged - self.executed, 0)
 
     @property
     def seconds(self) -> float:
@@ -201,6 +209,27 @@ class Streamer:
         moving = bool(status["moving"]) if isinstance(status, dict) else False
         waiting = depth + (1 if moving and depth == 0 else 0)
         self.state.executed = max(self.state.executed, self.state.acknowledged - waiting)
+        self.state.held_s = held_seconds(self.points, self.state.executed, self.state.acknowledged)
+
+
+def held_seconds(points: list[ProgramPoint | ProgramDwell], first: int, end: int) -> float:
+    """Seconds that points[first:end] take at their speeds, the one under way counted whole."""
+    before: ProgramPoint | None = None  # where the one under way starts (none: no distance)
+    for index in range(first - 1, -1, -1):
+        found = points[index]
+        if isinstance(found, ProgramPoint):
+            before = found
+            break
+    seconds = 0.0
+    for point in points[first:end]:
+        if isinstance(point, ProgramDwell):
+            seconds += point.ms / 1000.0
+            continue
+        if before is not None and point.speed > 0:
+            here, there = (before.x, before.y, before.z), (point.x, point.y, point.z)
+            seconds += math.dist(here, there) / point.speed
+        before = point
+    return seconds
 
 
 def _instruction(point: ProgramPoint | ProgramDwell) -> Instruction:

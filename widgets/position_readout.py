@@ -89,6 +89,7 @@ class PositionReadout(QWidget):
         self._fixed_decimals = -1
         self._resolution: float | None = None
         self._status = LIVE
+        self._measured = True
 
         font = QFontDatabase.systemFont(QFontDatabase.SystemFont.FixedFont)
         font.setPointSizeF(max(font.pointSizeF(), 9.0) * 2.0)
@@ -205,8 +206,15 @@ class PositionReadout(QWidget):
         layout.addLayout(grid)
         layout.addWidget(self.zero_label)
         layout.addLayout(zeros)
-        layout.addWidget(self.measured_label)
-        layout.addWidget(self.status_label)
+        # One place for the badges, as tall as the tallest shown so far: a move's estimate
+        # replacing "commanded" does not make the panel jump (nor grow a scrollbar).
+        self.badges = QWidget()
+        self.badges.setObjectName("positionBadges")
+        badges = QVBoxLayout(self.badges)
+        badges.setContentsMargins(0, 0, 0, 0)
+        badges.addWidget(self.measured_label)
+        badges.addWidget(self.status_label)
+        layout.addWidget(self.badges)
         self._render_status()
         self._render()
 
@@ -309,8 +317,10 @@ class PositionReadout(QWidget):
 
     def set_measured(self, measured: bool, confirmed: bool | None = None) -> None:
         """False: the position is only commanded; say so visibly, and whether the device
-        confirmed reaching it (`confirmed`: None where the device never says)."""
-        self.measured_label.setVisible(not measured)
+        confirmed reaching it (`confirmed`: None where the device never says); not shown
+        beside an estimate, which says more."""
+        self._measured = measured
+        self._show_measured()
         if confirmed:
             text, tip = self.tr(CONFIRMED_TEXT), self.tr(CONFIRMED_TIP)
         else:
@@ -321,7 +331,17 @@ class PositionReadout(QWidget):
 
     def is_measured(self) -> bool:
         """Whether the position is shown as measured."""
-        return self.measured_label.isHidden()
+        return self._measured
+
+    def _show_measured(self) -> None:
+        self.measured_label.setVisible(not self._measured and self._status != ESTIMATED)
+        self._keep_badge_height()
+
+    def _keep_badge_height(self) -> None:
+        """The badges' place grows to the tallest shown, and never shrinks back."""
+        height = self.badges.sizeHint().height()
+        if height > self.badges.minimumHeight():
+            self.badges.setMinimumHeight(height)
 
     def set_resolution(self, resolution: float | None) -> None:
         """Show as many decimals as the device resolves (0.01 mm: 2; 1 µm: 3; 1 mm: 0)."""
@@ -370,6 +390,7 @@ class PositionReadout(QWidget):
         self.status_label.setText(self.tr(text) if text else "")
         self.status_label.setStyleSheet(f"{badge} border-radius: 3px; padding: 2px 6px;")
         self.status_label.setVisible(bool(text))
+        self._show_measured()
         for label in (*self.labels.values(), *self.work_labels.values()):
             palette = QPalette(self.palette())  # the theme's, with the status colour on top
             if colour is not None:

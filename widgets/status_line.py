@@ -5,12 +5,13 @@ from __future__ import annotations
 from PySide6.QtCore import QT_TRANSLATE_NOOP, Qt
 from PySide6.QtWidgets import QHBoxLayout, QLabel, QSizePolicy, QWidget
 
-DISCONNECTED, CONNECTING, IDLE, MOVING, BUSY, ERROR = (
+DISCONNECTED, CONNECTING, IDLE, MOVING, BUSY, PAUSED, ERROR = (
     "disconnected",
     "connecting",
     "idle",
     "moving",
     "busy",
+    "paused",
     "error",
 )
 _STATES = {  # text and tooltip translated at use, in the StatusLine context
@@ -38,6 +39,13 @@ _STATES = {  # text and tooltip translated at use, in the StatusLine context
         QT_TRANSLATE_NOOP("StatusLine", "Busy"),
         "#6a1b9a",
         QT_TRANSLATE_NOOP("StatusLine", "A command is under way"),
+    ),
+    PAUSED: (
+        QT_TRANSLATE_NOOP("StatusLine", "Paused"),
+        "#8d6e63",
+        QT_TRANSLATE_NOOP(
+            "StatusLine", "A program is paused: nothing more of it is sent until Resume"
+        ),
     ),
     ERROR: (
         QT_TRANSLATE_NOOP("StatusLine", "Error"),
@@ -76,7 +84,8 @@ class StatusLine(QWidget):
         self.set_state(DISCONNECTED)
 
     def set_state(self, state: str, detail: str = "") -> None:
-        """Show the machine state (disconnected, connecting, idle, moving, busy or error)."""
+        """Show the machine state (disconnected, connecting, idle, moving, busy, paused or
+        error)."""
         if state not in _STATES:
             raise ValueError(f"unknown machine state {state!r}: one of {sorted(_STATES)}")
         text, colour, tip = _STATES[state]

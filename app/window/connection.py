@@ -269,6 +269,17 @@ class Connection(QObject):
             self._tell(fill(text, detail), status.FAILURE)
         elif state == "disconnected":
             window.console.append_note(translate("MainWindow", "disconnected"))
+            info = machine.info  # the status line no longer says "connected to ..."
+            gone = (
+                fill(
+                    translate("MainWindow", "disconnected from %1 on %2"),
+                    localized(info.identity),
+                    info.port,
+                )
+                if info is not None and was_connected
+                else translate("MainWindow", "disconnected")
+            )
+            self._tell(gone, note=False)
         elif state == "connected" and detail.startswith("device: "):
             machine.failed = True
             text = translate("MainWindow", "device: %1")

@@ -74,6 +74,7 @@ class JobDesk(QObject):
         self.jog_pressed_at = 0.0  # time.monotonic() of the last jog press
         self.jog_ended: jobs.Job | None = None  # a step whose end awaits the next decision
         self.saved_step: float | None = None  # the jog step as last saved
+        self.off_text = ""  # "motion controls are off until ... ends", while it is shown
         link.wirers.append(self._wire_worker)
         jog, coordinates = window.jog_panel, window.coordinates
         jog.jog_requested.connect(self._on_jog)
@@ -136,15 +137,13 @@ class JobDesk(QObject):
             self.running_alone.append(job)
             if not running:
                 self.show_motion_allowed()
-                self._tell(
-                    fill(
-                        translate(
-                            "MainWindow", "motion controls are off until %1 ends (Stop ends it now)"
-                        ),
-                        job.describe(),
+                self.off_text = fill(
+                    translate(
+                        "MainWindow", "motion controls are off until %1 ends (Stop ends it now)"
                     ),
-                    note=False,
+                    job.describe(),
                 )
+                self._tell(self.off_text, note=False)
         self.link.get().worker.submit(job)
         self.machine.show_status()
         return True
@@ -183,6 +182,10 @@ class JobDesk(QObject):
             window.tools.macros.set_runnable(allowed, reason)
         if built(window.devices):
             window.devices.set_motion_allowed(not reason, reason)
+        if not reason and self.off_text:  # what ran alone ended: its notice goes with it
+            if window.status_line.message() == self.off_text:
+                window.status_line.show_message("")
+            self.off_text = ""
 
     def set_controls_enabled(self, enabled: bool) -> None:
         """Controls on (connected to a device) or off (not connected, or bridging)."""

@@ -17,6 +17,7 @@ from widgets.lazy_view import built
 if TYPE_CHECKING:
     from app.window import jobs
     from app.window.move_estimate import MoveEstimate
+    from app.window.program_pause import ProgramPause
     from app.window.services import Point, WindowParts
     from app.window.worker import DeviceInfo, SerialWorker
     from app.window.worker_link import WorkerLink
@@ -51,15 +52,19 @@ class MachineState(QObject):
         self.trail_device: tuple[str, str, str] | None = None  # port, protocol, identity
         self.home_from: Point | None = None
         self.estimate: MoveEstimate | None = None  # built with the worker
+        self.pause: ProgramPause | None = None  # built with the worker
         link.wirers.append(self._wire)
 
     def _wire(self, w: SerialWorker) -> None:
         """The worker's reports of where the stage is and what it does, to bound methods (queued
         to the GUI thread); the estimate is built with the worker (it imports the motion engine)."""
         from app.window.move_estimate import MoveEstimate
+        from app.window.program_pause import ProgramPause
 
         self.estimate = MoveEstimate(self)
         self.estimate.estimated.connect(self._on_estimate)
+        self.pause = ProgramPause(self)
+        self.pause.wire(w)
         w.position_changed.connect(self._on_position)
         w.target_changed.connect(self.show_target)
         w.speed_changed.connect(self._on_speed)
@@ -79,6 +84,8 @@ class MachineState(QObject):
         if not self.connected:
             name = connection or self.window.connection_bar.state()
             line.set_state(name if name != "connected" else status.IDLE, detail)
+        elif self.pause is not None and self.pause.paused and self.busy_job is not None:
+            line.set_state(status.PAUSED, self.busy_job.describe())
         elif self.moving:
             line.set_state(status.MOVING)
         elif self.busy_job is not None:
@@ -115,6 +122,8 @@ class MachineState(QObject):
         self.show_target(None)
         self.end_move()
         self.busy_job = None  # the worker dropped what was queued: nothing runs after this
+        if self.pause is not None:
+            self.pause.ended()
         if self.last_position is not None:
             self.window.readout.set_status("stale")
 
@@ -314,6 +323,8 @@ class MachineState(QObject):
         from app.window import jobs
 
         self.busy_job = None
+        if self.pause is not None:
+            self.pause.ended()
         if self.moving:  # one job at a time: when it ends, nothing moves (arcs and jogs alike)
             self.end_move()
         if isinstance(job, jobs.SetHomeJob):

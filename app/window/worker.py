@@ -131,6 +131,7 @@ class SerialWorker(QObject):
     job_finished = Signal(object, object)  # Job, result
     job_failed = Signal(object, str)  # Job, message
     job_stopped = Signal(object, str)  # Job, message: the operator's stop ended it (not a failure)
+    program_paused = Signal(bool)  # Pause (True) or Resume (False) of the program under way
     move_started = Signal(object)  # MoveStart: from, to, speed, when
     notice = Signal(str)  # something the operator should know, e.g. a move clamped to the limits
     device_error = Signal(str)  # an error the device reported unasked (e.g. to a console line)
@@ -199,6 +200,7 @@ class SerialWorker(QObject):
         session = self._session
         if session is not None:
             session.pause_program(paused)
+            self.program_paused.emit(paused)
 
     def stop_now(self) -> None:
         """Stop the move or program under way, where the device has a stop (any thread); a

@@ -1,0 +1,84 @@
+"""What a program's Pause really does on the device connected, said when it is pressed: nothing
+more is sent, how many moves the device still holds and when it will stand still."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QCoreApplication, QObject
+
+from widgets import status_line as status
+from widgets._i18n import fill
+
+if TYPE_CHECKING:
+    from app.window.machine_state import MachineState
+    from app.window.worker import SerialWorker
+    from drivers.streaming import StreamProgress
+
+translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
+
+
+class ProgramPause(QObject):
+    """Follows Pause and Resume and the program's progress; tells the operator what goes on."""
+
+    def __init__(self, machine: MachineState) -> None:
+        super().__init__(machine)
+        self.machine = machine
+        self.paused = False
+        self._said_held = False  # the device's queue at the pause, said once
+        self._said_still = False  # its end, said once
+
+    def wire(self, w: SerialWorker) -> None:
+        """Pause and progress reports of the worker, to bound methods (queued to the GUI)."""
+        w.program_paused.connect(self._on_paused)
+        w.stream_progress.connect(self._on_progress)
+
+    def _queued(self) -> bool:
+        info = self.machine.info
+        return info is not None and info.capabilities.streaming
+
+    def _on_paused(self, paused: bool) -> None:
+        if paused == self.paused or (paused and self.machine.busy_job is None):
+            return
+        self.paused = paused
+        self._said_held = self._said_still = False
+        if paused and not self._queued():
+            self.machine.window.tell(
+                translate(
+                    "MainWindow",
+                    "paused: nothing more is sent; the move under way finishes (this device "
+                    "has no feed hold)",
+                ),
+                status.INFO,
+            )
+        elif not paused:
+            self.machine.window.tell(translate("MainWindow", "resumed: sending the program again"))
+        self.machine.show_status()
+
+    def ended(self) -> None:
+        """The program ended: nothing is paused any more."""
+        self.paused = False
+
+    def _on_progress(self, progress: StreamProgress) -> None:
+        if not self.paused or not self._queued():
+            return
+        held = progress.held
+        if not self._said_held and held:
+            self._said_held = True
+            text = translate(
+                "MainWindow",
+                "paused: nothing more is sent; the device still holds %1 move(s) and runs "
+                "them (its protocol has no feed hold): it stands still in about %2 s; Stop "
+                "flushes them now",
+            )
+            seconds = f"{math.ceil(progress.held_s):d}"
+            self.machine.window.tell(fill(text, held, seconds), status.WARNING)
+        elif held == 0 and not self._said_still:
+            self._said_held = self._said_still = True
+            self.machine.window.tell(
+                translate(
+                    "MainWindow",
+                    "paused: the device has run what it held; the stage stands still",
+                )
+            )
