@@ -41,7 +41,7 @@ DEVICES = [
     pytest.param(("laser-frame",), id="laser-frame"),
     pytest.param(("pi-frame",), id="pi-frame"),
     # The documented firmware: at its power-on parameters the real one never moves Y.
-    pytest.param(("visiomex", "--no-bugs"), id="visiomex"),
+    pytest.param(("visiomex",), id="visiomex"),
 ]
 # pi-frame's moves are waited for by estimate: the panel's speed for what has no feed rate (its
 # Circular frames hold at most 655.35 °/s: 25 mm/s on the 2.5 mm bulge arc is 573 °/s).
@@ -71,10 +71,14 @@ def test_drawings_run_to_their_last_point_on_each_device(device, drawings) -> No
         assert run.returncode == 0, (name, run.stderr)
         result = json.loads(run.stdout)
         assert result["finished"] is True and result["executed"] == result["instructions"]
-        assert result["position"] == pytest.approx([x, y, 0.0], abs=0.011), name
+        if protocol == "visiomex":  # its firmware's Y loop makes no step at power-on (issue 28)
+            y = 0.0
+        within = WITHIN.get(protocol, 0.011)
+        assert result["position"] == pytest.approx([x, y, 0.0], abs=within), name
         scale = UNITS.get(protocol, 1.0)
         where = [v / scale for v in _where(sim)]
-        assert where[:2] == pytest.approx([x, y], abs=WITHIN.get(protocol, 0.011)), (name, where)
+        assert where[:2] == pytest.approx([x, y], abs=within), (name, where)
+        assert result["position"][:2] == pytest.approx(where[:2], abs=1e-6), name
         notices = " ".join(result.get("notices", []))
         if name == "part.nc":  # told once what was skipped, then run
             assert "T1, M6, S10000, M3, M5, M30" in notices, notices
