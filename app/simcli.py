@@ -11,6 +11,7 @@ from collections.abc import Sequence
 from types import FrameType
 
 from drivers.errors import UnknownProtocol
+from drivers.log_origin import device_side_note
 from drivers.registry import create_protocol
 from drivers.sim.faults import FAULT_COMMANDS, FaultError, FaultyDevice
 from drivers.sim.pty_server import PtyServer
@@ -148,15 +149,20 @@ def main(argv: Sequence[str] | None = None) -> int:
             seed=options.seed or 0,
         )
     record = open(options.record, "a", encoding="utf-8") if options.record else None  # noqa: SIM115
+    writer = TrafficLogWriter(record) if record else None
     try:
         server = PtyServer(
             faulty or device,  # type: ignore[arg-type]
-            TrafficLogWriter(record) if record else None,
+            writer,
             link=options.link,
         )
     except OSError as exc:  # the link cannot be made there
         print(f"motionsim: cannot link {options.link}: {exc}", file=sys.stderr)
         return 2
+    if writer is not None:  # what the log readers need: protocol, port, and whose side it is
+        variant = options.variant if options.protocol == "visiomex" else None
+        speaks = create_protocol(options.protocol, variant)
+        writer.note(device_side_note(server.path, speaks, baud or probe.default_baud))
 
     def stop(signum: int, frame: FrameType | None) -> None:
         server.stop()

@@ -13,30 +13,26 @@ from __future__ import annotations
 import itertools
 import re
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass
 from pathlib import Path
 
-from drivers.errors import BadFile
+from drivers import spy_log
 from drivers.files import LOG_MAX_BYTES, LOG_MAX_LINE, read_lines
+from drivers.log_records import LogError, LogRecord
 from drivers.messages import Message
+
+__all__ = [
+    "LogError",
+    "LogRecord",
+    "log_records",
+    "open_any_log",
+    "parse_log",
+    "read_any_log",
+    "read_log",
+]
 
 _LINE = re.compile(r"^(\d{6,}\.\d{3}) (TX|RX)   ((?:[0-9A-F]{2} ){0,15}[0-9A-F]{2})(.*)$")
 _HEX_FIELD = 47  # 16 bytes as hex; shorter rows are padded to it before the text column
 _NOTE = re.compile(r"^(?:(\d{6,}\.\d{3}) )?# ?(.*)$")
-
-
-class LogError(BadFile):
-    """A file that cannot be read as a traffic log (which file, which line, why)."""
-
-
-@dataclass(frozen=True)
-class LogRecord:
-    """Bytes that crossed (direction `tx`/`rx`) at `time` seconds, or a note (`data` empty)."""
-
-    time: float
-    direction: str
-    data: bytes
-    note: str = ""
 
 
 def _text_column_fits(hexes: str, rest: str) -> bool:
@@ -120,8 +116,6 @@ def read_any_log(path: str | Path) -> tuple[str, list[LogRecord]]:
 def open_any_log(path: str | Path) -> tuple[str, Iterator[LogRecord]]:
     """A log's format, told by its first line that is not blank, and its records as the file is
     read on (LogError where the reading reaches a line that is wrong)."""
-    from drivers import spy_log  # spy_log builds on this module's records and errors
-
     file = Path(path)
     lines = _lines(file)
     for blanks, line in enumerate(lines):

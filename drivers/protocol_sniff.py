@@ -53,6 +53,24 @@ def recognised(protocol: Protocol, data: bytes) -> int:
     return count
 
 
+def recognised_sent(protocol: Protocol, data: bytes) -> int:
+    """How many frames in bytes a host sent the protocol reads as moves its device makes (a
+    device that never answers, such as pi-frame's, is known by what it is sent)."""
+    framer = protocol.new_tx_framer()
+    try:
+        frames = [data] if framer is None else framer.split(data)[0]
+    except MotionError:
+        return 0
+    count = 0
+    for frame in frames:
+        try:
+            command = protocol.sent_command(frame)
+        except MotionError:
+            continue
+        count += command is not None
+    return count
+
+
 def sniff(data: bytes, expected: str) -> str | None:
     """The protocol, other than `expected`, that reads `data` best, when it reads more of it as
     its own than `expected` does; None when none does (or nothing came)."""

@@ -32,6 +32,7 @@ from drivers.capabilities import Capabilities
 from drivers.client import Client
 from drivers.errors import BadInput
 from drivers.events import PositionReport
+from drivers.log_origin import connection_note
 from drivers.messages import Message
 from drivers.motion import Motion
 from drivers.program import ProgramPoint
@@ -265,8 +266,13 @@ class DeviceSession:
 
     def log_to(self, target: LogTarget) -> TrafficLogWriter:
         """Write every byte from now on to a log: a path (appended to, closed with the session),
-        a stream or a TrafficLogWriter (the caller's)."""
-        return self.tap.log_to(target)
+        a stream or a TrafficLogWriter (the caller's). A new log (a path or a stream) starts
+        with the note naming the port and protocol, which the log readers parse."""
+        writer = self.tap.log_to(target)
+        if not isinstance(target, TrafficLogWriter):  # a writer's owner notes its connection
+            baud = int(getattr(self.link.port, "baudrate", 0) or 0)
+            writer.note(connection_note(self.link.url, self.protocol, baud))
+        return writer
 
     # -- helpers -------------------------------------------------------------------------------
     @contextmanager

@@ -17,7 +17,7 @@ from collections import deque
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 
-from drivers.log_reader import LogError, LogRecord
+from drivers.log_records import LogError, LogRecord
 from drivers.messages import Message
 
 HEXDUMP_HINT = Message(
@@ -64,12 +64,19 @@ def _clean(line: str) -> str:
     return _ESCAPE.sub("", line).rstrip()
 
 
+def _is_event(hit: re.Match[str] | None) -> bool:
+    """Whether an `_EVENT` match is one spy writes: an RX event is only `RX   <empty>` (any
+    other `RX` line is bytes, ours or spy's)."""
+    return hit is not None and (hit.group(2) != "RX" or hit.group(3) == "<empty>")
+
+
 def is_spy_line(line: str) -> bool:
-    """Whether a line can only come from a pyserial spy:// capture (a data or an event line)."""
+    """Whether a line can only come from a pyserial spy:// capture (a data or an event line);
+    our own `000002.000 RX   F9   .` is not one, though it starts alike."""
     if _ESCAPE.match(line):
         return True
     clean = _clean(line)
-    return bool(_DATA.match(clean) or _EVENT.match(clean))
+    return bool(_DATA.match(clean)) or _is_event(_EVENT.match(clean))
 
 
 def _refusal(source: str, number: int, line: str) -> LogError:
@@ -150,7 +157,7 @@ def spy_records(lines: Iterable[str], source: str) -> Iterator[LogRecord]:
             traffic = True
         else:
             event = _EVENT.match(clean)
-            if event is None or (event.group(2) == "RX" and event.group(3) != "<empty>"):
+            if event is None or not _is_event(event):
                 raise _refusal(source, number, line)
             stamp_text, label, value = event.groups()
             waiting.append(LogRecord(float(stamp_text), "", b"", f"{label} {value}"))

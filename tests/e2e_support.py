@@ -7,6 +7,7 @@ of the direction ("TX"/"RX"), and its notes (`#` lines) are left out.
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 import time
@@ -15,6 +16,8 @@ from pathlib import Path
 
 from drivers.log_reader import read_log
 from tests.simproc import ROOT
+
+_NOTE = re.compile(r"^(?:\d{6,}\.\d{3} )?#|^\s*$")  # a `#` line (or a blank one)
 
 
 @dataclass(frozen=True)
@@ -28,9 +31,12 @@ class Record:
 
 def traffic(log: Path) -> list[Record]:
     """The log's records (a long record spans full lines with one stamp); none for a missing or
-    empty file, which is what a run that never opened its link, or never used it, leaves."""
+    empty file, or one of notes alone, which is what a run that never opened its link, or never
+    used it, leaves."""
     if not log.exists() or log.stat().st_size == 0:
         return []
+    if all(_NOTE.match(line) for line in log.read_text(encoding="utf-8").splitlines()):
+        return []  # the header alone (a simulator's record names its protocol as it starts)
     return [Record(r.time, r.direction.upper(), r.data) for r in read_log(log) if r.direction]
 
 

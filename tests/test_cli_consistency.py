@@ -66,14 +66,23 @@ def test_log_decode_takes_the_protocol_from_the_connection_note(tmp_path: Path) 
     assert meanings[1:] == ["GET_ID", "ACK GET_ID", "DONE GET_ID: CX25F7TK9P"]
 
 
-def test_a_log_without_connection_notes_needs_protocol(tmp_path: Path) -> None:
+def test_a_log_without_connection_notes_is_recognised_from_its_traffic(tmp_path: Path) -> None:
     log = _coxiris_log(tmp_path / "cli.log", None)
+    told = motionctl("log", "decode", str(log), "--filter", "done")
+    assert told.returncode == 0, told.stderr
+    assert told.stdout.strip().endswith("DONE GET_ID: CX25F7TK9P")
+    assert f"{log} names no protocol: decoded as coxiris" in told.stderr
+    given = motionctl("log", "decode", str(log), "--protocol", "coxiris", "--filter", "done")
+    assert given.returncode == 0 and given.stderr == "", given.stderr
+    assert given.stdout.strip().endswith("DONE GET_ID: CX25F7TK9P")
+
+
+def test_a_log_no_protocol_recognises_needs_protocol(tmp_path: Path) -> None:
+    log = tmp_path / "noise.log"
+    log.write_text("000000.001 RX   00 01 02                                          ...\n")
     refused = motionctl("log", "decode", str(log))
     assert refused.returncode == 2 and refused.stdout == ""
-    assert refused.stderr.strip().endswith("has none): give --protocol"), refused.stderr
-    given = motionctl("log", "decode", str(log), "--protocol", "coxiris", "--filter", "done")
-    assert given.returncode == 0, given.stderr
-    assert given.stdout.strip().endswith("DONE GET_ID: CX25F7TK9P")
+    assert refused.stderr.strip().endswith("recognises its traffic: give --protocol")
 
 
 @pytest.mark.parametrize("protocol", ["laser-frame", "pi-frame", "firmata"])

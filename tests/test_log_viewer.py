@@ -55,16 +55,27 @@ def test_the_protocol_comes_from_the_log_and_a_filter_finds_the_failure(qtbot, v
     assert viewer.console.send_line.isHidden()  # offline: nothing to send to
 
 
-def test_without_a_connection_note_the_given_protocol_decodes_and_another_can_be_chosen(
+def test_without_a_connection_note_the_traffic_tells_the_protocol_and_another_can_be_chosen(
     qtbot, viewer, tmp_path
 ):
     log = tmp_path / "plain.log"
-    _write_log(log)
+    _write_log(log)  # COXIRIS traffic, opened from a window on visiomex
+    _open(qtbot, viewer, log)
+    assert viewer.protocol_combo.currentText() == "coxiris"
+    assert "recognised from its traffic" in viewer.status_text()
+    assert "ACK GET_ID" in viewer.console.text()
+    _open(qtbot, viewer, log, "visiomex")
+    assert viewer.protocol_combo.currentText() == "visiomex"
+    assert "recognised" not in viewer.status_text()
+
+
+def test_traffic_no_protocol_reads_is_decoded_by_the_window_s_protocol(qtbot, viewer, tmp_path):
+    log = tmp_path / "noise.log"
+    with log.open("w", encoding="utf-8") as stream:
+        TrafficLogWriter(stream, start=0.0)(Traffic("rx", b"\x00\x01", 0.1))
     _open(qtbot, viewer, log)
     assert viewer.protocol_combo.currentText() == "visiomex"
-    _open(qtbot, viewer, log, "coxiris")
-    assert viewer.protocol_combo.currentText() == "coxiris"
-    assert "GET_ID" in viewer.console.text()
+    assert "recognised" not in viewer.status_text()
 
 
 def test_a_spy_capture_opens(qtbot, viewer):

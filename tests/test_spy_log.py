@@ -193,6 +193,23 @@ def test_our_own_log_is_told_from_a_spy_capture(tmp_path: Path) -> None:
     assert read_any_log(ours) == ("motionpanel", parse_log(ours.read_text(), str(ours)))
 
 
+def test_our_log_that_begins_with_a_received_frame_is_ours(tmp_path: Path) -> None:
+    # A Firmata board speaks first: `motionctl --log`'s first line was taken for a spy line.
+    ours = tmp_path / "firmata.log"
+    ours.write_text(
+        "000002.000 RX   F9                                                .\n"
+        "000002.000 TX   F9 F0 79 F7                                       ..y.\n"
+        "000002.001 RX   02 05                                             ..\n"
+    )
+    log_format, records = read_any_log(ours)
+    assert log_format == "motionpanel"
+    assert [(r.direction, r.data) for r in records] == [
+        ("rx", b"\xf9"),
+        ("tx", b"\xf9\xf0\x79\xf7"),
+        ("rx", b"\x02\x05"),
+    ]
+
+
 def _edit(lines: list[str], number: int, change: Callable[[str], str | None]) -> str:
     """The capture with line `number` (1-based) changed, or dropped when `change` gives None."""
     changed = change(lines[number - 1])

@@ -1,17 +1,23 @@
 """`motionctl log decode FILE [--protocol P] [--filter REGEX] [--json]`: a traffic log, decoded by
-the protocol its connection notes name (a session log's), else by the one given."""
+the protocol given, else by the one its connection notes name, else by the one its traffic reads
+as (drivers/log_origin.py); a simulator's record as the host's side of the link."""
 
 from __future__ import annotations
 
+import logging
 import re
+from collections.abc import Callable
 from typing import Any
 
-from drivers.decoding import DecodedFrame, connection_protocol, decode_records
+from drivers.decoding import DecodedFrame, decode_records
 from drivers.errors import BadInput, MotionError
+from drivers.log_origin import Origin, host_view, origin_of
 from drivers.log_reader import LogRecord, read_any_log
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
 from drivers.registry import create_protocol
+
+log = logging.getLogger("motionctl")
 
 USAGE = "log decode FILE [--filter REGEX]"
 
@@ -40,28 +46,27 @@ class NothingDecoded(BadInput):
     """A log in which nothing is a frame of the protocol it was decoded with (exit 2)."""
 
 
-def _named(records: list[LogRecord]) -> tuple[str, str] | None:
-    """(protocol, variant) named by the log's first connection note; None: no such note."""
-    for record in records:
-        named = connection_protocol(record.note) if record.note else None
-        if named is not None:
-            return named
-    return None
-
-
-def _protocol_of(path: str, records: list[LogRecord]) -> Protocol:
-    """The protocol the log's first connection note names (BadInput: it names none)."""
-    named = _named(records)
-    if named is None:
+def _origin(path: str, records: list[LogRecord], given: Protocol | None) -> Origin:
+    """The protocol to decode with and the side the log was written on (BadInput: it names no
+    protocol, none was given and no protocol recognises its traffic)."""
+    origin = origin_of(records, given)
+    if origin is None:
         raise BadInput(
             Message(
-                "{file} names no protocol (no connection note: a motionctl --log file or a "
-                "spy:// capture has none): give --protocol",
+                "{file} names no protocol (no connection note) and no protocol recognises its "
+                "traffic: give --protocol",
                 file=path,
             )
         )
+    return origin
+
+
+def _protocol_of(path: str, origin: Origin, given: Protocol | None) -> Protocol:
+    """The protocol given, else the one the log names or its traffic reads as."""
+    if given is not None:
+        return given
     try:
-        return create_protocol(named[0], named[1] or None)
+        return create_protocol(origin.protocol, origin.variant or None)
     except MotionError as exc:
         raise BadInput(
             Message("{file}: its connection note: {error}", file=path, error=exc)
@@ -91,22 +96,37 @@ def _check_decoded(
     )
 
 
-def decode_log(protocol: Protocol | None, args: list[str]) -> dict[str, Any]:
+def _warn(text: object) -> None:
+    log.warning("%s", text)
+
+
+def decode_log(
+    protocol: Protocol | None, args: list[str], notice: Callable[[object], None] | None = None
+) -> dict[str, Any]:
     """The log's frames decoded (those the filter matches, in their line form): by `protocol`
-    until a connection note names another, by the notes' protocol where None is given.
-    NothingDecoded where none of its traffic is a frame of the protocol."""
+    until a connection note names another, by the notes' protocol where None is given, by the
+    one its traffic reads as where it names none (`notice` says which). A simulator's record
+    is decoded as the host's side. NothingDecoded where none of its traffic is a frame of the
+    protocol."""
     path, pattern = _parse(args)
-    log_format, records = read_any_log(path)
-    named = _named(records)
-    chosen = protocol if protocol is not None else _protocol_of(path, records)
+    log_format, read = read_any_log(path)
+    origin = _origin(path, read, protocol)
+    if origin.how == "recognised":  # said on stderr, as motionctl's warnings are
+        (notice or _warn)(origin.describe(path))
+    records = list(host_view(read))
+    chosen = _protocol_of(path, origin, protocol)
     frames = decode_records(chosen, records)
     traffic = sum(1 for record in records if record.data)
-    _check_decoded(path, chosen, frames, named[0] if named is not None else "", traffic)
+    named = origin.protocol if origin.how == "named" else ""
+    _check_decoded(path, chosen, frames, named, traffic)
     lines = [(frame, frame.line()) for frame in frames]
     if pattern is not None:
         lines = [(frame, text) for frame, text in lines if pattern.search(text)]
     return {
         "format": log_format,
+        "protocol": origin.shown() if protocol is None else chosen.name,
+        "chosen_by": origin.how,
+        "device_side": origin.device_side,
         "frames": [frame.as_dict() for frame, _ in lines],
         "text": [text for _, text in lines],
     }

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import logging
+import os
 import sys
 from collections.abc import Sequence
 from contextlib import ExitStack
@@ -13,6 +14,7 @@ from app.cli.arguments import build_parser, check_needs, join_travel, parse_comm
 from app.cli.command_help import command_help, wants_help
 from app.cli.command_line import UsageError, check_arity, run_command, validate_offline
 from app.cli.count import CliCount
+from app.cli.devices import check_stepper
 from app.cli.interrupt import MoveTracker, after_interrupt
 from app.cli.log import decode_log
 from app.cli.macro import every_macro, find_macro, macro_offline, run_macro
@@ -41,6 +43,7 @@ EXIT_DEVICE_ERROR = 1
 EXIT_BAD_INPUT = 2
 EXIT_NO_DEVICE = 3
 EXIT_INTERRUPTED = 130  # Ctrl-C, as shells report it
+EXIT_BROKEN_PIPE = 141  # the reader of the output went away (128 + SIGPIPE, as shells report)
 
 
 __all__ = ["EXIT_BAD_INPUT", "EXIT_NO_DEVICE", "build_parser", "main"]
@@ -95,7 +98,33 @@ def _any_protocol(options: argparse.Namespace, report: Reporter) -> int:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Entry point of motionctl; returns the exit status."""
+    """Entry point of motionctl; returns the exit status (141 when whoever read its output
+    went away, as `motionctl log decode F | head` does: quietly, as Unix tools do)."""
+    try:
+        status = _main(argv)
+        sys.stdout.flush()  # a reader gone shows here, not at the interpreter's exit
+        return status
+    except BrokenPipeError:
+        _quiet_closed_streams()
+        return EXIT_BROKEN_PIPE
+
+
+def _quiet_closed_streams() -> None:
+    """Point stdout and stderr at /dev/null where their reader has gone, so that what is left in
+    their buffers is not flushed into another BrokenPipeError at exit."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except OSError:
+            try:
+                devnull = os.open(os.devnull, os.O_WRONLY)
+                os.dup2(devnull, stream.fileno())
+                os.close(devnull)
+            except (OSError, ValueError):  # no file descriptor (a test's captured stream)
+                log.debug("cannot quiet %s", stream)
+
+
+def _main(argv: Sequence[str] | None) -> int:
     arguments = join_travel(list(sys.argv[1:] if argv is None else argv))
     if arguments[:1] == ["bridge"]:  # `motionctl bridge --port DEVICE --protocol P ...`
         from app.cli.bridge import main as bridge_main
@@ -157,6 +186,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     speed = SavedSpeed(settings, protocol, options.port)  # pi-frame, Firmata, laser: moves' speed
     try:
         count.check(options.command, macro.steps if macro is not None else ())
+        check_stepper(protocol, options.port, options.command, macro.steps if macro else ())
     except BadInput as exc:
         return report.fail(exc, EXIT_BAD_INPUT)
 

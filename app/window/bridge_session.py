@@ -44,6 +44,7 @@ class BridgeSession(QObject):
     ) -> None:
         super().__init__(parent)
         self._queue: deque[Traffic] = deque()
+        self._protocol = protocol  # named in the log's bridge note
         self._log = None
         if log_path is not None:
             self._log = TrafficLogWriter(log_path.open("a", encoding="utf-8"), log_start)
@@ -61,7 +62,8 @@ class BridgeSession(QObject):
         """Open the device and the pty, start forwarding; the pty's path (PortError if not)."""
         self.bridge.open()
         if self._log is not None:
-            self._log.note(f"bridge {self.bridge.device} <-> {self.bridge.path}")
+            named = f" ({self._protocol.name})" if self._protocol is not None else ""
+            self._log.note(f"bridge {self.bridge.device} <-> {self.bridge.path}{named}")
         self._thread = threading.Thread(target=self._serve, name="bridge", daemon=True)
         self._thread.start()
         self._timer.start()

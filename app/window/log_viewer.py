@@ -1,5 +1,8 @@
 """File → Open log: a traffic log (ours or a pyserial spy:// capture) browsed decoded, offline.
 
+Decoded by the protocol chosen, else by the one the log's note names, else by the one its
+traffic reads as (drivers/log_origin.py); a simulator's record is shown as the host saw it.
+
 The file is read and decoded in a background thread (no Qt there); the window gets the finished
 index through a queued signal and shows it in a console with every filter, and a timeline. A log
 may be hundreds of MiB: it is read a chunk at a time and its records go straight to the index
@@ -10,7 +13,7 @@ from __future__ import annotations
 
 import logging
 import threading
-from itertools import islice
+from itertools import chain, islice
 from pathlib import Path
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, Qt, Signal, Slot
@@ -28,11 +31,11 @@ from PySide6.QtWidgets import (
 )
 
 from app.common.messages import localized
-from app.window.screen_fit import fit_new_window
 from app.window.traffic_console import RawConsole, localized_index
 from app.window.traffic_feed import TimelineFeed
 from drivers.decoding import PartProtocols, connection_protocol
 from drivers.errors import MotionError
+from drivers.log_origin import DEVICE_SIDE, host_view, origin_of
 from drivers.log_reader import LogRecord, open_any_log
 from drivers.registry import create_protocol, protocol_names
 from drivers.traffic_index import TrafficIndex
@@ -127,7 +130,7 @@ class LogViewer(QMainWindow):
         self.setCentralWidget(body)
         self.ask_path = lambda: ask_open_path(self)
         self._loaded.connect(self._on_loaded)
-        fit_new_window(self, 1200, 800)  # or what the screen has room for
+        self.resize(1200, 800)
 
     def open_interactively(self) -> None:
         """Ask for a file and open it."""
@@ -153,12 +156,16 @@ class LogViewer(QMainWindow):
         """In the reader thread: the records, the protocol, the decoded index (no Qt here)."""
         index: TrafficIndex | None = None
         try:
-            kind, records = open_any_log(path)
+            kind, read = open_any_log(path)
+            batch = list(islice(read, LOOKAHEAD))
+            given = create_protocol(chosen) if chosen not in (None, RAW) else None
+            origin = origin_of(batch, given) if chosen != RAW else None
+            name, variant = (chosen, "") if chosen is not None else (self._default_protocol, "")
+            if chosen is None and origin is not None:  # named by its note, or its traffic's
+                name, variant = origin.protocol, origin.variant
+            flipped = any(r.note and DEVICE_SIDE in r.note for r in batch)  # a simulator's
+            records = host_view(chain(batch, read))
             batch = list(islice(records, LOOKAHEAD))
-            found = detect_protocol(batch)
-            name, variant = (
-                (chosen, "") if chosen is not None else (found or (self._default_protocol, ""))
-            )
             protocol = create_protocol(name, variant or None) if name and name != RAW else None
             index = localized_index(protocol)
             parts = PartProtocols(protocol)
@@ -178,7 +185,8 @@ class LogViewer(QMainWindow):
             self._loaded.emit(localized(exc))
             return
         used = ", ".join(f"{n} {v}".strip() for n, v in parts.used)
-        self._loaded.emit((path, kind, name or RAW, used, index))
+        how = origin.how if origin is not None and chosen is None else ""
+        self._loaded.emit((path, kind, name or RAW, used, index, how, flipped))
 
     @Slot(object)
     def _on_loaded(self, result: object) -> None:
@@ -186,15 +194,21 @@ class LogViewer(QMainWindow):
         if isinstance(result, str):
             self._show(result, error=True)
             return
-        path, kind, name, used, index = result
+        path, kind, name, used, index, how, flipped = result
         found = self.protocol_combo.findData(name or RAW)
         if found >= 0:
             self.protocol_combo.setCurrentIndex(found)
         self.console.load(index)
         self.setWindowTitle(fill(self.tr("%1 — traffic log"), path.name))
         shown = used or self.tr(RAW)
-        text = self.tr("%1 (%2): %3 lines, decoded as %4")
-        self._show(fill(text, path, kind, f"{len(index):,}", shown), error=False)
+        text = fill(
+            self.tr("%1 (%2): %3 lines, decoded as %4"), path, kind, f"{len(index):,}", shown
+        )
+        if how == "recognised":
+            text += self.tr(", recognised from its traffic (the log names no protocol)")
+        if flipped:
+            text += self.tr("; a simulator's record: TX and RX shown as the host saw them")
+        self._show(text, error=False)
 
     def _protocol_chosen(self) -> None:
         if self.path is not None:
