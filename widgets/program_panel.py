@@ -62,6 +62,7 @@ class ProgramPanel(QWidget):
         self._stopping = False  # Stop was pressed: the program ends now
         self._figures: tuple[int, int, int, float, float | None, int] | None = None
         self._blocked = ""  # why no program may start now ("": it may)
+        self._offline = ""  # why there is no device to run it on ("": connected)
         self._refused = ""  # why this program cannot run ("": it can)
         self._loading = False
         self._saveable = False
@@ -227,10 +228,14 @@ class ProgramPanel(QWidget):
         self.file_label.setText(fill(self.tr("reading %1…"), name))
         self._show_run()
 
-    def set_program(self, name: str, points: int, kind: str = "point") -> None:
+    def set_program(
+        self, name: str, points: int, kind: str = "point", instructions: int | None = None
+    ) -> None:
         """Show the loaded program (an empty name: none) and its count of `kind` ("point",
-        "line", "entity", "element": what its sources are)."""
+        "line", "entity", "element": what its sources are); the progress counts
+        `instructions` (what a run will count; default `points`). The last run's figures go."""
         self._loading = False
+        self.clear_figures()
         self._loaded = bool(name)
         if name:
             counts = {
@@ -245,7 +250,7 @@ class ProgramPanel(QWidget):
             self.set_lines([])
             self.summary.clear()
             self.set_notices([])
-        self.progress.setRange(0, max(points, 1))
+        self.progress.setRange(0, max(points if instructions is None else instructions, 1))
         self.progress.setValue(0)
         self.progress.setFormat(self.tr("%v / %m executed") if name else self.tr("no program"))
         self._show_run()
@@ -380,6 +385,19 @@ class ProgramPanel(QWidget):
         if not running:
             self.set_paused(False)
 
+    def set_connected(self, connected: bool) -> None:
+        """Whether a device is connected to run a program on: Run off without one, saying so."""
+        self._offline = "" if connected else self.tr("not connected to a device")
+        self._show_run()
+
+    def clear_figures(self) -> None:
+        """The last run's counts and time go (another program, another device); the progress
+        bar back to 0. An error shown stays."""
+        self.progress.setValue(0)
+        if self._figures is not None:
+            self._figures = None
+            self.figures.clear()
+
     def set_allowed(self, allowed: bool, reason: str = "") -> None:
         """Whether a program may start now (not while a macro or a parameter write runs), and
         why not: said in Run's tooltip."""
@@ -393,12 +411,14 @@ class ProgramPanel(QWidget):
             and not self._running
             and not self._blocked
             and not self._refused
+            and not self._offline
         )
         tip = self._run_tip
         if self._refused:
             tip = fill(self.tr("%1\nRefused: %2"), tip, self._refused)
-        if self._blocked:
-            tip = fill(self.tr("%1\nNot now: %2"), tip, self._blocked)
+        for reason in (self._offline, self._blocked):
+            if reason:
+                tip = fill(self.tr("%1\nNot now: %2"), tip, reason)
         self.run_button.setToolTip(tip)
 
     def set_paused(self, paused: bool) -> None:

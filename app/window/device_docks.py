@@ -127,7 +127,7 @@ class DeviceDocks(QObject):
             self.piframe.set_ticks_per_mm(values["ticks_per_mm"])
         self.programs.set_speed(info.capabilities.default_speed)  # until the device tells
         self.adapt(info.capabilities)
-        self.programs.set_axes(info.capabilities.axes)  # checks the program loaded again
+        self.programs.set_device(info.capabilities)  # checks the program loaded again
         travel = self.services.travel
         self.travel.set_device(
             fill(self.tr("%1 on %2"), info.protocol, info.port),
@@ -167,6 +167,7 @@ class DeviceDocks(QObject):
     def disconnected(self) -> None:
         """No device: the arc preview goes away."""
         self.info = None
+        self.programs.set_device(None)  # Run off, saying why
         self._preview([])
         self.travel.set_device("", None, False)
 

@@ -18,18 +18,22 @@ from app.window import jobs
 from drivers.errors import BadInput
 from drivers.program import ProgramPoint, write_program
 from drivers.streaming import StreamProgress
-from drivers.toolpath.model import Line, Toolpath
+from drivers.toolpath.model import Dwell, Line, Toolpath
 from widgets._i18n import fill
 from widgets.program_panel import ProgramPanel
 
 if TYPE_CHECKING:
     from app.window.services import WindowServices
+    from drivers.capabilities import Capabilities
     from drivers.toolpath.geometry import FlatPath, Summary
     from drivers.travel import TravelLimits
 
 log = logging.getLogger(__name__)
 
 PROGRESS_MS = 100  # the dock shows a running program's progress at most this often
+# Of the instructions executed: the time left is the program's own estimate up to the first
+# share, the rate measured from the second, a mix of the two between.
+TRUST_RATE = (0.1, 0.5)
 POINT_SUFFIXES = (".csv", ".json")  # programs of points: saved as the panel's JSON
 REREAD_SUFFIXES = (".dxf", ".svg")  # their curves are flattened on reading: read again
 
@@ -99,6 +103,7 @@ class ProgramDock(QObject):
         self._all_layers: tuple[str, ...] = ()  # the DXF file's layers
         self.speed = 10.0  # mm/s: the device's, for the time estimate
         self.axes: tuple[str, ...] = ("x", "y", "z")  # the device's, checked when read
+        self.arc_mode = False  # the device runs arcs as its own (one instruction each)
         self.running = False
         self._generation = 0  # of the last reading asked for: older ones are dropped
         self._reading = False
@@ -119,6 +124,7 @@ class ProgramDock(QObject):
         services.worker.job_finished.connect(self._on_job_finished)
         services.worker.job_failed.connect(self._on_job_failed)
         services.worker.stream_progress.connect(self._on_progress)
+        panel.set_connected(False)  # until a device is ready (set_device)
 
     @property
     def tolerance(self) -> float:
@@ -177,7 +183,7 @@ class ProgramDock(QObject):
         self.layers = reading.layers
         sources = toolpath.sources
         kind = sources[0].kind if sources else "point"
-        self.panel.set_program(name, len(sources), kind)
+        self.panel.set_program(name, len(sources), kind, self.instructions())
         self.panel.set_lines(sources)
         suffix = reading.path.suffix.lower()
         self._all_layers = toolpath.layers if suffix == ".dxf" else ()
@@ -264,6 +270,26 @@ class ProgramDock(QObject):
         if self.path is not None and self.toolpath is not None and not self.running:
             self._start(self.path, self.layers, self.toolpath)
 
+    def set_device(self, caps: Capabilities | None) -> None:
+        """A device is ready (its capabilities), or none is (None): Run follows, the last
+        run's figures go, and the program loaded is checked against the device again."""
+        self.panel.set_connected(caps is not None)
+        self.panel.clear_figures()
+        if caps is None:
+            return
+        self.arc_mode = caps.arcs and not caps.streaming  # as the toolpath runner's mode
+        self.set_axes(caps.axes)
+
+    def instructions(self) -> int:
+        """What a run of the program loaded counts (the runner's count): its segments and
+        dwells, or its steps where the device runs arcs itself; 0 with none."""
+        toolpath, flat = self.toolpath, self.flat
+        if toolpath is None or flat is None:
+            return 0
+        if self.arc_mode:
+            return len(toolpath.steps)
+        return len(flat.points) - 1 + sum(1 for s in toolpath.steps if type(s) is Dwell)
+
     def set_axes(self, axes: tuple[str, ...]) -> None:
         """The connected device's axes: a program moving another is refused when read."""
         self.axes = axes
@@ -344,13 +370,29 @@ class ProgramDock(QObject):
             state.acknowledged,
             state.executed,
             state.rate,
-            state.seconds_left(),
+            self._seconds_left(state),
             state.retransmissions,
             state.total,
         )
         self.panel.show_line(state.source)
         if self.flat is not None:
             self.services.show_program_done(state.row)
+
+    def _seconds_left(self, state: StreamProgress) -> float | None:
+        """The time left: at first the program's own estimate (its length at its speeds) for
+        what is left, then more and more the rate measured (the first instruction alone, the
+        move to the start and the device's set-up, said 125 s for a 9 s program)."""
+        measured = state.seconds_left()
+        summary, total = self.summary, max(state.total, 1)
+        if summary is None or summary.seconds <= 0:
+            return measured
+        done = min(max(state.executed / total, 0.0), 1.0)
+        planned = summary.seconds * (1.0 - done)
+        if measured is None:
+            return planned
+        start, full = TRUST_RATE
+        trust = min(max((done - start) / (full - start), 0.0), 1.0)
+        return trust * measured + (1.0 - trust) * planned
 
     def _ended(self) -> None:
         self.running = False
