@@ -35,6 +35,7 @@ CONFIRMED_TIP = QT_TRANSLATE_NOOP(
     "(a device that can report its position is asked again when idle).",
 )
 LIVE, ESTIMATED, STALE, LOST = "live", "estimated", "stale", "lost"
+LOST_MOVING = "lost-moving"  # the link went during a move: the estimate at that moment
 UNCOUNTED = "uncounted"  # a fresh connection to a device that cannot be asked: nothing counted
 _STATUS = {
     UNCOUNTED: (
@@ -60,6 +61,15 @@ _STATUS = {
         ),
         "color: #0d47a1; background: #e3f2fd; border: 1px solid #90caf9;",
         ("#1565c0", True),
+    ),
+    LOST_MOVING: (
+        QT_TRANSLATE_NOOP(
+            "PositionReadout",
+            "estimated when the link was lost, during a move: somewhere between its start and "
+            "its target; not connected",
+        ),
+        "color: #0d47a1; background: #eeeeee; border: 1px solid #90caf9;",
+        ("#5c7fa3", True),
     ),
     STALE: (
         QT_TRANSLATE_NOOP("PositionReadout", "last known position: not connected"),
@@ -267,10 +277,12 @@ class PositionReadout(QWidget):
         self.zero_requested.emit("".join(a for a in AXES if a in self._axes))
 
     def set_status(self, status: str) -> None:
-        """`"live"` (measured or commanded), `"estimated"` (moving) or `"stale"` (last known)."""
+        """`"live"` (measured or commanded), `"estimated"` (moving), `"stale"` (last known),
+        `"lost-moving"` (estimated when the link went mid-move), `"lost"` or `"uncounted"`."""
         if status not in _STATUS and status != LIVE:
             raise ValueError(
-                f"status must be live, estimated, stale, lost or uncounted, not {status!r}"
+                f"status must be live, estimated, stale, lost-moving, lost or uncounted, "
+                f"not {status!r}"
             )
         if status != self._status:
             self._status = status

@@ -52,6 +52,7 @@ class MachineState(QObject):
         self.trail_device: tuple[str, str, str] | None = None  # port, protocol, identity
         self.home_from: Point | None = None
         self.estimate: MoveEstimate | None = None  # built with the worker
+        self.undone_estimate: Point | None = None  # a failed move's estimate at its failure
         self.pause: ProgramPause | None = None  # built with the worker
         link.wirers.append(self._wire)
 
@@ -118,13 +119,17 @@ class MachineState(QObject):
         runs, and the position shown is stale."""
         if self.unconfirmed_move:
             self.undo_move()
+        at_loss, self.undone_estimate = self.undone_estimate, None
         self.window.buffer.break_trail()  # the next connection's positions: a new segment
         self.show_target(None)
         self.end_move()
         self.busy_job = None  # the worker dropped what was queued: nothing runs after this
         if self.pause is not None:
             self.pause.ended()
-        if self.last_position is not None:
+        if at_loss is not None:  # mid-move: the estimate then, marked, not the move's start
+            self.window.readout.set_position(*at_loss)
+            self.window.readout.set_status("lost-moving")
+        elif self.last_position is not None:
             self.window.readout.set_status("stale")
 
     def device_ready(self, info: DeviceInfo) -> None:
@@ -194,6 +199,7 @@ class MachineState(QObject):
     # -- the position ------------------------------------------------------------------------
     def _on_position(self, report: PositionReport) -> None:
         self.true_position = (report.x, report.y, report.z)
+        self.undone_estimate = None
         self.unconfirmed_move = False
         window = self.window
         window.buffer.keep_provisional()  # the estimate so far was the stage's way
@@ -246,6 +252,7 @@ class MachineState(QObject):
 
     def _on_move_started(self, move: MoveStart) -> None:
         self.moving = True
+        self.undone_estimate = None
         self.unconfirmed_move = True
         self.show_status()
         if move.duration > 0 and self.estimate is not None:
@@ -258,6 +265,7 @@ class MachineState(QObject):
         position reported again."""
         self.unconfirmed_move = False
         if self.estimate is not None:
+            self.undone_estimate = self.estimate.now()  # shown if the link went with it
             self.estimate.stop()
         self.window.buffer.drop_provisional()
         self.show_target(None)

@@ -33,6 +33,11 @@ class MoveEstimate(QObject):
         self._move = None
         self._timer.stop()
 
+    def now(self) -> tuple[float, float, float] | None:
+        """Where the move under way should be now (None: no move is being estimated)."""
+        move = self._move
+        return move.estimate(time.monotonic()) if move is not None else None
+
     def active(self) -> bool:
         """Whether a move is being estimated."""
         return self._move is not None
