@@ -27,34 +27,42 @@ def _where(sim: SimProcess) -> tuple[float, float, float]:
     return values[0], values[1], values[2]
 
 
+@pytest.fixture
+def devices(tmp_path: Path):
+    """The devices served on one link in turn (each killed at the end)."""
+    served: list[SimProcess] = []
+    yield served
+    for sim in served:
+        sim.kill()
+
+
 def test_the_estimate_at_the_loss_then_the_devices_answer(
-    qtbot, window: MainWindow, tmp_path: Path
+    qtbot, window: MainWindow, tmp_path: Path, devices: list[SimProcess]
 ) -> None:
     link = str(tmp_path / "stage")
-    sim = SimProcess("coxiris", "--speed", "5", "--link", link, control=True)
-    again: SimProcess | None = None
-    try:
-        with qtbot.waitSignal(window.settled, timeout=DEADLINE_MS):
-            window.connect_device(link, "coxiris", 115200)
-        window.coordinates.set_values(-40, 0, 0)  # 8 s at 5 mm/s
-        window.coordinates.go_button.click()
-        qtbot.waitUntil(lambda: window.readout.status() == "estimated", timeout=DEADLINE_MS)
-        qtbot.waitUntil(lambda: window.readout.position()[0] < -5.0, timeout=DEADLINE_MS)  # type: ignore[index]
-        sim.fault("vanish")
-        qtbot.waitUntil(lambda: window.connection_bar.state() == "error", timeout=DEADLINE_MS)
-        assert window.readout.status() == "lost-moving"
-        assert "estimated when the link was lost" in window.readout.status_label.text()
-        x = window.readout.position()[0]  # type: ignore[index]
-        assert -40.0 < x < -5.0, x  # between the start and the target, not the start
-        again = SimProcess("coxiris", "--instant", "--link", link, control=True)
-        qtbot.waitUntil(
-            lambda: window.connection_bar.state() == "connected" and window.jog_panel.isEnabled(),
-            timeout=DEADLINE_MS,
-        )
-        qtbot.waitUntil(lambda: window.readout.status() == "live", timeout=DEADLINE_MS)
-        assert window.readout.position() == pytest.approx(_where(again), abs=0.01)
-    finally:
-        window.disconnect_device()
-        sim.kill()
-        if again is not None:
-            again.kill()
+    devices.append(SimProcess("coxiris", "--speed", "5", "--link", link, control=True))
+    with qtbot.waitSignal(window.settled, timeout=DEADLINE_MS):
+        window.connect_device(link, "coxiris", 115200)
+    window.coordinates.set_values(-40, 0, 0)  # 8 s at 5 mm/s
+    window.coordinates.go_button.click()
+    qtbot.waitUntil(lambda: window.readout.status() == "estimated", timeout=DEADLINE_MS)
+    qtbot.waitUntil(lambda: _x(window) < -5.0, timeout=DEADLINE_MS)
+    devices[0].fault("vanish")
+    qtbot.waitUntil(lambda: window.connection_bar.state() == "error", timeout=DEADLINE_MS)
+    assert window.readout.status() == "lost-moving"
+    assert "estimated when the link was lost" in window.readout.status_label.text()
+    assert -40.0 < _x(window) < -5.0, _x(window)  # between the start and the target
+    again = SimProcess("coxiris", "--instant", "--link", link, control=True)
+    devices.append(again)
+    qtbot.waitUntil(
+        lambda: window.connection_bar.state() == "connected" and window.jog_panel.isEnabled(),
+        timeout=DEADLINE_MS,
+    )
+    qtbot.waitUntil(lambda: window.readout.status() == "live", timeout=DEADLINE_MS)
+    assert window.readout.position() == pytest.approx(_where(again), abs=0.01)
+    window.disconnect_device()
+
+
+def _x(window: MainWindow) -> float:
+    shown = window.readout.position()
+    return shown[0] if shown is not None else 0.0
