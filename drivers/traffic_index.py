@@ -148,6 +148,11 @@ class TrafficIndex:
         self.add_many([(time, direction, bytes(data), wall)])
         return len(self) - before
 
+    def typed(self, data: bytes, time: float) -> None:
+        """Bytes the operator typed, about to be sent at about `time` (the records' clock):
+        their frames are queries, never hidden as polling."""
+        self._pairing.typed(data, time)
+
     def add_note(self, text: str, time: float, wall: float | None = None) -> None:
         """Take an information line (connected, a command not sent, …)."""
         if wall is not None and self.wall_offset is None:

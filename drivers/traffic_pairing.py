@@ -20,7 +20,9 @@ from drivers.traffic_lines import KIND_CODE
 log = logging.getLogger(__name__)
 
 REPLY_WINDOW = 10.0  # s a request waits for its reply before it counts as unanswered
+TYPED_WINDOW = 5.0  # s bytes the operator typed may take to be sent
 ERROR = KIND_CODE["error"]
+_POLL, _QUERY = KIND_CODE["poll"], KIND_CODE["query"]
 _RECEIVED_KIND = {"error": ERROR, "text": KIND_CODE["debug"]}  # else the request's kind
 
 
@@ -95,6 +97,27 @@ class Pairing:
         self._last_kind = KIND_CODE["query"]  # of the last frame sent, for a reply unpaired
         self._sent_kinds: dict[bytes, tuple[int, bool]] = {}  # frame → kind code, expects reply
         self._scripts = Scripts()
+        self._typed: deque[tuple[float, bytearray]] = deque(maxlen=16)  # (when, bytes left)
+
+    def typed(self, data: bytes, time: float) -> None:
+        """Bytes the operator typed, about to be sent at about `time`: a frame of them is a
+        query, never hidden as the panel's own polling (a GET_POSITION typed is shown)."""
+        self._typed.append((time, bytearray(data)))
+
+    def _was_typed(self, raw: bytes, time: float) -> bool:
+        """Whether a frame sent at `time` is (part of) bytes the operator typed; taken off them."""
+        typed = self._typed
+        while typed and time - typed[0][0] > TYPED_WINDOW:
+            typed.popleft()
+        for entry in typed:
+            pending = entry[1]
+            at = pending.find(raw)
+            if at >= 0:
+                del pending[at : at + len(raw)]
+                if not pending:
+                    typed.remove(entry)
+                return True
+        return False
 
     def _sent_kind(self, data: bytes) -> tuple[int, bool]:
         """A sent frame's kind code and whether it expects a reply (kept in `_sent_kinds`)."""
@@ -112,6 +135,8 @@ class Pairing:
         data = frame.data
         known = self._sent_kinds.get(data)
         code, expects = known if known is not None else self._sent_kind(data)
+        if code == _POLL and self._typed and self._was_typed(frame.raw, time):
+            code = _QUERY  # typed by the operator: shown, and so is its reply
         self._last_kind = code
         waiting = self.waiting
         while waiting and time - waiting[0].time > REPLY_WINDOW:

@@ -48,3 +48,48 @@ def test_open_log_shows_the_session_log_decoded(qtbot, window: MainWindow) -> No
     viewer.console.set_filter(pattern="GET_ID")
     assert "TX  GET_ID\\n" in viewer.console.text()
     viewer.close()
+
+
+def _typed_lines(console) -> list[int]:
+    return [
+        n
+        for n in range(console.index.first, len(console.index))
+        if console.index.line(n).meaning == "GET_POSITION" and console.index.line(n).kind != "poll"
+    ]
+
+
+def test_a_get_position_typed_is_shown_though_polls_are_hidden(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    console = window.console
+    qtbot.waitUntil(lambda: console.index.counts["poll"] >= 2, timeout=10_000)
+    assert not console.poll_check.isChecked()  # the panel's own polling is hidden
+    console.send_line.edit.setText("GET_POSITION")
+    console.send()
+    qtbot.waitUntil(lambda: (console.flush(), _typed_lines(console))[1] != [], timeout=10_000)
+    typed = _typed_lines(console)[0]
+    shown = console.text()
+    assert "TX  GET_POSITION\\n" in shown  # the operator's line, with the poll filter on
+    line = console.index.line(typed)
+    qtbot.waitUntil(lambda: console.index.line(typed).pair > typed, timeout=10_000)
+    reply = console.index.line(console.index.line(typed).pair)
+    assert reply.kind == line.kind == "query" and "GET_POSITION" in reply.meaning
+    assert console.index.counts["poll"] >= 2  # the panel's polls stay polls
+
+
+def test_search_counts_what_the_filters_show_and_says_what_they_hide(
+    qtbot, window: MainWindow
+) -> None:
+    _connect(qtbot, window)
+    console = window.console
+    qtbot.waitUntil(lambda: console.index.counts["poll"] >= 3, timeout=10_000)
+    console.flush()
+    assert console.search("GET_POSITION") == 0  # every one is a hidden poll
+    status = console.status_text()
+    assert "0 matches" in status
+    assert "more hidden by the filters" in status
+    assert console.find_next() is None
+    console.show_poll(True)
+    console.flush()
+    found = console.search("GET_POSITION")
+    assert found >= 3 and "hidden by the filters" not in console.status_text()
+    assert console.find_next() is not None

@@ -163,6 +163,7 @@ class RawConsole(QWidget):
         self.navigator = TrafficNavigator(self, self.view, self._model, self.paused_label)
 
         self.send_line = SendLine()
+        self.send_line.send_requested.connect(self._typed)  # first: before it is sent
         self.send_line.send_requested.connect(self.send_requested)
         self.send_edit = self.send_line.edit
         self.send_mode_combo = self.send_line.mode_combo
@@ -380,9 +381,10 @@ class RawConsole(QWidget):
         self.status.refresh()
 
     def search(self, text: str) -> int:
-        """Highlight lines matching `text` (a regex); returns how many match."""
+        """Highlight lines matching `text` (a regex); returns how many shown lines match (the
+        status line says how many more the filters hide)."""
         self.filter_bar.set_search(text)
-        return len(self._model.matches)
+        return self._model.shown_matches()
 
     def find_next(self) -> int | None:
         """Go to the next shown line that matches the search; returns its line number."""
@@ -442,14 +444,18 @@ class RawConsole(QWidget):
     def _status_figures(self) -> StatusFigures:
         index, bar = self.index, self.filter_bar
         counts = index.counts
+        shown_matches = self._model.shown_matches() if bar.search is not None else 0
         return StatusFigures(
             kept=index.kept,
             shown=len(self._model.rows),
             older=index.first,
             poll_hidden=0 if "poll" in bar.kinds else counts["poll"],
             errors=counts["error"],
-            matches=None if bar.search is None else len(self._model.matches),
+            matches=None if bar.search is None else shown_matches,
             limit=self.max_lines,
+            matches_hidden=len(self._model.matches) - shown_matches
+            if bar.search is not None
+            else 0,
         )
 
     def status_text(self) -> str:
@@ -531,6 +537,10 @@ class RawConsole(QWidget):
             tell_window(self, said)  # seen even where the console is hidden
 
     # -- sending (the SendLine does the work) ----------------------------------------------
+
+    def _typed(self, data: bytes) -> None:
+        """What the operator typed is always shown: its frames are not the panel's polling."""
+        self.index.typed(bytes(data), time.monotonic())
 
     def send(self) -> None:
         """Send what is in the send line (what Enter and Send do)."""

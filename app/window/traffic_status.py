@@ -24,8 +24,9 @@ class StatusFigures(NamedTuple):
     older: int  # lines dropped by the line limit (the session log has them)
     poll_hidden: int  # poll lines hidden by the filters
     errors: int
-    matches: int | None  # lines the search matches (None: no search)
+    matches: int | None  # shown lines the search matches (None: no search)
     limit: int  # the console's line limit (0: none)
+    matches_hidden: int = 0  # lines the search matches that the filters hide
 
 
 class ConsoleStatus(QObject):
@@ -85,6 +86,9 @@ class ConsoleStatus(QObject):
                 else QCoreApplication.translate("RawConsole", "%1 matches")
             )
             parts.append(fill(matches, f"{figures.matches:,}"))
+            if figures.matches_hidden:  # found, but not in the view: Enter cannot go there
+                hidden = QCoreApplication.translate("RawConsole", "%1 more hidden by the filters")
+                parts.append(fill(hidden, f"{figures.matches_hidden:,}"))
         self.label.setText(" · ".join(parts))
         tip = parts
         if figures.limit:

@@ -243,6 +243,14 @@ class TrafficModel(QAbstractTableModel):
         if self._count:
             self.dataChanged.emit(self.index(0, 0), self.index(self._count - 1, REPLY - 1))
 
+    def shown_matches(self) -> int:
+        """How many of the search's hits are shown (the others are in lines the filters hide)."""
+        rows, matches = self.rows, self.matches
+        if not len(rows) or not len(matches):
+            return 0
+        at = np.minimum(np.searchsorted(rows, matches), len(rows) - 1)
+        return int(np.count_nonzero(rows[at] == matches))
+
     def add_matches(self, matches: np.ndarray) -> None:
         """Highlight these lines too (hits among new lines, after every line shown so far)."""
         if len(matches):
