@@ -1,9 +1,12 @@
-"""The position counted for a device that cannot be asked where it is (Visiomex, Firmata).
+"""The position kept for a device that cannot be asked where it is (Visiomex, Firmata,
+pi-frame).
 
 Visiomex and the Firmata stepper have no position feedback and move only by relative packets
 or step counts, so where the stage is comes from the moves counted since a Home or Set Home.
-The count is kept between runs (by the panel and motionctl alike); where none is kept, what
-needs it is refused, never reckoned from an assumed origin. A move packet is counted as the
+The pi-frame has no feedback either and its frames carry absolute targets, so a relative move
+is sent as a target reckoned from the position commanded last. Either is kept between runs
+(by the panel and motionctl alike); where none is kept, what needs it is refused, never
+reckoned from an assumed origin. A move packet is counted as the
 firmware reads it: on the seed firmware (@902bd4d, PROTOCOLS.md §2b "Move packet") the type
 letter is never read, so the digits are µm whether the packet says linear, rotational or steps.
 """
@@ -11,14 +14,17 @@ letter is never read, so the digits are µm whether the packet says linear, rota
 from __future__ import annotations
 
 from drivers.capabilities import Capabilities
+from drivers.commands import MoveTo
 from drivers.errors import BadInput
 from drivers.messages import Message
 from drivers.protocols.base import Point, Protocol
 
 COUNTED_PROTOCOLS = frozenset({"visiomex", "firmata"})
-# The commands that start from the counted position (a relative-only device sends the
-# distance from it); `home` too where the device has no home move of its own.
-_NEEDS_COUNT = frozenset({"move", "position", "run"})
+# The commands that start from the position kept whatever the device: a program (its first
+# move, its arcs), an arc (its start and Z); `move` too where the device moves only by relative
+# distances, `jog` where it moves only to absolute targets (pi-frame), `home` where it has
+# neither a home move nor absolute moves.
+_NEEDS_COUNT = frozenset({"position", "run", "arc"})
 # Packet variants whose move digits this firmware reads as µm whatever the type letter.
 _MICROMETRE_VARIANTS = frozenset({"seed", "prefixed"})
 _PACKET_LENGTH = 18
@@ -30,8 +36,15 @@ class NoCount(BadInput):
 
 
 def keeps_count(protocol: Protocol) -> bool:
-    """Whether the position of this protocol's devices is counted and kept between runs."""
-    return counts_position(protocol.name, protocol.capabilities)
+    """Whether the position of this protocol's devices is kept between runs (counted or
+    commanded: they cannot be asked)."""
+    return keeps_position(protocol.capabilities)
+
+
+def keeps_position(caps: Capabilities) -> bool:
+    """Whether a device's position is kept between runs: it cannot be asked where it is, so
+    it is counted (relative moves) or commanded (absolute targets) from a known place."""
+    return not caps.position_feedback
 
 
 def counts_position(protocol: str, caps: Capabilities) -> bool:
@@ -41,17 +54,47 @@ def counts_position(protocol: str, caps: Capabilities) -> bool:
 
 
 def needs_count(command: str, caps: Capabilities) -> bool:
-    """Whether `command` starts from the counted position (and is refused without one)."""
-    return command in _NEEDS_COUNT or (command == "home" and not caps.homing)
+    """Whether `command` starts from the position kept (and is refused without one)."""
+    return (
+        command in _NEEDS_COUNT
+        or (command == "move" and not caps.absolute_moves)
+        or (command == "jog" and not caps.relative_moves)
+        or (command == "home" and not caps.homing and not caps.absolute_moves)
+    )
 
 
 def starts_count(command: str, caps: Capabilities) -> bool:
-    """Whether `command` puts the stage at a known place: (0, 0, 0) once it has succeeded."""
-    return command == "set-home" or (command == "home" and caps.homing)
+    """Whether `command` puts the stage at a known place once it has succeeded: (0, 0, 0), or
+    the absolute target of a move."""
+    absolute = caps.absolute_moves
+    return (
+        command == "set-home"
+        or (command == "home" and (caps.homing or absolute))
+        or (command == "move" and absolute)
+    )
+
+
+def commanded(caps: Capabilities) -> bool:
+    """Whether the position kept is the one commanded last (absolute targets), not counted."""
+    return caps.absolute_moves and not caps.relative_moves
+
+
+def resume(protocol: Protocol, here: Point) -> None:
+    """The protocol goes on from the position kept (a pi-frame's per-axis speeds and move
+    times follow from the position commanded last); BadInput where it cannot be sent from."""
+    if commanded(protocol.capabilities):
+        protocol.encode(MoveTo(*here))  # on the device's grid, within its range
+        protocol.on_sent(MoveTo(*here))
 
 
 def _how_to_count(caps: Capabilities) -> str:
     """How a count is started on this device."""
+    if commanded(caps):
+        return Message(
+            "its frames carry absolute targets, so a relative move needs the position: Set Home "
+            "where the stage stands, Home, or move to an absolute point first (in the panel, or "
+            "motionctl set-home, home or move X Y Z)"
+        )
     if caps.homing:
         return Message(
             "Home or Set Home (in the panel, or motionctl home / set-home) to start counting"
@@ -64,24 +107,43 @@ def _how_to_count(caps: Capabilities) -> str:
 
 def no_count(command: str, protocol: Protocol) -> NoCount:
     """The refusal of a command that needs a count, where none is kept for the port."""
+    how = _how_to_count(protocol.capabilities)
+    if commanded(protocol.capabilities):
+        return NoCount(
+            Message(
+                "{command} refused: position unknown: {protocol} cannot be asked where it is "
+                "and no commanded position is kept for this port; {how}",
+                command=command,
+                protocol=protocol.name,
+                how=how,
+            )
+        )
     return NoCount(
         Message(
             "{command} refused: position unknown: {protocol} cannot be asked where it is and no "
             "position is counted for this port; {how}",
             command=command,
             protocol=protocol.name,
-            how=_how_to_count(protocol.capabilities),
+            how=how,
         )
     )
 
 
 def unknown_note(protocol: Protocol) -> str:
     """What is said after a move made without a count: where the stage is stays unknown."""
+    how = _how_to_count(protocol.capabilities)
+    if commanded(protocol.capabilities):
+        return Message(
+            "position unknown: {protocol} cannot be asked where it is and no commanded "
+            "position is kept for this port; {how}",
+            protocol=protocol.name,
+            how=how,
+        )
     return Message(
         "position unknown: {protocol} cannot be asked where it is and no position is counted "
         "for this port; {how}",
         protocol=protocol.name,
-        how=_how_to_count(protocol.capabilities),
+        how=how,
     )
 
 

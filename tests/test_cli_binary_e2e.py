@@ -236,6 +236,7 @@ def test_pi_dwell_and_set_home_frames(start_sim, tmp_path: Path) -> None:
 def test_pi_arc_moves_to_its_start_then_sends_the_circular_frame(start_sim, tmp_path: Path) -> None:
     sim, record = start_sim("pi-frame", "--instant")
     ccw_log, cw_log = tmp_path / "ccw.log", tmp_path / "cw.log"
+    assert pi(sim.path, "set-home").returncode == 0  # an arc starts from the position kept
     # Default 100 ticks/mm, 10 mm/s: 1000 ticks to the start at 1000 ticks/s, then 90° at
     # 10 mm/s on a 10 mm radius = 1 rad/s = 5729.6 -> 5730 hundredths of a degree per second.
     ccw = pi(sim.path, "arc", "0", "0", "10", "0", "90", "--ccw", log=ccw_log)
@@ -249,15 +250,17 @@ def test_pi_arc_moves_to_its_start_then_sends_the_circular_frame(start_sim, tmp_
     assert second.time - first.time >= 1.0 - STAMP  # the approach's estimated time first
     assert circle[15:17] == hexes("03 E8") and circle[23] == 0x01
 
-    # Clockwise (a 1 mm radius keeps it short: 100 ticks to the start, 270° at 572.96°/s).
+    # Clockwise (a 1 mm radius keeps it short: from (0, 10) kept by the run before, to the
+    # start at (1, 0) at 10 mm/s along the line, then 270° at 572.96°/s).
     cw = pi(sim.path, "arc", "0", "0", "1", "0", "90", "--cw", log=cw_log)
     assert cw.returncode == 0, cw.stderr
     assert cw.stdout.strip() == "0.00 1.00 0.00 (commanded, not measured)"
     angular = round(math.degrees(10 / 1) * 100)
-    cw_approach = pi_frame(1, 100, 0, 0, (1000, 0, 0))
+    cw_approach = pi_frame(1, 100, 0, 0, (100, 996, 0))  # 1000 ticks/s · (100, 1000) / 1005
     cw_circle = pi_frame(2, radius=100, angular=angular, start=0, end=9000, direction=0)
     assert [r.data for r in sent(cw_log)] == [cw_approach, cw_circle]
-    assert device_received(record) == approach + circle + cw_approach + cw_circle
+    home = pi_frame(3)
+    assert device_received(record) == home + approach + circle + cw_approach + cw_circle
 
 
 # -- 5. garbage on the line, then a frame --------------------------------------------------------

@@ -43,9 +43,10 @@ DEVICES = [
     # The documented firmware: at its power-on parameters the real one never moves Y.
     pytest.param(("visiomex",), id="visiomex"),
 ]
-# pi-frame's moves are waited for by estimate: the panel's speed for what has no feed rate (its
+# pi-frame: a program starts from the position kept (Set Home); its moves are waited for by
+# estimate: the panel's speed for what has no feed rate (its
 # Circular frames hold at most 655.35 °/s: 25 mm/s on the 2.5 mm bulge arc is 573 °/s).
-SETUP = {"visiomex": (("set-home",),), "pi-frame": (("speed", "25"),)}
+SETUP = {"visiomex": (("set-home",),), "pi-frame": (("set-home",), ("speed", "25"))}
 OPTIONS = {"visiomex": ("--tolerance", "1")}  # each of its moves is a packet and 1 s of silence
 UNITS = {"pi-frame": 100.0}  # ticks per mm (the default setting)
 # The Visiomex firmware truncates each relative move to whole motor steps (38.9 a mm at its

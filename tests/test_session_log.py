@@ -75,3 +75,25 @@ def test_a_killed_panel_leaves_its_log_complete(tmp_path: Path) -> None:
     assert len(sent) - len(_bytes(record, "RX")) <= len(b"GET_POSITION\n")
     assert _bytes(record, "TX").startswith(received)
     assert sent.count(b"GET_POSITION") >= 6
+
+
+def test_a_disconnect_and_a_quit_are_noted_as_such(qtbot, tmp_path: Path, monkeypatch) -> None:
+    from app.window.main_window import MainWindow  # (the window's tests only need Qt)
+    from drivers.log_reader import read_log
+
+    monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(tmp_path / "settings.ini"))
+    window = MainWindow()
+    qtbot.addWidget(window)
+    window.show()
+    with qtbot.waitSignal(window.settled, timeout=10_000):
+        window.connect_device("sim://coxiris?speed=100", "coxiris", 115200)
+    path = window.link.session_log_path
+    assert path is not None
+    window.disconnect_device()
+    qtbot.waitUntil(lambda: window.connection_bar.state() == "disconnected", timeout=10_000)
+    window.close()
+    assert not window.worker_thread.thread.isRunning()
+    notes = [r.note for r in read_log(path) if r.note]
+    assert "disconnected from sim://coxiris?speed=100" in notes
+    assert notes[-1] == "Motion Panel quit; the session log ends here"
+    assert not any("turned off" in note for note in notes)

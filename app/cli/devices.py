@@ -10,10 +10,12 @@ from typing import Any
 from app.cli.run_program import RUN_USAGE, run_program
 from drivers import commands as cmd
 from drivers.errors import BadInput
+from drivers.messages import Message
 from drivers.motion import Motion
 from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
 from drivers.protocols.firmata import (
+    FirmataProtocol,
     StepperConfig,
     StepperStep,
     StepperVersion,
@@ -37,8 +39,38 @@ DEVICE_COMMANDS = {
 }
 
 
+# The commands that step a Firmata board's motor (a macro's steps included).
+_STEPPING = frozenset({"move", "jog", "home", "step", "run"})
+
+
 class DeviceUsageError(BadInput):
     """A device command's arguments are wrong (exit 2, nothing sent)."""
+
+
+class NotConfigured(BadInput):
+    """A Firmata motor move where no stepper config is kept for the port (exit 2)."""
+
+
+def check_stepper(protocol: Protocol, port: str, command: str, steps: tuple[str, ...]) -> None:
+    """Refuse (NotConfigured) a command that steps a Firmata motor where no stepper config is
+    kept for the port: the board, reset as the port opens, answers each step 'not configured'.
+    A config kept (motionctl config, or the panel's Stepper setup) is sent at the start of
+    every run, as the panel sends it at each connection."""
+    if not isinstance(protocol, FirmataProtocol) or protocol.pins():
+        return
+    for name in (command, *(step.split(" ", 1)[0].lower() for step in steps)):
+        if name in _STEPPING:
+            raise NotConfigured(
+                Message(
+                    "{command} refused: the stepper is not configured for {port} (the board "
+                    "forgets it at each reset, and none is kept for this port); run "
+                    "motionctl --port {port} --protocol firmata config --steps-per-rev 200 "
+                    "--pins 8 9 with your motor's steps per revolution and pins (or Configure "
+                    "in the panel's Stepper setup): it is kept and sent again at each run",
+                    command=name,
+                    port=port,
+                )
+            )
 
 
 def _whole(text: str, what: str) -> int:

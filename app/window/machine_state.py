@@ -47,7 +47,8 @@ class MachineState(QObject):
         self.lost_status = "lost"  # or "uncounted": a fresh connection, nothing counted yet
         self.last_position: Point | None = None
         self.true_position: Point | None = None  # reported, not estimated
-        self.count_kept: Point | None = None  # (Visiomex, Firmata: keep_count)
+        self.count_kept: Point | None = None  # (Visiomex, Firmata, pi-frame: keep_count)
+        self.count_started = False  # a known place reached on this connection: kept from then
         self.unconfirmed_move = False  # a move started whose end no position has confirmed
         self.trail_device: tuple[str, str, str] | None = None  # port, protocol, identity
         self.home_from: Point | None = None
@@ -143,6 +144,7 @@ class MachineState(QObject):
         if another:
             self.window.buffer.clear(keep_last=True)  # another device: a trail of its own
         self.trail_device = device
+        self.count_kept, self.count_started = None, False  # until a known place is reached
         if self.link_failed and not another:  # the same device after a lost link or a restart
             self.position_lost = not info.capabilities.position_feedback
             self.lost_status = "lost"
@@ -230,14 +232,15 @@ class MachineState(QObject):
         self.keep_count()
 
     def keep_count(self) -> None:
-        """A device that cannot be asked where it is (Visiomex, Firmata): the count since
-        Home or Set Home is kept with the settings, for motionctl to go on from."""
-        from drivers.position_count import counts_position
+        """A device that cannot be asked where it is (Visiomex, Firmata, pi-frame): the position
+        counted, or commanded, since a known place (Home, Set Home, an absolute move on the
+        pi-frame) is kept with the settings, for motionctl to go on from."""
+        from drivers.position_count import keeps_position
 
         info, here = self.info, self.true_position
-        if info is None or not counts_position(info.protocol, info.capabilities) or here is None:
+        if info is None or not keeps_position(info.capabilities) or here is None:
             return
-        if info.capabilities.position_feedback or self.position_lost or here == self.count_kept:
+        if not self.count_started or self.position_lost or here == self.count_kept:
             return
         self.count_kept = here
         write_counted_position(self.window.settings, info.protocol, info.port, here)
@@ -360,6 +363,13 @@ class MachineState(QObject):
             self.position_lost = False  # the home move is confirmed: counting starts here
             readout.set_status("live")
             self._tell(translate("MainWindow", "home confirmed: the position is counted from here"))
+        known = (
+            jobs.SetHomeJob,
+            jobs.HomeJob,
+            *((jobs.MoveToJob,) if caps and caps.absolute_moves else ()),
+        )
+        if not self.position_lost and isinstance(job, known):
+            self.count_started = True  # the pi-frame's assumed origin at connection is not kept
         self.keep_count()  # Home, Set Home: counting starts
         if isinstance(job, jobs.SetSpeedJob) and isinstance(result, float) and result != job.speed:
             self._tell(

@@ -466,6 +466,7 @@ class SerialWorker(QObject):
         if self._link is None:
             return
         self._flush_traffic()
+        self._log_note(f"disconnected from {self._link.url}")  # the session log keeps English
         self._end_session()
         self.state_changed.emit("disconnected", "")
 
@@ -484,7 +485,10 @@ class SerialWorker(QObject):
             self._timer.stop()
         self.cancel_pending()
         self.close_port()
-        self.set_session_log(None)
+        ending, self._session_log = self._session_log, None
+        if ending is not None:  # a quit, not the log turned off in Settings
+            ending.note("Motion Panel quit; the session log ends here")
+            ending.stream.close()
         # Hand the worker (and its timer) back to the main thread, so that it can be deleted
         # there once this thread has ended.
         app = QCoreApplication.instance()
