@@ -110,3 +110,23 @@ def test_detect_protocol_reads_the_connection_note() -> None:
         "",
     )
     assert detect_protocol([LogRecord(0.0, "", b"", "connected to x (nothing, 1 baud)")]) is None
+
+
+def test_a_simulator_s_record_opens_as_the_host_saw_it(qtbot, viewer, tmp_path):
+    from drivers.log_origin import device_side_note
+    from drivers.protocols.firmata import FirmataProtocol
+
+    record = tmp_path / "device.log"  # as motionsim --record writes it: the board speaks first
+    with record.open("w", encoding="utf-8") as stream:
+        writer = TrafficLogWriter(stream, start=0.0)
+        writer.note(device_side_note("/dev/pts/9", FirmataProtocol(), 57600))
+        writer(Traffic("tx", b"\xf9\x02\x05", 0.1))  # the device's version report
+        writer(Traffic("rx", b"\xf0\x79\xf7", 0.2))  # what it read: the host's request
+    _open(qtbot, viewer, record)
+    assert viewer.protocol_combo.currentText() == "firmata"
+    assert "a simulator's record" in viewer.status_text()
+    lines = [viewer.console.index.line(n) for n in range(len(viewer.console.index))]
+    sent = [line for line in lines if line.direction == "tx"]
+    assert [line.data for line in sent] == [b"\xf0\x79\xf7"] and "firmware" in sent[0].meaning
+    received = [line for line in lines if line.direction == "rx"]
+    assert [line.data for line in received] == [b"\xf9\x02\x05"]
