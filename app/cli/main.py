@@ -15,7 +15,6 @@ from app.cli.command_help import command_help, wants_help
 from app.cli.command_line import UsageError, check_arity, run_command, validate_offline
 from app.cli.count import CliCount
 from app.cli.devices import check_stepper
-from app.cli.devices import check_stepper
 from app.cli.interrupt import MoveTracker, after_interrupt
 from app.cli.log import decode_log
 from app.cli.macro import every_macro, find_macro, macro_offline, run_macro
@@ -187,7 +186,6 @@ def _main(argv: Sequence[str] | None) -> int:
     speed = SavedSpeed(settings, protocol, options.port)  # pi-frame, Firmata, laser: moves' speed
     try:
         count.check(options.command, macro.steps if macro is not None else ())
-        check_stepper(protocol, options.port, options.command, macro.steps if macro else ())
         check_stepper(protocol, options.port, options.command, macro.steps if macro else ())
     except BadInput as exc:
         return report.fail(exc, EXIT_BAD_INPUT)
