@@ -10,11 +10,13 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QObject, QTimer, Signal
-from PySide6.QtWidgets import QDockWidget
+import shiboken6
+from PySide6.QtCore import QObject, Qt, QTimer, Signal
+from PySide6.QtWidgets import QApplication, QDockWidget, QWidget
 
 from app.common.messages import localized
 from app.window import jobs
+from app.window.keyboard_jog import arrow_key_user
 from drivers.errors import BadInput
 from drivers.program import ProgramPoint, write_program
 from drivers.streaming import StreamProgress
@@ -105,6 +107,7 @@ class ProgramDock(QObject):
         self.axes: tuple[str, ...] = ("x", "y", "z")  # the device's, checked when read
         self.arc_mode = False  # the device runs arcs as its own (one instruction each)
         self.running = False
+        self._focus_before: QWidget | None = None  # where the keys were when the run began
         self._generation = 0  # of the last reading asked for: older ones are dropped
         self._reading = False
         self._pending: StreamProgress | None = None
@@ -337,6 +340,7 @@ class ProgramDock(QObject):
             return
         name = self.path.name if self.path is not None else self.toolpath.name
         job = jobs.StreamJob(self.toolpath, self.tolerance, name)
+        self._focus_before = QApplication.focusWidget()
         if self.services.submit_job(job):
             self.running = True
             self._pending = None
@@ -399,6 +403,26 @@ class ProgramDock(QObject):
         self._progress_timer.stop()
         self._pending = None
         self.panel.set_running(False)
+        self._give_the_keys_back()
+
+    def _give_the_keys_back(self) -> None:
+        """The keys where they were when the run began: Run, Stop and the motion controls went
+        off under the focus meanwhile, and Qt moved it on, to the dock's tab bar, whose arrow
+        keys switch tabs instead of jogging."""
+        before, self._focus_before = self._focus_before, None
+        now = QApplication.focusWidget()
+        if now is None or now is before or not arrow_key_user(now):
+            return  # the keys jog (or the operator chose where they go since)
+        if before is not None and self._takes_the_keys_back(before):
+            before.setFocus(Qt.FocusReason.OtherFocusReason)
+            return
+        now.clearFocus()  # no widget takes the arrow keys: they jog
+
+    @staticmethod
+    def _takes_the_keys_back(widget: QWidget) -> bool:
+        """Whether `widget` still exists, can have the focus and leaves the arrows to jog."""
+        alive = shiboken6.isValid(widget) and widget.isEnabled() and widget.isVisible()
+        return alive and not arrow_key_user(widget)
 
     def _on_job_failed(self, job: jobs.Job, message: str) -> None:
         if isinstance(job, jobs.StreamJob):
