@@ -4,7 +4,7 @@ more is sent, how many moves the device still holds and when it will stand still
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Protocol
 
 from PySide6.QtCore import QCoreApplication, QObject
 
@@ -12,18 +12,28 @@ from widgets import status_line as status
 from widgets._i18n import fill
 
 if TYPE_CHECKING:
-    from app.window.machine_state import MachineState
     from app.window.worker import SerialWorker
     from drivers.streaming import StreamProgress
 
 translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
 
 
+class PausedMachine(Protocol):
+    """What the pause needs of the machine state (app/window/machine_state.py, which builds
+    it: named here by shape, so the two modules do not import each other)."""
+
+    info: Any
+    busy_job: Any
+    window: Any
+
+    def show_status(self, connection: str = "", detail: str = "") -> None: ...
+
+
 class ProgramPause(QObject):
     """Follows Pause and Resume and the program's progress; tells the operator what goes on."""
 
-    def __init__(self, machine: MachineState) -> None:
-        super().__init__(machine)
+    def __init__(self, machine: PausedMachine) -> None:
+        super().__init__(machine)  # (a QObject: the machine state)
         self.machine = machine
         self.paused = False
         self._said_held = False  # the device's queue at the pause, said once
