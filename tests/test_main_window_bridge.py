@@ -4,14 +4,14 @@ frame shown decoded, motion controls off, the session log keeping every byte."""
 from __future__ import annotations
 
 import subprocess
-import sys
 
 import pytest
 from PySide6.QtCore import Qt
 
 from app.window.main_window import MainWindow
 from drivers.log_reader import read_log
-from tests.simproc import ROOT, SimProcess
+from tests.motionctl_run import run_motionctl
+from tests.simproc import SimProcess
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -25,16 +25,7 @@ def sim():
 
 def _motionctl(qtbot, port: str, *args: str) -> subprocess.CompletedProcess[str]:
     """Run the other program while the window's event loop keeps going."""
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "app.cli", "--port", port, "--protocol", "coxiris", *args],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        cwd=ROOT,
-    )
-    qtbot.waitUntil(lambda: proc.poll() is not None, timeout=30_000)
-    out, err = proc.communicate()
-    return subprocess.CompletedProcess(proc.args, proc.returncode, out, err)
+    return run_motionctl(qtbot, "--port", port, "--protocol", "coxiris", *args)
 
 
 def test_a_program_drives_the_device_through_the_bridge(qtbot, window: MainWindow, sim) -> None:

@@ -37,6 +37,11 @@ CONFIRMED_TIP = QT_TRANSLATE_NOOP(
 LIVE, ESTIMATED, STALE, LOST = "live", "estimated", "stale", "lost"
 LOST_MOVING = "lost-moving"  # the link went during a move: the estimate at that moment
 UNCOUNTED = "uncounted"  # a fresh connection to a device that cannot be asked: nothing counted
+# Bridging: the panel asks nothing; what another program's traffic with the device told.
+BRIDGED = "bridged"  # nothing told yet
+OBSERVED = "observed"  # the device's reply to the other program reported it
+OBSERVED_TARGET = "observed-target"  # the target of a move the other program sent
+_OBSERVED_STYLE = "color: #1b5e20; background: #e8f5e9; border: 1px solid #a5d6a7;"
 _STATUS = {
     UNCOUNTED: (
         QT_TRANSLATE_NOOP(
@@ -70,6 +75,32 @@ _STATUS = {
         ),
         "color: #0d47a1; background: #eeeeee; border: 1px solid #90caf9;",
         ("#5c7fa3", True),
+    ),
+    BRIDGED: (
+        QT_TRANSLATE_NOOP(
+            "PositionReadout",
+            "bridging: no position seen in the bridged traffic yet (the panel asks nothing)",
+        ),
+        _OBSERVED_STYLE,
+        ("#9e9e9e", False),
+    ),
+    OBSERVED: (
+        QT_TRANSLATE_NOOP(
+            "PositionReadout",
+            "observed in the bridged traffic: the device reported this position to the other "
+            "program",
+        ),
+        _OBSERVED_STYLE,
+        ("#2e7d32", False),
+    ),
+    OBSERVED_TARGET: (
+        QT_TRANSLATE_NOOP(
+            "PositionReadout",
+            "observed in the bridged traffic: the target of a move the other program sent, "
+            "not confirmed by the device",
+        ),
+        _OBSERVED_STYLE,
+        ("#2e7d32", True),
     ),
     STALE: (
         QT_TRANSLATE_NOOP("PositionReadout", "last known position: not connected"),
@@ -278,18 +309,19 @@ class PositionReadout(QWidget):
 
     def set_status(self, status: str) -> None:
         """`"live"` (measured or commanded), `"estimated"` (moving), `"stale"` (last known),
-        `"lost-moving"` (estimated when the link went mid-move), `"lost"` or `"uncounted"`."""
+        `"lost-moving"` (estimated when the link went mid-move), `"lost"`, `"uncounted"`, or
+        while bridging `"bridged"` (nothing seen yet), `"observed"` (a reply reported it) or
+        `"observed-target"` (a move sent)."""
         if status not in _STATUS and status != LIVE:
             raise ValueError(
-                f"status must be live, estimated, stale, lost-moving, lost or uncounted, "
-                f"not {status!r}"
+                f"status must be {LIVE} or one of {', '.join(_STATUS)}, not {status!r}"
             )
         if status != self._status:
             self._status = status
             self._render_status()
 
     def status(self) -> str:
-        """The status shown: live, estimated, stale or lost."""
+        """The status shown (see `set_status`)."""
         return self._status
 
     def set_position(self, x: float, y: float, z: float) -> None:
@@ -346,7 +378,9 @@ class PositionReadout(QWidget):
         return self._measured
 
     def _show_measured(self) -> None:
-        self.measured_label.setVisible(not self._measured and self._status != ESTIMATED)
+        # Not beside an estimate, which says more, nor while bridging: the panel measures nothing.
+        quiet = self._status in (ESTIMATED, BRIDGED, OBSERVED, OBSERVED_TARGET)
+        self.measured_label.setVisible(not self._measured and not quiet)
         self._keep_badge_height()
 
     def _keep_badge_height(self) -> None:

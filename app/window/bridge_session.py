@@ -1,8 +1,10 @@
 """The window's bridge mode: a Bridge in a thread of its own, its traffic handed to the GUI.
 
 The tap runs in the bridge's thread: it writes the session log (before the bytes go on) and
-queues the record; a timer in the GUI thread takes the queue to the console. The end of the
-bridge (stopped, or the device gone) reaches the GUI as a queued signal.
+queues the record; a timer in the GUI thread takes the queue to the console, and reads it with
+the protocol's decoders for the positions it tells (`observed`: a reply that reports the
+position, the target of a move the other program sent). The end of the bridge (stopped, or the
+device gone) reaches the GUI as a queued signal.
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from PySide6.QtCore import QObject, QTimer, Signal, Slot
 
 from app.common.messages import localized
 from drivers.bridge import Bridge
+from drivers.bridge_watch import BridgeWatch
 from drivers.errors import MotionError
 from drivers.protocols.base import Protocol
 from drivers.traffic import Traffic, TrafficLogWriter
@@ -30,6 +33,7 @@ class BridgeSession(QObject):
     """One bridge between a device's port and a pty, for the life of the bridge mode."""
 
     traffic = Signal(object)  # list[Traffic], in the GUI thread
+    observed = Signal(object)  # drivers.bridge_watch.Observed, the last a drain found
     ended = Signal(str)  # "" when stopped, else what went wrong
 
     def __init__(
@@ -45,6 +49,7 @@ class BridgeSession(QObject):
         super().__init__(parent)
         self._queue: deque[Traffic] = deque()
         self._protocol = protocol  # named in the log's bridge note
+        self.watch = BridgeWatch(protocol) if protocol is not None else None
         self._log = None
         if log_path is not None:
             self._log = TrafficLogWriter(log_path.open("a", encoding="utf-8"), log_start)
@@ -98,6 +103,24 @@ class BridgeSession(QObject):
             records.append(self._queue.popleft())
         if records:
             self.traffic.emit(records)
+            self._observe(records)
+
+    def _observe(self, records: list[Traffic]) -> None:
+        """The last position the records tell, to `observed` (GUI thread)."""
+        watch, last = self.watch, None
+        if watch is None:
+            return
+        for record in records:
+            try:
+                seen = watch.feed(record)
+            except Exception:  # what the traffic says must never stop the bridge's display
+                log.exception("reading the bridged traffic for positions failed")
+                self.watch = None
+                return
+            if seen:
+                last = seen[-1]
+        if last is not None:
+            self.observed.emit(last)
 
     def stop(self) -> None:
         """Stop forwarding; the bridge's thread closes the ports, then `ended("")` comes."""

@@ -201,6 +201,7 @@ class Connection(QObject):
         except (LookupError, BadInput):
             speaks = None
         console.set_protocol(speaks)
+        from app.window.bridge_readout import BridgeReadout
         from app.window.bridge_session import BridgeSession
 
         session = BridgeSession(
@@ -221,6 +222,7 @@ class Connection(QObject):
             return None
         self.bridge = session
         session.traffic.connect(self._on_traffic)
+        BridgeReadout(self.machine, session)  # the readout follows the traffic, marked observed
         session.ended.connect(self._on_bridge_ended)
         bar.set_state("connected", fill(translate("MainWindow", "bridge: %1"), path))
         self.desk.set_controls_enabled(False)

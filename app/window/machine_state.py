@@ -55,6 +55,7 @@ class MachineState(QObject):
         self.estimate: MoveEstimate | None = None  # built with the worker
         self.undone_estimate: Point | None = None  # a failed move's estimate at its failure
         self.pause: ProgramPause | None = None  # built with the worker
+        self.bridging = False  # bridge mode: the readout follows the traffic (BridgeReadout)
         link.wirers.append(self._wire)
 
     def _wire(self, w: SerialWorker) -> None:
@@ -83,6 +84,8 @@ class MachineState(QObject):
     def show_status(self, connection: str = "", detail: str = "") -> None:
         """The status line: the connection's state, or moving, busy, failed or idle."""
         line = self.window.status_line
+        if not self.connected and self.bridging:
+            return  # the bridge's own state stands (set when it began)
         if not self.connected:
             name = connection or self.window.connection_bar.state()
             line.set_state(name if name != "connected" else status.IDLE, detail)
@@ -130,7 +133,7 @@ class MachineState(QObject):
         if at_loss is not None:  # mid-move: the estimate then, marked, not the move's start
             self.window.readout.set_position(*at_loss)
             self.window.readout.set_status("lost-moving")
-        elif self.last_position is not None:
+        elif self.last_position is not None and not self.bridging:
             self.window.readout.set_status("stale")
 
     def device_ready(self, info: DeviceInfo) -> None:
