@@ -96,14 +96,14 @@ def _controls(win: MainWindow, layout: str) -> list[QWidget]:
 
 def test_switching_by_menu_shortcut_and_switcher(qtbot, window: MainWindow) -> None:
     assert window.layouts.current == OPERATE and _action(window, "layoutOperate").isChecked()
-    assert window.view_splitter.isVisible() and not window.console_dock.isVisible()
+    assert window.view_tabs.isVisible() and not window.console_dock.isVisible()
     for name in ("layoutSwitchOperate", "layoutSwitchSetup", "layoutSwitchTraffic"):
         button = window.findChild(QToolButton, name)
         assert button is not None and button.isVisible(), name
     _action(window, "layoutTraffic").trigger()
     assert window.layouts.current == TRAFFIC and _action(window, "layoutTraffic").isChecked()
     assert _seen(window.console_dock) and _seen(window.timeline_dock)
-    assert not window.view_splitter.isVisible() and not window.jog_panel.isVisible()
+    assert not window.view_tabs.isVisible() and not window.jog_panel.isVisible()
     qtbot.keyClick(window, Qt.Key.Key_2, Qt.KeyboardModifier.ControlModifier)
     assert window.layouts.current == SETUP and _action(window, "layoutSetup").isChecked()
     assert _seen(window.tools.macro_dock) and not window.console_dock.isVisible()
@@ -171,7 +171,7 @@ def test_every_control_of_the_layout_is_whole_at_laptop_sizes(
         for control in _controls(window, layout):
             assert _whole(control), (layout, width, height, control.objectName())
         if layout == OPERATE:
-            views = window.view_splitter
+            views = window.view_tabs
             assert views.isVisible()
             share = views.width() * views.height() / (width * height)
             if (width, height) == (1280, 720):

@@ -22,6 +22,7 @@ from app.window.main_window import MainWindow
 from widgets import _gl_scene, position_view_3d
 from widgets.position_buffer import PositionBuffer
 from widgets.position_view_3d import PositionView3D, PositionView3DPlaceholder
+from widgets.view_tabs import VIEW_2D
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -87,6 +88,7 @@ def test_window_runs_with_the_notice(qtbot, window_without_gl: MainWindow) -> No
     assert notice is win.view3d
     assert notice.isVisible() and not notice.size().isEmpty()
     assert FORCED in notice.text() and "OpenGL" in notice.text()
+    win.view_tabs.setCurrentIndex(VIEW_2D)  # the 2D plots: the other tab of the centre
     assert win.findChild(QWidget, "positionView2d").isVisible()
 
     with qtbot.waitSignal(win.settled, timeout=5000):

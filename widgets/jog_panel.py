@@ -56,6 +56,14 @@ _BUTTONS: tuple[tuple[str, float, int, int], ...] = (
 )
 
 
+def _narrow(button: QPushButton) -> None:
+    """A step preset as narrow as its text (a push button's own minimum is wider): the five fit
+    a narrow column of panels."""
+    margin = 2 * button.style().pixelMetric(button.style().PixelMetric.PM_ButtonMargin)
+    button.setMinimumWidth(button.fontMetrics().horizontalAdvance(button.text()) + margin)
+    button.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Fixed)
+
+
 class JogPanel(QWidget):
     """Six jog buttons, a step size, Shift for a ten times bigger step.
 
@@ -95,7 +103,7 @@ class JogPanel(QWidget):
             sign = "+" if direction > 0 else "-"
             button = QPushButton(f"{axis.upper()}{sign}")
             button.setObjectName(f"jog{axis.upper()}{'Plus' if direction > 0 else 'Minus'}")
-            button.setMinimumSize(52, 40)
+            button.setMinimumSize(52, 30)
             button.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Preferred)
             button.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # clicks focus the panel, for keys
             button.setAutoRepeat(False)  # held: the window steps while it is down, no clicks
@@ -119,6 +127,7 @@ class JogPanel(QWidget):
             button.setCheckable(True)
             button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
             button.setToolTip(fill(self.tr("Jog by %1 per press"), text))
+            _narrow(button)
             button.clicked.connect(lambda _=False, v=value: self.set_step(v))
             self._preset_group.addButton(button)
             presets.addWidget(button)
@@ -132,6 +141,7 @@ class JogPanel(QWidget):
             button.setCheckable(True)
             button.setFocusPolicy(Qt.FocusPolicy.NoFocus)
             button.setToolTip(fill(self.tr("Jog by %1 per press"), text))
+            _narrow(button)
             button.clicked.connect(lambda _=False, v=value: self.set_step(v * MM_PER_INCH))
             button.setVisible(False)
             self._preset_group.addButton(button)
@@ -148,10 +158,12 @@ class JogPanel(QWidget):
         self._step_tip()
         self.step_spin.valueChanged.connect(self._step_edited)
         presets.addStretch(1)
-        step_row = QHBoxLayout()
-        step_row.addWidget(step_label)
-        step_row.addWidget(self.step_spin)
-        step_row.addStretch(1)
+        # The step beside X+, under Z+: a row less in a column of panels (issue 28 item 20).
+        step_cell = QVBoxLayout()
+        step_cell.setSpacing(0)
+        step_cell.addWidget(step_label)
+        step_cell.addWidget(self.step_spin)
+        pad.addLayout(step_cell, 1, 4)
 
         self.hint_label = QLabel(self.key_hint)
         self.hint_label.setObjectName("jogHint")
@@ -161,7 +173,6 @@ class JogPanel(QWidget):
 
         layout = QVBoxLayout(self)
         layout.addLayout(pad)
-        layout.addLayout(step_row)
         layout.addLayout(presets)
         layout.addWidget(self.hint_label)
         layout.addStretch(1)  # extra height goes below the panel, not between its rows

@@ -24,7 +24,6 @@ from PySide6.QtWidgets import (
     QLabel,
     QMainWindow,
     QMenu,
-    QSplitter,
     QTabBar,
     QToolButton,
     QWidget,
@@ -33,6 +32,7 @@ from PySide6.QtWidgets import (
 from widgets._i18n import fill
 from widgets.compact_readout import CompactReadout
 from widgets.position_readout import PositionReadout
+from widgets.view_tabs import VIEW_3D, ViewTabs
 
 log = logging.getLogger(__name__)
 translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
@@ -40,9 +40,11 @@ translate = QCoreApplication.translate  # the strings keep the window's context,
 OPERATE, SETUP, TRAFFIC = "operate", "setup", "traffic"
 NAMES = (OPERATE, SETUP, TRAFFIC)
 KEY = "layouts/{name}"  # the window's state in this layout (QMainWindow.saveState)
-SPLIT_KEY = "layouts/{name}_views"  # the 3D and 2D views' splitter in this layout
+SPLIT_KEY = "layouts/{name}_view_tab"  # the position view shown (3D or 2D) in this layout
 TIMELINE_SHARE = 0.45  # of the height in Traffic, at first (the console takes the rest)
-STATE_VERSION = 22  # saveState's version: a state saved by another arrangement is not restored
+# saveState's version: a state saved by another arrangement is not restored. 28: Operate's
+# controls in the left column, the views as tabs filling the centre (issue 28 item 20).
+STATE_VERSION = 28
 
 LEFT = Qt.DockWidgetArea.LeftDockWidgetArea
 RIGHT = Qt.DockWidgetArea.RightDockWidgetArea
@@ -95,8 +97,9 @@ CORNERS: dict[str, dict[Qt.Corner, Qt.DockWidgetArea]] = {
 # bottom areas), each a tab group whose first dock is shown).
 PLACES: dict[str, list[tuple[Qt.DockWidgetArea, list[tuple[str, ...]]]]] = {
     OPERATE: [
-        (LEFT, [(READOUT,), (JOG,)]),
-        (BOTTOM, [(GOTO, ARC, DWELL, PROGRAM), (SPEED, MACROS)]),
+        # The controls in one column, Go to and the program's docks under the views.
+        (LEFT, [(READOUT,), (JOG,), (SPEED, MACROS)]),
+        (BOTTOM, [(GOTO, ARC, DWELL, PROGRAM)]),
         (RIGHT, [(CONSOLE, TIMELINE, PARAMETERS, FIRMATA, PIFRAME, TRAVEL)]),
     ],
     SETUP: [
@@ -109,6 +112,8 @@ PLACES: dict[str, list[tuple[Qt.DockWidgetArea, list[tuple[str, ...]]]]] = {
         (LEFT, [(READOUT, JOG, GOTO, SPEED, MACROS, ARC, DWELL)]),
     ],
 }
+SIDE_TITLES = (GOTO, ARC, DWELL, PROGRAM)  # Operate's docks under the views
+SIDE_TITLE = QDockWidget.DockWidgetFeature.DockWidgetVerticalTitleBar
 OBJECT_NAMES = {OPERATE: "layoutOperate", SETUP: "layoutSetup", TRAFFIC: "layoutTraffic"}
 SWITCH_NAMES = {
     OPERATE: "layoutSwitchOperate",
@@ -140,7 +145,7 @@ class Layouts(QObject):
         self,
         window: QMainWindow,
         settings: QSettings,
-        views: QSplitter,
+        views: ViewTabs,
         tell: Callable[[str], None],
     ) -> None:
         super().__init__(window)
@@ -180,6 +185,7 @@ class Layouts(QObject):
         self._tidy.timeout.connect(self._settle)
         self._fresh = False  # a built-in layout not yet sized
         self.after_apply: list[Callable[[], object]] = []  # run once a layout is in
+        self.after_device: list[Callable[[], object]] = []  # and once the device's docks are
         # Traffic: the timeline's share of the height, as last set (by the layout or the
         # operator's drag), put back after each resize of the window; and the window's size then.
         self._share: float | None = None
@@ -267,6 +273,7 @@ class Layouts(QObject):
         name = self.current
         state = self.settings.value(KEY.format(name=name))
         self._central(name)
+        self._title_bars(name)
         restored = isinstance(state, QByteArray) and self.window.restoreState(state, STATE_VERSION)
         if restored:
             for corner, area in CORNERS[name].items():
@@ -276,9 +283,7 @@ class Layouts(QObject):
                 for dock_name in DEVICE
                 if (dock := self._dock(dock_name)) is not None and not dock.isHidden()
             }
-            splitter = self.settings.value(SPLIT_KEY.format(name=name))
-            if isinstance(splitter, QByteArray):
-                self.views.restoreState(splitter)
+            self.views.restore(self.settings.value(SPLIT_KEY.format(name=name)))
             self.fit_device()
         else:
             self.built_in()
@@ -295,7 +300,7 @@ class Layouts(QObject):
     def save(self) -> None:
         """Keep the current layout's state in the settings."""
         self.settings.setValue(KEY.format(name=self.current), self.window.saveState(STATE_VERSION))
-        self.settings.setValue(SPLIT_KEY.format(name=self.current), self.views.saveState())
+        self.settings.setValue(SPLIT_KEY.format(name=self.current), self.views.state())
 
     def _done(self) -> None:
         self._raise_front()
@@ -336,10 +341,22 @@ class Layouts(QObject):
         if self.compact is not None:
             self.compact.setVisible(name == TRAFFIC)
 
+    def _title_bars(self, name: str) -> None:
+        """In Operate the docks under the views have their title bar at their side: the views
+        keep its height (issue 28 item 20)."""
+        for dock_name in SIDE_TITLES:
+            if (dock := self._dock(dock_name)) is not None:
+                dock.setFeatures(
+                    dock.features() | SIDE_TITLE
+                    if name == OPERATE
+                    else dock.features() & ~SIDE_TITLE
+                )
+
     def built_in(self) -> None:
         """The layout's own arrangement of the docks."""
         name, window = self.current, self.window
         self._central(name)
+        self._title_bars(name)
         for corner, area in CORNERS[name].items():
             window.setCorner(corner, area)
         self.chosen = set()
@@ -381,7 +398,7 @@ class Layouts(QObject):
                     if dock is not None and not dock.isHidden():
                         dock.raise_()
                         break
-        self.views.setSizes([600, 500])
+        self.views.restore(VIEW_3D)
         self._fresh = True  # sized once the layout is in (see _settle)
 
     def _shown(self, name: str, members: frozenset[str]) -> bool:
@@ -396,7 +413,9 @@ class Layouts(QObject):
         if readout is None or jog is None:
             return
         width = max(readout.sizeHint().width(), jog.sizeHint().width())
-        if self.current == OPERATE:
+        if self.current == OPERATE:  # the column as narrow as its panels allow: the views wide
+            column = [readout, jog, self._dock(SPEED)]
+            width = max(d.minimumSizeHint().width() for d in column if d and not d.isHidden())
             window.resizeDocks([readout], [width], HORIZONTAL)
         elif self.current == SETUP:
             right = [
@@ -455,6 +474,8 @@ class Layouts(QObject):
                 dock.setVisible(shown)
         self.keep_size()
         self._tidy.start()
+        for step in self.after_device:  # (a tab group's new tab bar takes room from its dock)
+            step()
 
     def _raise_front(self) -> None:
         """In Set up, the device's own setup panel that just came is the tab in front."""

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QCoreApplication, QSize, Qt, Signal
 from PySide6.QtGui import QCloseEvent
-from PySide6.QtWidgets import QDockWidget, QMainWindow, QSplitter, QToolBar, QWidget
+from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolBar, QWidget
 
 from app.common.settings import open_settings, read_number, settings_problem
 from app.window.connection import Connection
@@ -36,6 +36,7 @@ from widgets.panel_scroll_area import PanelScrollArea
 from widgets.position_readout import PositionReadout
 from widgets.speed_control import SpeedControl
 from widgets.status_line import StatusLine
+from widgets.view_tabs import ViewTabs
 
 if TYPE_CHECKING:
     from app.window import jobs
@@ -236,14 +237,9 @@ class MainWindow(QMainWindow):
         self.view3d, self.view2d = self.views.view3d, self.views.view2d
         for view in (self.view3d, self.view2d):
             view.setFocusPolicy(Qt.FocusPolicy.ClickFocus)  # a click gives the keys back to jog
-        splitter = QSplitter(Qt.Orientation.Horizontal, self)
-        splitter.addWidget(self.view3d)
-        splitter.addWidget(self.view2d)
-        splitter.setSizes([600, 600])
-        splitter.setObjectName("viewSplitter")
-        splitter.setChildrenCollapsible(False)
-        self.setCentralWidget(splitter)
-        self.view_splitter = splitter
+        # One tab each, so that the view shown has the whole centre (issue 28 item 20).
+        self.view_tabs = ViewTabs(self.view3d, self.view2d, self)
+        self.setCentralWidget(self.view_tabs)
 
         self.readout = PositionReadout(self)
         self.jog_panel = JogPanel(self)
@@ -282,7 +278,7 @@ class MainWindow(QMainWindow):
         self.tools = WindowTools(self)  # macros, work coordinates, control lines, settings
         docks.append(self.tools.macro_dock)
         # Three layouts, one a job (Operate, Set up, Traffic): they place the docks.
-        self.layouts = Layouts(self, self.settings, splitter, self.tell)
+        self.layouts = Layouts(self, self.settings, self.view_tabs, self.tell)
         for dock in docks:
             if dock.objectName() in DEVICE:
                 dock.toggleViewAction().triggered.connect(
@@ -297,6 +293,7 @@ class MainWindow(QMainWindow):
         for balance in (self.dock_balance, self.bottom_balance):
             self.views.ready.connect(balance.start)
             self.layouts.after_apply.append(balance.request)
+            self.layouts.after_device.append(balance.request)
         self.views.ready.connect(self.layouts.fit_device)
 
         self.status_line = StatusLine(self)
