@@ -81,11 +81,8 @@ class ProgramPanel(QWidget):
         self.save_button = make_button(self.tr("Save…"), "programSave", self._save_tip)
         self._run_tip = self.tr("Run the program on the device (checked against the box first)")
         self.run_button = make_button(self.tr("&Run"), "programRun", self._run_tip)
-        self.pause_button = make_button(
-            self.tr("P&ause"),
-            "programPause",
-            self.tr("Send nothing more until Resume (a device's queued moves go on)"),
-        )
+        self.pause_button = make_button(self.tr("P&ause"), "programPause", "")
+        self.set_pause_meaning(None)
         self.stop_button = make_button(
             self.tr("&Stop"),
             "programStop",
@@ -420,6 +417,25 @@ class ProgramPanel(QWidget):
             if reason:
                 tip = fill(self.tr("%1\nNot now: %2"), tip, reason)
         self.run_button.setToolTip(tip)
+
+    def set_pause_meaning(self, queued: bool | None) -> None:
+        """Say in Pause's tooltip what it really does on the device connected: `queued` where
+        the device runs a queue of moves it was sent (laser-frame), False where it takes one
+        move at a time, None with no device. No protocol here has a feed hold."""
+        if queued is None:
+            tip = self.tr("Send nothing more until Resume (a device's queued moves go on)")
+        elif queued:
+            tip = self.tr(
+                "Send nothing more until Resume. This device has no feed hold: it goes on "
+                "running the moves it already holds (the status line says how many, and when "
+                "it stands still); Stop flushes them"
+            )
+        else:
+            tip = self.tr(
+                "Send nothing more until Resume. The move under way finishes, then the stage "
+                "stands still (this device has no feed hold)"
+            )
+        self.pause_button.setToolTip(tip)
 
     def set_paused(self, paused: bool) -> None:
         """Show Pause or Resume (and "paused" instead of the time left)."""

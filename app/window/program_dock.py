@@ -277,6 +277,7 @@ class ProgramDock(QObject):
         """A device is ready (its capabilities), or none is (None): Run follows, the last
         run's figures go, and the program loaded is checked against the device again."""
         self.panel.set_connected(caps is not None)
+        self.panel.set_pause_meaning(caps.streaming if caps is not None else None)
         self.panel.clear_figures()
         if caps is None:
             return
