@@ -12,6 +12,7 @@ from PySide6.QtWidgets import QPushButton
 from app.common.settings import read_parameters
 from app.window.main_window import MainWindow
 from tests.relay import wait_in_gui
+from widgets._i18n import number_text
 
 pytestmark = pytest.mark.timeout(60)
 URL = "sim://visiomex?instant=1"
@@ -79,3 +80,38 @@ def test_table_shows_what_the_firmware_recomputed_at_a_move(qtbot, window: MainW
     assert "step_count_acceleration_x" not in editor.changed_names()
     saved = read_parameters(window.settings, "visiomex", URL)
     assert saved["step_count_acceleration_y"] == 0
+
+
+def _write(qtbot, win: MainWindow, items: list[tuple[int, float]]) -> None:
+    """Write parameters through the table's dock, until the editor is done with them."""
+    editor = win.parameters.editor
+    win.parameters.write(items)
+    qtbot.waitUntil(lambda: not editor.writing(), timeout=10000)
+    assert all(_device(win).parameters[n] == v for n, v in items)  # whole units on the wire
+
+
+def _x_speed(delays: tuple[float, float]) -> str:
+    """The speed label for X stepping at 15 high plus 16 low (µs), 0.025 mm a step."""
+    return f"device: {number_text(0.025 / ((delays[0] + delays[1]) * 1e-6), 6)} mm/s"
+
+
+def test_device_speed_follows_a_write_of_the_step_delays(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    label = window.speed.reported_label
+    qtbot.waitUntil(lambda: label.text() == _x_speed((4000, 4000)), timeout=5000)
+    _write(qtbot, window, [(15, 2000.0)])
+    qtbot.waitUntil(lambda: label.text() == _x_speed((2000, 4000)), timeout=5000)
+    assert label.text() == "device: 4.166667 mm/s"
+
+
+def test_device_speed_follows_a_move_whose_ramps_change_16(qtbot, window: MainWindow) -> None:
+    _connect(qtbot, window)
+    label = window.speed.reported_label
+    _write(qtbot, window, [(22, 6000.0), (24, 1.0)])
+    qtbot.waitUntil(lambda: label.text() == _x_speed((4000, 4000)), timeout=5000)
+    window.jog_panel.set_step(1)
+    _jog(qtbot, window, "jogYPlus")  # its ramp leaves 16 at 358 µs
+    editor = window.parameters.editor
+    qtbot.waitUntil(lambda: editor.value("step_delay_instantaneous_y") == 358, timeout=5000)
+    assert _device(window).parameters[16] == 358
+    qtbot.waitUntil(lambda: label.text() == _x_speed((4000, 358)), timeout=5000)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import time
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QCoreApplication, QObject
+from PySide6.QtCore import QCoreApplication, QObject, Qt
 
 from app.common.messages import localized
 from app.common.settings import write_counted_position
@@ -179,6 +179,9 @@ class MachineState(QObject):
         self.window.readout.set_status(self.settled_status())
         caps = info.capabilities  # a speed the device sets itself (Visiomex): the field is off
         self.window.speed.set_fixed(localized(caps.speed_note) if caps.speed_fixed else "")
+        if caps.speed_fixed and info.parameters:  # its speed follows what the table writes
+            unique = Qt.ConnectionType.UniqueConnection  # and what each move leaves
+            self.window.parameters.device_speed.connect(self._on_speed, unique)
 
     def known_position(self) -> Point | None:
         """The position as last shown, unless the device lost track of it."""

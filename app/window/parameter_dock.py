@@ -6,7 +6,7 @@ import logging
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Qt
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject, Qt, Signal
 from PySide6.QtWidgets import QDockWidget, QMainWindow
 
 from app.common.messages import localized
@@ -108,6 +108,8 @@ def make_dock(window: QMainWindow) -> QDockWidget:
 class ParameterDock(QObject):
     """Shows the editor when the device has parameters; turns its requests into jobs."""
 
+    device_speed = Signal(float)  # mm/s the device steps at, as what it holds now gives it
+
     def __init__(self, window: QMainWindow, services: WindowServices) -> None:
         super().__init__(window)
         self.window = window  # the docks' and dialogs' parent
@@ -206,6 +208,7 @@ class ParameterDock(QObject):
         values = {name: written.value, **written.device_values}
         write_parameters(self.services.settings, info.protocol, info.port, values)
         self.protocol.assume_parameters(values)
+        self._speed_follows()
         self.editor.set_status(
             written.parameter.id, CONFIRMED, "; ".join(localized(note) for note in written.notes)
         )
@@ -233,9 +236,17 @@ class ParameterDock(QObject):
             return
         write_parameters(self.services.settings, info.protocol, info.port, changed)
         self.protocol.assume_parameters(changed)
+        self._speed_follows()
         self.editor.set_computed(changed, AT_MOVE)
         for name in changed:
             self.editor.set_row_note(name, self.tr("recomputed by the firmware at the last move"))
+
+    def _speed_follows(self) -> None:
+        """A device that times its moves from its parameters (Visiomex 15, 16): the speed it
+        moves at now, from what it holds, to the Speed panel."""
+        speed = self.protocol.moving_speed() if self.protocol is not None else None
+        if speed is not None:
+            self.device_speed.emit(speed)
 
     def _on_job_finished(self, job: jobs.Job, result: object) -> None:
         if job in self._writing:
