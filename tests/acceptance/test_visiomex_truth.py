@@ -165,3 +165,127 @@ def test_y_jog_at_power_on_shows_y_unmoved_and_x_follows(
     assert _where(sim) == [1.0, 0.0]
     assert not np.array_equal(after_x[0], home[0]), f"X+ moved X but X shows 0: see {shots}"
     assert np.array_equal(after_x[1], home[1]), f"X+ changed the Y number: see {shots}"
+
+
+SELECTED = 0x308CC6  # a selected table row's background (the style's highlight)
+WHITE = 0xFFFFFF
+WRITTEN = (370, 480)  # the Last written column's x range in the table (parameter_table.py)
+MARK_WIDTH = 28  # px of "(computed)" compared: "(comp", which an elided cell still shows
+SAME_TEXT = 0.85  # correlation: "(comp" drawn elsewhere ~0.9, "(pow" or "s (po" ~0.75
+
+
+def _mask(image: QImage, rgb: int) -> np.ndarray:
+    """Where `image` has exactly the colour `rgb`."""
+    image = image.convertToFormat(QImage.Format.Format_RGB32)
+    width, height = image.width(), image.height()
+    pixels = np.frombuffer(image.constBits(), dtype=np.uint32, count=width * height)
+    return (pixels.reshape(height, width) & 0xFFFFFF) == rgb
+
+
+def _selected_row(image: QImage, region: tuple[int, int, int, int]) -> tuple[int, int] | None:
+    """The selected table row within `region` of a screen grab: (left, top) on the screen,
+    None while no row is drawn selected."""
+    x0, y0, w, h = region
+    mask = _mask(image, SELECTED)[y0 : y0 + h, x0 : x0 + w]
+    rows = np.nonzero(mask.sum(axis=1) > 200)[0]
+    if len(rows) == 0:
+        return None
+    top = int(rows[0])
+    band = mask[top : top + 10].any(axis=0)  # the current cell may be framed on its top line
+    return x0 + int(np.nonzero(band)[0][0]), y0 + top
+
+
+def _written_ink(image: QImage, left: int, top: int, pitch: int, row: int) -> np.ndarray:
+    """How dark each pixel of a Last written cell is (0 white, 255 black), `row` rows below
+    the one whose top is `top`."""
+    image = image.convertToFormat(QImage.Format.Format_RGB32)
+    width, height = image.width(), image.height()
+    pixels = np.frombuffer(image.constBits(), dtype=np.uint32, count=width * height)
+    y = top + row * pitch
+    cell = pixels.reshape(height, width)[
+        y + 2 : y + pitch - 2, left + WRITTEN[0] : left + WRITTEN[1]
+    ]
+    channels = [((cell >> shift) & 0xFF).astype(float) for shift in (16, 8, 0)]
+    return 255.0 - sum(channels) / 3
+
+
+def _mark(ink: np.ndarray) -> np.ndarray | None:
+    """The start of the word after the first space of a cell's text ("1 (computed)" gives
+    "(comp"), None if the text has no second word."""
+    columns = np.nonzero((ink > 255 - INK).any(axis=0))[0]
+    gaps = np.nonzero(np.diff(columns) > 3)[0]  # a space is wider than the gaps in a word
+    if len(gaps) == 0:
+        return None
+    start = int(columns[gaps[0] + 1])
+    return ink[:, start : start + MARK_WIDTH] if start + MARK_WIDTH <= ink.shape[1] else None
+
+
+def _shows(ink: np.ndarray, mark: np.ndarray) -> bool:
+    """Whether `mark` is drawn somewhere along the cell's text `ink` (the best normalised
+    correlation at any offset; text is placed to fractions of a pixel, so not exactly)."""
+    width = mark.shape[1]
+    best = 0.0
+    for x in range(ink.shape[1] - width + 1):
+        part = ink[:, x : x + width]
+        norm = float(np.sqrt((part * part).sum() * (mark * mark).sum()))
+        best = max(best, float((part * mark).sum()) / norm if norm else 0.0)
+    return best >= SAME_TEXT
+
+
+def test_set_of_21_shows_25_recomputed_and_marked(
+    any_screen: XServer, rig: Rig, tmp_path: Path, shots: Path
+) -> None:
+    """Set up (Ctrl+2), 21 = 6000 typed into the table and written: the device confirms it,
+    and the firmware's recomputed 25 (600 s) is shown marked "(computed)" as 27 (forced to 1)
+    is, unlike the power-on value of 24 (the issue saw the table keep what was there)."""
+    size = "{}x{}".format(*any_screen.size)
+    sim, panel, report = _start(rig, any_screen, tmp_path)
+    panel.key("ctrl+2")
+    area = _rect(panel, report, "setup", "parameterEditorPanel")
+    column = _mask(any_screen.grab(shots / "panel.png", area), WHITE)[:, 20]
+    inside = int(np.nonzero(column)[0][0]) + 5  # the first white cell of the ID column
+    _click(panel, area[0] + 20, area[1] + inside)
+
+    def selected(other: tuple[int, int] | None, what: str) -> tuple[int, int]:
+        """The selected row once it is not at `other` and two grabs in a row agree."""
+        seen: list[tuple[int, int] | None] = [None]
+
+        def moved() -> tuple[int, int] | None:
+            row = _selected_row(any_screen.grab(shots / "screen.png"), area)
+            still = row is not None and row == seen[-1] and row != other
+            seen.append(row)
+            return row if still else None
+
+        return wait_for(moved, 10.0, what, 0.2)
+
+    panel.key("ctrl+Home")
+    first = selected(None, "row 1 selected")
+    panel.key("Down")
+    second = selected(first, "row 2 selected")
+    pitch = second[1] - first[1]
+    panel.key(*["Down"] * 25)  # to 27, which scrolls it into view
+    panel.key(*["Up"] * 6)  # back to 21, still in view
+    left, top = selected(second, "row 21 selected")  # in view, with 24 to 27 below it
+    panel.type("6000")
+    panel.key("Return", "Tab", "space")  # the value, then Write selected
+    wait_for(lambda: b"FS0021" in _answers(panel), ANSWER_S, "the firmware's confirmation of 21")
+    assert b"S21006000" in sim.record.received_bytes()
+
+    seen: list[str] = []
+
+    def marked() -> bool:
+        image = any_screen.grab(shots / f"written-{size}.png")
+        row_21 = _selected_row(image, area)  # still selected; the table may have scrolled
+        if row_21 is None:
+            return False
+        left, top = row_21
+        row_24, row_25, row_27 = (_written_ink(image, left, top, pitch, n) for n in (3, 4, 6))
+        mark = _mark(row_27)  # 27: "1 (computed)", short enough to be whole
+        seen.append("27 unmarked" if mark is None else "")
+        return mark is not None and _shows(row_25, mark) and not _shows(row_24, mark)
+
+    try:
+        wait_for(marked, 10.0, "25 marked (computed) as 27 is, and 24 not", 0.3)
+    except AssertionError as exc:
+        where = f"row 21 at {left}, {top}, rows {pitch} px apart"
+        raise AssertionError(f"{exc} ({sorted(set(seen))}, {where}); see {shots}") from None
