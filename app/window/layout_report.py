@@ -80,6 +80,8 @@ CONTROLS: dict[str, tuple[str, ...]] = {
         "layoutSwitcher",
     ),
 }
+# Widgets a scenario clicks that are no layout's control (the Program dock's Run): their place.
+LOCATED = ("programRun",)
 PLOTS = ("positionView3d", "positionXYPlot", "positionTimePlot", "trafficTimelinePlots")
 WATCHED = (QEvent.Type.Resize, QEvent.Type.Show, QEvent.Type.Hide)
 
@@ -273,6 +275,7 @@ class LayoutReport(QObject):
             "controls": controls,
             "plots": plots,
             "parameter_rows": _whole_rows(window),
+            "located": _located(window),
         }
 
     def write(self) -> None:
@@ -285,6 +288,20 @@ class LayoutReport(QObject):
             os.replace(temporary, self.path)
         except OSError as exc:
             log.warning("layout report not written to %s: %s", self.path, exc)
+
+
+def _located(window: QWidget) -> dict[str, dict[str, object]]:
+    """Where each LOCATED widget is in the window, whether shown whole and enabled."""
+    found = {name: window.findChild(QWidget, name) for name in LOCATED}
+    return {
+        name: {
+            "rect": list(_rect(widget, window).getRect()),
+            "whole": _whole(widget),
+            "enabled": widget.isEnabled(),
+        }
+        for name, widget in found.items()
+        if widget is not None
+    }
 
 
 def _area(region: QRegion) -> int:
