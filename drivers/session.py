@@ -35,6 +35,7 @@ from drivers.events import PositionReport
 from drivers.log_origin import connection_note
 from drivers.messages import Message
 from drivers.motion import Motion
+from drivers.position_count import resume
 from drivers.program import ProgramPoint
 from drivers.protocols.base import Protocol
 from drivers.session_parameters import DeviceParameters
@@ -117,6 +118,17 @@ class DeviceSession:
     def closed(self) -> bool:
         """Whether the port is closed."""
         return self.link.closed
+
+    def resume_from(self, here: tuple[float, float, float]) -> None:
+        """Go on from where a device that cannot be asked was left (kept from an earlier run):
+        its next relative move, or a pi-frame's next target, starts there; BadInput where the
+        device reports its position (it is asked instead) or cannot be sent from there."""
+        if self.capabilities.position_feedback:
+            raise BadInput(
+                Message("{protocol} reports where it is: it is asked", protocol=self.protocol.name)
+            )
+        resume(self.protocol, here)
+        self.motion.last_position = PositionReport(*here, measured=False)
 
     def start(self) -> None:
         """Send what the device needs once the port is open (the protocol's start-up commands)."""
@@ -307,6 +319,7 @@ def open_device(
     listeners: Sequence[TrafficListener] = (),
     start: bool = True,
     abort: threading.Event | None = None,
+    position: tuple[float, float, float] | None = None,
 ) -> DeviceSession:
     """Open a device and return its session (a context manager that closes it).
 
@@ -320,7 +333,9 @@ def open_device(
     `clamp`: beyond it go to its edge instead of refusing; `log`: a file path, stream or
     TrafficLogWriter for a hexdump of the traffic; `listeners`: called with every Traffic
     record; `start`: send the start-up commands now (False: the caller calls `start`);
-    `abort`: an Event that, once set from any thread, makes a wait give up (Aborted).
+    `abort`: an Event that, once set from any thread, makes a wait give up (Aborted);
+    `position`: where a device that cannot be asked is, as kept from an earlier run (its count,
+    or the target it was sent last): the session goes on from there (`resume_from`).
     BadInput or UnknownProtocol for wrong settings, PortError when the port cannot be opened.
     """
     if timeout <= 0:
@@ -334,6 +349,8 @@ def open_device(
         link, made, timeout=timeout, travel=limits, abort=abort, parameters=parameters
     )
     try:
+        if position is not None:
+            session.resume_from(position)
         for listener in listeners:
             session.add_listener(listener)
         if log is not None:

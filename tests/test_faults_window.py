@@ -66,6 +66,9 @@ def device(qtbot, window: MainWindow, protocol: str, *args: str) -> Iterator[Sim
             window.findChild(QPushButton, "firmataConfigure").click()
             label = window.devices.firmata.findChild(QLabel, "firmataVersionLabel")
             qtbot.waitUntil(lambda: label.text() == "5", timeout=WAIT_MS)
+        if protocol == "pi-frame":  # absolute targets: a jog needs a known place first
+            with wait_in_gui(qtbot, window.worker.job_finished, timeout=WAIT_MS):
+                window.coordinates.go_requested.emit("absolute", (0.0, 0.0, 0.0))
         yield sim
     finally:
         window.disconnect_device()

@@ -54,4 +54,4 @@ def test_device_vanishing_mid_move(qtbot, window: MainWindow, sim: SimProcess) -
     text = window.console.text()
     assert "ACK ABSOLUTE_MOVE" in text
     assert "connection error: reading from" in text
-    assert window.readout.status() == "stale"
+    assert window.readout.status() == "lost-moving"  # the estimate at the loss, marked

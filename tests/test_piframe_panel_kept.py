@@ -32,9 +32,10 @@ def test_the_panel_keeps_the_piframe_position_for_motionctl(
         window.connect_device(URL, "pi-frame", 115200)
     window.jog_panel.set_step(1)
     qtbot.mouseClick(window.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
-    qtbot.waitUntil(lambda: window.readout.position() == (1.0, 0.0, 0.0), timeout=8000)
-    qtbot.waitUntil(lambda: _idle(window), timeout=5000)
-    # From the origin assumed at connection: not a known place, so nothing is kept.
+    # From an unknown place an absolute-target device would go elsewhere: refused, unsent.
+    qtbot.waitUntil(lambda: "jog" in window.status_line.message(), timeout=5000)
+    assert "refused: the position is unknown" in window.status_line.message()
+    assert window.readout.status() == "uncounted"
     assert read_counted_position(window.settings, "pi-frame", URL) is None
 
     window.coordinates.go_requested.emit("absolute", (2.0, 1.0, 0.0))  # an absolute target

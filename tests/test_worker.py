@@ -120,15 +120,15 @@ def test_a_move_queued_before_a_stop_is_not_sent(qtbot, worker_thread: WorkerThr
         worker_thread.open("sim://laser-frame", "laser-frame", 115200)
     traffic: list = []
     worker.traffic.connect(traffic.extend)
-    failed: list = []
-    worker.job_failed.connect(lambda job, why: failed.append((job, why)))
+    stopped: list = []  # an operator's stop, said as a stop (job_stopped), not a failure
+    worker.job_stopped.connect(lambda job, why: stopped.append((job, why)))
     with wait_in_gui(qtbot, worker.busy_changed):
         worker.submit(jobs.MoveByJob(30, 0, 0))  # 3 s at the default 10 mm/s
     queued = jobs.MoveByJob(0, 30, 0)
     worker.submit(queued)
     worker.stop_now()
-    qtbot.waitUntil(lambda: any(job is queued for job, _ in failed), timeout=10000)
-    assert dict((id(j), w) for j, w in failed)[id(queued)] == "stopped before it was sent"
+    qtbot.waitUntil(lambda: any(job is queued for job, _ in stopped), timeout=10000)
+    assert dict((id(j), w) for j, w in stopped)[id(queued)] == "stopped before it was sent"
     with wait_in_gui(qtbot, worker.job_finished):
         worker.submit(jobs.RefreshJob())  # the worker went on to the next job
     protocol = worker._motion.client.protocol

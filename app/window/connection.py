@@ -12,6 +12,7 @@ from app.common.messages import localized
 from app.common.settings import (
     DEFAULT_PORT,
     DEFAULT_PROTOCOL,
+    read_counted_position,
     read_number,
     read_parameters,
     read_protocol_settings,
@@ -156,12 +157,19 @@ class Connection(QObject):
             travel = read_travel(self.settings, protocol, port, clamp_default=clamp)
             self.machine.apply_travel(travel)
             dtr, rts = window.tools.saved_lines(protocol, port)
+            # A device that cannot be asked goes on from where it was left (by this panel, another
+            # one or motionctl); not after a lost link, when where it stands is not known.
+            kept = None if self.machine.link_failed else read_counted_position(
+                self.settings, protocol, port
+            )  # fmt: skip
+            self.machine.resumed_from = kept
             options = ConnectOptions(
                 variant=variant,
                 settings=protocol_settings,
                 parameters=parameters,
                 dtr=dtr,
                 rts=rts,
+                position=kept,
             )
             thread.open(port, protocol, baud, options)  # a sim:// device speaks the variant
 

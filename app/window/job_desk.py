@@ -94,6 +94,16 @@ class JobDesk(QObject):
         self.window.tell(text, kind, note)
 
     # -- submitting --------------------------------------------------------------------------
+    def _needs_position(self, job: jobs.Job) -> bool:
+        """Whether `job` moves from where the stage is on a device that moves only to absolute
+        targets, while that place is unknown."""
+        from app.window import jobs
+
+        info = self.machine.info
+        if info is None or info.capabilities.relative_moves or not self.machine.position_lost:
+            return False
+        return isinstance(job, (jobs.MoveByJob, jobs.MacroJob))  # (an arc goes to its start)
+
     def submit(self, job: jobs.Job) -> bool:
         """Queue `job` for the worker; refused out loud (False) when not connected, or when a
         program, a macro or a parameter write is under way and `job` may not run beside it:
@@ -113,6 +123,21 @@ class JobDesk(QObject):
                         "MainWindow",
                         "%1 refused: the position is unknown, so the program's coordinates "
                         "would not be where it goes; Home or Set Home first",
+                    ),
+                    job.describe(),
+                ),
+                status.WARNING,
+            )
+            return False
+        if self._needs_position(job):
+            # Absolute targets only (pi-frame): a jog from an unknown place goes elsewhere.
+            self._tell(
+                fill(
+                    translate(
+                        "MainWindow",
+                        "%1 refused: the position is unknown and this device moves only to "
+                        "absolute targets, so it would go elsewhere; Set Home, Home or Go to "
+                        "first",
                     ),
                     job.describe(),
                 ),

@@ -48,6 +48,7 @@ class MachineState(QObject):
         self.last_position: Point | None = None
         self.true_position: Point | None = None  # reported, not estimated
         self.count_kept: Point | None = None  # (Visiomex, Firmata, pi-frame: keep_count)
+        self.resumed_from: Point | None = None  # the kept position the connection goes on from
         self.count_started = False  # a known place reached on this connection: kept from then
         self.unconfirmed_move = False  # a move started whose end no position has confirmed
         self.trail_device: tuple[str, str, str] | None = None  # port, protocol, identity
@@ -139,7 +140,7 @@ class MachineState(QObject):
     def device_ready(self, info: DeviceInfo) -> None:
         """A device answered: whether its position is known (read again, or lost, or not yet
         counted), said once."""
-        from drivers.position_count import counts_position  # (not before the first paint)
+        from drivers.position_count import counts_position, keeps_position  # (after the paint)
 
         self.info = info
         device = (info.port, info.protocol, info.identity)
@@ -148,6 +149,7 @@ class MachineState(QObject):
             self.window.buffer.clear(keep_last=True)  # another device: a trail of its own
         self.trail_device = device
         self.count_kept, self.count_started = None, False  # until a known place is reached
+        kept, self.resumed_from = self.resumed_from, None
         if self.link_failed and not another:  # the same device after a lost link or a restart
             self.position_lost = not info.capabilities.position_feedback
             self.lost_status = "lost"
@@ -163,6 +165,19 @@ class MachineState(QObject):
                 ),
                 status.WARNING if self.position_lost else status.INFO,
             )
+        elif keeps_position(info.capabilities) and kept is not None:  # left there, and kept
+            self.position_lost = False
+            self.count_kept, self.count_started = kept, True
+            self._tell(
+                fill(
+                    translate(
+                        "MainWindow",
+                        "the device cannot be asked where it is: it goes on from (%1, %2, %3) mm, "
+                        "where it was left on this port (kept, not measured)",
+                    ),
+                    *(f"{axis:g}" for axis in kept),
+                )
+            )
         elif counts_position(info.protocol, info.capabilities):  # fresh: nothing counted yet
             self.position_lost, self.lost_status = True, "uncounted"
             self._tell(
@@ -170,6 +185,17 @@ class MachineState(QObject):
                     "MainWindow",
                     "position unknown: the device cannot be asked; Home or Set Home to start "
                     "counting",
+                ),
+                status.WARNING,
+            )
+        elif keeps_position(info.capabilities):  # fresh, absolute targets and nothing kept
+            self.position_lost, self.lost_status = True, "uncounted"
+            self._tell(
+                translate(
+                    "MainWindow",
+                    "position unknown: the device cannot be asked and its frames carry absolute "
+                    "targets, so a jog is refused; Set Home where the stage stands, Home, or Go "
+                    "to an absolute point first",
                 ),
                 status.WARNING,
             )

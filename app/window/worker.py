@@ -8,7 +8,7 @@ import os
 import queue
 import threading
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TextIO
 
 from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, Slot
@@ -80,6 +80,8 @@ class ConnectOptions:
     """Values written earlier and kept by the panel (the device may have no read-back)."""
     dtr: bool | None = None  # DTR when the port opens (None: the protocol's default)
     rts: bool | None = None  # RTS when the port opens (None: as the port opens it, asserted)
+    position: tuple[float, float, float] | None = None
+    """Where a device that cannot be asked was left, as kept (None: not known)."""
 
 
 @dataclass
@@ -293,6 +295,7 @@ class SerialWorker(QObject):
                 travel=self._travel,
                 start=False,  # the handshake identifies the device first
                 abort=self._abort,
+                position=options.position,
             )
         except MotionError as exc:
             failed: object = exc
@@ -761,8 +764,9 @@ class SerialWorker(QObject):
         if self._ready_once and url and _watchable(url):
             if self._watch is None:
                 now = time.monotonic()
+                lost = replace(options, position=None)  # where it stands is not known now
                 self._watch = _PortWatch(
-                    url, protocol_name, self._baud, options, _device_node(url),
+                    url, protocol_name, self._baud, lost, _device_node(url),
                     next_look=now + PORT_WATCH_S, retry_at=now + PORT_RETRY_S,
                 )  # fmt: skip
             error = Message("{error}; connecting again when {url} is back", error=error, url=url)
