@@ -38,6 +38,8 @@ NOT_A_NUMBER = QT_TRANSLATE_NOOP("NumberField", "“%1” is not a number (%2 to
 OUTSIDE = QT_TRANSLATE_NOOP("NumberField", "%1%4 is outside %2 to %3%4")
 TOO_FINE = QT_TRANSLATE_NOOP("NumberField", "%1%2 has more than %3 decimals")
 NAMED = QT_TRANSLATE_NOOP("NumberField", "%1: %2")  # a field's name: why its text is refused
+# A refused number cleared when the units changed: %1 why it was refused, %2 the new unit.
+CLEARED = QT_TRANSLATE_NOOP("NumberField", "%1; cleared when the units changed to %2")
 
 
 def _t(text: str) -> str:
@@ -154,6 +156,7 @@ class TypedNumber:
     _what = ""
     _base_tip = ""
     _typed_problem = ""
+    _cleared = ""  # why the field was emptied (`clear_refused`), until the operator types
 
     # -- what the panels ask -------------------------------------------------------------
 
@@ -165,6 +168,13 @@ class TypedNumber:
     def problem(self) -> str:
         """Why the typed text cannot be used ("" when it can), with the field's range."""
         return self._find_problem(self.lineEdit().displayText())  # type: ignore[attr-defined]
+
+    def clear_refused(self, reason: str) -> None:
+        """Empty the field; `problem()` says `reason` until something is typed in it."""
+        self.lineEdit().setText(self.prefix() + self.suffix())  # type: ignore[attr-defined]
+        self.lineEdit().setCursorPosition(len(self.prefix()))  # type: ignore[attr-defined]
+        self._cleared = reason
+        self._refresh_problem()
 
     def typed_value(self) -> float | None:
         """The number typed, in the units shown (out of range too); None when unreadable."""
@@ -211,6 +221,8 @@ class TypedNumber:
         number = self._number_text(text)
         unit = self.suffix().rstrip()  # type: ignore[attr-defined]
         low, high = self.range_texts()
+        if not number and self._cleared:
+            return self._cleared
         if not number:
             reason = fill(_t(EMPTY), low, high, unit)
         elif isinstance(self, QSpinBox):
@@ -248,6 +260,12 @@ class TypedNumber:
             self._typed_problem = problem
             self._show_problem()
 
+    def _edited(self, _text: str) -> None:
+        """Typed again after `clear_refused`: the new text is checked on its own."""
+        if self._cleared:
+            self._cleared = ""
+            self._refresh_problem()
+
     def _show_problem(self) -> None:
         problem = self._typed_problem
         tip = self._base_tip
@@ -260,6 +278,7 @@ class TypedNumber:
         """Mark the text at every change: typed, or shown for a value (the spin box writes
         that with the line edit's signals blocked)."""
         self.lineEdit().textChanged.connect(self._refresh_problem)  # type: ignore[attr-defined]
+        self.lineEdit().textEdited.connect(self._edited)  # type: ignore[attr-defined]
         self.textChanged.connect(self._refresh_problem)  # type: ignore[attr-defined]
         self._refresh_problem()
         wheel_needs_focus(self)  # type: ignore[arg-type]

@@ -8,7 +8,8 @@ import math
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QWidget
 
-from widgets._number_field import NumberSpinBox
+from widgets._i18n import fill
+from widgets._number_field import CLEARED, NumberSpinBox
 
 MM, INCH = "mm", "in"
 MM_PER_INCH = 25.4
@@ -40,7 +41,9 @@ class UnitSpinBox(NumberSpinBox):
     shown (no drift through their rounding).
 
     What is typed is kept as typed (NumberSpinBox): out of range or unreadable, it is shown in
-    red, `problem()` says why, and the value stays the last usable one."""
+    red, `problem()` says why, and the value stays the last usable one. A change of units
+    converts a usable number (typed or set), keeps unreadable text as typed, and empties a
+    refused number, saying why: it never shows a value nobody typed."""
 
     def __init__(self, per_second: bool = False, parent: QWidget | None = None) -> None:
         super().__init__(parent)
@@ -61,12 +64,15 @@ class UnitSpinBox(NumberSpinBox):
         check_units(units)
         if units == self._units:
             return
+        typed = self._typed_state()
         mm = self._raw_mm()
+        if not typed[1] and typed[2] is not None and typed[2] != self.value():
+            mm = typed[2] * self.factor()  # typed, not yet taken: that is what is converted
         blocked = self.blockSignals(True)
         try:
             self._units = units
             self.setSuffix(" " + unit_text(units, self._per_second))
-            self._show(mm)
+            self._show(mm, typed, switched=True)
         finally:
             self.blockSignals(blocked)
 
@@ -147,8 +153,21 @@ class UnitSpinBox(NumberSpinBox):
             steps = math.floor(high / grid + 1e-9)
         return round(steps * grid, self._mm_decimals) + 0.0
 
-    def _show(self, mm: float) -> None:
-        """Decimals, range and step in the units shown, then `mm`."""
+    def _typed_state(self) -> tuple[str, str, float | None]:
+        """The number typed (without the unit), why it cannot be used ("" when it can), the
+        number it reads as."""
+        text = self._number_text(self.lineEdit().displayText())
+        return text, self.problem(), self.typed_value()
+
+    def _show(
+        self,
+        mm: float,
+        typed: tuple[str, str, float | None] | None = None,
+        switched: bool = False,
+    ) -> None:
+        """Decimals, range and step in the units shown, then `mm`; text that cannot be used
+        (`typed`, as it was before, default now) is not replaced by `mm` (`_keep_typed`)."""
+        typed = self._typed_state() if typed is None else typed
         decimals = self.shown_decimals()
         low, high = self._mm_range
         self.setDecimals(decimals)
@@ -164,3 +183,17 @@ class UnitSpinBox(NumberSpinBox):
             self.setRange(shown_low, shown_high)
             self.setSingleStep(self._steps[1])
         self.set_mm_value(mm)
+        self._keep_typed(*typed, switched)
+
+    def _keep_typed(self, text: str, problem: str, number: float | None, switched: bool) -> None:
+        """Put back text that could not be used: unreadable text (or a number, the units kept)
+        as typed, with the unit shown; a refused number after a change of units is cleared,
+        saying why, never shown converted (it was not typed in these units)."""
+        if not problem:
+            return  # a usable value: shown converted
+        if number is None or not switched:
+            self.lineEdit().setText(self.prefix() + text + self.suffix())
+            self.lineEdit().setCursorPosition(len(self.prefix() + text))  # before the unit
+            return
+        why = QCoreApplication.translate("NumberField", CLEARED)
+        self.clear_refused(fill(why, problem, unit_text(self._units, self._per_second)))
