@@ -6,20 +6,12 @@ unreadable text stays as typed; a usable number converts exactly."""
 from __future__ import annotations
 
 import pytest
-from PySide6.QtCore import QLocale, Qt
+from PySide6.QtCore import Qt
 
+from tests.widgets.test_units_shown import english_numbers  # noqa: F401 (autouse)
 from widgets.coordinate_entry import CoordinateEntry
 
 pytestmark = pytest.mark.timeout(30)
-
-
-@pytest.fixture(autouse=True)
-def english_numbers() -> object:
-    """Numbers with a decimal point, whatever the machine's locale."""
-    before = QLocale()
-    QLocale.setDefault(QLocale(QLocale.Language.English, QLocale.Country.UnitedStates))
-    yield None
-    QLocale.setDefault(before)
 
 
 def _number(field) -> str:
