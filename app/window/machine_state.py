@@ -28,6 +28,17 @@ if TYPE_CHECKING:
 translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
 
 
+def _known_again(job: jobs.Job) -> str:
+    """What replaces "position unknown" once `job` reached a known place."""
+    from app.window import jobs
+
+    if isinstance(job, jobs.SetHomeJob):
+        return translate("MainWindow", "home set: the position is counted from here")
+    if isinstance(job, jobs.HomeJob):
+        return translate("MainWindow", "home confirmed: the position is counted from here")
+    return translate("MainWindow", "an absolute point reached: the position is counted from here")
+
+
 class MachineState(QObject):
     """The state of the device connected, in one place: the status line, the position readout,
     the trail and the target mark follow it."""
@@ -386,9 +397,11 @@ class MachineState(QObject):
             or (caps is not None and caps.homing and isinstance(job, jobs.HomeJob))
             or (caps is not None and caps.absolute_moves and isinstance(job, jobs.MoveToJob))
         ):
-            self.position_lost = False  # a known place again
+            was_lost, self.position_lost = self.position_lost, False  # a known place again
             if readout.status() in ("lost", "uncounted"):
                 readout.set_status("live")
+            if was_lost:  # the "position unknown" message goes: counting starts here
+                self._tell(_known_again(job))
         elif (
             self.position_lost and self.lost_status == "uncounted" and isinstance(job, jobs.HomeJob)
         ):
