@@ -4,6 +4,7 @@ a position the session claims (measured, or commanded and confirmed) is the devi
 
 from __future__ import annotations
 
+import json
 import math
 import signal
 import tempfile
@@ -16,6 +17,7 @@ from typing import Any
 import drivers
 from drivers.events import PositionReport
 from drivers.session import DeviceSession
+from tests.e2e_support import Run, motionctl
 from tests.simproc import SimProcess
 
 Point = tuple[float, float, float]
@@ -67,6 +69,8 @@ class Profile:
     """Set Home makes the device's own axes (0, 0, 0); False: `where` counts from power-on
     (Visiomex, Firmata) and the model keeps the origin."""
     speeds: tuple[float, ...] = (5.0, 10.0, 20.0)
+    cli_options: tuple[str, ...] = ()
+    """What motionctl is given on every run (Firmata: its steps per mm)."""
 
 
 PROFILES: dict[str, Profile] = {
@@ -83,6 +87,7 @@ PROFILES: dict[str, Profile] = {
         step=1 / 80,
         axes=1,
         origin_on_device=False,
+        cli_options=("--steps-per-mm", "80"),
     ),
 }
 
@@ -127,6 +132,33 @@ class Rig:
                 self.sim.stop(signal.SIGTERM)
         finally:
             self._dir.cleanup()
+
+
+def motionctl_run(rig: Rig, *args: str) -> Run:
+    """One motionctl run on the rig's device (--json, the model's travel box)."""
+    profile = rig.profile
+    options = ("--json", "--travel", TRAVEL, *profile.cli_options)
+    return motionctl(profile.protocol, rig.path, *args, options=options, timeout=30)
+
+
+def run_report(run: Run) -> PositionReport | None:
+    """The position a motionctl run printed (None: none, or unknown): measured unless it says
+    otherwise; a count (Visiomex, Firmata) or a kept commanded position (pi-frame) counts as
+    confirmed, for motionctl gives it as the device's."""
+    out = json.loads(run.stdout) if run.stdout.strip() else {}
+    if out.get("position") is None:  # none, or null: "position unknown" (position_note)
+        return None
+    x, y, z = [*out["position"], 0.0, 0.0][:3]
+    measured = bool(out.get("measured", True))
+    counted = bool(out.get("counted") or out.get("commanded"))
+    return PositionReport(x, y, z, measured=measured, confirmed=counted)
+
+
+def axes_mm(profile: Profile, x: int, y: int, z: int) -> Point:
+    """Quarters of a mm (Z: eighths, to a quarter) as mm, on the axes the device moves (the
+    known defects' axes left out)."""
+    keep_y = profile.axes >= 2 and "y_moves" not in KNOWN_DEFECTS.get(profile.protocol, set())
+    return (x / 4, y / 4 if keep_y else 0.0, round(z / 8) / 4 if profile.axes >= 3 else 0.0)
 
 
 def claims(report: PositionReport) -> bool:

@@ -6,11 +6,14 @@ a pty. After every step the position the session reports equals the simulator's 
 (`where`) within one motor step, or is marked as not measured and not confirmed: a measured
 report or a "commanded, confirmed" one is a claim of truth, never a confident wrong value. A
 commanded count the session keeps from its own Set Home (Visiomex, Firmata, pi-frame) is held to
-the same rule once its move had the time to end.
+the same rule once its move had the time to end. A second, smaller machine drives the same
+actions through motionctl, one process a run, on the protocols whose position motionctl keeps
+between runs (pi-frame, Firmata, Visiomex): what a run prints as the position is the device's,
+and a run refused for want of a position ("position unknown") moved nothing.
 
 Seeded (a seed per protocol, no example database, no shrinking), bounded in steps and time;
 the steps that ran clean are logged per protocol (`pytest -rA` shows them: "model truth:
-coxiris: 72 steps ran clean (...)") and kept as the test's `model_steps` property. The
+coxiris: 48 steps ran clean (...)") and kept as the test's `model_steps` property. The
 defects it found are in KNOWN_DEFECTS (tests/model_truth_support.py), each with its smallest
 example at the end of this file.
 """
@@ -40,10 +43,13 @@ from tests.model_truth_support import (
     Point,
     Profile,
     Rig,
+    axes_mm,
     claims,
     inside,
+    motionctl_run,
     moving,
     off_by,
+    run_report,
     settled,
     still,
 )
@@ -54,14 +60,15 @@ log = logging.getLogger(__name__)
 # Examples and steps per protocol: about 90 s for all five on a 2-core machine. A Visiomex
 # move is a packet and 1 s of silence, so it gets fewer steps.
 BUDGET = {
-    "coxiris": (5, 12),
-    "laser-frame": (5, 12),
-    "pi-frame": (5, 12),
-    "firmata": (4, 10),
-    "visiomex": (4, 6),
+    "coxiris": (4, 12),
+    "laser-frame": (4, 12),
+    "pi-frame": (4, 12),
+    "firmata": (3, 10),
+    "visiomex": (3, 6),
 }
-# Each protocol's seed: its own mix of actions (Hypothesis turns rules off per example).
-SEEDS = {"coxiris": 1, "laser-frame": 2, "pi-frame": 3, "firmata": 4, "visiomex": 9}
+# Each protocol's seed, picked for a mix of every action (Hypothesis turns some rules off in
+# each example, and its first example is the first rule, check_readout, at every step).
+SEEDS = {"coxiris": 58, "laser-frame": 4, "pi-frame": 46, "firmata": 48, "visiomex": 48}
 STEPS: dict[str, Counter[str]] = {}
 """Steps that ran and were checked, per protocol and action (reported after each test)."""
 QUARTERS = st.integers(-8, 8)  # a jog: -2..2 mm in quarters of a mm (whole steps everywhere)
@@ -86,10 +93,7 @@ class TruthMachine(RuleBasedStateMachine):
 
     # -- what the model keeps ------------------------------------------------------------------
     def _axes(self, x: int, y: int, z: int) -> Point:
-        """Quarters of a mm as mm, on the axes this device moves (known defects left out)."""
-        axes = self.profile.axes
-        keep_y = axes >= 2 and "y_moves" not in KNOWN_DEFECTS.get(self.profile.protocol, set())
-        return (x / 4, y / 4 if keep_y else 0.0, round(z / 8) / 4 if axes >= 3 else 0.0)
+        return axes_mm(self.profile, x, y, z)
 
     def _here(self) -> Point:
         report = self.session.position()
@@ -283,6 +287,18 @@ class TruthMachine(RuleBasedStateMachine):
             self.rig.close()
 
 
+def _settings(examples: int, steps: int) -> settings:
+    """Bounded: so many examples of at most so many steps, no database, no shrinking."""
+    return settings(
+        max_examples=examples,
+        stateful_step_count=steps,
+        deadline=None,
+        database=None,
+        phases=(Phase.explicit, Phase.generate),  # no shrinking: the time stays bounded
+        suppress_health_check=list(HealthCheck),
+    )
+
+
 def _machine(protocol: str) -> type[TruthMachine]:
     """The machine for one protocol, seeded: the same steps on every run."""
     machine = type(f"TruthMachine_{protocol}", (TruthMachine,), {"profile": PROFILES[protocol]})
@@ -311,16 +327,125 @@ def test_positions_reported_are_the_devices(protocol: str, steps_report: str) ->
     examples, steps = BUDGET[protocol]
     run_state_machine_as_test(
         _machine(protocol),
-        settings=settings(
-            max_examples=examples,
-            stateful_step_count=steps,
-            deadline=None,
-            database=None,
-            phases=(Phase.explicit, Phase.generate),  # no shrinking: the time stays bounded
-            suppress_health_check=list(HealthCheck),
-        ),
+        settings=_settings(examples, steps),
     )
     assert STEPS[protocol].total() >= examples, "the model ran no steps"
+
+
+# -- the same actions through motionctl, one process a run ---------------------------------
+CTL_BUDGET = {"pi-frame": (2, 6), "firmata": (2, 6), "visiomex": (2, 5)}
+"""Examples and steps: the protocols whose position motionctl keeps between runs."""
+CTL_SEEDS = {"pi-frame": 78, "firmata": 54, "visiomex": 49}
+UNKNOWN = "position unknown"  # how motionctl refuses a move it has no position for
+
+
+class MotionctlMachine(RuleBasedStateMachine):
+    """One device; every action a motionctl run of its own, the count kept in the test's
+    settings file (tests/conftest.py: a temporary MOTIONPANEL_SETTINGS) between runs."""
+
+    profile: Profile
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.rig = Rig(self.profile)  # a new path each example: no count kept for it yet
+        self.origin: Point = (0.0, 0.0, 0.0)
+        self.known = self.profile.protocol not in ("visiomex", "firmata", "pi-frame")
+        self.history: list[str] = []
+        if self.profile.protocol == "firmata":  # its stepper, kept for the port
+            configured = motionctl_run(self.rig, "config", "--steps-per-rev", "200", "--pins",
+                                       "8", "9")  # fmt: skip
+            assert configured.returncode == 0, configured.stderr
+
+    def _truth(self) -> Point:
+        raw = self.rig.where()
+        return (raw[0] - self.origin[0], raw[1] - self.origin[1], raw[2] - self.origin[2])
+
+    def _run(self, *args: str) -> PositionReport | None:
+        """A run; the rule on what it printed (or on its refusal: nothing moved)."""
+        what = " ".join(args)
+        self.history.append(what)
+        STEPS.setdefault("motionctl " + self.profile.protocol, Counter())[args[0]] += 1
+        before = self.rig.where()
+        run = motionctl_run(self.rig, *args)
+        if run.returncode != 0:
+            refused = not self.known and run.returncode == 2 and UNKNOWN in run.stderr
+            assert refused, f"motionctl {what}: exit {run.returncode}: {run.stderr}; {self.history}"
+            assert self.rig.where() == before, f"refused, yet moved: {self.history}"
+            return None
+        report = run_report(run)
+        if report is not None:
+            tolerance = self.profile.step * 1.01 + 1e-6
+            truth = (
+                self._truth()
+                if report.measured
+                else settled(self.rig, self.origin, report, tolerance)
+            )
+            assert not claims(report) or off_by(report, truth) <= tolerance, (
+                f"{self.profile.protocol}: motionctl {what} printed {run.stdout.strip()}; the "
+                f"device is at {truth} mm; runs: {self.history}"
+            )
+        return report
+
+    @rule()
+    def check_position(self) -> None:
+        """`motionctl position` (Hypothesis's first example: this, every step)."""
+        self._run("position")
+
+    @rule(x=QUARTERS, y=QUARTERS, z=QUARTERS)
+    def jog(self, x: int, y: int, z: int) -> None:
+        """`motionctl jog`, turned back where it would leave the box."""
+        here = self._truth() if self.known else (0.0, 0.0, 0.0)
+        delta = inside(here, axes_mm(self.profile, x, y, z))
+        self._run("jog", *(f"{d:g}" for d in delta[: self.profile.axes]))
+
+    @rule(x=TARGETS, y=TARGETS, z=TARGETS)
+    def move(self, x: int, y: int, z: int) -> None:
+        """`motionctl move` to a point in the box."""
+        target = axes_mm(self.profile, x, y, z)
+        if self._run("move", *(f"{v:g}" for v in target[: self.profile.axes])) is not None:
+            self.known = True  # an absolute target (pi-frame) is known once reached
+
+    @rule()
+    def home(self) -> None:
+        """`motionctl home`."""
+        self._run("home")
+
+    @rule()
+    def set_home(self) -> None:
+        """`motionctl set-home`: the count starts here (where the stage stands still)."""
+        if not self.profile.origin_on_device:
+            self.origin = self.rig.where()
+        self.known = True
+        self._run("set-home")
+
+    @rule(index=st.integers(0, 2))
+    def speed(self, index: int) -> None:
+        """`motionctl speed`."""
+        self._run("speed", f"{self.profile.speeds[index % len(self.profile.speeds)]:g}")
+
+    def teardown(self) -> None:
+        """Stop the simulator."""
+        self.rig.close()
+
+
+@pytest.mark.parametrize(
+    "protocol", [pytest.param(p, marks=pytest.mark.timeout(60)) for p in CTL_BUDGET]
+)
+def test_motionctl_positions_across_runs_are_the_devices(
+    protocol: str, request: pytest.FixtureRequest, caplog: pytest.LogCaptureFixture
+) -> None:
+    caplog.set_level(logging.INFO, logger=__name__)
+    STEPS["motionctl " + protocol] = Counter()
+    examples, steps = CTL_BUDGET[protocol]
+    machine = type(f"MotionctlMachine_{protocol}", (MotionctlMachine,),
+                   {"profile": PROFILES[protocol]})  # fmt: skip
+    run_state_machine_as_test(seed(CTL_SEEDS[protocol])(machine), settings=_settings(examples,
+                              steps))  # fmt: skip
+    ran = STEPS["motionctl " + protocol]
+    request.node.user_properties.append(("model_steps", ran.total()))
+    actions = ", ".join(f"{name} {count}" for name, count in sorted(ran.items()))
+    log.info("model truth: motionctl %s: %d runs ran clean (%s)", protocol, ran.total(), actions)
+    assert ran.total() >= examples, "the model ran no steps"
 
 
 # -- the defects the model found, each as its smallest example ------------------------------
