@@ -86,6 +86,9 @@ class MachineState(QObject):
         w.speed_limits_changed.connect(self.window.speed.set_range)
         w.move_started.connect(self._on_move_started)
         w.notice.connect(self._on_notice)
+        readout = self.window.readout  # the positions in notices in the units it shows
+        readout.shown_changed.connect(lambda: setattr(w, "units", readout.units()))
+        w.units = readout.units()
         w.device_error.connect(self._on_device_error)
         w.device_note.connect(self._on_device_note)
 

@@ -15,6 +15,7 @@ from PySide6.QtCore import QCoreApplication, QObject, QThread, QTimer, Signal, S
 
 from app.common.macros import Macro, MacroStopped, run_macro
 from app.common.messages import localized
+from app.common.position_messages import Lengths, position_localized
 from app.window import jobs
 from drivers.capabilities import Capabilities
 from drivers.control_lines import BREAK_S, ControlLines
@@ -157,6 +158,7 @@ class SerialWorker(QObject):
         self._session: DeviceSession | None = None
         self._link: Link | None = None  # the session's (None: not connected)
         self._motion: Motion | None = None  # the session's
+        self.units = "mm"  # the operator's, for the positions its notices state (set by the window)
         self._timer: QTimer | None = None
         self._batch: list[Traffic] = []
         self._batch_sent = 0.0
@@ -808,8 +810,11 @@ class SerialWorker(QObject):
         self._batch_sent = time.monotonic()
 
     def _on_motion_notice(self, text: str) -> None:
-        """A notice of the Motion (e.g. a move clamped), in the interface's language."""
-        self.notice.emit(localized(text))
+        """A notice of the Motion (e.g. a move clamped), in the interface's language, the
+        positions it states in the operator's units to the device's resolution."""
+        motion = self._motion
+        resolution = motion.capabilities.resolution if motion is not None else None
+        self.notice.emit(position_localized(text, Lengths(self.units, resolution)))
 
     def _on_move_started(self, start: MoveStart) -> None:
         self.target_changed.emit(start.target)  # the target as sent, after any clamping
