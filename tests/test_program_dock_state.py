@@ -16,6 +16,7 @@ from app.window.keyboard_jog import arrow_key_user
 from app.window.main_window import MainWindow
 from app.window.program_dock import ProgramDock
 from drivers.streaming import StreamProgress
+from tests.relay import wait_in_gui
 from tests.test_program_dock import GCODE, _connect, _gcode, _load, _parts, _run_to_end
 from widgets.program_panel import ProgramPanel
 
@@ -27,8 +28,12 @@ MODES = [("sim://coxiris?speed=100", "coxiris"), ("sim://pi-frame?instant=1", "p
 def _program_on(
     qtbot, window: MainWindow, tmp_path: Path, url: str, protocol: str
 ) -> tuple[ProgramPanel, ProgramDock]:
-    """The window connected to `url`, the square program loaded."""
+    """The window connected to `url` (a pi-frame sent to a known place: its program needs one),
+    the square program loaded."""
     _connect(qtbot, window, url, protocol)
+    if protocol == "pi-frame":
+        with wait_in_gui(qtbot, window.worker.job_finished, timeout=5000):
+            window.coordinates.go_requested.emit("absolute", (0.0, 0.0, 0.0))
     _load(qtbot, window, _gcode(tmp_path))
     return _parts(window)
 
