@@ -6,7 +6,7 @@ import pytest
 from PySide6.QtCore import QSize, Qt
 from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QWidget
 
-from app.window.dock_balance import DockBalance, balanced_heights, stacked
+from app.window.dock_balance import DockBalance, balanced_heights, need, stacked
 
 pytestmark = pytest.mark.timeout(60)
 LEFT = Qt.DockWidgetArea.LeftDockWidgetArea
@@ -103,3 +103,28 @@ def test_the_main_window_shows_every_left_panel_whole_when_there_is_room(qtbot, 
     qtbot.waitUntil(lambda: _scrolling(window) == [])
     for dock in stacked(window, LEFT):
         assert dock.height() >= dock.sizeHint().height(), dock.objectName()
+
+
+def test_a_column_too_short_for_all_keeps_the_top_panel_whole() -> None:
+    """1024×640 (issue 28 item 26): the position panel whole, the lower panels give up room."""
+    least = [96, 96, 96]
+    assert balanced_heights([198, 197, 96], [243, 201, 154], least=least) == [243, 152, 96]
+    assert balanced_heights([243, 152, 96], [243, 201, 154], least=least) is None  # done
+    assert balanced_heights([100, 100, 100], [250, 200, 150], least=least) is None  # no room
+
+
+def test_a_tab_brought_in_front_under_the_views_gets_its_height(qtbot) -> None:
+    """Operate's Arc tab behind Go to: in front, it gets the height it needs (grow)."""
+    window, _, bottom = _window(qtbot, [40, 40, 40])
+    arc = QDockWidget("arc", window)
+    arc.setObjectName("arc")
+    arc.setWidget(Tall(420))
+    window.tabifyDockWidget(bottom, arc)
+    bottom.widget()._height = 100
+    bottom.raise_()
+    balance = DockBalance(window, BOTTOM, grow=True)
+    balance.start()
+    qtbot.waitUntil(lambda: bottom.height() == need(bottom) < 200)
+    window.tabifiedDockWidgetActivated.emit(arc)  # as a click on its tab does
+    arc.raise_()
+    qtbot.waitUntil(lambda: arc.height() == need(arc) > 420)

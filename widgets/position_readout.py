@@ -256,6 +256,7 @@ class PositionReadout(QWidget):
         badges.addWidget(self.measured_label)
         badges.addWidget(self.status_label)
         layout.addWidget(self.badges)
+        layout.addStretch(1)  # a taller dock: the room goes under the badges, not between rows
         self._render_status()
         self._render()
 
@@ -378,8 +379,9 @@ class PositionReadout(QWidget):
         return self._measured
 
     def _show_measured(self) -> None:
-        # Not beside an estimate, which says more, nor while bridging: the panel measures nothing.
-        quiet = self._status in (ESTIMATED, BRIDGED, OBSERVED, OBSERVED_TARGET)
+        # Not beside an estimate or an unknown position, which say more, nor while bridging: the
+        # panel measures nothing (one badge fewer: the position panel fits a 640 px screen).
+        quiet = self._status in (ESTIMATED, BRIDGED, OBSERVED, OBSERVED_TARGET, UNCOUNTED, LOST)
         self.measured_label.setVisible(not self._measured and not quiet)
         self._keep_badge_height()
 

@@ -23,6 +23,9 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from app.window.dock_balance import need
+from app.window.layout_details import columns, details, shown_region, tab_bars, whole
+
 if TYPE_CHECKING:
     from PySide6.QtCore import SignalInstance
 
@@ -97,24 +100,6 @@ def watch(window: MainWindow) -> LayoutReport | None:
 def _rect(widget: QWidget, window: QWidget) -> QRect:
     """The widget's rectangle in the window's coordinates."""
     return QRect(widget.mapTo(window, QPoint(0, 0)), widget.size())
-
-
-def _shown_region(widget: QWidget) -> QRegion:
-    """The part of `widget` Qt paints: its visible region and its children's (Qt leaves the
-    opaque children out of a widget's own)."""
-    region = QRegion(widget.visibleRegion())
-    for child in widget.findChildren(QWidget):
-        if child.isVisible():
-            region += child.visibleRegion().translated(child.mapTo(widget, QPoint(0, 0)))
-    return region.intersected(QRegion(widget.rect()))
-
-
-def _whole(widget: QWidget) -> bool:
-    """Whether Qt shows all of the widget (not clipped by a scroll area, a neighbour or the
-    window's edge)."""
-    if not widget.isVisible() or widget.width() <= 0 or widget.height() <= 0:
-        return False
-    return _shown_region(widget) == QRegion(widget.rect())
 
 
 def _name(widget: QWidget) -> str:
@@ -223,8 +208,8 @@ class LayoutReport(QObject):
                     "dock_shown": dock is None or not dock.isHidden(),
                     "behind_tab": front if behind else None,  # the tab in front of it
                     "rect": list(_rect(widget, window).getRect()),
-                    "whole": _whole(widget),
-                    "shown_area": _area(_shown_region(widget)) if widget.isVisible() else 0,
+                    "whole": whole(widget),
+                    "shown_area": _area(shown_region(widget)) if widget.isVisible() else 0,
                     "covered_by": _covered_by(widget, window),
                     "inside": inside,
                 }
@@ -242,7 +227,7 @@ class LayoutReport(QObject):
                     "visible": widget.isVisible(),
                     "rect": list(rect.getRect()),
                     "inside_window": bounds.contains(rect),
-                    "whole": _whole(widget),
+                    "whole": whole(widget),
                 }
             )
         parts = [
@@ -267,6 +252,7 @@ class LayoutReport(QObject):
                     "name": _name(part),
                     "rect": list(part.geometry().getRect()),
                     "minimum": list(part.minimumSizeHint().toTuple()),
+                    "need": need(part) if isinstance(part, QDockWidget) else None,
                 }
                 for part in parts
             ],
@@ -276,6 +262,9 @@ class LayoutReport(QObject):
             "plots": plots,
             "parameter_rows": _whole_rows(window),
             "located": _located(window),
+            "details": details(window),
+            "columns": columns(window),
+            "tab_bars": tab_bars(window),
         }
 
     def write(self) -> None:
@@ -296,7 +285,7 @@ def _located(window: QWidget) -> dict[str, dict[str, object]]:
     return {
         name: {
             "rect": list(_rect(widget, window).getRect()),
-            "whole": _whole(widget),
+            "whole": whole(widget),
             "enabled": widget.isEnabled(),
         }
         for name, widget in found.items()
