@@ -11,6 +11,8 @@ from PySide6.QtGui import QColor, QGuiApplication, QOffscreenSurface, QOpenGLCon
 from PySide6.QtWidgets import QToolButton, QWidget
 
 from widgets._axes import Box
+from widgets._i18n import number_text
+from widgets._units import INCH, MM, MM_PER_INCH, check_units
 from widgets.gl_share import share_opengl_contexts as share_opengl_contexts
 
 # Qt platforms whose integration cannot draw a QOpenGLWidget (no RasterGLSurface capability).
@@ -25,6 +27,8 @@ NO_CONTEXT = "no OpenGL context can be created on this display"
 
 MIN_SPAN_MM = 10.0
 GRID_CELLS = 10
+MM_STEPS = (1.0, 2.0, 5.0, 10.0)  # grid spacings in mm: 1-2-5 x 10^n
+INCH_STEPS = (1.0, 2.5, 5.0, 10.0)  # in inches: 0.1, 0.25, 0.5, 1, 2.5 ...
 FIELD_OF_VIEW = 35.0  # degrees across; pyqtgraph's 60 distorts the flat presets
 MARGINS_PX = np.array((8, 8, 20, 30))  # left, right, bottom (scale text), top (buttons)
 GRID_CONTRAST = 2.3  # the grid's grey against the background: visible, below the data
@@ -110,23 +114,30 @@ class Grid(NamedTuple):
         return np.array(vertical + horizontal, dtype=np.float32).reshape(-1, 3)
 
 
-def nice_spacing(span: float, cells: int = GRID_CELLS) -> float:
-    """The 1-2-5 x 10^n mm spacing that divides `span` into about `cells` cells."""
+def nice_spacing(
+    span: float, cells: int = GRID_CELLS, steps: tuple[float, ...] = MM_STEPS
+) -> float:
+    """The spacing of `steps` x 10^n (1-2-5 by default) that divides `span` into about `cells`
+    cells."""
     raw = max(float(span), 1e-9) / cells
     decade = 10.0 ** math.floor(math.log10(raw))
-    candidates = [m * decade for m in (1.0, 2.0, 5.0, 10.0)]
+    candidates = [m * decade for m in steps]
     return min(candidates, key=lambda c: abs(math.log(raw / c)))
 
 
-def grid_for(points: np.ndarray, pad: float = 0.05) -> Grid:
+def grid_for(points: np.ndarray, pad: float = 0.05, units: str = MM) -> Grid:
     """A grid covering the origin and the XY of `points` ((n, 3) mm), with `pad` headroom.
 
-    Each side is at least half the longest one; the edges fall on grid lines.
+    Each side is at least half the longest one; the edges fall on grid lines. The grid is in
+    mm; with `units` "in" its lines are 0.1, 0.25, 0.5, 1... inch apart, from the origin.
     """
+    check_units(units)
+    unit = MM_PER_INCH if units == INCH else 1.0
     xy = np.vstack([np.zeros((1, 2)), np.asarray(points, dtype=float).reshape(-1, 3)[:, :2]])
+    xy = xy / unit
     lo, hi = xy.min(axis=0), xy.max(axis=0)
-    span = max(float(np.max(hi - lo)), MIN_SPAN_MM)
-    spacing = nice_spacing(span)
+    span = max(float(np.max(hi - lo)), MIN_SPAN_MM / unit)
+    spacing = nice_spacing(span, steps=INCH_STEPS if units == INCH else MM_STEPS)
     lo = np.where(lo < 0, lo - pad * span, lo)
     hi = np.where(hi > 0, hi + pad * span, hi)
     for axis in range(2):
@@ -136,9 +147,15 @@ def grid_for(points: np.ndarray, pad: float = 0.05) -> Grid:
                 hi[axis] += short
             else:
                 lo[axis] -= short
-    lo = np.floor(lo / spacing + 1e-9) * spacing + 0.0  # + 0.0: no -0.0
-    hi = np.ceil(hi / spacing - 1e-9) * spacing + 0.0
-    return Grid(float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]), spacing)
+    lo = np.floor(lo / spacing + 1e-9) * spacing * unit + 0.0  # + 0.0: no -0.0
+    hi = np.ceil(hi / spacing - 1e-9) * spacing * unit + 0.0
+    return Grid(float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1]), spacing * unit)
+
+
+def spacing_text(spacing_mm: float, units: str = MM) -> str:
+    """A grid spacing in `units` as the scale writes it ("0.25", "0,25" in French)."""
+    check_units(units)
+    return number_text(spacing_mm / (MM_PER_INCH if units == INCH else 1.0), 6)
 
 
 def axis_ends(grid: Grid, top: float) -> np.ndarray:

@@ -173,6 +173,12 @@ class PlotFit(QObject):
         )
         self.refit()
 
+    def set_labels(self, labels: dict[str, Sequence[str]]) -> None:
+        """New axis labels (long form first, as given to the constructor); laid out again."""
+        self.labels = {side: [text for text in texts if text] for side, texts in labels.items()}
+        self.shown.clear()  # each side's label set again
+        self.refit()
+
     def refit(self) -> None:
         """Lay the plot out again for the widget's present size."""
         self.apply(self.widget.width(), self.widget.height())

@@ -23,6 +23,7 @@ from widgets._gl_scene import preview_array, preview_tuples
 from widgets._pacer import run_paced
 from widgets._plot_fit import PlotFit, fitted_plot_widget
 from widgets._program_path import ProgramPath, program_arrays
+from widgets._units import INCH, MM, MM_PER_INCH, check_units
 from widgets._view_common import REFRESH_INTERVAL_MS, BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
@@ -90,6 +91,8 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self._preview = np.zeros((0, 3))
         self._program: ProgramPath | None = None
         self._program_done = 0
+        self._units = MM  # what the axes are written in (the data, the items: mm)
+        self.xy_grid, self.time_grid = _grid(), _grid()
 
         self.xy_plot = fitted_plot_widget()
         self.xy_plot.setObjectName("positionXYPlot")
@@ -100,15 +103,8 @@ class PositionView2D(BufferedViewMixin, QWidget):
             )
         )
         xy = self.xy_plot.getPlotItem()
-        self.xy_fit = PlotFit(
-            self.xy_plot,
-            self.tr("XY (from above)"),
-            {
-                "bottom": [self.tr("X (mm)"), self.tr("X")],
-                "left": [self.tr("Y (mm)"), self.tr("Y")],
-            },
-        )
-        xy.addItem(_grid(), ignoreBounds=True)
+        self.xy_fit = PlotFit(self.xy_plot, self.tr("XY (from above)"), self._xy_labels())
+        xy.addItem(self.xy_grid, ignoreBounds=True)
         xy.setAspectLocked(True)
         self.workspace_outline = pg.PlotCurveItem(
             pen=pg.mkPen(WORKSPACE_COLOUR, width=1.5, style=Qt.PenStyle.DashLine)
@@ -155,7 +151,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.time_plot.setObjectName("positionTimePlot")
         self.time_plot.setToolTip(self.tr("X, Y and Z against time; dashed lines: target"))
         tp = self.time_plot.getPlotItem()
-        tp.addItem(_grid(), ignoreBounds=True)
+        tp.addItem(self.time_grid, ignoreBounds=True)
         tp.setClipToView(True)
         tp.setDownsampling(auto=True, mode="peak")
         self.curves = {
@@ -174,10 +170,7 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self.time_fit = PlotFit(
             self.time_plot,
             self.tr("Position against time"),
-            {
-                "bottom": [self.tr("time (s, 0 = latest sample)"), self.tr("t (s)")],
-                "left": [self.tr("position (mm)"), self.tr("mm")],
-            },
+            self._time_labels(),
             legend=self.legend,
             left_ticks=TIME_TICK_SAMPLE,
             keep_header=True,
@@ -232,6 +225,46 @@ class PositionView2D(BufferedViewMixin, QWidget):
         self._xy_retry.setSingleShot(True)
         self._xy_retry.timeout.connect(self._timed_refresh)
         self.reset_view()
+
+    # -- units ---------------------------------------------------------------------------------
+    def set_units(self, units: str) -> None:
+        """Write the lengths on the axes in "mm" or "in": labels, ticks and grid lines (round
+        inches); what is drawn stays where it is (the data and the view ranges are in mm)."""
+        check_units(units)
+        if units == self._units:
+            return
+        self._units = units
+        per_unit = 1.0 / MM_PER_INCH if units == INCH else 1.0  # values shown per mm
+        for side in ("bottom", "left"):
+            self.xy_plot.getPlotItem().getAxis(side).setScale(per_unit)
+        self.time_plot.getPlotItem().getAxis("left").setScale(per_unit)
+        self.xy_grid.set_value_scale(per_unit, per_unit)
+        self.time_grid.set_value_scale(1.0, per_unit)
+        self.xy_fit.set_labels(self._xy_labels())
+        self.time_fit.set_labels(self._time_labels())
+
+    def units(self) -> str:
+        """The units the axes are written in: "mm" or "in"."""
+        return self._units
+
+    def _xy_labels(self) -> dict[str, list[str]]:
+        """The XY plot's axis labels (long, short) in the units shown."""
+        if self._units == INCH:
+            return {
+                "bottom": [self.tr("X (in)"), self.tr("X")],
+                "left": [self.tr("Y (in)"), self.tr("Y")],
+            }
+        return {
+            "bottom": [self.tr("X (mm)"), self.tr("X")],
+            "left": [self.tr("Y (mm)"), self.tr("Y")],
+        }
+
+    def _time_labels(self) -> dict[str, list[str]]:
+        """The time plot's axis labels (long, short) in the units shown."""
+        time = [self.tr("time (s, 0 = latest sample)"), self.tr("t (s)")]
+        if self._units == INCH:
+            return {"bottom": time, "left": [self.tr("position (in)"), self.tr("in")]}
+        return {"bottom": time, "left": [self.tr("position (mm)"), self.tr("mm")]}
 
     def refresh(self) -> None:
         """Redraw both plots from the buffer if it changed since the last refresh.

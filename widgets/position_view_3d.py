@@ -46,6 +46,7 @@ from widgets._gl_scene import (
     preview_array,
     preview_tuples,
     segment_vertices,
+    spacing_text,
 )
 from widgets._gl_scene import (  # here for its callers of before; it imports no OpenGL
     share_opengl_contexts as share_opengl_contexts,
@@ -53,6 +54,7 @@ from widgets._gl_scene import (  # here for its callers of before; it imports no
 from widgets._i18n import fill
 from widgets._pacer import run_paced
 from widgets._program_path import ProgramPath, program_arrays
+from widgets._units import INCH, MM, check_units, unit_text
 from widgets._view_common import REFRESH_INTERVAL_MS, BufferedViewMixin
 from widgets.position_buffer import PositionBuffer
 
@@ -245,7 +247,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
     (`failure`); its methods keep working and draw nothing.
 
     The grid covers the origin, the trail, the target and the workspace box, with a 1-2-5 mm
-    spacing; it grows when the data leaves it. A view preset ("top", "front", "side", "iso",
+    spacing (0.1, 0.25, 0.5, 1 in... in inches: `set_units`); it grows when the data leaves it. A view preset ("top", "front", "side", "iso",
     "fit") stays in force, refitted on resizes and grid changes, until the mouse moves the camera.
     """
 
@@ -266,6 +268,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self._follow = False
         self._estimated = False
         self._preset: str | None = "iso"
+        self._units = MM  # what the grid, its scale and the axis labels are in (data: mm)
         self._fitted_size = QSize()
         self._framebuffer_key: tuple[int, int, float] | None = None
         self._image = QImage()
@@ -296,7 +299,9 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self.workspace_item.setVisible(False)
         self.labels = [
             gl.GLTextItem(
-                text=f"{name} (mm)", color=[int(255 * c) for c in colour], font=self._label_font
+                text=_axis_label(name, MM),
+                color=[int(255 * c) for c in colour],
+                font=self._label_font,
             )
             for name, colour in zip("XYZ", AXIS_COLOURS, strict=True)
         ]
@@ -481,6 +486,28 @@ class PositionView3D(BufferedViewMixin, QWidget):
         """The distance between grid lines, in mm."""
         return self._grid.spacing
 
+    def scale_text(self) -> str:
+        """The grid's scale as written at the bottom, in the units shown ("grid 0.25 in")."""
+        if self._units == INCH:
+            return fill(self.tr("grid %1 in"), spacing_text(self._grid.spacing, INCH))
+        return fill(self.tr("grid %1 mm"), spacing_text(self._grid.spacing))
+
+    def set_units(self, units: str) -> None:
+        """Grid, scale and axis labels in "mm" or "in" (0.1, 0.25, 0.5, 1... in apart); what
+        is drawn stays where it is (the data are in mm)."""
+        check_units(units)
+        if units == self._units:
+            return
+        self._units = units
+        for name, label in zip("XYZ", self.labels, strict=True):
+            label.setData(text=_axis_label(name, units))
+        self._fit_grid()
+        self._redraw()
+
+    def units(self) -> str:
+        """The units the grid and the labels are in: "mm" or "in"."""
+        return self._units
+
     def reset_view(self) -> None:
         """Look at the whole scene from above at an angle (the "iso" preset)."""
         self.set_view_preset("iso")
@@ -543,7 +570,8 @@ class PositionView3D(BufferedViewMixin, QWidget):
     def _fit_grid(self) -> None:
         """Size the grid, axes and labels to the data and workspace; refit an active preset."""
         points = self._data_points()
-        self._grid = grid = grid_for(points, pad=0.0 if self._workspace else 0.05)
+        pad = 0.0 if self._workspace else 0.05
+        self._grid = grid = grid_for(points, pad=pad, units=self._units)
         self.grid_item.setData(pos=grid.lines())
         self._axis_ends = axis_ends(grid, float(points[:, 2].max()) if len(points) else 0.0)
         vertices = np.zeros((6, 3), dtype=np.float32)
@@ -727,7 +755,7 @@ class PositionView3D(BufferedViewMixin, QWidget):
         painter.drawText(
             self.rect().adjusted(6, 0, 0, -4),
             Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignBottom,
-            fill(self.tr("grid %1 mm"), f"{self.grid_spacing():g}"),
+            self.scale_text(),
         )
 
     # -- camera: the mouse handlers of pyqtgraph's view, then a new image ----------------------
@@ -750,6 +778,11 @@ class PositionView3D(BufferedViewMixin, QWidget):
         self.scene.wheelEvent(event)
         self._preset = None
         self._redraw()
+
+
+def _axis_label(name: str, units: str) -> str:
+    """An axis's label in the scene: "X (mm)", "X (in)"."""
+    return f"{name} ({unit_text(units)})"
 
 
 def _blended_without_depth() -> dict:
@@ -843,6 +876,10 @@ class PositionView3DPlaceholder(QLabel):
 
     def set_estimated(self, estimated: bool) -> None:
         """Nothing to draw."""
+
+    def set_units(self, units: str) -> None:
+        """Nothing drawn in any units."""
+        check_units(units)
 
     def is_estimated(self) -> bool:
         """Nothing drawn: False."""

@@ -15,7 +15,7 @@ from app.common.settings import device_key
 from app.window.preferences import Preferences, read_preferences, write_preferences
 from app.window.work_frame import WorkFrame
 from widgets._i18n import fill
-from widgets.lazy_view import LazyPart, built
+from widgets.lazy_view import LazyPart, LazyView, built
 
 if TYPE_CHECKING:
     from app.window.macro_dock import MacroDock
@@ -217,8 +217,9 @@ class WindowTools(QObject):
 
     def apply_units(self) -> None:
         """Lengths and speeds typed and shown in the preferences' units (mm or inches): the Go
-        to fields, the jog step, the speed and, once built, the arc; they still hand the window
-        mm and mm/s. Converts what is shown; sends nothing."""
+        to fields, the jog step, the speed and, once built, the arc and the 2D and 3D views'
+        axes, grid and scale; they still hand the window mm and mm/s, and the views draw in mm.
+        Converts what is shown; sends nothing."""
         window, units = self.window, self.prefs.units
         window.coordinates.set_units(units)
         window.jog_panel.set_units(units)
@@ -226,6 +227,9 @@ class WindowTools(QObject):
         devices = window.devices
         if built(devices):  # else the step added to window.views sets it once it is built
             devices.arc.set_units(units)
+        for view in (window.view3d, window.view2d):
+            if not isinstance(view, LazyView):  # a stand-in: that step sets it once built
+                view.set_units(units)  # type: ignore[attr-defined]
 
     # -- settings ------------------------------------------------------------------------------
     def edit_settings(self) -> None:
