@@ -247,8 +247,9 @@ class PositionView3D(BufferedViewMixin, QWidget):
     (`failure`); its methods keep working and draw nothing.
 
     The grid covers the origin, the trail, the target and the workspace box, with a 1-2-5 mm
-    spacing (0.1, 0.25, 0.5, 1 in... in inches: `set_units`); it grows when the data leaves it. A view preset ("top", "front", "side", "iso",
-    "fit") stays in force, refitted on resizes and grid changes, until the mouse moves the camera.
+    spacing (0.1, 0.25, 0.5, 1 in... in inches: `set_units`); it grows when the data leaves
+    it. A view preset ("top", "front", "side", "iso", "fit") stays in force, refitted on
+    resizes and grid changes, until the mouse moves the camera.
     """
 
     def __init__(self, buffer: PositionBuffer, parent: QWidget | None = None) -> None:
