@@ -29,7 +29,6 @@ from PySide6.QtWidgets import (
     QAbstractItemView,
     QGridLayout,
     QGroupBox,
-    QHeaderView,
     QLabel,
     QLineEdit,
     QStyledItemDelegate,
@@ -51,6 +50,7 @@ from widgets.parameter_values import (
     translated,
     with_unit,
 )
+from widgets.table_columns import FittedColumns
 
 COLUMNS = (  # the headers, translated at use (ParameterModel context)
     QT_TRANSLATE_NOOP("ParameterModel", "ID"),
@@ -62,7 +62,8 @@ COLUMNS = (  # the headers, translated at use (ParameterModel context)
     QT_TRANSLATE_NOOP("ParameterModel", "Description"),
     QT_TRANSLATE_NOOP("ParameterModel", "Status"),
 )
-COLUMN_WIDTHS = (40, 170, 60, 100, 110, 60, 240, 220)  # Description stretches
+COLUMN_WIDTHS = (40, 170, 60, 100, 110, 60, 240, 160)  # Description takes the width left
+DESC_LEAST = 240  # px: the Description never narrower (the table scrolls sideways instead)
 ID_COL, NAME_COL, UNIT_COL, VALUE_COL, WRITTEN_COL, KIND_COL, DESC_COL, STATUS_COL = range(8)
 CHANGED_BACKGROUND = "#fff3cd"
 OUTPUT_COLOUR = "#757575"
@@ -468,7 +469,11 @@ class ParameterTableView(QTableView):
         header.setMinimumSectionSize(36)
         for column, width in enumerate(COLUMN_WIDTHS):
             header.resizeSection(column, width)
-        header.setSectionResizeMode(DESC_COL, QHeaderView.ResizeMode.Stretch)
+        # No Stretch section (it pinned the others: a border dragged did nothing once it was
+        # at its minimum): Name and Last written fit their text ("600 s (computed)"), the
+        # Description takes the width left, at least DESC_LEAST, scrolling sideways below that.
+        fitted = (NAME_COL, WRITTEN_COL)
+        self.columns = FittedColumns(self, fitted, {DESC_COL: 1.0}, DESC_LEAST)
         self.setToolTip(
             self.tr("Double-click a value, or select a row and press Enter or type, to edit")
         )

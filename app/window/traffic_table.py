@@ -35,6 +35,7 @@ from PySide6.QtWidgets import QHeaderView, QStyle, QTableView
 from drivers.traffic_index import TrafficIndex
 from drivers.traffic_lines import TrafficLine, escape
 from widgets._i18n import fill
+from widgets.table_columns import FittedColumns
 
 TEXT, HEX, MIXED = "text", "hex", "mixed"
 DISPLAY_MODES = (TEXT, HEX, MIXED)
@@ -53,6 +54,8 @@ CSV_COLUMNS = (
     "first_copy", "time_iso",
 )  # fmt: skip
 LINE, TIME, DIRECTION, BYTES, MEANING, REPLY = range(len(COLUMNS))
+REPLY_CHARS = 20  # "↩ #123456 1234.5 ms"
+LEAST_CHARS = 16  # Bytes and Meaning never narrower (the console scrolls sideways instead)
 KIND_NAMES = {  # the kinds' names shown (RawConsole context); the keys stay as they are
     "motion": QT_TRANSLATE_NOOP("RawConsole", "motion"),
     "query": QT_TRANSLATE_NOOP("RawConsole", "query"),
@@ -407,6 +410,11 @@ class TrafficView(QTableView):
         rows.setVisible(False)
         rows.setSectionResizeMode(QHeaderView.ResizeMode.Fixed)
         rows.setDefaultSectionSize(self.fontMetrics().height() + 4)
+        # The Reply ("↩ #1234 12.3 ms") as wide as it needs; Bytes and Meaning share the rest,
+        # not the Reply, mostly empty, as the last section stretched did.
+        digit = self.fontMetrics().horizontalAdvance("0")
+        self.horizontalHeader().resizeSection(REPLY, digit * REPLY_CHARS + 12)
+        self.columns = FittedColumns(self, (), {BYTES: 1.0, MEANING: 1.0}, digit * LEAST_CHARS)
 
     def fit_bytes(
         self, text: str, room: int, metrics: QFontMetrics | None = None, fixed: bool | None = None
@@ -488,6 +496,8 @@ class TrafficView(QTableView):
                 text = cells[column] if column != REPLY else model.reply(row)
                 if column == BYTES:
                     text = self.fit_bytes(text, room, metrics, fixed)
+                elif column >= MEANING and text:  # cut with "…" (the tooltip has it whole)
+                    text = metrics.elidedText(text, Qt.TextElideMode.ElideRight, room)
                 if text:
                     if slanted is not shown_italic:
                         shown_italic = slanted
