@@ -33,9 +33,8 @@ FIRMATA = {"steps_per_mm": 80.0, "steps_per_rev": 200.0, "pin1": 8.0, "pin2": 9.
 # entry then (and the xfail of its example in tests/test_model_truth.py); the model must pass.
 KNOWN_DEFECTS: dict[str, set[str]] = {
     "visiomex": {
-        # Issue 28 item 1: at power-on parameters the firmware's Y loop makes no step, but the
-        # session counts the Y move as made ("commanded, confirmed"). No Y moves.
-        "y_moves",
+        # ("y_moves", no Y moves, was here for issue 28 item 1 until da2a695 counted the
+        # firmware's Y loop: the model passes with them.)
         # Found by this model (test_visiomex_count_after_reopen): a session opened on a
         # Visiomex that has moved starts its count at (0, 0, 0) "commanded" where the stage
         # stands, then reports each move "commanded, confirmed" from there: a confident
