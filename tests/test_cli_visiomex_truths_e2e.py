@@ -28,9 +28,10 @@ def motionctl(port: str, *args: str, log: Path | None = None) -> Run:
 
 @pytest.fixture
 def sim(tmp_path: Path) -> Iterator[tuple[SimProcess, Path]]:
-    """`motionsim visiomex --instant --record FILE` (moves without their stepping time)."""
+    """`motionsim visiomex --instant --record FILE --control` (moves without their stepping
+    time; `where` answers the simulator's own axes)."""
     record = tmp_path / "device.log"
-    process = SimProcess("visiomex", "--instant", "--record", str(record))
+    process = SimProcess("visiomex", "--instant", "--record", str(record), control=True)
     yield process, record
     assert process.stop() == 0
 
@@ -45,6 +46,11 @@ def logs(tmp_path: Path) -> Callable[[], Path]:
         return made[-1]
 
     return new
+
+
+def _where(process: SimProcess) -> tuple[float, ...]:
+    """The simulator's own axes, in mm (its `where` answers them)."""
+    return tuple(float(value) for value in process.fault("where").split()[2:4])  # ok where X Y
 
 
 def _debug_value(log: Path, label: str) -> str:
@@ -69,11 +75,13 @@ def test_rotational_and_steps_jogs_report_their_unit_and_the_firmware_reading(
     lines = turned.stdout.strip().splitlines()
     assert lines[0] == "jog X 90 Y 0 degrees, packet MRP0000090P0000000"
     assert "reads the digits as µm whatever the type letter" in lines[1]
-    assert "X 0.090 mm, Y 0.000 mm" in lines[1]
-    assert lines[2] == "0.09 0.00 0.00 (counted, not measured)"  # not 2.5 mm (90° of 10 mm)
+    # 90 µm is 3.6 steps of 0.025 mm at power-on: the firmware makes 3 (not 2.5 mm for 90°).
+    assert "X 0.075 mm, Y 0.000 mm" in lines[1]
+    assert lines[2] == "0.08 0.00 0.00 (counted, not measured)"  # 0.075 mm to 2 decimals
     assert "mm" not in lines[0]
-    # The device itself read 90 µm: its debug line says so.
+    # The device itself read 90 µm (its debug line says so) and made whole steps of it.
     assert _debug_value(log, "Distance x (mm)") == "0.09"
+    assert _where(process) == pytest.approx((0.075, 0.0))
 
     log = logs()
     stepped = motionctl(process.path, "--json", "--kind", "steps", "jog", "400", "-20", log=log)
@@ -87,9 +95,11 @@ def test_rotational_and_steps_jogs_report_their_unit_and_the_firmware_reading(
         "kind": "steps",
         "packet": "MSP0000400N0000020",
     }
-    assert result["firmware_mm"] == [0.4, -0.02, 0.0]
+    # 0.4 mm is 16 whole steps; Y's 0.02 mm is not made: the Y loop runs its ramp count, 0.
+    assert result["firmware_mm"] == pytest.approx([0.4, 0.0, 0.0])
     assert "whatever the type letter" in result["firmware_note"]
-    assert result["position"] == pytest.approx([0.49, -0.02, 0.0])
+    assert result["position"] == pytest.approx([0.475, 0.0, 0.0])
+    assert _where(process) == pytest.approx((0.475, 0.0))
     assert result["counted"] is True and result["measured"] is False
     assert _debug_value(log, "Distance x (mm)") == "0.40"
     assert _debug_value(log, "Distance y (mm)") == "0.02"

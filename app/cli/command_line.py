@@ -102,9 +102,9 @@ def kind_jog(motion: Motion, dx: float, dy: float, dz: float, kind: str) -> dict
     sent["packet"] = packet.decode("latin-1")
     moved = firmware_move_mm(protocol, packet)
     if moved is not None and before is not None and not report.measured:
-        x, y, z = (a + b for a, b in zip((before.x, before.y, before.z), moved, strict=True))
-        report = PositionReport(x, y, z, measured=False, confirmed=report.confirmed)
-        motion.last_position = report  # the count follows the firmware, not the type letter
+        # Motion counted the move as the firmware makes it (µm digits, whole steps, the Y
+        # loop): what the stage really moved is the difference, not the digits read as µm.
+        moved = (report.x - before.x, report.y - before.y, report.z - before.z)
     result = {"jog": sent, **position_result(report)}
     if moved is not None:
         result["firmware_mm"] = list(moved)
