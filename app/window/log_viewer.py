@@ -31,6 +31,7 @@ from PySide6.QtWidgets import (
 )
 
 from app.common.messages import localized
+from app.window.screen_fit import fit_new_window
 from app.window.traffic_console import RawConsole, localized_index
 from app.window.traffic_feed import TimelineFeed
 from drivers.decoding import PartProtocols, connection_protocol
@@ -130,7 +131,7 @@ class LogViewer(QMainWindow):
         self.setCentralWidget(body)
         self.ask_path = lambda: ask_open_path(self)
         self._loaded.connect(self._on_loaded)
-        self.resize(1200, 800)
+        fit_new_window(self, 1200, 800)  # or what the screen has room for
 
     def open_interactively(self) -> None:
         """Ask for a file and open it."""
