@@ -63,9 +63,21 @@ class PositionReport(Event):
     measured: bool = True
     confirmed: bool = False
     """For a commanded position: the device said the move to it has ended (Visiomex FA0001)."""
+    known: bool = True
+    """False for a device that cannot be asked, counted from where the session began rather
+    than from a known place (Home, Set Home, an absolute target, a position kept from an
+    earlier run): where the stage is, is then unknown."""
 
     def __str__(self) -> str:
         x, y, z = self.x, self.y, self.z
+        if not self.known:
+            return Message(
+                "position unknown (({x:g}, {y:g}, {z:g}) mm counted from where the session "
+                "began; Home or Set Home to know it)",
+                x=x,
+                y=y,
+                z=z,
+            )
         if self.measured:
             return Message("position ({x:g}, {y:g}, {z:g}) mm", x=x, y=y, z=z)
         if self.confirmed:

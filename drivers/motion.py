@@ -24,6 +24,7 @@ from drivers.travel import Point, TravelLimits, check_resolution
 log = logging.getLogger(__name__)
 
 POSITION_TOLERANCE = 0.011  # positions are printed with two decimals from 32-bit floats
+FLOAT_TOLERANCE = 1e-4  # mm: positions reported as 32-bit floats (no resolution declared)
 POLL_INTERVAL = 0.1  # seconds between position polls while waiting for a move to end
 LISTEN_SLICE = 0.05  # s: a wait on a write-only device's move reads its errors this often
 ESTIMATE_MARGIN = 1.5  # a move may take this much longer than distance / speed
@@ -73,12 +74,21 @@ def _raw_timing(
         return None
 
 
-def _at(report: PositionReport, point: PositionReport | Point) -> bool:
+def arrival_tolerance(resolution: float | None) -> float:
+    """How near a reported position must be to a target to be at it: a little over the
+    device's resolution (COXIRIS's 0.01 mm: 0.011), or the precision of a 32-bit float where
+    the device declares none (laser-frame), so a stage still moving is not taken as arrived."""
+    return POSITION_TOLERANCE * resolution / 0.01 if resolution else FLOAT_TOLERANCE
+
+
+def _at(
+    report: PositionReport, point: PositionReport | Point, tolerance: float = POSITION_TOLERANCE
+) -> bool:
     """Whether a position is `point`, to the precision positions are reported with."""
     if isinstance(point, PositionReport):
         point = (point.x, point.y, point.z)
     here = (report.x, report.y, report.z)
-    return all(abs(a - b) <= POSITION_TOLERANCE for a, b in zip(here, point, strict=True))
+    return all(abs(a - b) <= tolerance for a, b in zip(here, point, strict=True))
 
 
 class Motion:
@@ -113,8 +123,9 @@ class Motion:
         queue do not), so that the target is where the stage is once the reply has come."""
         client.listeners.append(self._on_event)
         if not self.capabilities.position_feedback:
-            # Write-only devices: the position is what was commanded, from the power-on origin.
-            self.last_position = PositionReport(0.0, 0.0, 0.0, measured=False)
+            # Write-only devices: the position is what was commanded, from where the session
+            # began, which is no known place until a Home, a Set Home or an absolute target.
+            self.last_position = PositionReport(0.0, 0.0, 0.0, measured=False, known=False)
 
     @property
     def travel(self) -> TravelLimits | None:
@@ -170,7 +181,8 @@ class Motion:
             raise DeviceError(
                 Message("the device did not report a position (it answered {value})", value=value)
             )
-        if inferred is not None and not inferred.measured and not _at(value, inferred):
+        tolerance = arrival_tolerance(self.capabilities.resolution)
+        if inferred is not None and not inferred.measured and not _at(value, inferred, tolerance):
             self.arrives_on_reply, self._late_replies = False, 0  # it was not where it said
             for listener in list(self.notice_listeners):
                 listener(
@@ -425,6 +437,16 @@ class Motion:
             )
         self._set_position(PositionReport(0.0, 0.0, 0.0, self.capabilities.position_feedback))
 
+    def _lands_known(self, command: cmd.Command | None) -> bool:
+        """Whether a write-only device's move ends at a known place: an absolute target, or a
+        home move, where the device takes them; else as known as where it started."""
+        caps = self.capabilities
+        if isinstance(command, cmd.MoveTo) and caps.absolute_moves:
+            return True
+        if isinstance(command, cmd.Home) and (caps.homing or caps.absolute_moves):
+            return True
+        return self.last_position is not None and self.last_position.known
+
     def _set_position(self, report: PositionReport) -> None:
         self.last_position = report
         for listener in list(self.position_listeners):
@@ -557,7 +579,10 @@ class Motion:
             replies, self._reply_times = self._reply_times, None
         if not self.capabilities.position_feedback:
             confirmed = completion is Completion.FEEDBACK  # the device said the move ended
-            self._set_position(PositionReport(*target, measured=False, confirmed=confirmed))
+            known = self._lands_known(command)
+            self._set_position(
+                PositionReport(*target, measured=False, confirmed=confirmed, known=known)
+            )
             assert self.last_position is not None
             return self.last_position
         if completion is not Completion.REPLY:
@@ -639,7 +664,7 @@ class Motion:
                     )
                 return stopped, None
             now = self.position()
-            if _at(now, target):
+            if _at(now, target, arrival_tolerance(self.capabilities.resolution)):
                 return now, (time.monotonic() if previous is None else None)
             if previous == now:
                 log.warning("the stage stopped at %s short of the target %s", now, target)

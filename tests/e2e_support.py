@@ -60,6 +60,11 @@ def device_received(record: Path) -> bytes:
     return stream(record, "RX")
 
 
+def device_received_text(record: Path) -> str:
+    """What the simulated device read, as text ("" where its record is not written yet)."""
+    return device_received(record).decode("latin-1") if record.exists() else ""
+
+
 def device_sent(record: Path) -> list[Record]:
     """What the simulated device wrote."""
     return sent(record)

@@ -29,28 +29,6 @@ MOVE_START_S = 4.0  # a Visiomex move starts after 1 s of silence and its debug 
 FIRMATA = {"steps_per_mm": 80.0, "steps_per_rev": 200.0, "pin1": 8.0, "pin2": 9.0}
 
 
-# Defects known, each left out of the model by its exact action until its fix lands: remove the
-# entry then (and the xfail of its example in tests/test_model_truth.py); the model must pass.
-KNOWN_DEFECTS: dict[str, set[str]] = {
-    "visiomex": {
-        # ("y_moves", no Y moves, was here for issue 28 item 1 until da2a695 counted the
-        # firmware's Y loop: the model passes with them.)
-        # Found by this model (test_visiomex_count_after_reopen): a session opened on a
-        # Visiomex that has moved starts its count at (0, 0, 0) "commanded" where the stage
-        # stands, then reports each move "commanded, confirmed" from there: a confident
-        # position from an origin nobody set. Set Home follows every reopen.
-        "moves_from_no_home",
-    },
-    "laser-frame": {
-        # Found by this model (test_laser_move_end_is_not_reported_early): a move ends when a
-        # poll finds the stage within POSITION_TOLERANCE (0.011 mm, COXIRIS's two decimals)
-        # of its target, while the stage (float32 positions) still moves: the move returns a
-        # measured position short of where it stops. Held to 0.011 mm instead of 0.001.
-        "arrival_within_position_tolerance",
-    },
-}
-
-
 @dataclass(frozen=True)
 class Profile:
     """One protocol as the model drives it."""
@@ -154,15 +132,15 @@ def run_report(run: Run) -> PositionReport | None:
 
 
 def axes_mm(profile: Profile, x: int, y: int, z: int) -> Point:
-    """Quarters of a mm (Z: eighths, to a quarter) as mm, on the axes the device moves (the
-    known defects' axes left out)."""
-    keep_y = profile.axes >= 2 and "y_moves" not in KNOWN_DEFECTS.get(profile.protocol, set())
+    """Quarters of a mm (Z: eighths, to a quarter) as mm, on the axes the device moves."""
+    keep_y = profile.axes >= 2
     return (x / 4, y / 4 if keep_y else 0.0, round(z / 8) / 4 if profile.axes >= 3 else 0.0)
 
 
 def claims(report: PositionReport) -> bool:
-    """Whether a report says it is the device's position (measured, or confirmed arrived)."""
-    return report.measured or report.confirmed
+    """Whether a report says it is the device's position (measured, or confirmed arrived,
+    from a known place)."""
+    return report.known and (report.measured or report.confirmed)
 
 
 def off_by(report: PositionReport, truth: Sequence[float]) -> float:

@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 import serial
 
+from tests.e2e_support import device_received_text
 from tests.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60)]
@@ -38,14 +39,6 @@ def motionctl(port: str, *args: str, timeout: float = 2.0, log: Path | None = No
 @pytest.fixture(autouse=True)
 def _own_settings(settings_file: Path) -> None:
     """motionctl reads and writes the panel's settings: a file of the test's own."""
-
-
-def received_by_device(record: Path) -> str:
-    """What the host wrote, as the device's hexdump shows it (RX lines, text column)."""
-    if not record.exists():
-        return ""
-    lines = [line for line in record.read_text().splitlines() if " RX " in line]
-    return "".join(line.split("   ")[-1] for line in lines)
 
 
 def test_acceptance_move_then_position(sim: SimProcess) -> None:
@@ -149,7 +142,7 @@ def test_bad_input_exits_2_with_nothing_sent(sim: SimProcess, record: Path, args
     assert result.stdout == ""
     assert len(result.stderr.strip().splitlines()) >= 1
     assert result.stderr.startswith(("motionctl: ", "usage: "))
-    assert received_by_device(record) == ""
+    assert device_received_text(record) == ""
 
 
 def test_bad_options_exit_2_with_nothing_sent(sim: SimProcess, record: Path) -> None:
@@ -187,14 +180,14 @@ def test_bad_options_exit_2_with_nothing_sent(sim: SimProcess, record: Path) -> 
         cwd=ROOT,
     )
     assert unknown.returncode == 2
-    assert received_by_device(record) == ""
+    assert device_received_text(record) == ""
 
 
 def test_speed_above_the_maximum_never_sends_set_speed(sim: SimProcess, record: Path) -> None:
     result = motionctl(sim.path, "speed", "500")
     assert result.returncode == 2
     assert "the device allows 1 to 100 mm/s" in result.stderr
-    sent = received_by_device(record)
+    sent = device_received_text(record)
     assert "GET_MAX_SPEED" in sent and "SET_SPEED" not in sent
 
 
@@ -231,7 +224,7 @@ def test_travel_limits_refuse_a_jog_beyond_them(sim: SimProcess, record: Path) -
     result = motionctl(sim.path, *travel, "jog", "10", "0")
     assert result.returncode == 2
     assert "X 55 mm is outside -50..50 mm" in result.stderr
-    assert "DELTA_MOVE" not in received_by_device(record)
+    assert "DELTA_MOVE" not in device_received_text(record)
 
 
 def test_travel_limits_clamp_when_asked(sim: SimProcess) -> None:

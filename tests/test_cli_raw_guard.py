@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from tests.e2e_support import device_received_text
 from tests.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60)]
@@ -29,14 +30,6 @@ def motionctl(port: str, *args: str, timeout: float = 2.0) -> subprocess.Complet
     )
 
 
-def received_by_device(record: Path) -> str:
-    """What the host wrote, as the device's own hexdump shows it (RX lines, text column)."""
-    if not record.exists():
-        return ""
-    lines = [line for line in record.read_text().splitlines() if " RX " in line]
-    return "".join(line.split("   ")[-1] for line in lines)
-
-
 @pytest.fixture(autouse=True)
 def _own_settings(settings_file: Path) -> None:
     """motionctl reads the panel's settings: a file of the test's own."""
@@ -46,7 +39,7 @@ def test_a_raw_move_outside_the_box_is_refused(sim: SimProcess, record: Path) ->
     result = motionctl(sim.path, *TRAVEL, "raw", "ABSOLUTE_MOVE 100 0 0")
     assert result.returncode == 2, result.stderr
     assert "X 100 mm is outside -50..50 mm (travel limits)" in result.stderr
-    assert received_by_device(record) == ""
+    assert device_received_text(record) == ""
 
 
 def test_a_raw_jog_outside_the_box_is_refused_once_the_position_is_known(
@@ -56,7 +49,7 @@ def test_a_raw_jog_outside_the_box_is_refused_once_the_position_is_known(
     result = motionctl(sim.path, *TRAVEL, "raw", "DELTA_MOVE 10 0 0")
     assert result.returncode == 2, result.stderr
     assert "X 55 mm is outside" in result.stderr
-    assert "DELTA_MOVE" not in received_by_device(record)
+    assert "DELTA_MOVE" not in device_received_text(record)
 
 
 def test_unreadable_bytes_need_force_while_a_box_is_set(sim: SimProcess, record: Path) -> None:
@@ -66,17 +59,17 @@ def test_unreadable_bytes_need_force_while_a_box_is_set(sim: SimProcess, record:
     assert "cannot read them" in refused.stderr
     assert "X -50..50, Y -50..50, Z 0..10 mm" in refused.stderr
     assert "force" in refused.stderr
-    assert received_by_device(record) == ""
+    assert device_received_text(record) == ""
     forced = motionctl(sim.path, *TRAVEL, "--force", "raw", unreadable)
     assert forced.returncode == 0, forced.stderr
-    assert unreadable in received_by_device(record)
+    assert unreadable in device_received_text(record)
     assert motionctl(sim.path, "--travel", "none", "raw", unreadable).returncode == 0
 
 
 def test_force_is_for_raw_only(sim: SimProcess, record: Path) -> None:
     result = motionctl(sim.path, "--force", "move", "1", "0", "0")
     assert result.returncode == 2 and "--force is for raw only" in result.stderr
-    assert received_by_device(record) == ""
+    assert device_received_text(record) == ""
 
 
 @pytest.mark.sim_args("--speed", "2")

@@ -14,8 +14,7 @@ and a run refused for want of a position ("position unknown") moved nothing.
 Seeded (a seed per protocol, no example database, no shrinking), bounded in steps and time;
 the steps that ran clean are logged per protocol (`pytest -rA` shows them: "model truth:
 coxiris: 48 steps ran clean (...)") and kept as the test's `model_steps` property. The
-defects it found are in KNOWN_DEFECTS (tests/model_truth_support.py), each with its smallest
-example at the end of this file.
+defects it found are fixed; each is kept as its smallest example at the end of this file.
 """
 
 from __future__ import annotations
@@ -32,13 +31,11 @@ from hypothesis.stateful import RuleBasedStateMachine, invariant, rule, run_stat
 
 from drivers import commands as cmd
 from drivers.events import PositionReport
-from drivers.motion import POSITION_TOLERANCE
 from drivers.program import ProgramPoint
 from drivers.streaming import StreamProgress
 from drivers.toolpath.loader import from_points
 from tests.model_truth_support import (
     BOX_MM,
-    KNOWN_DEFECTS,
     PROFILES,
     Point,
     Profile,
@@ -110,8 +107,6 @@ class TruthMachine(RuleBasedStateMachine):
     def _check(self, report: PositionReport, what: str) -> None:
         """The rule: a claim is the truth within a step; a count of the session's own too."""
         tolerance = self.profile.step * 1.01 + 1e-6
-        if "arrival_within_position_tolerance" in KNOWN_DEFECTS.get(self.profile.protocol, ()):
-            tolerance = max(tolerance, POSITION_TOLERANCE)
         truth = self._truth()
         if claims(report):
             kind = "measured" if report.measured else "commanded, confirmed"
@@ -231,8 +226,6 @@ class TruthMachine(RuleBasedStateMachine):
         self.speed_now = self.session.speed()
         if not self.session.capabilities.position_feedback:
             self.counting = False  # a new session's count starts from nowhere it knows
-            if "moves_from_no_home" in KNOWN_DEFECTS.get(self.profile.protocol, set()):
-                self.set_home()  # the way out the defect leaves: Set Home before moving
 
     @rule(x=st.sampled_from((-1, 1)))
     def kill_mid_move(self, x: int) -> None:
@@ -449,18 +442,13 @@ def test_motionctl_positions_across_runs_are_the_devices(
 
 
 # -- the defects the model found, each as its smallest example ------------------------------
-def _fixed_when_passes(reason: str) -> pytest.MarkDecorator:
-    """A known defect: strict, so that its fix makes the lead remove the mark and the
-    KNOWN_DEFECTS entry (the model then runs the action again)."""
-    return pytest.mark.xfail(strict=True, reason=reason)
 
 
 @pytest.mark.timeout(30)
-@_fixed_when_passes("issue 28: a reopened Visiomex session counts from where it opened")
 def test_visiomex_count_after_reopen() -> None:
     """Jog X 0.25, disconnect, reopen, jog X 0.25: the device is at 0.5 mm from where it was
-    switched on (and from the first session's origin); the second session says 0.25,
-    "commanded, confirmed". Expected: 0.5, or a position marked unknown / not confirmed."""
+    switched on (and from the first session's origin); the second session counts 0.25 from
+    where it opened, which it must say is no known place (it said "commanded, confirmed")."""
     rig = Rig(PROFILES["visiomex"])
     try:
         with rig.open() as first:
@@ -468,17 +456,17 @@ def test_visiomex_count_after_reopen() -> None:
         with rig.open() as second:
             report = second.move_by(0.25, 0)
         assert rig.where() == pytest.approx((0.5, 0.0, 0.0), abs=0.026)
+        assert not report.known and "position unknown" in str(report), report
         assert not claims(report) or off_by(report, rig.where()) <= 0.026, report
     finally:
         rig.close()
 
 
 @pytest.mark.timeout(30)
-@_fixed_when_passes("issue 28: a laser move ends within 0.011 mm of its target, still moving")
 def test_laser_move_end_is_not_reported_early() -> None:
-    """At 0.1 mm/s, jog X 0.01 mm (0.1 s of motion): the first poll finds the stage within
-    0.011 mm of the target and the jog returns at once, "measured" at about 0; the stage stands
-    at 0.01 when it stops. Expected: the position where the move ends (within float32)."""
+    """At 0.1 mm/s, jog X 0.01 mm (0.1 s of motion): the first poll found the stage within
+    0.011 mm of the target and the jog returned at once, "measured" at about 0, while the stage
+    stood at 0.01 when it stopped. The move ends where the stage stops (within float32)."""
     rig = Rig(PROFILES["laser-frame"])
     try:
         with rig.open() as laser:

@@ -92,7 +92,8 @@ def _motion(caps: Capabilities, exchange: type[Exchange], answer: bytes = b""):
 def test_write_only_device_reports_commanded_positions_after_the_estimate() -> None:
     motion, port, waits = _motion(WRITE_ONLY, NoReply)
     assert motion.identify() == "scripted device"
-    assert motion.position() == PositionReport(0.0, 0.0, 0.0, measured=False)
+    # Where the session began is no known place; an absolute target is one.
+    assert motion.position() == PositionReport(0.0, 0.0, 0.0, measured=False, known=False)
     assert motion.move_to(30, 40, 0) == PositionReport(30.0, 40.0, 0.0, measured=False)
     assert waits == [pytest.approx(5.0)]  # 50 mm at the default 10 mm/s
     assert motion.move_by(0, 0, 10) == PositionReport(30.0, 40.0, 10.0, measured=False)
