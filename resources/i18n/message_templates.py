@@ -12,6 +12,7 @@ QT_TRANSLATE_NOOP('messages', '--kind {kind} refused: {protocol} moves are {kind
 QT_TRANSLATE_NOOP('messages', 'speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s')  # app/cli/command_line.py
 QT_TRANSLATE_NOOP('messages', 'speed {speed:g} mm/s refused ({error})')  # app/cli/command_line.py
 QT_TRANSLATE_NOOP('messages', 'raw move to ({x:g}, {y:g}, {z:g}) mm')  # app/cli/command_line.py
+QT_TRANSLATE_NOOP('messages', "{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor's steps per revolution and pins (or Configure in the panel's Stepper setup): it is kept and sent again at each run")  # app/cli/devices.py
 QT_TRANSLATE_NOOP('messages', 'to ({x:g}, {y:g}, {z:g}) mm')  # app/cli/interrupt.py
 QT_TRANSLATE_NOOP('messages', 'to its target')  # app/cli/interrupt.py
 QT_TRANSLATE_NOOP('messages', 'interrupted: COXIRIS has no stop command; the device finishes the move under way {target} (a blocking sketch answers nothing until then) and then carries out what it had already received; motionctl sent nothing more')  # app/cli/interrupt.py
@@ -27,7 +28,7 @@ QT_TRANSLATE_NOOP('messages', 'interrupted: the {protocol} stop was sent but not
 QT_TRANSLATE_NOOP('messages', 'interrupted again')  # app/cli/interrupt.py
 QT_TRANSLATE_NOOP('messages', 'interrupted: stopped (the {protocol} stop was acknowledged; its queue is flushed); where the stage stopped could not be read: {error}')  # app/cli/interrupt.py
 QT_TRANSLATE_NOOP('messages', 'interrupted: stopped at ({x:g}, {y:g}, {z:g}) mm (the {protocol} stop was acknowledged; its queue is flushed)')  # app/cli/interrupt.py
-QT_TRANSLATE_NOOP('messages', '{file} names no protocol (no connection note: a motionctl --log file or a spy:// capture has none): give --protocol')  # app/cli/log.py
+QT_TRANSLATE_NOOP('messages', '{file} names no protocol (no connection note) and no protocol recognises its traffic: give --protocol')  # app/cli/log.py
 QT_TRANSLATE_NOOP('messages', '{file}: its connection note: {error}')  # app/cli/log.py
 QT_TRANSLATE_NOOP('messages', 'its connection notes name {named}')  # app/cli/log.py
 QT_TRANSLATE_NOOP('messages', 'try another --protocol')  # app/cli/log.py
@@ -49,8 +50,8 @@ QT_TRANSLATE_NOOP('messages', 'unknown command {command!r}; a step is one of: {c
 QT_TRANSLATE_NOOP('messages', '{command} is a {owner} command')  # app/common/macros.py
 QT_TRANSLATE_NOOP('messages', 'usage: wait SECONDS')  # app/common/macros.py
 QT_TRANSLATE_NOOP('messages', 'wait {seconds:g} s refused: from 0 to {limit:g} s')  # app/common/macros.py
-QT_TRANSLATE_NOOP('messages', '{name} stopped before step {number} ({step})')  # app/common/macros.py
-QT_TRANSLATE_NOOP('messages', '{name} stopped during step {number}')  # app/common/macros.py
+QT_TRANSLATE_NOOP('messages', 'macro {name} stopped before step {number} ({step})')  # app/common/macros.py
+QT_TRANSLATE_NOOP('messages', 'macro {name} stopped during step {number}')  # app/common/macros.py
 QT_TRANSLATE_NOOP('messages', '{where}: not a Motion Panel macro file (no "format": "{format}")')  # app/common/macros.py
 QT_TRANSLATE_NOOP('messages', '{where}: macro file version {version!r}; this reads {reads}')  # app/common/macros.py
 QT_TRANSLATE_NOOP('messages', '{where}: "macros" is not a list')  # app/common/macros.py
@@ -116,6 +117,7 @@ QT_TRANSLATE_NOOP('messages', '{line} off')  # drivers/control_lines.py
 QT_TRANSLATE_NOOP('messages', 'unreadable: {error}')  # drivers/decoding.py
 QT_TRANSLATE_NOOP('messages', 'error {code}: {message}')  # drivers/events.py
 QT_TRANSLATE_NOOP('messages', 'error: {message}')  # drivers/events.py
+QT_TRANSLATE_NOOP('messages', 'position unknown (({x:g}, {y:g}, {z:g}) mm counted from where the session began; Home or Set Home to know it)')  # drivers/events.py
 QT_TRANSLATE_NOOP('messages', 'position ({x:g}, {y:g}, {z:g}) mm')  # drivers/events.py
 QT_TRANSLATE_NOOP('messages', 'position ({x:g}, {y:g}, {z:g}) mm (commanded, confirmed)')  # drivers/events.py
 QT_TRANSLATE_NOOP('messages', 'position ({x:g}, {y:g}, {z:g}) mm (commanded)')  # drivers/events.py
@@ -144,6 +146,7 @@ QT_TRANSLATE_NOOP('messages', '0x90 followed by {byte:#04x} inside the data')  #
 QT_TRANSLATE_NOOP('messages', 'no tail within {most} bytes')  # drivers/framers/stuffed.py
 QT_TRANSLATE_NOOP('messages', 'a SysEx message needs at least a command byte')  # drivers/framers/sysex.py
 QT_TRANSLATE_NOOP('messages', 'SysEx data must be 7-bit; got {byte:#04x}')  # drivers/framers/sysex.py
+QT_TRANSLATE_NOOP('messages', '{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)')  # drivers/log_origin.py
 QT_TRANSLATE_NOOP('messages', '{source} line {number}: not a traffic log line: {line!r}')  # drivers/log_reader.py
 QT_TRANSLATE_NOOP('messages', '{source}: no traffic in it (not a Motion Panel log)')  # drivers/log_reader.py
 QT_TRANSLATE_NOOP('messages', 'traffic log')  # drivers/log_reader.py
@@ -156,6 +159,7 @@ QT_TRANSLATE_NOOP('messages', 'the device is at ({x:g}, {y:g}, {z:g}) mm, not wh
 QT_TRANSLATE_NOOP('messages', '{protocol} has no speed limits to report')  # drivers/motion.py
 QT_TRANSLATE_NOOP('messages', 'speed {speed:g} refused: the speed must be a positive number')  # drivers/motion.py
 QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}')  # drivers/motion.py
+QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} written, but this firmware times its steps from its step delays (15, 16) alone: moves go at {real:.3f} {unit}')  # drivers/motion.py
 QT_TRANSLATE_NOOP('messages', 'move to ({x:g}, {y:g}, {z:g}) mm')  # drivers/motion.py
 QT_TRANSLATE_NOOP('messages', 'jog by ({dx:g}, {dy:g}, {dz:g}) {unit}')  # drivers/motion.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no way to go home')  # drivers/motion.py
@@ -200,9 +204,12 @@ QT_TRANSLATE_NOOP('messages', '{name}: {value} refused: the device takes {range}
 QT_TRANSLATE_NOOP('messages', 'this protocol has no parameters')  # drivers/parameters.py
 QT_TRANSLATE_NOOP('messages', "unknown parameter {name!r} (did you mean {close}?): use a name or an id 1..{count}; 'motionctl ... param list' lists them")  # drivers/parameters.py
 QT_TRANSLATE_NOOP('messages', "unknown parameter {name!r}: use a name or an id 1..{count}; 'motionctl ... param list' lists them")  # drivers/parameters.py
+QT_TRANSLATE_NOOP('messages', 'its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)')  # drivers/position_count.py
 QT_TRANSLATE_NOOP('messages', 'Home or Set Home (in the panel, or motionctl home / set-home) to start counting')  # drivers/position_count.py
 QT_TRANSLATE_NOOP('messages', 'Set Home where the stage stands (in the panel, or motionctl set-home) to start counting; with no home move of its own, Home needs a count too')  # drivers/position_count.py
+QT_TRANSLATE_NOOP('messages', '{command} refused: position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}')  # drivers/position_count.py
 QT_TRANSLATE_NOOP('messages', '{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}')  # drivers/position_count.py
+QT_TRANSLATE_NOOP('messages', 'position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}')  # drivers/position_count.py
 QT_TRANSLATE_NOOP('messages', 'position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}')  # drivers/position_count.py
 QT_TRANSLATE_NOOP('messages', 'this firmware reads the digits as µm whatever the type letter ({kind} is not read): the stage moves X {x:.3f} mm, Y {y:.3f} mm')  # drivers/position_count.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no identity query: the device cannot be asked what it is')  # drivers/position_count.py
@@ -348,7 +355,7 @@ QT_TRANSLATE_NOOP('messages', 'parse function error in the firmware')  # drivers
 QT_TRANSLATE_NOOP('messages', 'invalid driving mechanism')  # drivers/protocols/visiomex.py
 QT_TRANSLATE_NOOP('messages', 'an error code the documentation does not list')  # drivers/protocols/visiomex.py
 QT_TRANSLATE_NOOP('messages', '{parameter} set')  # drivers/protocols/visiomex.py
-QT_TRANSLATE_NOOP('messages', 'Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace.')  # drivers/protocols/visiomex.py
+QT_TRANSLATE_NOOP('messages', 'The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). "device:" is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.')  # drivers/protocols/visiomex.py
 QT_TRANSLATE_NOOP('messages', 'Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted')  # drivers/protocols/visiomex.py
 QT_TRANSLATE_NOOP('messages', 'no read-back: the panel keeps what was last written')  # drivers/protocols/visiomex.py
 QT_TRANSLATE_NOOP('messages', 'positions are commanded, and confirmed by FA0001 when the move ends')  # drivers/protocols/visiomex.py
@@ -429,8 +436,12 @@ QT_TRANSLATE_NOOP('messages', 'Requested steady speed of the {axis} axis')  # dr
 QT_TRANSLATE_NOOP('messages', 'Requested acceleration of the {axis} axis')  # drivers/protocols/visiomex_params.py
 QT_TRANSLATE_NOOP('messages', 'Duration of the last move, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex_params.py
 QT_TRANSLATE_NOOP('messages', '0 belt pulley, 1 lead screw (this firmware forces 1 after every set)')  # drivers/protocols/visiomex_params.py
+QT_TRANSLATE_NOOP('messages', "Y will not move: at these parameters the firmware's Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)")  # drivers/protocols/visiomex_where.py
+QT_TRANSLATE_NOOP('messages', "Y moves {moved:.3f} mm, not {asked:.3f}: the firmware's Y loop runs the ramp count ({loops} of {steps} steps)")  # drivers/protocols/visiomex_where.py
+QT_TRANSLATE_NOOP('messages', '{axis} moves {moved:.3f} mm, not {asked:.3f}: whole steps ({steps}), truncated as the firmware counts')  # drivers/protocols/visiomex_where.py
 QT_TRANSLATE_NOOP('messages', 'protocol {name!r} is not implemented yet')  # drivers/registry.py
 QT_TRANSLATE_NOOP('messages', 'unknown protocol {name!r} (known: {known})')  # drivers/registry.py
+QT_TRANSLATE_NOOP('messages', '{protocol} reports where it is: it is asked')  # drivers/session.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no stop command: the device finishes what it was sent')  # drivers/session.py
 QT_TRANSLATE_NOOP('messages', 'timeout {timeout:g} s refused: it must be positive')  # drivers/session.py
 QT_TRANSLATE_NOOP('messages', 'variant {variant!r} asked for a protocol made as {chosen!r}')  # drivers/session_setup.py
@@ -540,6 +551,7 @@ QT_TRANSLATE_NOOP('messages', 'unknown sim:// option {key!r}')  # drivers/urlhan
 QT_TRANSLATE_NOOP('messages', 'port must be configured before it can be used')  # drivers/urlhandler/protocol_sim.py
 QT_TRANSLATE_NOOP('messages', 'port already open')  # drivers/urlhandler/protocol_sim.py
 QT_TRANSLATE_NOOP('messages', 'cannot open {port}: {error}')  # drivers/urlhandler/protocol_sim.py
+QT_TRANSLATE_NOOP('messages', '{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first')  # drivers/urlhandler/rfc2217_port.py
 QT_TRANSLATE_NOOP('messages', 'the server has not reported the modem lines')  # drivers/urlhandler/rfc2217_port.py
 QT_TRANSLATE_NOOP('messages', 'nothing answers at {where} ({error}): is ser2net (or another RFC 2217 server) running there and serving that port?')  # drivers/urlhandler/rfc2217_port.py
 QT_TRANSLATE_NOOP('messages', "{where} answers, but not as an RFC 2217 server: serve the port with ser2net's `accepter: telnet(rfc2217),tcp,PORT`, or open a raw TCP server as socket://{where}")  # drivers/urlhandler/rfc2217_port.py

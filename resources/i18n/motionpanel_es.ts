@@ -237,12 +237,12 @@ igual al ángulo inicial: una circunferencia completa</translation>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/window/bridge_session.py" line="+86"/>
+        <location filename="../../app/window/bridge_session.py" line="+93"/>
         <source>the bridge failed: %1</source>
         <translation>el puente falló: %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+45"/>
         <source>the bridge stopped</source>
         <translation>el puente se detuvo</translation>
     </message>
@@ -331,24 +331,24 @@ igual al ángulo inicial: una circunferencia completa</translation>
     <message>
         <location line="+6"/>
         <location line="+6"/>
-        <location line="+223"/>
+        <location line="+225"/>
         <source>Connect</source>
         <translation>Conectar</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+222"/>
+        <location line="-225"/>
+        <location line="+224"/>
         <source>Cancel</source>
         <translation>Cancelar</translation>
     </message>
     <message>
-        <location line="-222"/>
-        <location line="+222"/>
+        <location line="-224"/>
+        <location line="+224"/>
         <source>Disconnect</source>
         <translation>Desconectar</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-216"/>
         <source>Lines:</source>
         <translation>Líneas:</translation>
     </message>
@@ -367,12 +367,12 @@ igual al ángulo inicial: una circunferencia completa</translation>
         <translation>Protocolo:</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Baud:</source>
         <translation>Baudios:</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+73"/>
         <source>No description for this port</source>
         <translation>Sin descripción para este puerto</translation>
     </message>
@@ -410,7 +410,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
 <context>
     <name>ControlLinesBar</name>
     <message>
-        <location filename="../../widgets/control_lines_bar.py" line="+42"/>
+        <location filename="../../widgets/control_lines_bar.py" line="+47"/>
         <source>DTR</source>
         <translation>DTR</translation>
     </message>
@@ -519,7 +519,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
 <context>
     <name>CoordinateEntry</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="+33"/>
+        <location filename="../../widgets/coordinate_entry.py" line="+34"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
         <translation>¿Convertir la posición actual en el nuevo origen (0, 0, 0)?
@@ -541,22 +541,22 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Absoluto</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+73"/>
         <source>Go to the typed coordinates (mm from home)</source>
         <translation>Ir a las coordenadas introducidas (mm desde el origen)</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-71"/>
         <source>Relative</source>
         <translation>Relativo</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+72"/>
         <source>Move by the typed distances (mm) from where the stage is</source>
         <translation>Mover las distancias introducidas (mm) desde la posición actual de la platina</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-63"/>
         <source>Machine</source>
         <translation>Máquina</translation>
     </message>
@@ -566,7 +566,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Trabajo</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+64"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
         <translation>Sistema de las coordenadas introducidas: Máquina (mm desde el origen del dispositivo) o Trabajo (mm desde el cero de pieza); al dispositivo siempre se le envían coordenadas de máquina</translation>
     </message>
@@ -576,13 +576,13 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Ir</translation>
     </message>
     <message>
-        <location line="-25"/>
+        <location line="-26"/>
         <source>&amp;%1:</source>
         <comment>an axis field&apos;s label; Alt+axis</comment>
         <translation>&amp;%1:</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Start the move (Enter in a field)</source>
         <translation>Iniciar el movimiento (Enter en un campo)</translation>
     </message>
@@ -706,7 +706,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DerivedValues</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="+469"/>
+        <location filename="../../widgets/parameter_table.py" line="+501"/>
         <source>Derived values</source>
         <translation>Valores derivados</translation>
     </message>
@@ -828,7 +828,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>FirmataPanel</name>
     <message>
-        <location filename="../../widgets/firmata_panel.py" line="+30"/>
+        <location filename="../../widgets/firmata_panel.py" line="+31"/>
         <source>version unknown</source>
         <translation>versión desconocida</translation>
     </message>
@@ -838,7 +838,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Pasos completos por revolución del motor, de 1 a %1 (p. ej. 200)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1 pins</source>
         <translation>%1 pines</translation>
     </message>
@@ -848,12 +848,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>2 pines: un driver con entradas de paso y dirección; 4 pines: los cuatro hilos del motor</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>pin </source>
         <translation>pin </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Motor steps per mm of travel (more than 0): converts mm and mm/s to steps</source>
         <translation>Pasos del motor por mm de recorrido (mayor que 0): convierte mm y mm/s en pasos</translation>
     </message>
@@ -1045,7 +1045,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Teclas: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+52"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
         <translation>Mover la platina un paso; mantener pulsado un botón o una tecla para seguir avanzando.
@@ -1068,7 +1068,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Jog by %1 per press</source>
         <translation>Desplazar %1 por pulsación</translation>
     </message>
@@ -1078,7 +1078,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>%1 in</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+128"/>
         <source>Any step size (%1 to %2 in)</source>
         <translation>Cualquier tamaño de paso (de %1 a %2 in)</translation>
     </message>
@@ -1202,7 +1202,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/window/log_viewer.py" line="+43"/>
+        <location filename="../../app/window/log_viewer.py" line="+48"/>
         <source>(undecoded)</source>
         <translation>(sin decodificar)</translation>
     </message>
@@ -1262,14 +1262,24 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>leyendo %1…</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+57"/>
         <source>%1 — traffic log</source>
         <translation>%1 — registro de tráfico</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 (%2): %3 lines, decoded as %4</source>
         <translation>%1 (%2): %3 líneas, decodificadas como %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, recognised from its traffic (the log names no protocol)</source>
+        <translation>, reconocido por su tráfico (el registro no indica ningún protocolo)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; a simulator&apos;s record: TX and RX shown as the host saw them</source>
+        <translation>; registro de un simulador: TX y RX mostrados como los vio el host</translation>
     </message>
 </context>
 <context>
@@ -1482,12 +1492,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Detener la platina ahora: interrumpe el movimiento en curso y descarta lo que está en cola (Esc)</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+50"/>
+        <location filename="../../app/window/connection.py" line="+51"/>
         <source>simulated %1 device</source>
         <translation>dispositivo %1 simulado</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+95"/>
+        <location filename="../../app/window/main_window.py" line="+99"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1512,7 +1522,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Conexión</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+27"/>
         <source>Position</source>
         <translation>Posición</translation>
     </message>
@@ -1633,12 +1643,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>conectando con %1 (%2, %3 baudios)</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+87"/>
         <source>bridge refused: %1</source>
         <translation>puente rechazado: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>bridge: %1</source>
         <translation>puente: %1</translation>
     </message>
@@ -1669,16 +1679,32 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     </message>
     <message>
         <location line="+3"/>
+        <location line="+9"/>
         <source>disconnected</source>
         <translation>desconectado</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="-5"/>
+        <source>disconnected from %1 on %2</source>
+        <translation>desconectado de %1 en %2</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>connected to %1 on %2</source>
         <translation>conectado a %1 en %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+136"/>
+        <location filename="../../app/window/machine_state.py" line="+36"/>
+        <source>home set: the position is counted from here</source>
+        <translation>origen fijado: la posición se cuenta desde aquí</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>an absolute point reached: the position is counted from here</source>
+        <translation>punto absoluto alcanzado: la posición se cuenta desde aquí</translation>
+    </message>
+    <message>
+        <location line="+132"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la posición es desconocida: este dispositivo no puede informar de ella; buscar el origen o fijar el origen</translation>
     </message>
@@ -1688,7 +1714,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>reconectado a %1: se ha vuelto a leer la posición</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
+        <source>the device cannot be asked where it is: it goes on from (%1, %2, %3) mm, where it was left on this port (kept, not measured)</source>
+        <translation>no se puede preguntar al dispositivo dónde está: continúa desde (%1, %2, %3) mm, donde se dejó en este puerto (guardada, no medida)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>posición desconocida: no se puede consultar al dispositivo; pulsar Origen o Fijar origen para empezar a contar</translation>
     </message>
@@ -1728,12 +1759,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>reconectando con %1</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-279"/>
         <source>port %1 disappeared</source>
         <translation>desapareció el puerto %1</translation>
     </message>
     <message>
-        <location line="+272"/>
+        <location line="+292"/>
         <source>%1 on %2</source>
         <translation>%1 en %2</translation>
     </message>
@@ -1748,7 +1779,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>límites de recorrido: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+101"/>
+        <location filename="../../app/window/job_desk.py" line="+113"/>
         <source>not connected: %1 not sent</source>
         <translation>no conectado: %1 sin enviar</translation>
     </message>
@@ -1759,21 +1790,26 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
     </message>
     <message>
         <location line="+14"/>
+        <source>%1 refused: the position is unknown and this device moves only to absolute targets, so it would go elsewhere; Set Home, Home or Go to first</source>
+        <translation>%1 rechazado: la posición es desconocida y este dispositivo solo se mueve a destinos absolutos, así que iría a otro sitio; haga primero Fijar origen, Origen o Ir a</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1 refused: %2 is under way; wait for its end or press Stop</source>
         <translation>se rechaza %1: %2 está en curso; esperar a que termine o pulsar Detener</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>motion controls are off until %1 ends (Stop ends it now)</source>
         <translation>los controles de movimiento están desactivados hasta que termine %1 (Detener lo termina ahora)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>%1 is under way</source>
         <translation>%1 está en curso</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+47"/>
         <source>jog refused: %1</source>
         <translation>desplazamiento rechazado: %1</translation>
     </message>
@@ -1817,12 +1853,17 @@ Send them anyway?</source>
         <translation>detenido: %1 comando(s) sin enviar: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+47"/>
+        <location line="+38"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../../app/window/machine_state.py" line="+64"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nuevo origen: la trayectoria se desplaza (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-139"/>
         <source>the device reported an error: %1</source>
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
@@ -1833,22 +1874,28 @@ Send them anyway?</source>
         <translation>dispositivo: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+24"/>
+        <location filename="../../app/window/job_desk.py" line="-11"/>
         <source>%1 failed: %2</source>
         <translation>%1 falló: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+234"/>
+        <location filename="../../app/window/machine_state.py" line="-90"/>
+        <location line="+375"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origen confirmado: la posición se cuenta desde aquí</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-205"/>
+        <source>position unknown: the device cannot be asked and its frames carry absolute targets, so a jog is refused; Set Home where the stage stands, Home, or Go to an absolute point first</source>
+        <translation>posición desconocida: no se puede consultar al dispositivo y sus tramas llevan destinos absolutos, así que se rechaza el desplazamiento; pulsar primero Fijar origen donde está la platina, Origen, o Ir a un punto absoluto</translation>
+    </message>
+    <message>
+        <location line="+217"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>la velocidad %1 mm/s se relee como %2 mm/s (el dispositivo redondea)</translation>
     </message>
     <message>
-        <location filename="../../app/window/layouts.py" line="+122"/>
+        <location filename="../../app/window/layouts.py" line="+127"/>
         <source>&amp;Operate</source>
         <translation>&amp;Operar</translation>
     </message>
@@ -1888,7 +1935,7 @@ Send them anyway?</source>
         <translation>Devolver los paneles de este diseño a su disposición inicial</translation>
     </message>
     <message>
-        <location line="+260"/>
+        <location line="+274"/>
         <source>this device has parameters: %1 for Set up</source>
         <translation>este dispositivo tiene parámetros: %1 para Configurar</translation>
     </message>
@@ -1897,11 +1944,31 @@ Send them anyway?</source>
         <source>this device has a setup panel: %1 for Set up</source>
         <translation>este dispositivo tiene un panel de configuración: %1 para Configurar</translation>
     </message>
+    <message>
+        <location filename="../../app/window/program_pause.py" line="+58"/>
+        <source>paused: nothing more is sent; the move under way finishes (this device has no feed hold)</source>
+        <translation>en pausa: no se envía nada más; el movimiento en curso termina (este dispositivo no tiene retención de avance)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>resumed: sending the program again</source>
+        <translation>reanudado: se vuelve a enviar el programa</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>paused: nothing more is sent; the device still holds %1 move(s) and runs them (its protocol has no feed hold): it stands still in about %2 s; Stop flushes them now</source>
+        <translation>en pausa: no se envía nada más; el dispositivo aún tiene %1 movimiento(s) y los ejecuta (su protocolo no tiene retención de avance): se detendrá en unos %2 s; Detener los descarta ahora</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>paused: the device has run what it held; the stage stands still</source>
+        <translation>en pausa: el dispositivo ha ejecutado lo que tenía; la platina está detenida</translation>
+    </message>
 </context>
 <context>
     <name>NumberField</name>
     <message>
-        <location filename="../../widgets/_number_field.py" line="+34"/>
+        <location filename="../../widgets/_number_field.py" line="+35"/>
         <source>a number is needed, %1 to %2%3</source>
         <translation>se necesita un número, de %1 a %2%3</translation>
     </message>
@@ -1930,11 +1997,16 @@ Send them anyway?</source>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>%1; cleared when the units changed to %2</source>
+        <translation>%1; borrado al cambiar las unidades a %2</translation>
+    </message>
 </context>
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/window/parameter_dock.py" line="+33"/>
+        <location filename="../../app/window/parameter_dock.py" line="+34"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>el dispositivo tiene ahora %1: el firmware lo impone tras cada escritura</translation>
     </message>
@@ -1949,7 +2021,7 @@ Send them anyway?</source>
         <translation>Parámetros</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+55"/>
         <source>Parameters (%1)</source>
         <translation>Parámetros (%1)</translation>
     </message>
@@ -1969,7 +2041,12 @@ Send them anyway?</source>
         <translation>sin enviar</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+47"/>
+        <source>recomputed by the firmware at the last move</source>
+        <translation>recalculado por el firmware en el último movimiento</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>the device did not answer</source>
         <translation>el dispositivo no respondió</translation>
     </message>
@@ -2081,7 +2158,7 @@ Send them anyway?</source>
         <translation>No cargado: %1</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+151"/>
         <source>nothing sent</source>
         <translation>no se ha enviado nada</translation>
     </message>
@@ -2110,12 +2187,12 @@ Send them anyway?</source>
         <translation type="vanished">no hay diferencias</translation>
     </message>
     <message>
-        <location line="-229"/>
+        <location line="-238"/>
         <source>Write the input values marked • (they differ from what the device holds); firmware outputs are not written by it</source>
         <translation>Escribir los valores de entrada marcados con • (difieren de lo que tiene el dispositivo); no escribe las salidas del firmware</translation>
     </message>
     <message>
-        <location line="+238"/>
+        <location line="+247"/>
         <source>no input differs</source>
         <translation>ninguna entrada difiere</translation>
     </message>
@@ -2193,7 +2270,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterModel</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-435"/>
+        <location filename="../../widgets/parameter_table.py" line="-467"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -2233,7 +2310,7 @@ Send them anyway?</source>
         <translation>Estado</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>The value to write, in the unit beside it (double-click, F2, Enter or type)</source>
         <translation>El valor a escribir, en la unidad indicada al lado (doble clic, F2, Enter o escribir)</translation>
     </message>
@@ -2253,7 +2330,12 @@ Send them anyway?</source>
         <translation>El resultado de la última escritura de este parámetro</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+92"/>
+        <source>%1 (computed)</source>
+        <translation>%1 (calculado)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1 (power-on)</source>
         <translation>%1 (al encender)</translation>
     </message>
@@ -2283,7 +2365,12 @@ Send them anyway?</source>
         <translation>%1: nunca escrito en este dispositivo desde este panel</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
+        <source>%1: the device holds %2, computed by its firmware %3</source>
+        <translation>%1: el dispositivo tiene %2, calculado por su firmware %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1: last written %2</source>
         <translation>%1: último valor escrito %2</translation>
     </message>
@@ -2311,7 +2398,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterTableView</name>
     <message>
-        <location line="+164"/>
+        <location line="+185"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
         <translation>Para editar, hacer doble clic en un valor, o seleccionar una fila y pulsar Enter o escribir</translation>
     </message>
@@ -2349,7 +2436,17 @@ Send them anyway?</source>
         <translation>cancelado</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
+        <source>after the last set</source>
+        <translation>tras la última escritura</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at the last move</source>
+        <translation>en el último movimiento</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Output: computed by the firmware. Writing it is allowed, but the firmware may replace what is written.</source>
         <translation>Salida: la calcula el firmware. Se permite escribirla, pero el firmware puede reemplazar lo escrito.</translation>
     </message>
@@ -2407,7 +2504,7 @@ Send them anyway?</source>
 <context>
     <name>PiFramePanel</name>
     <message>
-        <location filename="../../widgets/piframe_panel.py" line="+15"/>
+        <location filename="../../widgets/piframe_panel.py" line="+17"/>
         <source>DTR on</source>
         <translation>DTR activa</translation>
     </message>
@@ -2422,7 +2519,7 @@ Send them anyway?</source>
         <translation>DTR desconocida</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Encoder ticks per mm of travel (more than 0): converts the frame&apos;s ticks to mm</source>
         <translation>Cuentas del encoder por mm de recorrido (mayor que 0): convierte las cuentas del bastidor en mm</translation>
     </message>
@@ -2488,7 +2585,7 @@ Send them anyway?</source>
         <translation>Adónde se le ordenó ir al dispositivo, y su respuesta indicó que el movimiento terminó allí; no se ha releído (a un dispositivo que puede informar de su posición se le vuelve a consultar en reposo).</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>posición desconocida: no se puede consultar al dispositivo; pulsar Origen o Fijar origen para empezar a contar</translation>
     </message>
@@ -2504,6 +2601,26 @@ Send them anyway?</source>
     </message>
     <message>
         <location line="+7"/>
+        <source>estimated when the link was lost, during a move: somewhere between its start and its target; not connected</source>
+        <translation>estimada cuando se perdió el enlace, durante un movimiento: en algún punto entre su inicio y su destino; no conectado</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>bridging: no position seen in the bridged traffic yet (the panel asks nothing)</source>
+        <translation>puente: aún no se ha visto ninguna posición en el tráfico del puente (el panel no pregunta nada)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>observed in the bridged traffic: the device reported this position to the other program</source>
+        <translation>observada en el tráfico del puente: el dispositivo comunicó esta posición al otro programa</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>observed in the bridged traffic: the target of a move the other program sent, not confirmed by the device</source>
+        <translation>observada en el tráfico del puente: el destino de un movimiento que envió el otro programa, no confirmado por el dispositivo</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>last known position: not connected</source>
         <translation>última posición conocida: no conectado</translation>
     </message>
@@ -2512,7 +2629,7 @@ Send them anyway?</source>
         <translation type="vanished">Posición de la platina en mm: desde el origen del dispositivo y desde el cero de pieza</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>Machine</source>
         <translation>Máquina</translation>
     </message>
@@ -2575,12 +2692,12 @@ Send them anyway?</source>
         <translation>La platina está fuera de los límites de recorrido definidos para este dispositivo: solo se envían los movimientos que la acercan a ellos, hasta que vuelva a estar dentro</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+121"/>
         <source>outside the travel limits: %1</source>
         <translation>fuera de los límites de recorrido: %1</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+101"/>
         <source>millimetres</source>
         <translation>milímetros</translation>
     </message>
@@ -2640,22 +2757,23 @@ Send them anyway?</source>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+98"/>
+        <location filename="../../widgets/position_view_2d.py" line="+101"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>Platina vista desde arriba: trayectoria, posición actual (punto; hueco si es estimada), destino (+), límites de recorrido (discontinuos)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>XY (from above)</source>
         <translation>XY (desde arriba)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+152"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-4"/>
+        <location line="+4"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -2665,12 +2783,13 @@ Send them anyway?</source>
         <translation>Y (mm)</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-4"/>
+        <location line="+4"/>
         <source>Y</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="-107"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y y Z en función del tiempo; líneas discontinuas: destino</translation>
     </message>
@@ -2680,7 +2799,17 @@ Send them anyway?</source>
         <translation>Posición en función del tiempo</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+82"/>
+        <source>X (in)</source>
+        <translation>X (in)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y (in)</source>
+        <translation>Y (in)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>time (s, 0 = latest sample)</source>
         <translation>tiempo (s, 0 = última muestra)</translation>
     </message>
@@ -2688,6 +2817,16 @@ Send them anyway?</source>
         <location line="+0"/>
         <source>t (s)</source>
         <translation>t (s)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>position (in)</source>
+        <translation>posición (in)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>in</source>
+        <translation>in</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2700,7 +2839,7 @@ Send them anyway?</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-80"/>
         <source>Clear trail</source>
         <translation>Borrar trayectoria</translation>
     </message>
@@ -2723,7 +2862,7 @@ Send them anyway?</source>
 <context>
     <name>PositionView3D</name>
     <message>
-        <location filename="../../widgets/_gl_scene.py" line="+45"/>
+        <location filename="../../widgets/_gl_scene.py" line="+49"/>
         <source>Top</source>
         <translation>Superior</translation>
     </message>
@@ -2783,7 +2922,7 @@ Send them anyway?</source>
         <translation>Mantener la cámara sobre la posición actual</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+79"/>
+        <location filename="../../widgets/position_view_3d.py" line="+81"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Requiere OpenGL 2.1 o posterior (p. ej. Mesa) en una pantalla; ver el README.</translation>
     </message>
@@ -2797,12 +2936,17 @@ The 2D view shows the same positions.</source>
 La vista 2D muestra las mismas posiciones.</translation>
     </message>
     <message>
-        <location line="+171"/>
+        <location line="+172"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
         <translation>Arrastrar para girar, rueda para hacer zoom, arrastrar con el botón central para mover la vista</translation>
     </message>
     <message>
-        <location line="+473"/>
+        <location line="+233"/>
+        <source>grid %1 in</source>
+        <translation>cuadrícula %1 in</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>grid %1 mm</source>
         <translation>cuadrícula %1 mm</translation>
     </message>
@@ -3000,7 +3144,7 @@ La vista 2D muestra las mismas posiciones.</translation>
 <context>
     <name>ProgramDock</name>
     <message>
-        <location filename="../../app/window/program_dock.py" line="+172"/>
+        <location filename="../../app/window/program_dock.py" line="+181"/>
         <source>program %1 refused: %2</source>
         <translation>programa %1 rechazado: %2</translation>
     </message>
@@ -3025,12 +3169,12 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>el programa no tiene movimientos</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+93"/>
         <source>program saved to %1 (%2 points)</source>
         <translation>programa guardado en %1 (%2 puntos)</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+108"/>
         <source>the program stopped: %1</source>
         <translation>el programa se detuvo: %1</translation>
     </message>
@@ -3057,7 +3201,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">Programas (*.csv *.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/program_panel.py" line="+38"/>
+        <location filename="../../widgets/program_panel.py" line="+39"/>
         <source>no program loaded</source>
         <translation>ningún programa cargado</translation>
     </message>
@@ -3070,7 +3214,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">Cargar un programa: CSV con x,y,z,speed (mm, mm/s) o JSON</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
@@ -3110,13 +3254,13 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>&amp;Ejecutar</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+322"/>
+        <location line="+1"/>
+        <location line="+359"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;usa</translation>
     </message>
     <message>
-        <location line="-317"/>
+        <location line="-356"/>
         <source>&amp;Stop</source>
         <translation>&amp;Detener</translation>
     </message>
@@ -3125,12 +3269,12 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">No enviar nada más y vaciar la cola del dispositivo (STOP)</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-54"/>
         <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
         <translation>Programas (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;Dibujos DXF (*.dxf);;Dibujos SVG (*.svg);;Puntos (*.csv *.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
         <translation>Cargar un programa: G-code, DXF o SVG, o puntos (CSV con x,y,z,speed en mm y mm/s, o JSON)</translation>
     </message>
@@ -3140,12 +3284,12 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>Ejecutar el programa en el dispositivo (comprobado antes con la caja)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+344"/>
         <source>Send nothing more until Resume (a device&apos;s queued moves go on)</source>
         <translation>No enviar nada más hasta Reanudar (los movimientos en cola del dispositivo continúan)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-337"/>
         <source>Send nothing more and stop the device (its queue flushed)</source>
         <translation>No enviar nada más y detener el dispositivo (se vacía su cola)</translation>
     </message>
@@ -3155,7 +3299,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Chord tolerance: how far the straight moves an arc or curve is cut into may stray from it</source>
         <translation>Tolerancia de cuerda: cuánto pueden apartarse de un arco o curva los movimientos rectos en que se divide</translation>
     </message>
@@ -3166,12 +3310,12 @@ La vista 2D muestra las mismas posiciones.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+133"/>
+        <location line="+137"/>
         <source>%v / %m executed</source>
         <translation>%v / %m ejecutadas</translation>
     </message>
     <message>
-        <location line="-113"/>
+        <location line="-117"/>
         <source>The program&apos;s lines; the one under way is highlighted</source>
         <translation>Las líneas del programa; la que está en curso aparece resaltada</translation>
     </message>
@@ -3211,7 +3355,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>leyendo %1…</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>%1 (%2 lines)</source>
         <translation>%1 (%2 líneas)</translation>
     </message>
@@ -3278,26 +3422,41 @@ Not for this program: %2</source>
 No apto para este programa: %2</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+40"/>
+        <source>not connected to a device</source>
+        <translation>no conectado a un dispositivo</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>motion is off</source>
         <translation>el movimiento está desactivado</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1
 Refused: %2</source>
         <translation>%1
 Rechazado: %2</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1
 Not now: %2</source>
         <translation>%1
 Ahora no: %2</translation>
     </message>
     <message>
+        <location line="+11"/>
+        <source>Send nothing more until Resume. This device has no feed hold: it goes on running the moves it already holds (the status line says how many, and when it stands still); Stop flushes them</source>
+        <translation>No enviar nada más hasta Reanudar. Este dispositivo no tiene retención de avance: sigue ejecutando los movimientos que ya tiene (la línea de estado indica cuántos y cuándo se detiene); Detener los descarta</translation>
+    </message>
+    <message>
         <location line="+6"/>
+        <source>Send nothing more until Resume. The move under way finishes, then the stage stands still (this device has no feed hold)</source>
+        <translation>No enviar nada más hasta Reanudar. El movimiento en curso termina y después la platina se detiene (este dispositivo no tiene retención de avance)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
@@ -3475,7 +3634,7 @@ Ahora no: %2</translation>
         <translation>Coincidencia siguiente (F3)</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_status.py" line="+44"/>
+        <location filename="../../app/window/traffic_status.py" line="+45"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
         <translation>Líneas de la sesión, mostradas, consultas ocultas, errores, coincidencias</translation>
     </message>
@@ -3500,7 +3659,7 @@ Ahora no: %2</translation>
         <translation>Olvidar las líneas (el registro de sesión las conserva)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
         <translation>TX (azul): enviado al dispositivo; RX (verde): recibido; gris: notas y texto propio del dispositivo; rojo: errores. Doble clic en una línea para ir a su petición, su respuesta o su primera copia.</translation>
     </message>
@@ -3510,7 +3669,7 @@ Ahora no: %2</translation>
         <translation>la consola conserva las %1 líneas más recientes: las más antiguas se descartan a medida que llegan otras nuevas; el registro de sesión conserva todas las líneas</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+133"/>
         <source>line %1 is no longer in the console (its line limit dropped it); the session log has it</source>
         <translation>la línea %1 ya no está en la consola (la descartó su límite de líneas); está en el registro de sesión</translation>
     </message>
@@ -3564,12 +3723,17 @@ Ahora no: %2</translation>
         <translation>%1 coincidencias</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
+        <source>%1 more hidden by the filters</source>
+        <translation>%1 más ocultas por los filtros</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The console keeps the newest %1 lines (Settings): older lines are dropped from it, the session log on disk keeps every line</source>
         <translation>La consola conserva las %1 líneas más recientes (Ajustes): las más antiguas se descartan; el registro de sesión en disco conserva todas las líneas</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+110"/>
+        <location filename="../../app/window/traffic_console.py" line="+114"/>
         <source>export failed: %1</source>
         <translation>exportación fallida: %1</translation>
     </message>
@@ -3579,7 +3743,7 @@ Ahora no: %2</translation>
         <translation>%1 líneas exportadas a %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+57"/>
+        <location filename="../../app/window/traffic_table.py" line="+60"/>
         <source>motion</source>
         <translation>movimiento</translation>
     </message>
@@ -4123,7 +4287,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+40"/>
+        <location filename="../../widgets/speed_control.py" line="+41"/>
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -4133,7 +4297,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Velocidad de los próximos movimientos</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Apply</source>
         <translation>Aplicar</translation>
     </message>
@@ -4149,7 +4313,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>La velocidad que indica el dispositivo (puede redondearla)</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+107"/>
         <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
         <translation>Velocidad, de %1 a %2 in/s; pulsar Enter o Aplicar para enviar</translation>
     </message>
@@ -4180,6 +4344,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+8"/>
+        <location line="+3"/>
         <source>%1; nothing sent</source>
         <translation>%1; no se ha enviado nada</translation>
     </message>
@@ -4187,7 +4352,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>StatusLine</name>
     <message>
-        <location filename="../../widgets/status_line.py" line="+18"/>
+        <location filename="../../widgets/status_line.py" line="+19"/>
         <source>Disconnected</source>
         <translation>Desconectado</translation>
     </message>
@@ -4198,12 +4363,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+40"/>
+        <location line="+47"/>
         <source>Connecting…</source>
         <translation>Conectando…</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-45"/>
         <source>Opening the port and asking the device who it is</source>
         <translation>Abriendo el puerto y preguntando al dispositivo su identidad</translation>
     </message>
@@ -4239,6 +4404,16 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Paused</source>
+        <translation>En pausa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A program is paused: nothing more of it is sent until Resume</source>
+        <translation>Hay un programa en pausa: no se envía nada más de él hasta Reanudar</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Error</source>
         <translation>Error</translation>
     </message>
@@ -4251,7 +4426,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>ThemeMenu</name>
     <message>
-        <location filename="../../app/window/theme.py" line="+366"/>
+        <location filename="../../app/window/theme.py" line="+373"/>
         <source>&amp;Theme</source>
         <translation>&amp;Tema</translation>
     </message>
@@ -4302,7 +4477,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>TrafficModel</name>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="-19"/>
+        <location filename="../../app/window/traffic_table.py" line="-21"/>
         <source>Line</source>
         <translation>Línea</translation>
     </message>
@@ -4332,7 +4507,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Respuesta</translation>
     </message>
     <message>
-        <location line="+306"/>
+        <location line="+316"/>
         <source>line %1: %2</source>
         <translation>línea %1: %2</translation>
     </message>
@@ -4548,7 +4723,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>UnitSpinBox</name>
     <message>
-        <location filename="../../widgets/_units.py" line="+21"/>
+        <location filename="../../widgets/_units.py" line="+22"/>
         <source>in/s</source>
         <comment>inches per second</comment>
         <translation>in/s</translation>
@@ -4563,7 +4738,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>ValueDelegate</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-102"/>
+        <location filename="../../widgets/parameter_table.py" line="-106"/>
         <source>%1: edit cancelled, value unchanged</source>
         <translation>%1: edición cancelada, valor sin cambios</translation>
     </message>
@@ -4591,6 +4766,29 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+25"/>
         <source>%1: %2 (Enter keeps it, Escape cancels)</source>
         <translation>%1: %2 (Enter lo conserva, Esc cancela)</translation>
+    </message>
+</context>
+<context>
+    <name>ViewTabs</name>
+    <message>
+        <location filename="../../widgets/view_tabs.py" line="+31"/>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>XY and time</source>
+        <translation>XY y tiempo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The path in 3D</source>
+        <translation>La trayectoria en 3D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The path seen from above and X, Y, Z against time</source>
+        <translation>La trayectoria vista desde arriba y X, Y, Z en función del tiempo</translation>
     </message>
 </context>
 <context>
@@ -4671,7 +4869,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>, %1/%2 paso</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+62"/>
         <source>settings saved; the language from the next start</source>
         <translation>ajustes guardados; el idioma se aplica en el próximo inicio</translation>
     </message>
@@ -4728,7 +4926,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+15"/>
+        <location filename="message_templates.py" line="+16"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>hacia ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -4803,7 +5001,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>interrumpido: detenido en ({x:g}, {y:g}, {z:g}) mm (la parada de {protocol} se confirmó; su cola está vaciada)</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-23"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>uso: {usage} (se recibieron {count} argumentos)</translation>
     </message>
@@ -4858,12 +5056,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>movimiento en bruto hacia ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
     <message>
-        <location line="+16"/>
         <source>{file} names no protocol (no connection note: a motionctl --log file or a spy:// capture has none): give --protocol</source>
-        <translation>{file} no indica ningún protocolo (sin nota de conexión: un archivo de motionctl --log o una captura spy:// no la tienen): indicar --protocol</translation>
+        <translation type="vanished">{file} no indica ningún protocolo (sin nota de conexión: un archivo de motionctl --log o una captura spy:// no la tienen): indicar --protocol</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+18"/>
         <source>{file}: its connection note: {error}</source>
         <translation>{file}: su nota de conexión: {error}</translation>
     </message>
@@ -4968,14 +5165,18 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>wait {seconds:g} s rechazado: de 0 a {limit:g} s</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>{name} stopped before step {number} ({step})</source>
-        <translation>{name} se detuvo antes del paso {number} ({step})</translation>
+        <translation type="vanished">{name} se detuvo antes del paso {number} ({step})</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>{name} stopped during step {number}</source>
-        <translation>{name} se detuvo durante el paso {number}</translation>
+        <source>macro {name} stopped before step {number} ({step})</source>
+        <translation>macro {name} detenida antes del paso {number} ({step})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} stopped during step {number}</source>
+        <translation>macro {name} detenida durante el paso {number}</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5304,6 +5505,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>position unknown (({x:g}, {y:g}, {z:g}) mm counted from where the session began; Home or Set Home to know it)</source>
+        <translation>posición desconocida (({x:g}, {y:g}, {z:g}) mm contados desde donde empezó la sesión; usar Origen o Fijar origen para conocerla)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>position ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>posición ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5444,6 +5650,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)</source>
+        <translation>{source} no indica ningún protocolo: decodificado como {protocol}, el protocolo que revela su tráfico ({frames} tramas reconocidas)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{source} line {number}: not a traffic log line: {line!r}</source>
         <translation>{source} línea {number}: no es una línea de registro de tráfico: {line!r}</translation>
     </message>
@@ -5501,6 +5712,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}</source>
         <translation>velocidad de {speed:g} {unit} rechazada: el dispositivo admite de {low:g} a {high:g} {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} {unit} written, but this firmware times its steps from its step delays (15, 16) alone: moves go at {real:.3f} {unit}</source>
+        <translation>velocidad de {speed:g} {unit} escrita, pero este firmware temporiza sus pasos solo a partir de sus retardos entre pasos (15, 16): los movimientos van a {real:.3f} {unit}</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5724,6 +5940,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)</source>
+        <translation>sus tramas llevan destinos absolutos, así que un movimiento relativo necesita la posición: usar primero Fijar origen donde está la platina, Origen, o mover a un punto absoluto (en el panel, o motionctl set-home, home o move X Y Z)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Home or Set Home (in the panel, or motionctl home / set-home) to start counting</source>
         <translation>usar Origen o Fijar origen (en el panel, o motionctl home / set-home) para empezar a contar</translation>
     </message>
@@ -5734,8 +5955,18 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{command} refused: position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}</source>
+        <translation>{command} rechazado: posición desconocida: no se puede preguntar a {protocol} dónde está y no hay ninguna posición ordenada guardada para este puerto; {how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}</source>
         <translation>{command} rechazado: posición desconocida: no se puede preguntar a {protocol} dónde está y no hay ninguna posición contada para este puerto; {how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}</source>
+        <translation>posición desconocida: no se puede preguntar a {protocol} dónde está y no hay ninguna posición ordenada guardada para este puerto; {how}</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6463,12 +6694,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{parameter} fijado</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace.</source>
-        <translation>Fija input_speed_steady_x e _y (parámetros 21 y 22). Esta revisión del firmware temporiza sus pasos solo a partir de step_delay_instantaneous (15, 16), así que los movimientos mantienen su ritmo.</translation>
+        <translation type="vanished">Fija input_speed_steady_x e _y (parámetros 21 y 22). Esta revisión del firmware temporiza sus pasos solo a partir de step_delay_instantaneous (15, 16), así que los movimientos mantienen su ritmo.</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted</source>
         <translation>Visiomex no tiene búsqueda de origen en esta revisión: Origen vuelve a (0, 0) con un movimiento relativo desde la posición que ha contado el panel</translation>
     </message>
@@ -6908,7 +7138,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>0 polea de correa, 1 husillo (este firmware impone 1 tras cada escritura)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>protocol {name!r} is not implemented yet</source>
         <translation>el protocolo {name!r} aún no está implementado</translation>
     </message>
@@ -6918,7 +7148,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>protocolo desconocido {name!r} (conocidos: {known})</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
         <translation>{protocol} no tiene comando de parada: el dispositivo termina lo que se le envió</translation>
     </message>
@@ -7198,7 +7428,42 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{where}: se rechaza la velocidad {speed:g} mm/s: el dispositivo admite de {low:g} a {high:g} mm/s; no se ha enviado nada</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-480"/>
+        <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
+        <translation>{command} rechazado: el motor paso a paso no está configurado para {port} (la placa lo olvida en cada reinicio y no hay ninguna configuración guardada para este puerto); ejecutar motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 con los pasos por revolución y los pines de su motor (o Configurar en la Configuración del motor del panel): se guarda y se vuelve a enviar en cada ejecución</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>{file} names no protocol (no connection note) and no protocol recognises its traffic: give --protocol</source>
+        <translation>{file} no indica ningún protocolo (sin nota de conexión) y ningún protocolo reconoce su tráfico: indicar --protocol</translation>
+    </message>
+    <message>
+        <location line="+327"/>
+        <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
+        <translation>La velocidad no se puede fijar aquí: esta revisión del firmware temporiza sus pasos solo a partir de step_delay_instantaneous (15, 16), no de input_speed_steady (21, 22). &quot;dispositivo:&quot; es la velocidad a la que avanza X (15 en alto más 16 en bajo por paso); cambiar 15 y 16 en la tabla de parámetros para modificarla.</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>Y will not move: at these parameters the firmware&apos;s Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)</source>
+        <translation>Y no se moverá: con estos parámetros el bucle Y del firmware no da ningún paso (ejecuta el recuento de rampa, 0; fijar 22 y 24 de modo que la longitud de rampa sea mayor que 0)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y moves {moved:.3f} mm, not {asked:.3f}: the firmware&apos;s Y loop runs the ramp count ({loops} of {steps} steps)</source>
+        <translation>Y se mueve {moved:.3f} mm, no {asked:.3f}: el bucle Y del firmware ejecuta el recuento de rampa ({loops} de {steps} pasos)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} moves {moved:.3f} mm, not {asked:.3f}: whole steps ({steps}), truncated as the firmware counts</source>
+        <translation>{axis} se mueve {moved:.3f} mm, no {asked:.3f}: pasos enteros ({steps}), truncados como cuenta el firmware</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>{protocol} reports where it is: it is asked</source>
+        <translation>{protocol} informa de dónde está: se le consulta</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
         <translation>los movimientos del programa sin velocidad irían a la velocidad del dispositivo, {speed:g} mm/s, fuera de los {low:g} a {high:g} mm/s que admite: fijar antes la velocidad; no se ha enviado nada</translation>
     </message>
@@ -7461,6 +7726,11 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <location line="+1"/>
         <source>cannot open {port}: {error}</source>
         <translation>no se puede abrir {port}: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first</source>
+        <translation>{where} aceptó esta conexión y la cerró de inmediato{said}: probablemente otro cliente tiene el puerto (ser2net atiende a uno cada vez con max-connections: 1); cerrar primero ese cliente</translation>
     </message>
     <message>
         <location line="+1"/>

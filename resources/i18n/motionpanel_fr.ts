@@ -237,12 +237,12 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/window/bridge_session.py" line="+86"/>
+        <location filename="../../app/window/bridge_session.py" line="+93"/>
         <source>the bridge failed: %1</source>
         <translation>la passerelle a échoué&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+45"/>
         <source>the bridge stopped</source>
         <translation>la passerelle s&apos;est arrêtée</translation>
     </message>
@@ -331,24 +331,24 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
     <message>
         <location line="+6"/>
         <location line="+6"/>
-        <location line="+223"/>
+        <location line="+225"/>
         <source>Connect</source>
         <translation>Connecter</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+222"/>
+        <location line="-225"/>
+        <location line="+224"/>
         <source>Cancel</source>
         <translation>Annuler</translation>
     </message>
     <message>
-        <location line="-222"/>
-        <location line="+222"/>
+        <location line="-224"/>
+        <location line="+224"/>
         <source>Disconnect</source>
         <translation>Déconnecter</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-216"/>
         <source>Lines:</source>
         <translation>Lignes&#xa0;:</translation>
     </message>
@@ -367,12 +367,12 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
         <translation>Protocole&#xa0;:</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Baud:</source>
         <translation>Bauds&#xa0;:</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+73"/>
         <source>No description for this port</source>
         <translation>Aucune description pour ce port</translation>
     </message>
@@ -410,7 +410,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 <context>
     <name>ControlLinesBar</name>
     <message>
-        <location filename="../../widgets/control_lines_bar.py" line="+42"/>
+        <location filename="../../widgets/control_lines_bar.py" line="+47"/>
         <source>DTR</source>
         <translation>DTR</translation>
     </message>
@@ -519,7 +519,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 <context>
     <name>CoordinateEntry</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="+33"/>
+        <location filename="../../widgets/coordinate_entry.py" line="+34"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
         <translation>Faire de la position actuelle la nouvelle origine (0, 0, 0)&#xa0;?
@@ -541,22 +541,22 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Absolu</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+73"/>
         <source>Go to the typed coordinates (mm from home)</source>
         <translation>Aller aux coordonnées saisies (mm depuis l&apos;origine)</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-71"/>
         <source>Relative</source>
         <translation>Relatif</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+72"/>
         <source>Move by the typed distances (mm) from where the stage is</source>
         <translation>Se déplacer des distances saisies (mm) depuis la position actuelle de la platine</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-63"/>
         <source>Machine</source>
         <translation>Machine</translation>
     </message>
@@ -566,7 +566,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Pièce</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+64"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
         <translation>Repère des coordonnées saisies&#xa0;: Machine (mm depuis l&apos;origine de l&apos;appareil) ou Pièce (mm depuis le zéro pièce)&#xa0;; l&apos;appareil reçoit toujours des coordonnées machine</translation>
     </message>
@@ -576,13 +576,13 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Aller</translation>
     </message>
     <message>
-        <location line="-25"/>
+        <location line="-26"/>
         <source>&amp;%1:</source>
         <comment>an axis field&apos;s label; Alt+axis</comment>
         <translation>&amp;%1&#xa0;:</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Start the move (Enter in a field)</source>
         <translation>Lancer le mouvement (Entrée dans un champ)</translation>
     </message>
@@ -706,7 +706,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DerivedValues</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="+469"/>
+        <location filename="../../widgets/parameter_table.py" line="+501"/>
         <source>Derived values</source>
         <translation>Valeurs dérivées</translation>
     </message>
@@ -828,7 +828,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>FirmataPanel</name>
     <message>
-        <location filename="../../widgets/firmata_panel.py" line="+30"/>
+        <location filename="../../widgets/firmata_panel.py" line="+31"/>
         <source>version unknown</source>
         <translation>version inconnue</translation>
     </message>
@@ -838,7 +838,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Pas entiers par tour du moteur, de 1 à %1 (par ex. 200)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1 pins</source>
         <translation>%1 broches</translation>
     </message>
@@ -848,12 +848,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>2 broches&#xa0;: un driver avec entrées pas et direction&#xa0;; 4 broches&#xa0;: les quatre fils du moteur</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>pin </source>
         <translation>broche </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Motor steps per mm of travel (more than 0): converts mm and mm/s to steps</source>
         <translation>Pas moteur par mm de course (supérieur à 0)&#xa0;: convertit les mm et mm/s en pas</translation>
     </message>
@@ -1045,7 +1045,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Touches&#xa0;: ←/→ X, ↑/↓ Y, Page préc/Page suiv Z, Maj ×10</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+52"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
         <translation>Déplacer la platine d&apos;un pas&#xa0;; maintenir un bouton ou une touche enfoncé pour continuer.
@@ -1068,7 +1068,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
     </message>
     <message>
         <location line="+5"/>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Jog by %1 per press</source>
         <translation>Déplacer de %1 par appui</translation>
     </message>
@@ -1078,7 +1078,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>%1 in</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+128"/>
         <source>Any step size (%1 to %2 in)</source>
         <translation>Pas quelconque (de %1 à %2 in)</translation>
     </message>
@@ -1202,7 +1202,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/window/log_viewer.py" line="+43"/>
+        <location filename="../../app/window/log_viewer.py" line="+48"/>
         <source>(undecoded)</source>
         <translation>(non décodé)</translation>
     </message>
@@ -1262,14 +1262,24 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>lecture de %1…</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+57"/>
         <source>%1 — traffic log</source>
         <translation>%1 — journal de trafic</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 (%2): %3 lines, decoded as %4</source>
         <translation>%1 (%2)&#xa0;: %3 lignes, décodées en %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, recognised from its traffic (the log names no protocol)</source>
+        <translation>, reconnu d&apos;après son trafic (le journal n&apos;indique aucun protocole)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; a simulator&apos;s record: TX and RX shown as the host saw them</source>
+        <translation>; enregistrement d&apos;un simulateur&#xa0;: TX et RX affichés tels que l&apos;hôte les a vus</translation>
     </message>
 </context>
 <context>
@@ -1482,12 +1492,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Arrêter la platine immédiatement&#xa0;: interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+50"/>
+        <location filename="../../app/window/connection.py" line="+51"/>
         <source>simulated %1 device</source>
         <translation>appareil %1 simulé</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+95"/>
+        <location filename="../../app/window/main_window.py" line="+99"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1512,7 +1522,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Connexion</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+27"/>
         <source>Position</source>
         <translation>Position</translation>
     </message>
@@ -1633,12 +1643,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>connexion à %1 (%2, %3 bauds)</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+87"/>
         <source>bridge refused: %1</source>
         <translation>passerelle refusée&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>bridge: %1</source>
         <translation>passerelle&#xa0;: %1</translation>
     </message>
@@ -1669,16 +1679,32 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     </message>
     <message>
         <location line="+3"/>
+        <location line="+9"/>
         <source>disconnected</source>
         <translation>déconnecté</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="-5"/>
+        <source>disconnected from %1 on %2</source>
+        <translation>déconnecté de %1 sur %2</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>connected to %1 on %2</source>
         <translation>connecté à %1 sur %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+136"/>
+        <location filename="../../app/window/machine_state.py" line="+36"/>
+        <source>home set: the position is counted from here</source>
+        <translation>origine définie&#xa0;: la position est comptée à partir d&apos;ici</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>an absolute point reached: the position is counted from here</source>
+        <translation>point absolu atteint&#xa0;: la position est comptée à partir d&apos;ici</translation>
+    </message>
+    <message>
+        <location line="+132"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la position est inconnue&#xa0;: cet appareil ne peut pas l&apos;indiquer&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
@@ -1688,7 +1714,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>reconnecté à %1&#xa0;: la position a été relue</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
+        <source>the device cannot be asked where it is: it goes on from (%1, %2, %3) mm, where it was left on this port (kept, not measured)</source>
+        <translation>l&apos;appareil ne peut pas être interrogé sur sa position&#xa0;: il repart de (%1, %2, %3) mm, là où il a été laissé sur ce port (conservée, non mesurée)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé&#xa0;; «&#xa0;Origine&#xa0;» ou «&#xa0;Définir l&apos;origine&#xa0;» pour commencer le décompte</translation>
     </message>
@@ -1728,12 +1759,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>reconnexion à %1</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-279"/>
         <source>port %1 disappeared</source>
         <translation>port %1 disparu</translation>
     </message>
     <message>
-        <location line="+272"/>
+        <location line="+292"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -1748,7 +1779,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>limites de course&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+101"/>
+        <location filename="../../app/window/job_desk.py" line="+113"/>
         <source>not connected: %1 not sent</source>
         <translation>non connecté&#xa0;: %1 non envoyé</translation>
     </message>
@@ -1759,21 +1790,26 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
     </message>
     <message>
         <location line="+14"/>
+        <source>%1 refused: the position is unknown and this device moves only to absolute targets, so it would go elsewhere; Set Home, Home or Go to first</source>
+        <translation>%1 refusé&#xa0;: la position est inconnue et cet appareil ne se déplace que vers des cibles absolues, il irait donc ailleurs&#xa0;; faites d&apos;abord Définir l&apos;origine, Origine ou Aller à</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1 refused: %2 is under way; wait for its end or press Stop</source>
         <translation>%1 refusé&#xa0;: %2 est en cours&#xa0;; attendre sa fin ou appuyer sur Arrêt</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>motion controls are off until %1 ends (Stop ends it now)</source>
         <translation>les commandes de mouvement sont désactivées jusqu&apos;à la fin de %1 (Arrêt y met fin immédiatement)</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>%1 is under way</source>
         <translation>%1 est en cours</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+47"/>
         <source>jog refused: %1</source>
         <translation>déplacement refusé&#xa0;: %1</translation>
     </message>
@@ -1817,12 +1853,17 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>arrêté&#xa0;: %1 commande(s) non envoyée(s)&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+47"/>
+        <location line="+38"/>
+        <source>%1: %2</source>
+        <translation>%1&#xa0;: %2</translation>
+    </message>
+    <message>
+        <location filename="../../app/window/machine_state.py" line="+64"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nouvelle origine&#xa0;: la trace est décalée de (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-139"/>
         <source>the device reported an error: %1</source>
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
@@ -1833,22 +1874,28 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>appareil&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+24"/>
+        <location filename="../../app/window/job_desk.py" line="-11"/>
         <source>%1 failed: %2</source>
         <translation>échec de %1&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+234"/>
+        <location filename="../../app/window/machine_state.py" line="-90"/>
+        <location line="+375"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origine confirmée&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-205"/>
+        <source>position unknown: the device cannot be asked and its frames carry absolute targets, so a jog is refused; Set Home where the stage stands, Home, or Go to an absolute point first</source>
+        <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé et ses trames portent des cibles absolues, un déplacement est donc refusé&#xa0;; d&apos;abord «&#xa0;Définir l&apos;origine&#xa0;» là où se trouve la platine, «&#xa0;Origine&#xa0;», ou «&#xa0;Aller à&#xa0;» vers un point absolu</translation>
+    </message>
+    <message>
+        <location line="+217"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>vitesse %1 mm/s relue comme %2 mm/s (l&apos;appareil arrondit)</translation>
     </message>
     <message>
-        <location filename="../../app/window/layouts.py" line="+122"/>
+        <location filename="../../app/window/layouts.py" line="+127"/>
         <source>&amp;Operate</source>
         <translation>&amp;Pilotage</translation>
     </message>
@@ -1888,7 +1935,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Remettre les panneaux de cette disposition comme au départ</translation>
     </message>
     <message>
-        <location line="+260"/>
+        <location line="+274"/>
         <source>this device has parameters: %1 for Set up</source>
         <translation>cet appareil a des paramètres&#xa0;: %1 pour «&#xa0;Configuration&#xa0;»</translation>
     </message>
@@ -1897,11 +1944,31 @@ Les envoyer quand même&#xa0;?</translation>
         <source>this device has a setup panel: %1 for Set up</source>
         <translation>cet appareil a un panneau de configuration&#xa0;: %1 pour «&#xa0;Configuration&#xa0;»</translation>
     </message>
+    <message>
+        <location filename="../../app/window/program_pause.py" line="+58"/>
+        <source>paused: nothing more is sent; the move under way finishes (this device has no feed hold)</source>
+        <translation>en pause&#xa0;: plus rien n&apos;est envoyé&#xa0;; le mouvement en cours se termine (cet appareil n&apos;a pas de suspension d&apos;avance)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>resumed: sending the program again</source>
+        <translation>repris&#xa0;: le programme est de nouveau envoyé</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>paused: nothing more is sent; the device still holds %1 move(s) and runs them (its protocol has no feed hold): it stands still in about %2 s; Stop flushes them now</source>
+        <translation>en pause&#xa0;: plus rien n&apos;est envoyé&#xa0;; l&apos;appareil contient encore %1 mouvement(s) et les exécute (son protocole n&apos;a pas de suspension d&apos;avance)&#xa0;: il sera immobile dans %2 s environ&#xa0;; «&#xa0;Arrêt&#xa0;» les annule tout de suite</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>paused: the device has run what it held; the stage stands still</source>
+        <translation>en pause&#xa0;: l&apos;appareil a exécuté ce qu&apos;il contenait&#xa0;; la platine est immobile</translation>
+    </message>
 </context>
 <context>
     <name>NumberField</name>
     <message>
-        <location filename="../../widgets/_number_field.py" line="+34"/>
+        <location filename="../../widgets/_number_field.py" line="+35"/>
         <source>a number is needed, %1 to %2%3</source>
         <translation>un nombre est requis, de %1 à %2%3</translation>
     </message>
@@ -1930,11 +1997,16 @@ Les envoyer quand même&#xa0;?</translation>
         <source>%1: %2</source>
         <translation>%1&#xa0;: %2</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>%1; cleared when the units changed to %2</source>
+        <translation>%1&#xa0;; effacé lors du passage des unités en %2</translation>
+    </message>
 </context>
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/window/parameter_dock.py" line="+33"/>
+        <location filename="../../app/window/parameter_dock.py" line="+34"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>l&apos;appareil contient maintenant %1&#xa0;: le firmware l&apos;impose après chaque écriture</translation>
     </message>
@@ -1949,7 +2021,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Paramètres</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+55"/>
         <source>Parameters (%1)</source>
         <translation>Paramètres (%1)</translation>
     </message>
@@ -1969,7 +2041,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>non envoyé</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+47"/>
+        <source>recomputed by the firmware at the last move</source>
+        <translation>recalculé par le firmware lors du dernier mouvement</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>the device did not answer</source>
         <translation>l&apos;appareil n&apos;a pas répondu</translation>
     </message>
@@ -2081,7 +2158,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Non chargé&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+151"/>
         <source>nothing sent</source>
         <translation>rien n&apos;a été envoyé</translation>
     </message>
@@ -2110,12 +2187,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation type="vanished">aucune différence</translation>
     </message>
     <message>
-        <location line="-229"/>
+        <location line="-238"/>
         <source>Write the input values marked • (they differ from what the device holds); firmware outputs are not written by it</source>
         <translation>Écrire les valeurs d&apos;entrée marquées • (elles diffèrent de ce que contient l&apos;appareil)&#xa0;; les sorties du firmware ne sont pas écrites par ce bouton</translation>
     </message>
     <message>
-        <location line="+238"/>
+        <location line="+247"/>
         <source>no input differs</source>
         <translation>aucune entrée ne diffère</translation>
     </message>
@@ -2193,7 +2270,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>ParameterModel</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-435"/>
+        <location filename="../../widgets/parameter_table.py" line="-467"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -2233,7 +2310,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>État</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>The value to write, in the unit beside it (double-click, F2, Enter or type)</source>
         <translation>La valeur à écrire, dans l&apos;unité indiquée à côté (double-clic, F2, Entrée ou saisie directe)</translation>
     </message>
@@ -2253,7 +2330,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Le résultat de la dernière écriture de ce paramètre</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+92"/>
+        <source>%1 (computed)</source>
+        <translation>%1 (calculé)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1 (power-on)</source>
         <translation>%1 (mise sous tension)</translation>
     </message>
@@ -2283,7 +2365,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>%1&#xa0;: jamais écrit sur cet appareil depuis ce panneau</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
+        <source>%1: the device holds %2, computed by its firmware %3</source>
+        <translation>%1&#xa0;: l&apos;appareil contient %2, calculé par son firmware %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1: last written %2</source>
         <translation>%1&#xa0;: dernière valeur écrite&#xa0;: %2</translation>
     </message>
@@ -2311,7 +2398,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>ParameterTableView</name>
     <message>
-        <location line="+164"/>
+        <location line="+185"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
         <translation>Pour modifier&#xa0;: double-cliquer sur une valeur, ou sélectionner une ligne puis appuyer sur Entrée ou saisir</translation>
     </message>
@@ -2349,7 +2436,17 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>annulé</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
+        <source>after the last set</source>
+        <translation>après la dernière écriture</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at the last move</source>
+        <translation>lors du dernier mouvement</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Output: computed by the firmware. Writing it is allowed, but the firmware may replace what is written.</source>
         <translation>Sortie&#xa0;: calculée par le firmware. L&apos;écrire est permis, mais le firmware peut remplacer la valeur écrite.</translation>
     </message>
@@ -2407,7 +2504,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PiFramePanel</name>
     <message>
-        <location filename="../../widgets/piframe_panel.py" line="+15"/>
+        <location filename="../../widgets/piframe_panel.py" line="+17"/>
         <source>DTR on</source>
         <translation>DTR actif</translation>
     </message>
@@ -2422,7 +2519,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>DTR inconnu</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Encoder ticks per mm of travel (more than 0): converts the frame&apos;s ticks to mm</source>
         <translation>Impulsions codeur par mm de course (supérieur à 0)&#xa0;: convertit les impulsions du cadre en mm</translation>
     </message>
@@ -2488,7 +2585,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Position de consigne, et la réponse de l&apos;appareil indique que le mouvement s&apos;y est terminé&#xa0;; non relue (un appareil capable d&apos;indiquer sa position est réinterrogé au repos).</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé&#xa0;; «&#xa0;Origine&#xa0;» ou «&#xa0;Définir l&apos;origine&#xa0;» pour commencer le décompte</translation>
     </message>
@@ -2504,6 +2601,26 @@ Les envoyer quand même&#xa0;?</translation>
     </message>
     <message>
         <location line="+7"/>
+        <source>estimated when the link was lost, during a move: somewhere between its start and its target; not connected</source>
+        <translation>estimée lors de la perte de la liaison, pendant un mouvement&#xa0;: quelque part entre son départ et sa cible&#xa0;; non connecté</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>bridging: no position seen in the bridged traffic yet (the panel asks nothing)</source>
+        <translation>passerelle&#xa0;: aucune position vue pour l&apos;instant dans le trafic de la passerelle (le panneau n&apos;interroge rien)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>observed in the bridged traffic: the device reported this position to the other program</source>
+        <translation>observée dans le trafic de la passerelle&#xa0;: l&apos;appareil a indiqué cette position à l&apos;autre programme</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>observed in the bridged traffic: the target of a move the other program sent, not confirmed by the device</source>
+        <translation>observée dans le trafic de la passerelle&#xa0;: la cible d&apos;un mouvement envoyé par l&apos;autre programme, non confirmée par l&apos;appareil</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>last known position: not connected</source>
         <translation>dernière position connue&#xa0;: non connecté</translation>
     </message>
@@ -2512,7 +2629,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation type="vanished">Position de la platine en mm&#xa0;: depuis l&apos;origine de l&apos;appareil et depuis le zéro pièce</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>Machine</source>
         <translation>Machine</translation>
     </message>
@@ -2575,12 +2692,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>La platine est hors des limites de course définies pour cet appareil&#xa0;: seuls les mouvements qui l&apos;en rapprochent sont envoyés, jusqu&apos;à ce qu&apos;elle y soit revenue</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+121"/>
         <source>outside the travel limits: %1</source>
         <translation>hors des limites de course&#xa0;: %1</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+101"/>
         <source>millimetres</source>
         <translation>millimètres</translation>
     </message>
@@ -2640,22 +2757,23 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+98"/>
+        <location filename="../../widgets/position_view_2d.py" line="+101"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>Platine vue de dessus&#xa0;: trace, position actuelle (point&#xa0;; creux si estimée), cible (+), limites de course (pointillés)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>XY (from above)</source>
         <translation>XY (vue de dessus)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+152"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-4"/>
+        <location line="+4"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -2665,12 +2783,13 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Y (mm)</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-4"/>
+        <location line="+4"/>
         <source>Y</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="-107"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y et Z en fonction du temps&#xa0;; pointillés&#xa0;: cible</translation>
     </message>
@@ -2680,7 +2799,17 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Position en fonction du temps</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+82"/>
+        <source>X (in)</source>
+        <translation>X (in)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y (in)</source>
+        <translation>Y (in)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>time (s, 0 = latest sample)</source>
         <translation>temps (s, 0 = dernier échantillon)</translation>
     </message>
@@ -2688,6 +2817,16 @@ Les envoyer quand même&#xa0;?</translation>
         <location line="+0"/>
         <source>t (s)</source>
         <translation>t (s)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>position (in)</source>
+        <translation>position (in)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>in</source>
+        <translation>in</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2700,7 +2839,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>mm</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-80"/>
         <source>Clear trail</source>
         <translation>Effacer la trace</translation>
     </message>
@@ -2723,7 +2862,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PositionView3D</name>
     <message>
-        <location filename="../../widgets/_gl_scene.py" line="+45"/>
+        <location filename="../../widgets/_gl_scene.py" line="+49"/>
         <source>Top</source>
         <translation>Dessus</translation>
     </message>
@@ -2783,7 +2922,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Garder la caméra sur la position actuelle</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+79"/>
+        <location filename="../../widgets/position_view_3d.py" line="+81"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Nécessite OpenGL 2.1 ou plus récent (par ex. Mesa) sur un affichage&#xa0;; voir le README.</translation>
     </message>
@@ -2797,12 +2936,17 @@ The 2D view shows the same positions.</source>
 La vue 2D montre les mêmes positions.</translation>
     </message>
     <message>
-        <location line="+171"/>
+        <location line="+172"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
         <translation>Glisser pour pivoter, molette pour zoomer, glisser avec le bouton du milieu pour déplacer la vue</translation>
     </message>
     <message>
-        <location line="+473"/>
+        <location line="+233"/>
+        <source>grid %1 in</source>
+        <translation>grille %1 in</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>grid %1 mm</source>
         <translation>grille %1 mm</translation>
     </message>
@@ -3000,7 +3144,7 @@ La vue 2D montre les mêmes positions.</translation>
 <context>
     <name>ProgramDock</name>
     <message>
-        <location filename="../../app/window/program_dock.py" line="+172"/>
+        <location filename="../../app/window/program_dock.py" line="+181"/>
         <source>program %1 refused: %2</source>
         <translation>programme %1 refusé&#xa0;: %2</translation>
     </message>
@@ -3025,12 +3169,12 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>le programme ne contient aucun mouvement</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+93"/>
         <source>program saved to %1 (%2 points)</source>
         <translation>programme enregistré dans %1 (%2 points)</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+108"/>
         <source>the program stopped: %1</source>
         <translation>le programme s&apos;est arrêté&#xa0;: %1</translation>
     </message>
@@ -3057,7 +3201,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Programmes (*.csv *.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/program_panel.py" line="+38"/>
+        <location filename="../../widgets/program_panel.py" line="+39"/>
         <source>no program loaded</source>
         <translation>aucun programme chargé</translation>
     </message>
@@ -3070,7 +3214,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Charger un programme&#xa0;: CSV avec x,y,z,speed (mm, mm/s) ou JSON</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Save…</source>
         <translation>Enregistrer…</translation>
     </message>
@@ -3110,13 +3254,13 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>Exécute&amp;r</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+322"/>
+        <location line="+1"/>
+        <location line="+359"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;use</translation>
     </message>
     <message>
-        <location line="-317"/>
+        <location line="-356"/>
         <source>&amp;Stop</source>
         <translation>Arrê&amp;t</translation>
     </message>
@@ -3125,12 +3269,12 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Ne plus rien envoyer et vider la file de l&apos;appareil (STOP)</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-54"/>
         <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
         <translation>Programmes (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;Dessins DXF (*.dxf);;Dessins SVG (*.svg);;Points (*.csv *.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
         <translation>Charger un programme&#xa0;: G-code, DXF ou SVG, ou des points (CSV avec x,y,z,vitesse en mm et mm/s, ou JSON)</translation>
     </message>
@@ -3140,12 +3284,12 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>Exécuter le programme sur l&apos;appareil (vérifié d&apos;abord par rapport à la zone)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+344"/>
         <source>Send nothing more until Resume (a device&apos;s queued moves go on)</source>
         <translation>Ne plus rien envoyer jusqu&apos;à Reprendre (les mouvements en file de l&apos;appareil se poursuivent)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-337"/>
         <source>Send nothing more and stop the device (its queue flushed)</source>
         <translation>Ne plus rien envoyer et arrêter l&apos;appareil (sa file est vidée)</translation>
     </message>
@@ -3155,7 +3299,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Chord tolerance: how far the straight moves an arc or curve is cut into may stray from it</source>
         <translation>Tolérance de corde&#xa0;: écart permis entre un arc ou une courbe et les mouvements rectilignes qui le découpent</translation>
     </message>
@@ -3166,12 +3310,12 @@ La vue 2D montre les mêmes positions.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+133"/>
+        <location line="+137"/>
         <source>%v / %m executed</source>
         <translation>%v / %m exécutées</translation>
     </message>
     <message>
-        <location line="-113"/>
+        <location line="-117"/>
         <source>The program&apos;s lines; the one under way is highlighted</source>
         <translation>Les lignes du programme&#xa0;; celle en cours est surlignée</translation>
     </message>
@@ -3211,7 +3355,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>lecture de %1…</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>%1 (%2 lines)</source>
         <translation>%1 (%2 lignes)</translation>
     </message>
@@ -3278,26 +3422,41 @@ Not for this program: %2</source>
 Non applicable à ce programme&#xa0;: %2</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+40"/>
+        <source>not connected to a device</source>
+        <translation>non connecté à un appareil</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>motion is off</source>
         <translation>les mouvements sont désactivés</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1
 Refused: %2</source>
         <translation>%1
 Refusé&#xa0;: %2</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1
 Not now: %2</source>
         <translation>%1
 Indisponible pour le moment&#xa0;: %2</translation>
     </message>
     <message>
+        <location line="+11"/>
+        <source>Send nothing more until Resume. This device has no feed hold: it goes on running the moves it already holds (the status line says how many, and when it stands still); Stop flushes them</source>
+        <translation>Ne plus rien envoyer jusqu&apos;à Reprendre. Cet appareil n&apos;a pas de suspension d&apos;avance&#xa0;: il continue d&apos;exécuter les mouvements qu&apos;il contient déjà (la ligne d&apos;état indique combien, et quand il sera immobile)&#xa0;; Arrêt les annule</translation>
+    </message>
+    <message>
         <location line="+6"/>
+        <source>Send nothing more until Resume. The move under way finishes, then the stage stands still (this device has no feed hold)</source>
+        <translation>Ne plus rien envoyer jusqu&apos;à Reprendre. Le mouvement en cours se termine, puis la platine s&apos;immobilise (cet appareil n&apos;a pas de suspension d&apos;avance)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Resume</source>
         <translation>Reprendre</translation>
     </message>
@@ -3475,7 +3634,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Correspondance suivante (F3)</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_status.py" line="+44"/>
+        <location filename="../../app/window/traffic_status.py" line="+45"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
         <translation>Lignes de la session, affichées, interrogations masquées, erreurs, correspondances</translation>
     </message>
@@ -3500,7 +3659,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Oublier les lignes (le journal de session les conserve)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
         <translation>TX (bleu)&#xa0;: envoyé à l&apos;appareil&#xa0;; RX (vert)&#xa0;: reçu&#xa0;; gris&#xa0;: notes et texte propre à l&apos;appareil&#xa0;; rouge&#xa0;: erreurs. Double-cliquer sur une ligne pour aller à sa requête, à sa réponse ou à sa première copie.</translation>
     </message>
@@ -3510,7 +3669,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>la console conserve les %1 lignes les plus récentes&#xa0;: les plus anciennes en sont retirées à mesure que de nouvelles arrivent&#xa0;; le journal de session conserve toutes les lignes</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+133"/>
         <source>line %1 is no longer in the console (its line limit dropped it); the session log has it</source>
         <translation>la ligne %1 n&apos;est plus dans la console (retirée par sa limite de lignes)&#xa0;; le journal de session la contient</translation>
     </message>
@@ -3564,12 +3723,17 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>%1 correspondances</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
+        <source>%1 more hidden by the filters</source>
+        <translation>%1 de plus masquées par les filtres</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The console keeps the newest %1 lines (Settings): older lines are dropped from it, the session log on disk keeps every line</source>
         <translation>La console conserve les %1 lignes les plus récentes (Réglages)&#xa0;: les plus anciennes en sont retirées, le journal de session sur disque conserve toutes les lignes</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+110"/>
+        <location filename="../../app/window/traffic_console.py" line="+114"/>
         <source>export failed: %1</source>
         <translation>échec de l&apos;export&#xa0;: %1</translation>
     </message>
@@ -3579,7 +3743,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>%1 lignes exportées vers %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+57"/>
+        <location filename="../../app/window/traffic_table.py" line="+60"/>
         <source>motion</source>
         <translation>mouvement</translation>
     </message>
@@ -4123,7 +4287,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+40"/>
+        <location filename="../../widgets/speed_control.py" line="+41"/>
         <source>Speed:</source>
         <translation>Vitesse&#xa0;:</translation>
     </message>
@@ -4133,7 +4297,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Vitesse des prochains mouvements</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Apply</source>
         <translation>Appliquer</translation>
     </message>
@@ -4149,7 +4313,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>La vitesse indiquée par l&apos;appareil (il peut l&apos;arrondir)</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+107"/>
         <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
         <translation>Vitesse, de %1 à %2 in/s&#xa0;; appuyer sur Entrée ou Appliquer pour envoyer</translation>
     </message>
@@ -4180,6 +4344,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+8"/>
+        <location line="+3"/>
         <source>%1; nothing sent</source>
         <translation>%1&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
@@ -4187,7 +4352,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>StatusLine</name>
     <message>
-        <location filename="../../widgets/status_line.py" line="+18"/>
+        <location filename="../../widgets/status_line.py" line="+19"/>
         <source>Disconnected</source>
         <translation>Déconnecté</translation>
     </message>
@@ -4198,12 +4363,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+40"/>
+        <location line="+47"/>
         <source>Connecting…</source>
         <translation>Connexion…</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-45"/>
         <source>Opening the port and asking the device who it is</source>
         <translation>Ouverture du port et identification de l&apos;appareil</translation>
     </message>
@@ -4239,6 +4404,16 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Paused</source>
+        <translation>En pause</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A program is paused: nothing more of it is sent until Resume</source>
+        <translation>Un programme est en pause&#xa0;: plus rien n&apos;en est envoyé jusqu&apos;à Reprendre</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Error</source>
         <translation>Erreur</translation>
     </message>
@@ -4251,7 +4426,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>ThemeMenu</name>
     <message>
-        <location filename="../../app/window/theme.py" line="+366"/>
+        <location filename="../../app/window/theme.py" line="+373"/>
         <source>&amp;Theme</source>
         <translation>&amp;Thème</translation>
     </message>
@@ -4302,7 +4477,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>TrafficModel</name>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="-19"/>
+        <location filename="../../app/window/traffic_table.py" line="-21"/>
         <source>Line</source>
         <translation>Ligne</translation>
     </message>
@@ -4332,7 +4507,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Réponse</translation>
     </message>
     <message>
-        <location line="+306"/>
+        <location line="+316"/>
         <source>line %1: %2</source>
         <translation>ligne %1&#xa0;: %2</translation>
     </message>
@@ -4548,7 +4723,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>UnitSpinBox</name>
     <message>
-        <location filename="../../widgets/_units.py" line="+21"/>
+        <location filename="../../widgets/_units.py" line="+22"/>
         <source>in/s</source>
         <comment>inches per second</comment>
         <translation>in/s</translation>
@@ -4563,7 +4738,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>ValueDelegate</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-102"/>
+        <location filename="../../widgets/parameter_table.py" line="-106"/>
         <source>%1: edit cancelled, value unchanged</source>
         <translation>%1&#xa0;: modification annulée, valeur inchangée</translation>
     </message>
@@ -4591,6 +4766,29 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+25"/>
         <source>%1: %2 (Enter keeps it, Escape cancels)</source>
         <translation>%1&#xa0;: %2 (Entrée pour valider, Échap pour annuler)</translation>
+    </message>
+</context>
+<context>
+    <name>ViewTabs</name>
+    <message>
+        <location filename="../../widgets/view_tabs.py" line="+31"/>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>XY and time</source>
+        <translation>XY et temps</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The path in 3D</source>
+        <translation>Le chemin en 3D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The path seen from above and X, Y, Z against time</source>
+        <translation>Le chemin vu de dessus et X, Y, Z en fonction du temps</translation>
     </message>
 </context>
 <context>
@@ -4671,7 +4869,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>, %1/%2 pas</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+62"/>
         <source>settings saved; the language from the next start</source>
         <translation>réglages enregistrés&#xa0;; la langue s&apos;appliquera au prochain démarrage</translation>
     </message>
@@ -4728,7 +4926,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+15"/>
+        <location filename="message_templates.py" line="+16"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -4803,7 +5001,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>interrompu&#xa0;: arrêté à ({x:g}, {y:g}, {z:g}) mm (l&apos;arrêt {protocol} a été acquitté&#xa0;; sa file est vidée)</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-23"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>usage&#xa0;: {usage} ({count} arguments reçus)</translation>
     </message>
@@ -4858,12 +5056,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>déplacement brut vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
     <message>
-        <location line="+16"/>
         <source>{file} names no protocol (no connection note: a motionctl --log file or a spy:// capture has none): give --protocol</source>
-        <translation>{file} n&apos;indique aucun protocole (pas de note de connexion&#xa0;: un fichier motionctl --log ou une capture spy:// n&apos;en a pas)&#xa0;: indiquer --protocol</translation>
+        <translation type="vanished">{file} n&apos;indique aucun protocole (pas de note de connexion&#xa0;: un fichier motionctl --log ou une capture spy:// n&apos;en a pas)&#xa0;: indiquer --protocol</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+18"/>
         <source>{file}: its connection note: {error}</source>
         <translation>{file}&#xa0;: sa note de connexion&#xa0;: {error}</translation>
     </message>
@@ -4968,14 +5165,18 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>wait {seconds:g} s refusé&#xa0;: de 0 à {limit:g} s</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>{name} stopped before step {number} ({step})</source>
-        <translation>{name}&#xa0;: arrêt avant l&apos;étape {number} ({step})</translation>
+        <translation type="vanished">{name}&#xa0;: arrêt avant l&apos;étape {number} ({step})</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>{name} stopped during step {number}</source>
-        <translation>{name}&#xa0;: arrêt pendant l&apos;étape {number}</translation>
+        <source>macro {name} stopped before step {number} ({step})</source>
+        <translation>macro {name}&#xa0;: arrêt avant l&apos;étape {number} ({step})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} stopped during step {number}</source>
+        <translation>macro {name}&#xa0;: arrêt pendant l&apos;étape {number}</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5304,6 +5505,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>position unknown (({x:g}, {y:g}, {z:g}) mm counted from where the session began; Home or Set Home to know it)</source>
+        <translation>position inconnue (({x:g}, {y:g}, {z:g}) mm comptés depuis l&apos;endroit où la session a commencé&#xa0;; «&#xa0;Origine&#xa0;» ou «&#xa0;Définir l&apos;origine&#xa0;» pour la connaître)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>position ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>position ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5444,6 +5650,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)</source>
+        <translation>{source} n&apos;indique aucun protocole&#xa0;: décodé en {protocol}, le protocole que révèle son trafic ({frames} trames reconnues)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{source} line {number}: not a traffic log line: {line!r}</source>
         <translation>{source} ligne {number}&#xa0;: pas une ligne de journal de trafic&#xa0;: {line!r}</translation>
     </message>
@@ -5501,6 +5712,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}</source>
         <translation>vitesse {speed:g} {unit} refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} {unit} written, but this firmware times its steps from its step delays (15, 16) alone: moves go at {real:.3f} {unit}</source>
+        <translation>vitesse {speed:g} {unit} écrite, mais ce firmware cadence ses pas uniquement sur ses délais entre pas (15, 16)&#xa0;: les mouvements se font à {real:.3f} {unit}</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5724,6 +5940,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)</source>
+        <translation>ses trames portent des cibles absolues, un mouvement relatif a donc besoin de la position&#xa0;: d&apos;abord «&#xa0;Définir l&apos;origine&#xa0;» là où se trouve la platine, «&#xa0;Origine&#xa0;», ou un mouvement vers un point absolu (dans le panneau, ou motionctl set-home, home ou move X Y Z)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Home or Set Home (in the panel, or motionctl home / set-home) to start counting</source>
         <translation>«&#xa0;Origine&#xa0;» ou «&#xa0;Définir l&apos;origine&#xa0;» (dans le panneau, ou motionctl home / set-home) pour commencer le décompte</translation>
     </message>
@@ -5734,8 +5955,18 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>{command} refused: position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}</source>
+        <translation>{command} refusé&#xa0;: position inconnue&#xa0;: {protocol} ne peut pas être interrogé sur sa position et aucune position commandée n&apos;est conservée pour ce port&#xa0;; {how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}</source>
         <translation>{command} refusé&#xa0;: position inconnue&#xa0;: {protocol} ne peut pas être interrogé sur sa position et aucune position n&apos;est comptée pour ce port&#xa0;; {how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}</source>
+        <translation>position inconnue&#xa0;: {protocol} ne peut pas être interrogé sur sa position et aucune position commandée n&apos;est conservée pour ce port&#xa0;; {how}</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6463,12 +6694,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{parameter} écrit</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace.</source>
-        <translation>Écrit input_speed_steady_x et _y (paramètres 21 et 22). Cette révision du firmware cadence ses pas uniquement sur step_delay_instantaneous (15, 16)&#xa0;: les mouvements gardent donc leur allure.</translation>
+        <translation type="vanished">Écrit input_speed_steady_x et _y (paramètres 21 et 22). Cette révision du firmware cadence ses pas uniquement sur step_delay_instantaneous (15, 16)&#xa0;: les mouvements gardent donc leur allure.</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted</source>
         <translation>Visiomex n&apos;a pas de prise d&apos;origine dans cette révision&#xa0;: «&#xa0;Origine&#xa0;» revient à (0, 0) par un mouvement relatif depuis la position comptée par le panneau</translation>
     </message>
@@ -6908,7 +7138,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>0 poulie et courroie, 1 vis (ce firmware impose 1 après chaque écriture)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>protocol {name!r} is not implemented yet</source>
         <translation>le protocole {name!r} n&apos;est pas encore implémenté</translation>
     </message>
@@ -6918,7 +7148,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>protocole inconnu {name!r} (connus&#xa0;: {known})</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
         <translation>{protocol} n&apos;a pas de commande d&apos;arrêt&#xa0;: l&apos;appareil termine ce qui lui a été envoyé</translation>
     </message>
@@ -7198,7 +7428,42 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{where}&#xa0;: vitesse {speed:g} mm/s refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} mm/s&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-480"/>
+        <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
+        <translation>{command} refusé&#xa0;: le moteur pas à pas n&apos;est pas configuré pour {port} (la carte l&apos;oublie à chaque réinitialisation, et aucune configuration n&apos;est conservée pour ce port)&#xa0;; lancer motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 avec le nombre de pas par tour et les broches de votre moteur (ou «&#xa0;Configurer&#xa0;» dans la Configuration du moteur du panneau)&#xa0;: elle est conservée et renvoyée à chaque exécution</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>{file} names no protocol (no connection note) and no protocol recognises its traffic: give --protocol</source>
+        <translation>{file} n&apos;indique aucun protocole (pas de note de connexion) et aucun protocole ne reconnaît son trafic&#xa0;: indiquer --protocol</translation>
+    </message>
+    <message>
+        <location line="+327"/>
+        <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
+        <translation>La vitesse ne peut pas être réglée ici&#xa0;: cette révision du firmware cadence ses pas uniquement sur step_delay_instantaneous (15, 16), et non sur input_speed_steady (21, 22). «&#xa0;appareil&#xa0;:&#xa0;» est la vitesse à laquelle X fait ses pas (15 à l&apos;état haut plus 16 à l&apos;état bas par pas)&#xa0;; modifier 15 et 16 dans le tableau des paramètres pour la changer.</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>Y will not move: at these parameters the firmware&apos;s Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)</source>
+        <translation>Y ne bougera pas&#xa0;: avec ces paramètres, la boucle Y du firmware ne fait aucun pas (elle exécute le compte de rampe, 0&#xa0;; régler 22 et 24 pour que la longueur de rampe soit supérieure à 0)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y moves {moved:.3f} mm, not {asked:.3f}: the firmware&apos;s Y loop runs the ramp count ({loops} of {steps} steps)</source>
+        <translation>Y se déplace de {moved:.3f} mm, et non de {asked:.3f}&#xa0;: la boucle Y du firmware exécute le compte de rampe ({loops} pas sur {steps})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} moves {moved:.3f} mm, not {asked:.3f}: whole steps ({steps}), truncated as the firmware counts</source>
+        <translation>{axis} se déplace de {moved:.3f} mm, et non de {asked:.3f}&#xa0;: pas entiers ({steps}), tronqués comme les compte le firmware</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>{protocol} reports where it is: it is asked</source>
+        <translation>{protocol} indique où il se trouve&#xa0;: il est interrogé</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
         <translation>les mouvements du programme sans vitesse se feraient à la vitesse de l&apos;appareil, {speed:g} mm/s, hors de la plage de {low:g} à {high:g} mm/s qu&apos;il accepte&#xa0;: régler d&apos;abord la vitesse&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
@@ -7461,6 +7726,11 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <location line="+1"/>
         <source>cannot open {port}: {error}</source>
         <translation>impossible d&apos;ouvrir {port}&#xa0;: {error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first</source>
+        <translation>{where} a accepté cette connexion et l&apos;a fermée aussitôt{said}&#xa0;: un autre client occupe probablement le port (ser2net n&apos;en sert qu&apos;un à la fois avec max-connections: 1)&#xa0;; fermer d&apos;abord ce client</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -237,12 +237,12 @@ the same as the start angle: a full circle</source>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/window/bridge_session.py" line="+86"/>
+        <location filename="../../app/window/bridge_session.py" line="+93"/>
         <source>the bridge failed: %1</source>
         <translation>桥接失败：%1</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+45"/>
         <source>the bridge stopped</source>
         <translation>桥接已停止</translation>
     </message>
@@ -331,24 +331,24 @@ the same as the start angle: a full circle</source>
     <message>
         <location line="+6"/>
         <location line="+6"/>
-        <location line="+223"/>
+        <location line="+225"/>
         <source>Connect</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="-223"/>
-        <location line="+222"/>
+        <location line="-225"/>
+        <location line="+224"/>
         <source>Cancel</source>
         <translation>取消</translation>
     </message>
     <message>
-        <location line="-222"/>
-        <location line="+222"/>
+        <location line="-224"/>
+        <location line="+224"/>
         <source>Disconnect</source>
         <translation>断开</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-216"/>
         <source>Lines:</source>
         <translation>信号线：</translation>
     </message>
@@ -367,12 +367,12 @@ the same as the start angle: a full circle</source>
         <translation>协议：</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>Baud:</source>
         <translation>波特率：</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+73"/>
         <source>No description for this port</source>
         <translation>此端口没有描述</translation>
     </message>
@@ -410,7 +410,7 @@ the same as the start angle: a full circle</source>
 <context>
     <name>ControlLinesBar</name>
     <message>
-        <location filename="../../widgets/control_lines_bar.py" line="+42"/>
+        <location filename="../../widgets/control_lines_bar.py" line="+47"/>
         <source>DTR</source>
         <translation>DTR</translation>
     </message>
@@ -519,7 +519,7 @@ the same as the start angle: a full circle</source>
 <context>
     <name>CoordinateEntry</name>
     <message>
-        <location filename="../../widgets/coordinate_entry.py" line="+33"/>
+        <location filename="../../widgets/coordinate_entry.py" line="+34"/>
         <source>Make the current position the new home (0, 0, 0)?
 All coordinates will be measured from here from now on.</source>
         <translation>将当前位置设为新的原点 (0, 0, 0)？
@@ -541,22 +541,22 @@ All coordinates will be measured from here from now on.</source>
         <translation>绝对</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+73"/>
         <source>Go to the typed coordinates (mm from home)</source>
         <translation>移动到输入的坐标（从原点起算，单位 mm）</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-71"/>
         <source>Relative</source>
         <translation>相对</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+72"/>
         <source>Move by the typed distances (mm) from where the stage is</source>
         <translation>从平台当前位置按输入的距离（mm）移动</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-63"/>
         <source>Machine</source>
         <translation>机床</translation>
     </message>
@@ -566,7 +566,7 @@ All coordinates will be measured from here from now on.</source>
         <translation>工件</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+64"/>
         <source>Which frame the typed coordinates are in: Machine (mm from the device&apos;s home) or Work (mm from the work zero); the device is always sent machine coordinates</source>
         <translation>输入坐标所用的坐标系：机床（从设备原点起算，单位 mm）或工件（从工件零点起算，单位 mm）；发送给设备的始终是机床坐标</translation>
     </message>
@@ -576,13 +576,13 @@ All coordinates will be measured from here from now on.</source>
         <translation>移动</translation>
     </message>
     <message>
-        <location line="-25"/>
+        <location line="-26"/>
         <source>&amp;%1:</source>
         <comment>an axis field&apos;s label; Alt+axis</comment>
         <translation>&amp;%1：</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Start the move (Enter in a field)</source>
         <translation>开始移动（在输入框中按 Enter）</translation>
     </message>
@@ -706,7 +706,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DerivedValues</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="+469"/>
+        <location filename="../../widgets/parameter_table.py" line="+501"/>
         <source>Derived values</source>
         <translation>派生值</translation>
     </message>
@@ -828,7 +828,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>FirmataPanel</name>
     <message>
-        <location filename="../../widgets/firmata_panel.py" line="+30"/>
+        <location filename="../../widgets/firmata_panel.py" line="+31"/>
         <source>version unknown</source>
         <translation>版本未知</translation>
     </message>
@@ -838,7 +838,7 @@ All coordinates will be measured from here from now on.</source>
         <translation>电机每转整步数，1 至 %1（例如 200）</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1 pins</source>
         <translation>%1 个引脚</translation>
     </message>
@@ -848,12 +848,12 @@ All coordinates will be measured from here from now on.</source>
         <translation>2 个引脚：带脉冲和方向输入的驱动器；4 个引脚：电机的四根线</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>pin </source>
         <translation>引脚 </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Motor steps per mm of travel (more than 0): converts mm and mm/s to steps</source>
         <translation>每毫米行程的电机步数（大于 0）：用于将 mm 和 mm/s 换算为步数</translation>
     </message>
@@ -1045,7 +1045,7 @@ All coordinates will be measured from here from now on.</source>
         <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift ×10</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+52"/>
         <source>Move the stage by one step; hold a button or key to keep stepping.
 %1 (see the hint below for where the keys work).</source>
         <translation>将平台移动一步；按住按钮或按键可持续步进。
@@ -1068,7 +1068,7 @@ All coordinates will be measured from here from now on.</source>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Jog by %1 per press</source>
         <translation>每按一次点动 %1</translation>
     </message>
@@ -1078,7 +1078,7 @@ All coordinates will be measured from here from now on.</source>
         <translation>%1 in</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+128"/>
         <source>Any step size (%1 to %2 in)</source>
         <translation>任意步长（%1 至 %2 in）</translation>
     </message>
@@ -1202,7 +1202,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/window/log_viewer.py" line="+43"/>
+        <location filename="../../app/window/log_viewer.py" line="+48"/>
         <source>(undecoded)</source>
         <translation>（未解码）</translation>
     </message>
@@ -1262,14 +1262,24 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在读取 %1…</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+57"/>
         <source>%1 — traffic log</source>
         <translation>%1 — 通信日志</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1 (%2): %3 lines, decoded as %4</source>
         <translation>%1（%2）：%3 行，按 %4 解码</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, recognised from its traffic (the log names no protocol)</source>
+        <translation>，根据其通信内容识别（日志未指明协议）</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; a simulator&apos;s record: TX and RX shown as the host saw them</source>
+        <translation>；模拟器的记录：TX 和 RX 按主机一方所见显示</translation>
     </message>
 </context>
 <context>
@@ -1482,12 +1492,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>立即停止平台：中止正在进行的移动，并清空队列（Esc）</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+50"/>
+        <location filename="../../app/window/connection.py" line="+51"/>
         <source>simulated %1 device</source>
         <translation>模拟的 %1 设备</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+95"/>
+        <location filename="../../app/window/main_window.py" line="+99"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1512,7 +1522,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>连接</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+27"/>
         <source>Position</source>
         <translation>位置</translation>
     </message>
@@ -1633,12 +1643,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在连接 %1（%2，%3 波特）</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+87"/>
         <source>bridge refused: %1</source>
         <translation>桥接被拒绝：%1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>bridge: %1</source>
         <translation>桥接：%1</translation>
     </message>
@@ -1669,16 +1679,32 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+9"/>
         <source>disconnected</source>
         <translation>已断开连接</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="-5"/>
+        <source>disconnected from %1 on %2</source>
+        <translation>已断开通过 %2 与 %1 的连接</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>connected to %1 on %2</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+136"/>
+        <location filename="../../app/window/machine_state.py" line="+36"/>
+        <source>home set: the position is counted from here</source>
+        <translation>已设为原点：位置从此处开始计数</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>an absolute point reached: the position is counted from here</source>
+        <translation>已到达绝对点：位置从此处开始计数</translation>
+    </message>
+    <message>
+        <location line="+132"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>位置未知：此设备无法报告其位置；请回原点或设为原点</translation>
     </message>
@@ -1688,7 +1714,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已重新连接到 %1：已重新读取位置</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
+        <source>the device cannot be asked where it is: it goes on from (%1, %2, %3) mm, where it was left on this port (kept, not measured)</source>
+        <translation>无法查询设备的位置：从 (%1, %2, %3) mm 继续，即上次在此端口停留的位置（已保存，非实测）</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>位置未知：无法查询设备；请“回原点”或“设为原点”以开始计数</translation>
     </message>
@@ -1728,12 +1759,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在重新连接到 %1</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-279"/>
         <source>port %1 disappeared</source>
         <translation>端口 %1 已消失</translation>
     </message>
     <message>
-        <location line="+272"/>
+        <location line="+292"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -1748,7 +1779,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>行程限位：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+101"/>
+        <location filename="../../app/window/job_desk.py" line="+113"/>
         <source>not connected: %1 not sent</source>
         <translation>未连接：%1 未发送</translation>
     </message>
@@ -1759,21 +1790,26 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
     </message>
     <message>
         <location line="+14"/>
+        <source>%1 refused: the position is unknown and this device moves only to absolute targets, so it would go elsewhere; Set Home, Home or Go to first</source>
+        <translation>%1 被拒绝：位置未知，且此设备只移动到绝对目标，因此会去到别处；请先执行“设为原点”、“回原点”或“定位”</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1 refused: %2 is under way; wait for its end or press Stop</source>
         <translation>%1 被拒绝：%2 正在进行；请等待其结束或按“停止”</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>motion controls are off until %1 ends (Stop ends it now)</source>
         <translation>%1 结束前运动控制不可用（按“停止”可立即结束）</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>%1 is under way</source>
         <translation>%1 正在进行</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+47"/>
         <source>jog refused: %1</source>
         <translation>点动被拒绝：%1</translation>
     </message>
@@ -1817,12 +1853,17 @@ Send them anyway?</source>
         <translation>已停止：%1 条命令未发送：%2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+47"/>
+        <location line="+38"/>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
+    <message>
+        <location filename="../../app/window/machine_state.py" line="+64"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>新原点：轨迹已平移 (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-101"/>
+        <location line="-139"/>
         <source>the device reported an error: %1</source>
         <translation>设备报告错误：%1</translation>
     </message>
@@ -1833,22 +1874,28 @@ Send them anyway?</source>
         <translation>设备：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+24"/>
+        <location filename="../../app/window/job_desk.py" line="-11"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+234"/>
+        <location filename="../../app/window/machine_state.py" line="-90"/>
+        <location line="+375"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>原点已确认：位置从此处开始计数</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-205"/>
+        <source>position unknown: the device cannot be asked and its frames carry absolute targets, so a jog is refused; Set Home where the stage stands, Home, or Go to an absolute point first</source>
+        <translation>位置未知：无法查询设备，且其帧携带的是绝对目标，因此点动被拒绝；请先在平台当前所在处“设为原点”、“回原点”，或“定位”到一个绝对点</translation>
+    </message>
+    <message>
+        <location line="+217"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>速度 %1 mm/s 回读为 %2 mm/s（设备会取整）</translation>
     </message>
     <message>
-        <location filename="../../app/window/layouts.py" line="+122"/>
+        <location filename="../../app/window/layouts.py" line="+127"/>
         <source>&amp;Operate</source>
         <translation>操作(&amp;P)</translation>
     </message>
@@ -1888,7 +1935,7 @@ Send them anyway?</source>
         <translation>将此布局中的停靠窗口恢复到最初的位置</translation>
     </message>
     <message>
-        <location line="+260"/>
+        <location line="+274"/>
         <source>this device has parameters: %1 for Set up</source>
         <translation>此设备有参数：按 %1 切换到“配置”</translation>
     </message>
@@ -1897,11 +1944,31 @@ Send them anyway?</source>
         <source>this device has a setup panel: %1 for Set up</source>
         <translation>此设备有设置面板：按 %1 切换到“配置”</translation>
     </message>
+    <message>
+        <location filename="../../app/window/program_pause.py" line="+58"/>
+        <source>paused: nothing more is sent; the move under way finishes (this device has no feed hold)</source>
+        <translation>已暂停：不再发送任何内容；进行中的移动会继续完成（此设备没有进给保持功能）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>resumed: sending the program again</source>
+        <translation>已继续：重新开始发送程序</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>paused: nothing more is sent; the device still holds %1 move(s) and runs them (its protocol has no feed hold): it stands still in about %2 s; Stop flushes them now</source>
+        <translation>已暂停：不再发送任何内容；设备仍保有 %1 个移动并会执行完（其协议没有进给保持功能）：约 %2 s 后静止；按“停止”可立即清除这些移动</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>paused: the device has run what it held; the stage stands still</source>
+        <translation>已暂停：设备已执行完其保有的移动；平台已静止</translation>
+    </message>
 </context>
 <context>
     <name>NumberField</name>
     <message>
-        <location filename="../../widgets/_number_field.py" line="+34"/>
+        <location filename="../../widgets/_number_field.py" line="+35"/>
         <source>a number is needed, %1 to %2%3</source>
         <translation>需要输入数字，%1 至 %2%3</translation>
     </message>
@@ -1930,11 +1997,16 @@ Send them anyway?</source>
         <source>%1: %2</source>
         <translation>%1：%2</translation>
     </message>
+    <message>
+        <location line="+2"/>
+        <source>%1; cleared when the units changed to %2</source>
+        <translation>%1；单位改为 %2 时已清除</translation>
+    </message>
 </context>
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/window/parameter_dock.py" line="+33"/>
+        <location filename="../../app/window/parameter_dock.py" line="+34"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>设备当前值为 %1：每次设置后固件都会强制使用该值</translation>
     </message>
@@ -1949,7 +2021,7 @@ Send them anyway?</source>
         <translation>参数</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="+55"/>
         <source>Parameters (%1)</source>
         <translation>参数（%1）</translation>
     </message>
@@ -1969,7 +2041,12 @@ Send them anyway?</source>
         <translation>未发送</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+47"/>
+        <source>recomputed by the firmware at the last move</source>
+        <translation>固件在上次移动时重新计算</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>the device did not answer</source>
         <translation>设备无应答</translation>
     </message>
@@ -2081,7 +2158,7 @@ Send them anyway?</source>
         <translation>未加载：%1</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+151"/>
         <source>nothing sent</source>
         <translation>未发送任何内容</translation>
     </message>
@@ -2110,12 +2187,12 @@ Send them anyway?</source>
         <translation type="vanished">没有不同的值</translation>
     </message>
     <message>
-        <location line="-229"/>
+        <location line="-238"/>
         <source>Write the input values marked • (they differ from what the device holds); firmware outputs are not written by it</source>
         <translation>写入标有 • 的输入值（它们与设备当前的值不同）；此按钮不写入固件输出参数</translation>
     </message>
     <message>
-        <location line="+238"/>
+        <location line="+247"/>
         <source>no input differs</source>
         <translation>没有不同的输入值</translation>
     </message>
@@ -2193,7 +2270,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterModel</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-435"/>
+        <location filename="../../widgets/parameter_table.py" line="-467"/>
         <source>ID</source>
         <translation>ID</translation>
     </message>
@@ -2233,7 +2310,7 @@ Send them anyway?</source>
         <translation>状态</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>The value to write, in the unit beside it (double-click, F2, Enter or type)</source>
         <translation>要写入的值，单位见旁列（双击、按 F2、Enter 或直接输入）</translation>
     </message>
@@ -2253,7 +2330,12 @@ Send them anyway?</source>
         <translation>此参数上次写入的结果</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+92"/>
+        <source>%1 (computed)</source>
+        <translation>%1（计算值）</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1 (power-on)</source>
         <translation>%1（上电值）</translation>
     </message>
@@ -2283,7 +2365,12 @@ Send them anyway?</source>
         <translation>%1：从未通过本面板写入此设备</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
+        <source>%1: the device holds %2, computed by its firmware %3</source>
+        <translation>%1：设备当前值为 %2，由其固件%3计算得出</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1: last written %2</source>
         <translation>%1：上次写入 %2</translation>
     </message>
@@ -2311,7 +2398,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterTableView</name>
     <message>
-        <location line="+164"/>
+        <location line="+185"/>
         <source>Double-click a value, or select a row and press Enter or type, to edit</source>
         <translation>双击某个值，或选中一行后按 Enter 或直接输入，即可编辑</translation>
     </message>
@@ -2349,7 +2436,17 @@ Send them anyway?</source>
         <translation>已取消</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
+        <source>after the last set</source>
+        <translation>在上次设置后</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>at the last move</source>
+        <translation>在上次移动时</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Output: computed by the firmware. Writing it is allowed, but the firmware may replace what is written.</source>
         <translation>输出：由固件计算。允许写入，但固件可能会替换写入的值。</translation>
     </message>
@@ -2407,7 +2504,7 @@ Send them anyway?</source>
 <context>
     <name>PiFramePanel</name>
     <message>
-        <location filename="../../widgets/piframe_panel.py" line="+15"/>
+        <location filename="../../widgets/piframe_panel.py" line="+17"/>
         <source>DTR on</source>
         <translation>DTR 开</translation>
     </message>
@@ -2422,7 +2519,7 @@ Send them anyway?</source>
         <translation>DTR 未知</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Encoder ticks per mm of travel (more than 0): converts the frame&apos;s ticks to mm</source>
         <translation>每毫米行程的编码器计数（大于 0）：用于将机架的计数换算为 mm</translation>
     </message>
@@ -2488,7 +2585,7 @@ Send them anyway?</source>
         <translation>设备被指令到达的位置，其应答表明移动已在此结束；并非回读值（能报告位置的设备会在空闲时再次查询）。</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+15"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>位置未知：无法查询设备；请“回原点”或“设为原点”以开始计数</translation>
     </message>
@@ -2504,6 +2601,26 @@ Send them anyway?</source>
     </message>
     <message>
         <location line="+7"/>
+        <source>estimated when the link was lost, during a move: somewhere between its start and its target; not connected</source>
+        <translation>在移动中连接断开时估算：位于移动起点与目标之间的某处；未连接</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>bridging: no position seen in the bridged traffic yet (the panel asks nothing)</source>
+        <translation>桥接中：桥接的通信中尚未出现位置（面板不进行任何查询）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>observed in the bridged traffic: the device reported this position to the other program</source>
+        <translation>从桥接通信中观察到：设备向另一个程序报告了此位置</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>observed in the bridged traffic: the target of a move the other program sent, not confirmed by the device</source>
+        <translation>从桥接通信中观察到：另一个程序发送的移动目标，未经设备确认</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>last known position: not connected</source>
         <translation>最后已知位置：未连接</translation>
     </message>
@@ -2512,7 +2629,7 @@ Send them anyway?</source>
         <translation type="vanished">平台位置（mm）：相对设备原点，以及相对工件零点</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>Machine</source>
         <translation>机床</translation>
     </message>
@@ -2575,12 +2692,12 @@ Send them anyway?</source>
         <translation>平台位于为此设备设置的行程限位之外：在回到限位内之前，只会发送使其更接近限位范围的移动</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+121"/>
         <source>outside the travel limits: %1</source>
         <translation>超出行程限位：%1</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+101"/>
         <source>millimetres</source>
         <translation>毫米</translation>
     </message>
@@ -2640,22 +2757,23 @@ Send them anyway?</source>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+98"/>
+        <location filename="../../widgets/position_view_2d.py" line="+101"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>俯视平台：轨迹、当前位置（圆点；估算时为空心）、目标（+）、行程限位（虚线）</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>XY (from above)</source>
         <translation>XY（俯视）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+152"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-4"/>
+        <location line="+4"/>
         <source>X</source>
         <translation>X</translation>
     </message>
@@ -2665,12 +2783,13 @@ Send them anyway?</source>
         <translation>Y (mm)</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-4"/>
+        <location line="+4"/>
         <source>Y</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="-107"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X、Y、Z 随时间的变化；虚线：目标</translation>
     </message>
@@ -2680,7 +2799,17 @@ Send them anyway?</source>
         <translation>位置随时间的变化</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+82"/>
+        <source>X (in)</source>
+        <translation>X (in)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y (in)</source>
+        <translation>Y (in)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>time (s, 0 = latest sample)</source>
         <translation>时间（s，0 = 最新采样）</translation>
     </message>
@@ -2688,6 +2817,16 @@ Send them anyway?</source>
         <location line="+0"/>
         <source>t (s)</source>
         <translation>t (s)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>position (in)</source>
+        <translation>位置 (in)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>in</source>
+        <translation>in</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2700,7 +2839,7 @@ Send them anyway?</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-80"/>
         <source>Clear trail</source>
         <translation>清除轨迹</translation>
     </message>
@@ -2723,7 +2862,7 @@ Send them anyway?</source>
 <context>
     <name>PositionView3D</name>
     <message>
-        <location filename="../../widgets/_gl_scene.py" line="+45"/>
+        <location filename="../../widgets/_gl_scene.py" line="+49"/>
         <source>Top</source>
         <translation>俯视</translation>
     </message>
@@ -2783,7 +2922,7 @@ Send them anyway?</source>
         <translation>使视角始终对准当前位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+79"/>
+        <location filename="../../widgets/position_view_3d.py" line="+81"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>需要在有显示器的环境中提供 OpenGL 2.1 或更高版本（例如 Mesa）；请参阅 README。</translation>
     </message>
@@ -2797,12 +2936,17 @@ The 2D view shows the same positions.</source>
 2D 视图显示相同的位置。</translation>
     </message>
     <message>
-        <location line="+171"/>
+        <location line="+172"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
         <translation>拖动旋转，滚轮缩放，中键拖动平移</translation>
     </message>
     <message>
-        <location line="+473"/>
+        <location line="+233"/>
+        <source>grid %1 in</source>
+        <translation>网格 %1 in</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>grid %1 mm</source>
         <translation>网格 %1 mm</translation>
     </message>
@@ -3000,7 +3144,7 @@ The 2D view shows the same positions.</source>
 <context>
     <name>ProgramDock</name>
     <message>
-        <location filename="../../app/window/program_dock.py" line="+172"/>
+        <location filename="../../app/window/program_dock.py" line="+181"/>
         <source>program %1 refused: %2</source>
         <translation>程序 %1 被拒绝：%2</translation>
     </message>
@@ -3025,12 +3169,12 @@ The 2D view shows the same positions.</source>
         <translation>程序中没有移动</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+93"/>
         <source>program saved to %1 (%2 points)</source>
         <translation>程序已保存到 %1（%2 个点）</translation>
     </message>
     <message>
-        <location line="+71"/>
+        <location line="+108"/>
         <source>the program stopped: %1</source>
         <translation>程序已停止：%1</translation>
     </message>
@@ -3057,7 +3201,7 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">程序 (*.csv *.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location filename="../../widgets/program_panel.py" line="+38"/>
+        <location filename="../../widgets/program_panel.py" line="+39"/>
         <source>no program loaded</source>
         <translation>未加载程序</translation>
     </message>
@@ -3070,7 +3214,7 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">加载程序：含 x,y,z,speed 列的 CSV（mm、mm/s）或 JSON</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>Save…</source>
         <translation>保存…</translation>
     </message>
@@ -3110,13 +3254,13 @@ The 2D view shows the same positions.</source>
         <translation>运行(&amp;R)</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+322"/>
+        <location line="+1"/>
+        <location line="+359"/>
         <source>P&amp;ause</source>
         <translation>暂停(&amp;A)</translation>
     </message>
     <message>
-        <location line="-317"/>
+        <location line="-356"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
@@ -3125,12 +3269,12 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">不再发送，并清空设备队列（STOP）</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-54"/>
         <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
         <translation>程序 (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF 图纸 (*.dxf);;SVG 图纸 (*.svg);;点 (*.csv *.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
         <translation>加载程序：G-code、DXF 或 SVG，或点（含 x,y,z,speed 列的 CSV，单位 mm 和 mm/s，或 JSON）</translation>
     </message>
@@ -3140,12 +3284,12 @@ The 2D view shows the same positions.</source>
         <translation>在设备上运行程序（先对照行程范围进行检查）</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+344"/>
         <source>Send nothing more until Resume (a device&apos;s queued moves go on)</source>
         <translation>在“继续”之前不再发送（设备已排队的移动照常执行）</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-337"/>
         <source>Send nothing more and stop the device (its queue flushed)</source>
         <translation>不再发送，并停止设备（清空其队列）</translation>
     </message>
@@ -3155,7 +3299,7 @@ The 2D view shows the same positions.</source>
         <translation> mm</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Chord tolerance: how far the straight moves an arc or curve is cut into may stray from it</source>
         <translation>弦公差：圆弧或曲线被切分成直线移动时，直线与其之间允许的最大偏差</translation>
     </message>
@@ -3166,12 +3310,12 @@ The 2D view shows the same positions.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+133"/>
+        <location line="+137"/>
         <source>%v / %m executed</source>
         <translation>已执行 %v / %m</translation>
     </message>
     <message>
-        <location line="-113"/>
+        <location line="-117"/>
         <source>The program&apos;s lines; the one under way is highlighted</source>
         <translation>程序的各行；正在执行的行会高亮显示</translation>
     </message>
@@ -3211,7 +3355,7 @@ The 2D view shows the same positions.</source>
         <translation>正在读取 %1…</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+14"/>
         <source>%1 (%2 lines)</source>
         <translation>%1（%2 行）</translation>
     </message>
@@ -3278,26 +3422,41 @@ Not for this program: %2</source>
 不适用于此程序：%2</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+40"/>
+        <source>not connected to a device</source>
+        <translation>未连接到设备</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>motion is off</source>
         <translation>运动控制不可用</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1
 Refused: %2</source>
         <translation>%1
 已拒绝：%2</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1
 Not now: %2</source>
         <translation>%1
 暂不可用：%2</translation>
     </message>
     <message>
+        <location line="+11"/>
+        <source>Send nothing more until Resume. This device has no feed hold: it goes on running the moves it already holds (the status line says how many, and when it stands still); Stop flushes them</source>
+        <translation>在“继续”之前不再发送。此设备没有进给保持功能：它会继续执行已保有的移动（状态栏会显示数量以及何时静止）；“停止”可清除这些移动</translation>
+    </message>
+    <message>
         <location line="+6"/>
+        <source>Send nothing more until Resume. The move under way finishes, then the stage stands still (this device has no feed hold)</source>
+        <translation>在“继续”之前不再发送。进行中的移动会继续完成，随后平台静止（此设备没有进给保持功能）</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Resume</source>
         <translation>继续</translation>
     </message>
@@ -3475,7 +3634,7 @@ Not now: %2</source>
         <translation>下一个匹配项（F3）</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_status.py" line="+44"/>
+        <location filename="../../app/window/traffic_status.py" line="+45"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
         <translation>会话中的行数、已显示、已隐藏的轮询、错误、匹配项</translation>
     </message>
@@ -3500,7 +3659,7 @@ Not now: %2</source>
         <translation>清除这些行（会话日志中仍保留）</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>TX (blue): sent to the device; RX (green): received; grey: notes and the device&apos;s own text; red: errors. Double-click a line to go to its request, reply or first copy.</source>
         <translation>TX（蓝色）：发送到设备；RX（绿色）：已接收；灰色：说明及设备自身输出的文本；红色：错误。双击某行可跳转到其请求、应答或首次出现处。</translation>
     </message>
@@ -3510,7 +3669,7 @@ Not now: %2</source>
         <translation>控制台只保留最新的 %1 行：新行到来时，较旧的行会从控制台中移除；会话日志保留所有行</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+133"/>
         <source>line %1 is no longer in the console (its line limit dropped it); the session log has it</source>
         <translation>第 %1 行已不在控制台中（因行数上限被移除）；会话日志中仍有该行</translation>
     </message>
@@ -3564,12 +3723,17 @@ Not now: %2</source>
         <translation>匹配 %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
+        <source>%1 more hidden by the filters</source>
+        <translation>另有 %1 个被过滤器隐藏</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The console keeps the newest %1 lines (Settings): older lines are dropped from it, the session log on disk keeps every line</source>
         <translation>控制台只保留最新的 %1 行（见“设置”）：较旧的行会从中移除，磁盘上的会话日志保留所有行</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+110"/>
+        <location filename="../../app/window/traffic_console.py" line="+114"/>
         <source>export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
@@ -3579,7 +3743,7 @@ Not now: %2</source>
         <translation>已将 %1 行导出到 %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+57"/>
+        <location filename="../../app/window/traffic_table.py" line="+60"/>
         <source>motion</source>
         <translation>运动</translation>
     </message>
@@ -4123,7 +4287,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+40"/>
+        <location filename="../../widgets/speed_control.py" line="+41"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
@@ -4133,7 +4297,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>后续移动的速度</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>Apply</source>
         <translation>应用</translation>
     </message>
@@ -4149,7 +4313,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>设备报告的速度（可能经过取整）</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+107"/>
         <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
         <translation>速度，%1 至 %2 in/s；按 Enter 或“应用”发送</translation>
     </message>
@@ -4180,6 +4344,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+8"/>
+        <location line="+3"/>
         <source>%1; nothing sent</source>
         <translation>%1；未发送任何内容</translation>
     </message>
@@ -4187,7 +4352,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>StatusLine</name>
     <message>
-        <location filename="../../widgets/status_line.py" line="+18"/>
+        <location filename="../../widgets/status_line.py" line="+19"/>
         <source>Disconnected</source>
         <translation>未连接</translation>
     </message>
@@ -4198,12 +4363,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+40"/>
+        <location line="+47"/>
         <source>Connecting…</source>
         <translation>正在连接…</translation>
     </message>
     <message>
-        <location line="-38"/>
+        <location line="-45"/>
         <source>Opening the port and asking the device who it is</source>
         <translation>正在打开端口并查询设备身份</translation>
     </message>
@@ -4239,6 +4404,16 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+3"/>
+        <source>Paused</source>
+        <translation>已暂停</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A program is paused: nothing more of it is sent until Resume</source>
+        <translation>程序已暂停：在“继续”之前不再发送其任何内容</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Error</source>
         <translation>错误</translation>
     </message>
@@ -4251,7 +4426,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>ThemeMenu</name>
     <message>
-        <location filename="../../app/window/theme.py" line="+366"/>
+        <location filename="../../app/window/theme.py" line="+373"/>
         <source>&amp;Theme</source>
         <translation>主题(&amp;T)</translation>
     </message>
@@ -4302,7 +4477,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>TrafficModel</name>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="-19"/>
+        <location filename="../../app/window/traffic_table.py" line="-21"/>
         <source>Line</source>
         <translation>行号</translation>
     </message>
@@ -4332,7 +4507,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>应答</translation>
     </message>
     <message>
-        <location line="+306"/>
+        <location line="+316"/>
         <source>line %1: %2</source>
         <translation>第 %1 行：%2</translation>
     </message>
@@ -4548,7 +4723,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>UnitSpinBox</name>
     <message>
-        <location filename="../../widgets/_units.py" line="+21"/>
+        <location filename="../../widgets/_units.py" line="+22"/>
         <source>in/s</source>
         <comment>inches per second</comment>
         <translation>in/s</translation>
@@ -4563,7 +4738,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>ValueDelegate</name>
     <message>
-        <location filename="../../widgets/parameter_table.py" line="-102"/>
+        <location filename="../../widgets/parameter_table.py" line="-106"/>
         <source>%1: edit cancelled, value unchanged</source>
         <translation>%1：编辑已取消，值未更改</translation>
     </message>
@@ -4591,6 +4766,29 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+25"/>
         <source>%1: %2 (Enter keeps it, Escape cancels)</source>
         <translation>%1：%2（按 Enter 保留，按 Escape 取消）</translation>
+    </message>
+</context>
+<context>
+    <name>ViewTabs</name>
+    <message>
+        <location filename="../../widgets/view_tabs.py" line="+31"/>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>XY and time</source>
+        <translation>XY 与时间</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The path in 3D</source>
+        <translation>3D 路径</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The path seen from above and X, Y, Z against time</source>
+        <translation>俯视路径，以及 X、Y、Z 随时间的变化</translation>
     </message>
 </context>
 <context>
@@ -4671,7 +4869,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>，%1/%2 步长</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+62"/>
         <source>settings saved; the language from the next start</source>
         <translation>设置已保存；语言将在下次启动时生效</translation>
     </message>
@@ -4728,7 +4926,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+15"/>
+        <location filename="message_templates.py" line="+16"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>前往 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -4803,7 +5001,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>已中断：已停止于 ({x:g}, {y:g}, {z:g}) mm（{protocol} 停止命令已确认；其队列已清空）</translation>
     </message>
     <message>
-        <location line="-22"/>
+        <location line="-23"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>用法：{usage}（收到 {count} 个参数）</translation>
     </message>
@@ -4858,12 +5056,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>原始命令移动到 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
     <message>
-        <location line="+16"/>
         <source>{file} names no protocol (no connection note: a motionctl --log file or a spy:// capture has none): give --protocol</source>
-        <translation>{file} 未指明协议（没有连接说明：motionctl --log 文件或 spy:// 捕获文件都不含连接说明）：请指定 --protocol</translation>
+        <translation type="vanished">{file} 未指明协议（没有连接说明：motionctl --log 文件或 spy:// 捕获文件都不含连接说明）：请指定 --protocol</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+18"/>
         <source>{file}: its connection note: {error}</source>
         <translation>{file}：其连接说明：{error}</translation>
     </message>
@@ -4968,14 +5165,18 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>等待 {seconds:g} s 被拒绝：应为 0 至 {limit:g} s</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>{name} stopped before step {number} ({step})</source>
-        <translation>{name} 在第 {number} 步（{step}）之前已停止</translation>
+        <translation type="vanished">{name} 在第 {number} 步（{step}）之前已停止</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>{name} stopped during step {number}</source>
-        <translation>{name} 在第 {number} 步期间已停止</translation>
+        <source>macro {name} stopped before step {number} ({step})</source>
+        <translation>宏 {name} 在第 {number} 步（{step}）之前已停止</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>macro {name} stopped during step {number}</source>
+        <translation>宏 {name} 在第 {number} 步期间已停止</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5304,6 +5505,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>position unknown (({x:g}, {y:g}, {z:g}) mm counted from where the session began; Home or Set Home to know it)</source>
+        <translation>位置未知（从会话开始处计数为 ({x:g}, {y:g}, {z:g}) mm；请回原点或设为原点以确定位置）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>position ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>位置 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5444,6 +5650,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)</source>
+        <translation>{source} 未指明协议：按 {protocol} 解码，其通信内容符合该协议（识别出 {frames} 帧）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{source} line {number}: not a traffic log line: {line!r}</source>
         <translation>{source} 第 {number} 行：不是通信日志行：{line!r}</translation>
     </message>
@@ -5501,6 +5712,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}</source>
         <translation>速度 {speed:g} {unit} 被拒绝：设备允许 {low:g} 至 {high:g} {unit}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>speed {speed:g} {unit} written, but this firmware times its steps from its step delays (15, 16) alone: moves go at {real:.3f} {unit}</source>
+        <translation>速度 {speed:g} {unit} 已写入，但此固件仅根据其步进延时（15、16）确定步进时序：实际移动速度为 {real:.3f} {unit}</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5724,6 +5940,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)</source>
+        <translation>其帧携带的是绝对目标，因此相对移动需要知道位置：请先在平台当前所在处设为原点、回原点，或移动到一个绝对点（在面板中，或用 motionctl set-home、home 或 move X Y Z）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Home or Set Home (in the panel, or motionctl home / set-home) to start counting</source>
         <translation>请回原点或设为原点（在面板中，或用 motionctl home / set-home）以开始计数</translation>
     </message>
@@ -5734,8 +5955,18 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+1"/>
+        <source>{command} refused: position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}</source>
+        <translation>{command} 被拒绝：位置未知：无法向 {protocol} 查询其位置，且此端口没有保存指令位置；{how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}</source>
         <translation>{command} 被拒绝：位置未知：无法向 {protocol} 查询其位置，且此端口没有位置计数；{how}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}</source>
+        <translation>位置未知：无法向 {protocol} 查询其位置，且此端口没有保存指令位置；{how}</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6463,12 +6694,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{parameter} 已设置</translation>
     </message>
     <message>
-        <location line="+1"/>
         <source>Sets input_speed_steady_x and _y (parameters 21 and 22). This firmware revision times its steps from step_delay_instantaneous (15, 16) only, so moves keep their pace.</source>
-        <translation>设置 input_speed_steady_x 和 _y（参数 21 和 22）。此固件版本仅根据 step_delay_instantaneous（15、16）确定步进时序，因此移动速度保持不变。</translation>
+        <translation type="vanished">设置 input_speed_steady_x 和 _y（参数 21 和 22）。此固件版本仅根据 step_delay_instantaneous（15、16）确定步进时序，因此移动速度保持不变。</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted</source>
         <translation>此版本的 Visiomex 没有回原点功能：回原点时从面板累计的位置通过相对移动回到 (0, 0)</translation>
     </message>
@@ -6908,7 +7138,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>0 皮带轮，1 丝杠（每次设置后此固件都会强制设为 1）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>protocol {name!r} is not implemented yet</source>
         <translation>协议 {name!r} 尚未实现</translation>
     </message>
@@ -6918,7 +7148,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>未知协议 {name!r}（已知：{known}）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
         <translation>{protocol} 没有停止命令：设备会完成已发给它的内容</translation>
     </message>
@@ -7198,7 +7428,42 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{where}：速度 {speed:g} mm/s 被拒绝：设备允许 {low:g} 至 {high:g} mm/s；未发送任何内容</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-480"/>
+        <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
+        <translation>{command} 被拒绝：{port} 的步进电机尚未配置（控制板每次复位都会丢失该配置，且此端口没有保存的配置）；请运行 motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9，并换成您电机的每转步数和引脚（或在面板的“步进电机设置”中点击“配置”）：该配置会被保存，并在每次运行时重新发送</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>{file} names no protocol (no connection note) and no protocol recognises its traffic: give --protocol</source>
+        <translation>{file} 未指明协议（没有连接说明），且没有任何协议能识别其通信内容：请指定 --protocol</translation>
+    </message>
+    <message>
+        <location line="+327"/>
+        <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
+        <translation>此处无法设置速度：此固件版本仅根据 step_delay_instantaneous（15、16）确定步进时序，而不是 input_speed_steady（21、22）。“设备：”是 X 的步进速度（每步 15 高电平加 16 低电平）；要改变它，请在参数表中修改 15 和 16。</translation>
+    </message>
+    <message>
+        <location line="+81"/>
+        <source>Y will not move: at these parameters the firmware&apos;s Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)</source>
+        <translation>Y 轴不会移动：按这些参数，固件的 Y 循环一步也不走（它执行的是斜坡计数，即 0；请设置 22 和 24，使斜坡长度大于 0）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Y moves {moved:.3f} mm, not {asked:.3f}: the firmware&apos;s Y loop runs the ramp count ({loops} of {steps} steps)</source>
+        <translation>Y 轴移动 {moved:.3f} mm，而不是 {asked:.3f}：固件的 Y 循环执行的是斜坡计数（{steps} 步中的 {loops} 步）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{axis} moves {moved:.3f} mm, not {asked:.3f}: whole steps ({steps}), truncated as the firmware counts</source>
+        <translation>{axis} 轴移动 {moved:.3f} mm，而不是 {asked:.3f}：按整步计（{steps} 步），按固件的计数方式截断</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>{protocol} reports where it is: it is asked</source>
+        <translation>{protocol} 会报告其位置：直接向其查询</translation>
+    </message>
+    <message>
+        <location line="+57"/>
         <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
         <translation>程序中未指定速度的移动将以设备的速度 {speed:g} mm/s 运行，超出其允许的 {low:g} 至 {high:g} mm/s：请先设置速度；未发送任何内容</translation>
     </message>
@@ -7461,6 +7726,11 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <location line="+1"/>
         <source>cannot open {port}: {error}</source>
         <translation>无法打开 {port}：{error}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first</source>
+        <translation>{where} 接受了此连接后立即将其关闭{said}：可能有其他客户端占用该端口（设置 max-connections: 1 时，ser2net 一次只服务一个客户端）；请先关闭那个客户端</translation>
     </message>
     <message>
         <location line="+1"/>
