@@ -9,10 +9,14 @@ import math
 import signal
 import tempfile
 import time
+from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
+
+from hypothesis import HealthCheck, Phase, settings
+from hypothesis import strategies as st
 
 import drivers
 from drivers.events import PositionReport
@@ -26,6 +30,9 @@ BOX = (BOX_MM, BOX_MM, 1.0)  # ... and Z within ±1 mm
 TRAVEL = "-4:4,-4:4,-1:1"  # the session's travel box, a little wider than the model's
 SETTLE_S = 3.0  # a commanded (unconfirmed) count may take this long to be reached
 MOVE_START_S = 4.0  # a Visiomex move starts after 1 s of silence and its debug lines
+KILL_MARGIN = 0.1  # mm the stage may move between the last `where` and a kill
+QUARTERS = st.integers(-8, 8)  # a jog's axis: -2..2 mm in quarters of a mm (whole steps)
+TARGETS = st.integers(-12, 12)  # a target's axis: -3..3 mm in quarters of a mm, in the box
 FIRMATA = {"steps_per_mm": 80.0, "steps_per_rev": 200.0, "pin1": 8.0, "pin2": 9.0}
 
 
@@ -191,3 +198,21 @@ def still(rig: Rig) -> Point:
             return now
         previous = now
     return previous
+
+
+def machine_settings(examples: int, steps: int) -> settings:
+    """Hypothesis settings for a model: so many examples of at most so many steps, no
+    database, no shrinking (the time stays bounded)."""
+    return settings(
+        max_examples=examples,
+        stateful_step_count=steps,
+        deadline=None,
+        database=None,
+        phases=(Phase.explicit, Phase.generate),
+        suppress_health_check=list(HealthCheck),
+    )
+
+
+def steps_note(ran: Counter[str]) -> str:
+    """`go_to 3, jog 5, ...`: the actions a model ran, by name."""
+    return ", ".join(f"{name} {count}" for name, count in sorted(ran.items()))
