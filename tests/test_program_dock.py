@@ -15,6 +15,7 @@ from app.window.program_dock import ProgramDock
 from drivers.sim.piframe_device import CIRCULAR, DWELL
 from drivers.toolpath.geometry import flatten
 from drivers.toolpath.loader import load_toolpath
+from tests.relay import wait_in_gui
 from widgets.program_panel import ERROR_STYLE, ProgramPanel
 
 pytestmark = pytest.mark.timeout(60)
@@ -159,6 +160,9 @@ def test_a_program_runs_to_its_last_point_with_its_last_line_highlighted(
     qtbot, window: MainWindow, tmp_path: Path, url: str, protocol: str
 ) -> None:
     _connect(qtbot, window, url, protocol)
+    if protocol == "pi-frame":  # absolute targets: its program needs a known place first
+        with wait_in_gui(qtbot, window.worker.job_finished, timeout=5000):
+            window.coordinates.go_requested.emit("absolute", (0.0, 0.0, 0.0))
     panel, dock = _parts(window)
     _load(qtbot, window, _gcode(tmp_path))
     seen_lines: list[int | None] = []

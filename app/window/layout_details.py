@@ -103,10 +103,13 @@ def columns(window: QWidget) -> dict[str, dict[str, object]]:
 
 
 def tab_bars(window: QWidget) -> list[dict[str, object]]:
-    """The dock tab bars shown: each tab's text and rectangle in the window, and the current."""
+    """The dock tab bars and the views' tab bar shown: each tab's text and rectangle in the
+    window, and the current."""
     found: list[dict[str, object]] = []
     for bar in window.findChildren(QTabBar):
-        if not bar.isVisible() or bar.parentWidget() is not window:
+        parent = bar.parentWidget()
+        views = parent is not None and parent.objectName() == "viewTabs"
+        if not bar.isVisible() or (parent is not window and not views):
             continue
         origin = bar.mapTo(window, QPoint(0, 0))
         found.append(

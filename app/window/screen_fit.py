@@ -94,8 +94,9 @@ class ScreenFit(QObject):
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """Once the window manager's frame is known, check the fit once with it."""
+        # (getattr: while Qt tears the window down, this object's Python side may be gone)
         if (
-            not self._checked
+            not getattr(self, "_checked", True)
             and watched is self.window
             and event.type() in (QEvent.Type.Move, QEvent.Type.Resize, QEvent.Type.Show)
             and frame_margins(self.window) is not None

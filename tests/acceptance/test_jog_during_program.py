@@ -43,8 +43,9 @@ def test_jog_key_while_a_program_runs_is_refused(
     panel.load_program(program)
     panel.key("alt+r")  # Run
     wait_for(lambda: moves(), 15.0, "the program's first moves at the device")
-    _, _, width, height = panel.geometry()
-    status = (0, min(height, x_server.size[1]) - 30, min(width, 800), 30)
+    left, top, width, height = panel.geometry()  # the status bar: the window's last 30 px
+    bottom = min(top + height, x_server.size[1])
+    status = (max(left, 0), bottom - 30, min(width, 800), 30)
     before = colour_count(x_server.grab(shots / "status-before.png", status), WARNING_TEXT, 30)
     assert len(moves()) < len(PROGRAM), "the program was all sent before the jog key was pressed"
     panel.key("Right")

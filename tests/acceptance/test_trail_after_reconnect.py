@@ -8,7 +8,10 @@ from pathlib import Path
 import numpy as np
 from PySide6.QtGui import QImage
 
+from app.window.layout_report import ENVIRONMENT
 from tests.acceptance.conftest import Rig
+from tests.acceptance.test_layouts_fit import _switch
+from tests.acceptance.test_parts_whole import _tab
 from tests.acceptance.xsession import (
     SCREENS,
     Sim,
@@ -94,10 +97,19 @@ def test_reconnection_draws_no_ramp(
     settings = write_settings(
         tmp_path / "settings.ini", protocol="coxiris", port=str(link), jog_step=15.0
     )
-    panel = rig.panel(x_server, "--port", str(link), "--protocol", "coxiris", settings=settings)
+    report_path = tmp_path / "layout-report.json"
+    panel = rig.panel(
+        x_server, "--port", str(link), "--protocol", "coxiris", settings=settings,
+        env={ENVIRONMENT: str(report_path)},
+    )  # fmt: skip
     panel.fit_inside_screen()  # the status bar on the screen: its state is read there
     panel.wait_ready(b"DONE GET_SPEED")
     logs = panel.logs
+    # The XY view is the centre's second tab: clicked where the layout report says it is.
+    report = _switch(panel, report_path, "operate", lambda r: bool(r["connected"]))
+    left, top, _, _ = panel.geometry()
+    tx, ty, tw, th = _tab(report, "XY and time")
+    x_server.xdotool("mousemove", str(left + tx + tw // 2), str(top + ty + th // 2), "click", "1")
 
     def position_read(part: int, text: bytes) -> bool:
         connections = logs.connections()
