@@ -96,13 +96,15 @@ class JobDesk(QObject):
     # -- submitting --------------------------------------------------------------------------
     def _needs_position(self, job: jobs.Job) -> bool:
         """Whether `job` moves from where the stage is on a device that moves only to absolute
-        targets, while that place is unknown."""
+        targets, while that place is unknown (the rule motionctl's jog follows)."""
         from app.window import jobs
+        from drivers.position_count import needs_count
 
         info = self.machine.info
-        if info is None or info.capabilities.relative_moves or not self.machine.position_lost:
+        if info is None or not self.machine.position_lost:
             return False
-        return isinstance(job, (jobs.MoveByJob, jobs.MacroJob))  # (an arc goes to its start)
+        relative = isinstance(job, (jobs.MoveByJob, jobs.MacroJob))  # (an arc goes to its start)
+        return relative and needs_count("jog", info.capabilities)
 
     def submit(self, job: jobs.Job) -> bool:
         """Queue `job` for the worker; refused out loud (False) when not connected, or when a
