@@ -8,7 +8,7 @@ import pytest
 
 from drivers import commands as cmd
 from drivers.client import Client
-from drivers.errors import BadInput, DeviceError, DeviceTimeout
+from drivers.errors import BadInput, DeviceError, DeviceRestarted, DeviceTimeout
 from drivers.events import ErrorReport, Feedback, TextLine
 from drivers.motion import Motion
 from drivers.param_profile import ProfileError, format_profile, parse_profile
@@ -17,7 +17,8 @@ from drivers.protocols.visiomex_model import POWER_ON
 from drivers.protocols.visiomex_params import DEFAULTS, PARAMETERS
 from drivers.registry import create_protocol
 from drivers.traffic import TX
-from drivers.transport import open_link
+from drivers.transport import Link, open_link
+from tests.fakes import ScriptedPort
 
 # (id, name, unit, a value, its wire digits): every parameter's scaling, as decided
 SCALING = [
@@ -272,3 +273,14 @@ def test_a_silent_device_times_out_naming_the_parameter() -> None:
             motion.set_parameter("pulley_diameter_x", 38.2)
     finally:
         link.close()
+
+
+@pytest.mark.timeout(10)
+def test_a_restart_that_cut_the_reply_line_is_still_named() -> None:
+    # The board restarted between FP0001 and its CR LF: the banner ends the cut line. Seen in
+    # CI as a 27 s timeout instead of "restarted during".
+    port = ScriptedPort(b"Step x: 2000\r\nStep y: 0\r\nFP0001Checkpoint 2\r\n")
+    client = Client(Link(port, "scripted"), VisiomexProtocol())  # type: ignore[arg-type]
+    with pytest.raises(DeviceRestarted, match="restarted during MLP0001000P0000000"):
+        client.execute(cmd.MoveBy(1, 0), timeout=3)
+    assert not VisiomexProtocol().is_restart(TextLine("Step x: 2"))

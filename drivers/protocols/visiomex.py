@@ -370,7 +370,9 @@ class VisiomexProtocol(Protocol):
 
     def is_restart(self, event: Event, waiting: Command | None = None) -> bool:
         """The sketch's `setup()` prints `Checkpoint 2` at every boot."""
-        return isinstance(event, TextLine) and event.text.strip() == BOOT_BANNER
+        # A reset cuts the line the firmware was printing: its banner then ends that line
+        # ("FP0001Checkpoint 2" when the board restarted between FP0001 and its CR LF).
+        return isinstance(event, TextLine) and event.text.strip().endswith(BOOT_BANNER)
 
     # -- replies -----------------------------------------------------------------------------
     def exchange(self, command: Command) -> VisiomexExchange:
