@@ -13,7 +13,8 @@ when the `with` block ends, an exception included.
 
 Public and stable: `open_device`, `DeviceSession` (the methods and properties without a leading
 underscore; `session.parameters` is a `DeviceParameters`, drivers/session_parameters.py, and
-`session.tap` a `TrafficTap`, drivers/session_tap.py), `NoStop`, `NoPrograms`, `ProgressListener`.
+`session.tap` a `TrafficTap`, drivers/session_tap.py; `session.where()` a `Whereabouts`,
+drivers/position_truth.py), `NoStop`, `NoPrograms`, `ProgressListener`.
 `DeviceSession.link`, `.client`, `.motion` and `.protocol` are the layers underneath, for front
 ends that need more (the panel's worker); they follow the driver layer's own changes. Macros
 (app/common/macros.py) are motionctl's command vocabulary and stay on the application side: run
@@ -30,12 +31,13 @@ from types import TracebackType
 from drivers import commands as cmd
 from drivers.capabilities import Capabilities
 from drivers.client import Client
-from drivers.errors import BadInput
+from drivers.errors import BadInput, CommunicationError, MotionError
 from drivers.events import PositionReport
 from drivers.log_origin import connection_note
 from drivers.messages import Message
 from drivers.motion import Motion
 from drivers.position_count import resume
+from drivers.position_truth import PositionTruth, Whereabouts
 from drivers.program import ProgramPoint
 from drivers.protocols.base import Protocol
 from drivers.session_parameters import DeviceParameters
@@ -49,7 +51,14 @@ from drivers.traffic import TrafficLogWriter
 from drivers.transport import Link, TrafficListener
 from drivers.travel import TravelLimits
 
-__all__ = ["DeviceSession", "NoPrograms", "NoStop", "ProgressListener", "open_device"]
+__all__ = [
+    "DeviceSession",
+    "NoPrograms",
+    "NoStop",
+    "ProgressListener",
+    "Whereabouts",
+    "open_device",
+]
 
 ProgressListener = Callable[[StreamProgress], None]
 """Told how far a program has got (a StreamProgress) after each frame or move."""
@@ -79,8 +88,10 @@ class DeviceSession:
         travel: TravelLimits | None = None,
         abort: threading.Event | None = None,
         parameters: Mapping[str, float] | None = None,
+        after_loss: bool = False,
     ) -> None:
-        """A session over an open link (`open_device` opens one); it owns and closes the link."""
+        """A session over an open link (`open_device` opens one); it owns and closes the link.
+        `after_loss`: it goes on after a lost link (see `where`)."""
         self.link = link
         self.protocol = protocol
         self.client = Client(link, protocol, timeout=timeout)
@@ -88,6 +99,8 @@ class DeviceSession:
             self.client.abort = abort
         self.motion = Motion(self.client)
         self.motion.travel = travel
+        self.truth = PositionTruth(self.motion, after_loss=after_loss)
+        """What is known of the position (`where` reads it; the panel's worker feeds it)."""
         self.parameters = DeviceParameters(self.motion, parameters, self._operation)
         """The device's parameters: `all`, `kept()`, `set`, `write`, `write_profile`."""
         self.tap = TrafficTap(link)
@@ -166,6 +179,12 @@ class DeviceSession:
         """Where the stage is: measured where the device reports it, else as commanded."""
         with self._operation():
             return self.motion.position()
+
+    def where(self) -> Whereabouts:
+        """What is known of the position now, without asking the device: the last report
+        (live), an estimate during a move, or not known (uncounted, lost with the link, the
+        estimate at the loss), with the reason as its `status`."""
+        return self.truth.now()
 
     def move_to(self, x: float, y: float, z: float = 0.0) -> PositionReport:
         """Move to (x, y, z) mm and wait until the move has ended; the position then."""
@@ -297,6 +316,12 @@ class DeviceSession:
             self._running_in = threading.get_ident()
         try:
             yield
+        except CommunicationError:
+            self.truth.link_lost()  # a move under way is known only as its estimate now
+            raise
+        except MotionError:
+            self.truth.move_ended()
+            raise
         finally:
             if outer:
                 self._running_in = None
@@ -320,6 +345,7 @@ def open_device(
     start: bool = True,
     abort: threading.Event | None = None,
     position: tuple[float, float, float] | None = None,
+    after_loss: bool = False,
 ) -> DeviceSession:
     """Open a device and return its session (a context manager that closes it).
 
@@ -335,7 +361,9 @@ def open_device(
     record; `start`: send the start-up commands now (False: the caller calls `start`);
     `abort`: an Event that, once set from any thread, makes a wait give up (Aborted);
     `position`: where a device that cannot be asked is, as kept from an earlier run (its count,
-    or the target it was sent last): the session goes on from there (`resume_from`).
+    or the target it was sent last): the session goes on from there (`resume_from`);
+    `after_loss`: the device was lost with its link before (`where` then says `lost`, not
+    `uncounted`, for a position it cannot be asked about).
     BadInput or UnknownProtocol for wrong settings, PortError when the port cannot be opened.
     """
     if timeout <= 0:
@@ -346,7 +374,13 @@ def open_device(
     limits = travel_limits(travel, clamp)
     link = open_device_link(port, made, baud=baud, dtr=dtr, rts=rts)
     session = DeviceSession(
-        link, made, timeout=timeout, travel=limits, abort=abort, parameters=parameters
+        link,
+        made,
+        timeout=timeout,
+        travel=limits,
+        abort=abort,
+        parameters=parameters,
+        after_loss=after_loss,
     )
     try:
         if position is not None:
