@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
 
 from widgets._axes import AXES, decimals_for, modifier_bits, normalize_axes
 from widgets._i18n import fill, number_text
+from widgets._key_pairs import KeyReleases
 from widgets._number_field import label_name
 from widgets._units import INCH, MM, MM_PER_INCH, UnitSpinBox, check_units
 
@@ -30,6 +31,7 @@ STEP_PRESETS: tuple[float, ...] = (0.01, 0.1, 1.0, 10.0, 100.0)
 INCH_STEP_PRESETS: tuple[float, ...] = (0.001, 0.01, 0.1, 1.0)  # inches, as Candle and UGS
 STEP_RANGE_MM = (0.001, 1000.0)
 SHIFT_FACTOR = 10.0
+EDGE = 3  # px above, below and between the rows: the panel fits a short column (1024×640)
 KEY_HINT = QT_TRANSLATE_NOOP("JogPanel", "Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10")
 
 _SHIFT = Qt.KeyboardModifier.ShiftModifier.value
@@ -94,16 +96,18 @@ class JogPanel(QWidget):
         self.key_hint = self.tr(KEY_HINT)
         self._held: tuple[str, float] | None = None
         self._held_key: int | None = None
+        self._releases = KeyReleases()  # of the jog and step keys
         self._held_button: QPushButton | None = None
         self.buttons: dict[tuple[str, float], QPushButton] = {}
 
         pad = QGridLayout()
-        pad.setSpacing(4)
+        pad.setHorizontalSpacing(4)
+        pad.setVerticalSpacing(2)
         for axis, direction, row, column in _BUTTONS:
             sign = "+" if direction > 0 else "-"
             button = QPushButton(f"{axis.upper()}{sign}")
             button.setObjectName(f"jog{axis.upper()}{'Plus' if direction > 0 else 'Minus'}")
-            button.setMinimumSize(52, 30)
+            button.setMinimumSize(52, 28)
             button.setSizePolicy(QSizePolicy.Policy.Preferred, QSizePolicy.Policy.Preferred)
             button.setFocusPolicy(Qt.FocusPolicy.NoFocus)  # clicks focus the panel, for keys
             button.setAutoRepeat(False)  # held: the window steps while it is down, no clicks
@@ -158,12 +162,12 @@ class JogPanel(QWidget):
         self._step_tip()
         self.step_spin.valueChanged.connect(self._step_edited)
         presets.addStretch(1)
-        # The step beside X+, under Z+: a row less in a column of panels (issue 28 item 20).
-        step_cell = QVBoxLayout()
-        step_cell.setSpacing(0)
-        step_cell.addWidget(step_label)
-        step_cell.addWidget(self.step_spin)
-        pad.addLayout(step_cell, 1, 4)
+        # The step beside X+, under Z+: a row less in a column of panels (issue 28 item 20);
+        # its label before it, in the gap, so that the row is no taller than a jog button.
+        step_label.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
+        step_label.setBuddy(self.step_spin)
+        pad.addWidget(step_label, 1, 3)
+        pad.addWidget(self.step_spin, 1, 4)
 
         self.hint_label = QLabel(self.key_hint)
         self.hint_label.setObjectName("jogHint")
@@ -172,6 +176,9 @@ class JogPanel(QWidget):
         self.set_keyboard_state(True, "")
 
         layout = QVBoxLayout(self)
+        margins = layout.contentsMargins()  # the dock's title bar is the gap above
+        layout.setContentsMargins(margins.left(), EDGE, margins.right(), EDGE)
+        layout.setSpacing(EDGE)
         layout.addLayout(pad)
         layout.addLayout(presets)
         layout.addWidget(self.hint_label)
@@ -321,13 +328,31 @@ class JogPanel(QWidget):
 
     # -- jogging ---------------------------------------------------------------------------
 
-    def handle_key(self, key: int, modifiers: object = None, *, auto_repeat: bool = False) -> bool:
+    def is_repeat(self, key: int, timestamp: int = 0, *, auto_repeat: bool = False) -> bool:
+        """Whether a press of `key` at `timestamp` (the key event's, in ms; 0: unknown) repeats
+        a held key: Qt says so, or it came at the time of that key's last release (an X11
+        auto-repeat pair Qt did not flag, see `KeyReleases`)."""
+        return auto_repeat or self._releases.pairs(int(getattr(key, "value", key)), timestamp)
+
+    def handle_key(
+        self,
+        key: int,
+        modifiers: object = None,
+        *,
+        auto_repeat: bool = False,
+        timestamp: int = 0,
+    ) -> bool:
         """Jog for an arrow/PgUp/PgDn key; True if the key is a jog key and was consumed.
 
-        Auto-repeated presses are consumed but jog nothing (a held key must not queue moves).
-        Keys with Ctrl, Alt or Meta are left alone, and so is everything while disabled.
+        Auto-repeated presses are consumed but jog nothing (a held key must not queue moves),
+        and so is a press at the `timestamp` of its key's release (see `is_repeat`): the key is
+        still down, and a jog its release stopped does not start again. Keys with Ctrl, Alt or
+        Meta are left alone, and so is everything while disabled.
         """
         key = int(getattr(key, "value", key))
+        if not auto_repeat and self.is_repeat(key, timestamp):
+            log.info("jog key %#x pressed at its release's time: paired with its release", key)
+            auto_repeat = True
         bits = modifier_bits(modifiers)
         if key in self.step_keys and not bits & ~_KEYPAD and self.isEnabled():
             if not auto_repeat:
@@ -345,27 +370,40 @@ class JogPanel(QWidget):
             self._jog(axis, direction, bool(bits & _SHIFT))
         return True
 
-    def handle_key_release(self, key: int, *, auto_repeat: bool = False) -> bool:
-        """End a held jog when its key is released; True if the key is a jog key."""
+    def handle_key_release(
+        self, key: int, *, auto_repeat: bool = False, timestamp: int = 0
+    ) -> bool:
+        """End a held jog when its key is released, at once; True if the key is a jog key.
+
+        The release's `timestamp` (ms; 0: unknown) is kept: a press of the key at that time is
+        an auto-repeat (`is_repeat`)."""
         key = int(getattr(key, "value", key))
+        if key not in self.step_keys and key not in self.key_map:
+            return False
+        self._releases.released(key, timestamp)
         if key in self.step_keys:
             return True
-        if key not in self.key_map:
-            return False
         if not auto_repeat and key == self._held_key:
             self.release()
         return True
 
     def keyPressEvent(self, event: QKeyEvent) -> None:
         """Jog keys while the panel itself has focus."""
-        if self.handle_key(event.key(), event.modifiers(), auto_repeat=event.isAutoRepeat()):
+        if self.handle_key(
+            event.key(),
+            event.modifiers(),
+            auto_repeat=event.isAutoRepeat(),
+            timestamp=event.timestamp(),
+        ):
             event.accept()
         else:
             super().keyPressEvent(event)
 
     def keyReleaseEvent(self, event: QKeyEvent) -> None:
         """A released jog key ends the held jog."""
-        if self.handle_key_release(event.key(), auto_repeat=event.isAutoRepeat()):
+        if self.handle_key_release(
+            event.key(), auto_repeat=event.isAutoRepeat(), timestamp=event.timestamp()
+        ):
             event.accept()
         else:
             super().keyReleaseEvent(event)

@@ -133,16 +133,17 @@ class KeyboardJog(QObject):
         if kind in (QEvent.Type.KeyPress, QEvent.Type.KeyRelease) and isinstance(event, QKeyEvent):
             if not self.panel.is_jog_key(event.key()):
                 return False
+            repeat, stamp = event.isAutoRepeat(), event.timestamp()
             if kind == QEvent.Type.KeyRelease:
-                self.panel.handle_key_release(event.key(), auto_repeat=event.isAutoRepeat())
+                self.panel.handle_key_release(event.key(), auto_repeat=repeat, timestamp=stamp)
                 return not self.blocker()  # a field that took the press takes the release
             if self.blocker():
-                if not event.isAutoRepeat():
+                if not self.panel.is_repeat(event.key(), stamp, auto_repeat=repeat):
                     self.panel.release()  # a popup opened over a held key: stop stepping
                     self._refuse(event.key())
                 return False
             return self.panel.handle_key(
-                event.key(), event.modifiers(), auto_repeat=event.isAutoRepeat()
+                event.key(), event.modifiers(), auto_repeat=repeat, timestamp=stamp
             )
         if kind == QEvent.Type.WindowDeactivate and watched is self.window:
             self.panel.release()
