@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import threading
 import time
 from dataclasses import dataclass, field
 from typing import TextIO
@@ -34,19 +35,25 @@ def hexdump_lines(record: Traffic, start: float, width: int = 16) -> list[str]:
 
 
 class TrafficLogWriter:
-    """Writes every record to a text file as it happens, flushed, so a crash loses nothing."""
+    """Writes every record to a text file as it happens, flushed, so a crash loses nothing;
+    from any thread (a note never lands inside a record's lines)."""
 
     def __init__(self, stream: TextIO, start: float | None = None) -> None:
         self.stream = stream
         self.start = time.monotonic() if start is None else start
+        self._lock = threading.Lock()
 
     def note(self, text: str) -> None:
-        """A `#` line (a connection, a disconnection) with its time, flushed."""
-        self.stream.write(f"{time.monotonic() - self.start:010.3f} # {text}\n")
-        self.stream.flush()
+        """A `#` line (a connection, a disconnection) with its time, flushed; none once the
+        stream is closed (a note from another thread as the log is turned off)."""
+        with self._lock:
+            if not self.stream.closed:
+                self.stream.write(f"{time.monotonic() - self.start:010.3f} # {text}\n")
+                self.stream.flush()
 
     def __call__(self, record: Traffic) -> None:
         """Append one record as hexdump lines with their text column."""
-        for line in hexdump_lines(record, self.start):
-            self.stream.write(line + "\n")
-        self.stream.flush()
+        with self._lock:
+            for line in hexdump_lines(record, self.start):
+                self.stream.write(line + "\n")
+            self.stream.flush()

@@ -1,12 +1,14 @@
 """What a program's Pause really does on the device connected, said when it is pressed: nothing
-more is sent, how many moves the device still holds and when it will stand still."""
+more is sent, how many moves the device still holds and when it will stand still. Said on the
+status line and in the console, and written into the session log at once (in English), though the
+worker is busy with the program."""
 
 from __future__ import annotations
 
 import math
 from typing import TYPE_CHECKING, Any, Protocol
 
-from PySide6.QtCore import QCoreApplication, QObject
+from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication, QObject
 
 from widgets import status_line as status
 from widgets._i18n import fill
@@ -16,6 +18,20 @@ if TYPE_CHECKING:
     from drivers.streaming import StreamProgress
 
 translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
+
+NO_FEED_HOLD = QT_TRANSLATE_NOOP(
+    "MainWindow",
+    "paused: nothing more is sent; the move under way finishes (this device has no feed hold)",
+)
+RESUMED = QT_TRANSLATE_NOOP("MainWindow", "resumed: sending the program again")
+HOLDS = QT_TRANSLATE_NOOP(
+    "MainWindow",
+    "paused: nothing more is sent; the device still holds %1 move(s) and runs them (its "
+    "protocol has no feed hold): it stands still in about %2 s; Stop flushes them now",
+)
+STANDS_STILL = QT_TRANSLATE_NOOP(
+    "MainWindow", "paused: the device has run what it held; the stage stands still"
+)
 
 
 class PausedMachine(Protocol):
@@ -38,9 +54,11 @@ class ProgramPause(QObject):
         self.paused = False
         self._said_held = False  # the device's queue at the pause, said once
         self._said_still = False  # its end, said once
+        self._worker: SerialWorker | None = None  # writes the session log
 
     def wire(self, w: SerialWorker) -> None:
         """Pause and progress reports of the worker, to bound methods (queued to the GUI)."""
+        self._worker = w
         w.program_paused.connect(self._on_paused)
         w.stream_progress.connect(self._on_progress)
 
@@ -54,16 +72,9 @@ class ProgramPause(QObject):
         self.paused = paused
         self._said_held = self._said_still = False
         if paused and not self._queued():
-            self.machine.window.tell(
-                translate(
-                    "MainWindow",
-                    "paused: nothing more is sent; the move under way finishes (this device "
-                    "has no feed hold)",
-                ),
-                status.INFO,
-            )
+            self._say(NO_FEED_HOLD, status.INFO)
         elif not paused:
-            self.machine.window.tell(translate("MainWindow", "resumed: sending the program again"))
+            self._say(RESUMED, status.INFO)
         self.machine.show_status()
 
     def ended(self) -> None:
@@ -76,19 +87,14 @@ class ProgramPause(QObject):
         held = progress.held
         if not self._said_held and held:
             self._said_held = True
-            text = translate(
-                "MainWindow",
-                "paused: nothing more is sent; the device still holds %1 move(s) and runs "
-                "them (its protocol has no feed hold): it stands still in about %2 s; Stop "
-                "flushes them now",
-            )
-            seconds = f"{math.ceil(progress.held_s):d}"
-            self.machine.window.tell(fill(text, held, seconds), status.WARNING)
+            self._say(HOLDS, status.WARNING, held, f"{math.ceil(progress.held_s):d}")
         elif held == 0 and not self._said_still:
             self._said_held = self._said_still = True
-            self.machine.window.tell(
-                translate(
-                    "MainWindow",
-                    "paused: the device has run what it held; the stage stands still",
-                )
-            )
+            self._say(STANDS_STILL, status.INFO)
+
+    def _say(self, english: str, kind: str, *values: object) -> None:
+        """Tell the operator, and write it into the session log now, in English: the worker
+        is busy with the program, so a note queued to it would come after the program."""
+        self.machine.window.tell(fill(translate("MainWindow", english), *values), kind)
+        if self._worker is not None:
+            self._worker.note_now(fill(english, *values))

@@ -226,6 +226,12 @@ class SerialWorker(QObject):
         """Allow waits again (before a new connection)."""
         self._abort.clear()
 
+    def note_now(self, text: str) -> None:
+        """A note into the session log at once, while a job runs too (any thread)."""
+        writer = self._session_log
+        if writer is not None:
+            writer.note(text)
+
     # -- worker-thread slots -----------------------------------------------------------------
     @Slot(object)
     def set_travel(self, limits: TravelLimits | None) -> None:

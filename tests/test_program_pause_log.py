@@ -1,0 +1,95 @@
+"""Issue 28 item 12: what Pause says of a laser-frame program reaches the session log at once,
+while the worker is still busy running the program, in order with the traffic."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from PySide6.QtCore import Qt
+
+from app.window.main_window import MainWindow
+from drivers.decoding import StreamDecoder
+from drivers.log_reader import parse_log
+from drivers.log_records import LogRecord
+from drivers.registry import create_protocol
+from widgets import status_line as status
+
+pytestmark = pytest.mark.timeout(60)
+
+_HOLDS = re.compile(r"the device still holds (\d+) move\(s\) .* in about (\d+) s")
+_STILL = "paused: the device has run what it held; the stage stands still"
+_STATUS = re.compile(r"^GET_STATUS \[(\d+), (\d+)\]")
+
+
+def _records(path: Path) -> list[LogRecord]:
+    """The session log's complete records (a line being written is left for the next read)."""
+    text = path.read_text(encoding="utf-8")
+    return parse_log(text[: text.rfind("\n") + 1], str(path))
+
+
+def _statuses(records: list[LogRecord]) -> list[tuple[int, tuple[int, int]]]:
+    """(index of its record, (queue, state)) of each GET_STATUS reply in the log."""
+    decoder = StreamDecoder(create_protocol("laser-frame"))
+    found = []
+    for number, record in enumerate(records):
+        if record.direction == "rx":
+            for frame in decoder.feed_bytes("rx", record.data, record.time):
+                hit = _STATUS.match(str(frame.meaning))
+                if hit is not None:
+                    found.append((number, (int(hit.group(1)), int(hit.group(2)))))
+    return found
+
+
+def _held(reply: tuple[int, int]) -> int:
+    """What a GET_STATUS reply says the device holds: its queue, or the move under way."""
+    queue, state = reply
+    return queue + (1 if state and queue == 0 else 0)
+
+
+def test_the_held_moves_note_reaches_the_session_log_while_the_program_runs(
+    qtbot, window: MainWindow, tmp_path: Path
+) -> None:
+    """Pause mid-program: the "still holds N moves" note is in the session log before Stop
+    (the worker is busy with the program until then), N as the device's last GET_STATUS
+    before it says, and before the queue's 0; the "has run what it held" note after that."""
+    with qtbot.waitSignal(window.settled, timeout=10000):
+        window.connect_device("sim://laser-frame?queue=8", "laser-frame", 115200)
+    log = window.link.session_log_path
+    assert log is not None
+    path = tmp_path / "zigzag.csv"
+    rows = [f"{i * 0.5:g},{(i % 2) * 2:g},0,5" for i in range(1, 41)]  # 16 s at 5 mm/s
+    path.write_text("x,y,z,speed\n" + "\n".join(rows) + "\n")
+    panel = window.devices.program
+    panel._choose_path = lambda: str(path)  # type: ignore[method-assign]
+    qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: not window.devices.programs.reading, timeout=5000)
+    qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
+    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    qtbot.waitUntil(lambda: device.queue_length() >= 6, timeout=10000)
+    qtbot.mouseClick(panel.pause_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.status_line.state() == status.PAUSED, timeout=5000)
+    paused_at = len(_records(log))
+
+    def noted(text: str) -> int | None:
+        for number, record in enumerate(_records(log)):
+            if number >= paused_at and text in record.note:
+                return number
+        return None
+
+    qtbot.waitUntil(lambda: noted("still holds") is not None, timeout=5000)
+    qtbot.waitUntil(lambda: noted(_STILL) is not None, timeout=15000)
+    assert window.machine.busy_job is not None  # the worker was running the program all along
+    records = _records(log)
+    holds, still = noted("still holds"), noted(_STILL)
+    assert holds is not None and still is not None
+    hit = _HOLDS.search(records[holds].note)
+    assert hit is not None, records[holds].note
+    said = int(hit.group(1))
+    before = [reply for number, reply in _statuses(records) if number < holds]
+    assert said in {_held(reply) for reply in before[-2:]}, (said, before[-2:])
+    empty = [n for n, reply in _statuses(records) if n > paused_at and _held(reply) == 0]
+    assert empty and holds < empty[0] < still, (holds, empty[:1], still)
+    window.stop_action.trigger()
+    qtbot.waitUntil(lambda: window.status_line.state() == status.IDLE, timeout=10000)
