@@ -1,6 +1,7 @@
-"""What the model-based truth test (tests/test_model_truth.py) stands on: each protocol's
-simulator in another process on a fixed path, read through its own `where`, and the rule that
-a position the session claims (measured, or commanded and confirmed) is the device's."""
+"""What the model-based truth tests (tests/test_model_truth.py, tests/test_model_truth_worker.py)
+stand on: each protocol's simulator in another process on a fixed path, read through its own
+`where`, and the rule that a position claimed (measured, or commanded and confirmed) is the
+device's. The operator's actions as a state machine are in tests/model_truth_machine.py."""
 
 from __future__ import annotations
 

@@ -19,32 +19,28 @@ defects it found are fixed; each is kept as its smallest example at the end of t
 
 from __future__ import annotations
 
-import logging
 import threading
-from collections import Counter
-from collections.abc import Iterator
 
 import pytest
-from hypothesis import HealthCheck, Phase, seed, settings
 from hypothesis import strategies as st
-from hypothesis.stateful import RuleBasedStateMachine, invariant, rule, run_state_machine_as_test
+from hypothesis.stateful import rule
 
-from drivers import commands as cmd
 from drivers.events import PositionReport
-from drivers.program import ProgramPoint
-from drivers.streaming import StreamProgress
-from drivers.toolpath.loader import from_points
+from drivers.protocols.base import Protocol
+from drivers.session import ProgressListener
+from drivers.toolpath.model import Toolpath
+from tests.model_truth_machine import OperatorMachine, RigMachine, run_model
 from tests.model_truth_support import (
-    BOX_MM,
+    KILL_MARGIN,
     PROFILES,
+    QUARTERS,
+    TARGETS,
     Point,
-    Profile,
     Rig,
     axes_mm,
     claims,
     inside,
     motionctl_run,
-    moving,
     off_by,
     run_report,
     settled,
@@ -52,7 +48,6 @@ from tests.model_truth_support import (
 )
 
 pytestmark = [pytest.mark.e2e]
-log = logging.getLogger(__name__)
 
 # Examples and steps per protocol: about 90 s for all five on a 2-core machine. A Visiomex
 # move is a packet and 1 s of silence, so it gets fewer steps.
@@ -66,211 +61,95 @@ BUDGET = {
 # Each protocol's seed, picked for a mix of every action (Hypothesis turns some rules off in
 # each example, and its first example is the first rule, check_readout, at every step).
 SEEDS = {"coxiris": 58, "laser-frame": 4, "pi-frame": 46, "firmata": 48, "visiomex": 109}
-STEPS: dict[str, Counter[str]] = {}
-"""Steps that ran and were checked, per protocol and action (reported after each test)."""
-QUARTERS = st.integers(-8, 8)  # a jog: -2..2 mm in quarters of a mm (whole steps everywhere)
-TARGETS = st.integers(-12, 12)  # a target: -3..3 mm, inside the box
-KILL_MARGIN = 0.1  # mm the stage may move between the last `where` and the kill
 
 
-class TruthMachine(RuleBasedStateMachine):
+class TruthMachine(OperatorMachine):
     """One device, one session; the truth is the simulator's `where`."""
-
-    profile: Profile
 
     def __init__(self) -> None:
         super().__init__()
-        self.rig = Rig(self.profile)
         self.session = self.rig.open()
-        self.origin: Point = (0.0, 0.0, 0.0)  # the operator's home in `where` mm (power-on)
-        # Whether the session's own count starts from the operator's home (no loss since).
-        self.counting = True
         self.speed_now = self.session.speed()
-        self.history: list[str] = []
 
-    # -- what the model keeps ------------------------------------------------------------------
-    def _axes(self, x: int, y: int, z: int) -> Point:
-        return axes_mm(self.profile, x, y, z)
+    def _report(self) -> PositionReport:
+        return self.session.position()
 
-    def _here(self) -> Point:
-        report = self.session.position()
-        return (report.x, report.y, report.z)
+    def _protocol(self) -> Protocol:
+        return self.session.protocol
 
-    def _truth(self) -> Point:
-        raw = self.rig.where()
-        return (raw[0] - self.origin[0], raw[1] - self.origin[1], raw[2] - self.origin[2])
+    def _speed(self) -> float:
+        return self.speed_now
 
-    def _step(self, what: str) -> None:
-        self.history.append(what)
-        STEPS.setdefault(self.profile.protocol, Counter())[what.split()[0].split("(")[0]] += 1
+    def _look(self) -> PositionReport:
+        return self.session.position()
 
-    def _check(self, report: PositionReport, what: str) -> None:
-        """The rule: a claim is the truth within a step; a count of the session's own too."""
-        tolerance = self.profile.step * 1.01 + 1e-6
-        truth = self._truth()
-        if claims(report):
-            kind = "measured" if report.measured else "commanded, confirmed"
-        elif self.counting:
-            kind = "commanded, counted from the session's own home"
-            truth = settled(self.rig, self.origin, report, tolerance)
-        else:
-            return  # marked as not measured, not confirmed, and counted from no known home
-        assert off_by(report, truth) <= tolerance, (
-            f"{self.profile.protocol}: after {what}: the session reports {report} ({kind}); "
-            f"the device is at {truth} mm; steps: {self.history}"
-        )
+    def _move_by(self, delta: Point) -> PositionReport:
+        return self.session.move_by(*delta)
 
-    def _moved(self, report: PositionReport, what: str) -> None:
-        """After a move: a device sent absolute targets (pi-frame, laser) is where the session
-        sent it, whatever it knew before; then the rule."""
-        if not self.session.capabilities.relative_moves:
-            self.counting = True
-        self._check(report, what)
+    def _move_to(self, target: Point) -> PositionReport:
+        return self.session.move_to(*target)
 
-    # -- operator actions ----------------------------------------------------------------------
-    @rule()
-    def check_readout(self) -> None:
-        """The operator only looks (the panel's idle poll). Hypothesis's first example is its
-        first rule (by arguments, then name) every step: this one, which costs nothing."""
-        self._step("check_readout")
-        self._check(self.session.position(), "an idle poll")
+    def _home(self) -> PositionReport:
+        return self.session.home()
 
-    @rule(x=QUARTERS, y=QUARTERS, z=QUARTERS)
-    def jog(self, x: int, y: int, z: int) -> None:
-        """Jog by a small step, turned back where it would leave the box."""
-        here = self._here()
-        delta = inside(here, self._axes(x, y, z))
-        self._step(f"jog{delta}")
-        self._moved(self.session.move_by(*delta), f"jog by {delta}")
-
-    @rule(x=TARGETS, y=TARGETS, z=TARGETS)
-    def go_to(self, x: int, y: int, z: int) -> None:
-        """Go to a point in the box."""
-        target = self._axes(x, y, z)
-        self._step(f"go_to{target}")
-        self._moved(self.session.move_to(*target), f"go to {target}")
-
-    @rule()
-    def home(self) -> None:
-        """Home: (0, 0, 0) by the device's homing or by the count."""
-        self._step("home")
-        self._moved(self.session.home(), "home")
-
-    @rule()
-    def set_home(self) -> None:
-        """Set Home where the stage stands."""
-        self._step("set_home")
+    def _set_home(self) -> None:
         self.session.set_home()
-        if not self.profile.origin_on_device:
-            self.origin = self.rig.where()
-        self.counting = True
 
-    @rule(index=st.integers(0, 2))
-    def speed(self, index: int) -> None:
-        """Set one of the device's speeds; the device reports it."""
-        value = self.profile.speeds[index % len(self.profile.speeds)]
-        self._step(f"speed({value:g})")
+    def _set_speed(self, value: float) -> None:
         # What the device reports, or the speed it will really move at (Visiomex times its
         # steps from its step delays: not the speed asked for, issue 28 item 3).
         self.speed_now = self.session.speed(value)
         assert self.session.speed() == self.speed_now > 0, self.history
 
-    @rule(
-        points=st.lists(st.tuples(TARGETS, TARGETS, TARGETS), min_size=1, max_size=3),
-        how=st.sampled_from(("run", "pause", "stop")),
-    )
-    def program(self, points: list[tuple[int, int, int]], how: str) -> None:
-        """Run a short program to its end, paused once on the way, or stopped after the first
-        point is sent."""
-        path = [ProgramPoint(*self._axes(*p), self.speed_now) for p in points]
-        self._step(f"program {how} {[(p.x, p.y, p.z) for p in path]}")
-        timers: list[threading.Timer] = []
+    def _run_program(self, program: Toolpath, progress: ProgressListener) -> PositionReport:
+        self.session.run_program(program, progress)
+        return self.session.position()
 
-        def progress(state: StreamProgress) -> None:
-            if state.sent >= 1 and how == "stop":
-                self.session.stop_program()
-            elif state.sent >= 1 and how == "pause" and not timers:
-                self.session.pause_program(True)
-                timers.append(threading.Timer(0.2, self.session.pause_program, (False,)))
-                timers[0].start()
+    def _pause_program(self, paused: bool) -> None:
+        self.session.pause_program(paused)
 
-        self.session.run_program(from_points(path), progress)
-        for timer in timers:
-            timer.join(5)
-        self._moved(self.session.position(), f"program ({how})")
+    def _stop_program(self) -> None:
+        self.session.stop_program()
 
-    @rule(x=QUARTERS, y=QUARTERS, z=QUARTERS)
-    def raw_move(self, x: int, y: int, z: int) -> None:
-        """A move typed as the protocol's own bytes (the console's send line)."""
-        here = self._here()
-        delta = inside(here, self._axes(x, y, z))
-        caps = self.session.capabilities
-        speed = self.speed_now if caps.speed_in_moves else None
-        if caps.relative_moves:
-            command: cmd.Command = cmd.MoveBy(*delta, speed=speed)
-        else:
-            target = tuple(h + d for h, d in zip(here, delta, strict=True))
-            command = cmd.MoveTo(*target, speed=speed)
-        data = self.session.protocol.encode(command)
-        self._step(f"raw {command}")
+    def _send_raw(self, data: bytes) -> PositionReport:
         result = self.session.motion.send_raw(data)
         assert isinstance(result, PositionReport), (result, self.history)
-        self._moved(result, f"raw {command}")
+        return result
 
-    @rule()
-    def reopen(self) -> None:
-        """Disconnect and connect again (the device goes on where it is)."""
-        self._step("reopen")
+    def _reopen(self) -> None:
         self.session.close()
         self.session = self.rig.open()
         self.speed_now = self.session.speed()
-        if not self.session.capabilities.position_feedback:
-            self.counting = False  # a new session's count starts from nowhere it knows
 
-    @rule(x=st.sampled_from((-1, 1)))
-    def kill_mid_move(self, x: int) -> None:
-        """The device vanishes during a go-to; it is served again on the same path and the
-        session opened again."""
-        here = self._here()
-        target = (x * BOX_MM if abs(here[0] - x * BOX_MM) >= 2 else -x * BOX_MM, here[1], here[2])
-        self._step(f"kill_mid_move to {target}")
+    def _begin_move_to(self, target: Point) -> None:
         started = threading.Event()
         self.session.motion.move_listeners.append(lambda move: started.set())
-        outcome: list[PositionReport | BaseException] = []
+        self.outcome: list[PositionReport | BaseException] = []
 
         def move() -> None:
             try:
-                outcome.append(self.session.move_to(*target))
+                self.outcome.append(self.session.move_to(*target))
             except Exception as exc:  # whatever the lost device makes of the move
-                outcome.append(exc)
+                self.outcome.append(exc)
 
-        mover = threading.Thread(target=move, daemon=True)
-        mover.start()
+        self.mover = threading.Thread(target=move, daemon=True)
+        self.mover.start()
         assert started.wait(5), self.history
-        start = self.rig.where()
-        moved = moving(self.rig, start)
-        truth_at_kill = self._truth()
-        self.rig.kill_and_serve_again()
-        mover.join(30)
-        assert not mover.is_alive(), (
+
+    def _after_kill(self, target: Point, before: Point, at_kill: Point, moved: bool) -> None:
+        """The move ends; what it returned, a claim, is where the device vanished; the session
+        is opened again."""
+        self.mover.join(30)
+        assert not self.mover.is_alive(), (
             f"the move did not end when its device vanished: {self.history}"
         )
-        report = outcome[0]
+        report = self.outcome[0]
         if isinstance(report, PositionReport) and claims(report) and moved:
-            assert off_by(report, truth_at_kill) <= self.profile.step + KILL_MARGIN, (
-                f"{self.profile.protocol}: the device vanished at {truth_at_kill} mm during a "
+            assert off_by(report, at_kill) <= self.profile.step + KILL_MARGIN, (
+                f"{self.profile.protocol}: the device vanished at {at_kill} mm during a "
                 f"go to {target}; the session reported {report}; steps: {self.history}"
             )
-        self.session.close()
-        self.session = self.rig.open()
-        self.speed_now = self.session.speed()
-        self.origin = (0.0, 0.0, 0.0)  # the device served again is at its power-on place
-        self.counting = True  # ... which is where a new session's count starts
-
-    @invariant()
-    def position_is_true(self) -> None:
-        """After every step, the position the session reports."""
-        self._check(self.session.position(), "the step")
+        self._reopen()
 
     def teardown(self) -> None:
         """Close the session and stop the simulator."""
@@ -280,49 +159,13 @@ class TruthMachine(RuleBasedStateMachine):
             self.rig.close()
 
 
-def _settings(examples: int, steps: int) -> settings:
-    """Bounded: so many examples of at most so many steps, no database, no shrinking."""
-    return settings(
-        max_examples=examples,
-        stateful_step_count=steps,
-        deadline=None,
-        database=None,
-        phases=(Phase.explicit, Phase.generate),  # no shrinking: the time stays bounded
-        suppress_health_check=list(HealthCheck),
-    )
-
-
-def _machine(protocol: str) -> type[TruthMachine]:
-    """The machine for one protocol, seeded: the same steps on every run."""
-    machine = type(f"TruthMachine_{protocol}", (TruthMachine,), {"profile": PROFILES[protocol]})
-    return seed(SEEDS[protocol])(machine)
-
-
-@pytest.fixture
-def steps_report(request: pytest.FixtureRequest, caplog: pytest.LogCaptureFixture) -> Iterator[str]:
-    """Logs, and keeps as the test's property, how many steps ran clean."""
-    protocol = request.node.callspec.params["protocol"]
-    caplog.set_level(logging.INFO, logger=__name__)
-    STEPS[protocol] = Counter()
-    yield protocol
-    ran = STEPS[protocol]
-    request.node.user_properties.append(("model_steps", ran.total()))
-    actions = ", ".join(f"{name} {count}" for name, count in sorted(ran.items()))
-    log.info("model truth: %s: %d steps ran clean (%s)", protocol, ran.total(), actions)
-
-
 @pytest.mark.parametrize(
     "protocol",
     # About 35 s for Visiomex, 15 s for the others on a quiet machine: twice or more that.
     [pytest.param(p, marks=pytest.mark.timeout(90 if p == "visiomex" else 45)) for p in BUDGET],
 )
-def test_positions_reported_are_the_devices(protocol: str, steps_report: str) -> None:
-    examples, steps = BUDGET[protocol]
-    run_state_machine_as_test(
-        _machine(protocol),
-        settings=_settings(examples, steps),
-    )
-    assert STEPS[protocol].total() >= examples, "the model ran no steps"
+def test_positions_reported_are_the_devices(protocol: str, request: pytest.FixtureRequest) -> None:
+    run_model(TruthMachine, protocol, (*BUDGET[protocol], SEEDS[protocol]), request)
 
 
 # -- the same actions through motionctl, one process a run ---------------------------------
@@ -332,32 +175,22 @@ CTL_SEEDS = {"pi-frame": 78, "firmata": 54, "visiomex": 49}
 UNKNOWN = "position unknown"  # how motionctl refuses a move it has no position for
 
 
-class MotionctlMachine(RuleBasedStateMachine):
+class MotionctlMachine(RigMachine):
     """One device; every action a motionctl run of its own, the count kept in the test's
     settings file (tests/conftest.py: a temporary MOTIONPANEL_SETTINGS) between runs."""
 
-    profile: Profile
-
     def __init__(self) -> None:
-        super().__init__()
-        self.rig = Rig(self.profile)  # a new path each example: no count kept for it yet
-        self.origin: Point = (0.0, 0.0, 0.0)
+        super().__init__()  # a new path each example: no count kept for it yet
         self.known = self.profile.protocol not in ("visiomex", "firmata", "pi-frame")
-        self.history: list[str] = []
         if self.profile.protocol == "firmata":  # its stepper, kept for the port
             configured = motionctl_run(self.rig, "config", "--steps-per-rev", "200", "--pins",
                                        "8", "9")  # fmt: skip
             assert configured.returncode == 0, configured.stderr
 
-    def _truth(self) -> Point:
-        raw = self.rig.where()
-        return (raw[0] - self.origin[0], raw[1] - self.origin[1], raw[2] - self.origin[2])
-
     def _run(self, *args: str) -> PositionReport | None:
         """A run; the rule on what it printed (or on its refusal: nothing moved)."""
         what = " ".join(args)
-        self.history.append(what)
-        STEPS.setdefault("motionctl " + self.profile.protocol, Counter())[args[0]] += 1
+        self._step(what)
         before = self.rig.where()
         run = motionctl_run(self.rig, *args)
         if run.returncode != 0:
@@ -425,20 +258,10 @@ class MotionctlMachine(RuleBasedStateMachine):
     "protocol", [pytest.param(p, marks=pytest.mark.timeout(60)) for p in CTL_BUDGET]
 )
 def test_motionctl_positions_across_runs_are_the_devices(
-    protocol: str, request: pytest.FixtureRequest, caplog: pytest.LogCaptureFixture
+    protocol: str, request: pytest.FixtureRequest
 ) -> None:
-    caplog.set_level(logging.INFO, logger=__name__)
-    STEPS["motionctl " + protocol] = Counter()
-    examples, steps = CTL_BUDGET[protocol]
-    machine = type(f"MotionctlMachine_{protocol}", (MotionctlMachine,),
-                   {"profile": PROFILES[protocol]})  # fmt: skip
-    run_state_machine_as_test(seed(CTL_SEEDS[protocol])(machine), settings=_settings(examples,
-                              steps))  # fmt: skip
-    ran = STEPS["motionctl " + protocol]
-    request.node.user_properties.append(("model_steps", ran.total()))
-    actions = ", ".join(f"{name} {count}" for name, count in sorted(ran.items()))
-    log.info("model truth: motionctl %s: %d runs ran clean (%s)", protocol, ran.total(), actions)
-    assert ran.total() >= examples, "the model ran no steps"
+    plan = (*CTL_BUDGET[protocol], CTL_SEEDS[protocol])
+    run_model(MotionctlMachine, protocol, plan, request, name="motionctl")
 
 
 # -- the defects the model found, each as its smallest example ------------------------------
