@@ -9,15 +9,13 @@ the window's area, and each plot's place against the window and its neighbours.
 
 from __future__ import annotations
 
-import json
-from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
-from app.window.layout_report import ENVIRONMENT
 from tests.acceptance.conftest import Rig
-from tests.acceptance.xsession import XServer, wait_for
+from tests.acceptance.layout_reading import by_screen, label, launch
+from tests.acceptance.xsession import XServer
 
 pytestmark = pytest.mark.timeout(120)
 
@@ -26,33 +24,15 @@ VIEWS = ("positionView3d", "positionXYPlot", "positionTimePlot")
 MAIN_SHARE = 1 / 3
 
 
-def _report(path: Path, window: tuple[int, int]) -> dict | None:
-    try:
-        report = json.loads(path.read_text(encoding="utf-8"))
-    except (FileNotFoundError, json.JSONDecodeError):
-        return None
-    if report["layout"] != "operate" or report["window"] != list(window):
-        return None
-    if not report["views_ready"] or not report["connected"]:
-        return None
-    return report
-
-
-@pytest.mark.parametrize("size", SIZES, ids=[f"{w}x{h}" for w, h in SIZES])
+@by_screen(SIZES)
 def test_the_main_view_takes_a_third_of_the_window(
-    size: tuple[int, int],
-    x_server_of: Callable[[tuple[int, int]], XServer],
-    rig: Rig,
-    tmp_path: Path,
-    shots: Path,
+    any_screen: XServer, rig: Rig, shots: Path
 ) -> None:
-    x = x_server_of(size)
-    path = tmp_path / "layout-report.json"
-    panel = rig.panel(x, "--port", "sim://coxiris", env={ENVIRONMENT: str(path)})
-    panel.wait_ready(b"DONE GET_SPEED")
-    window = tuple(panel.geometry()[2:])
-    report = wait_for(lambda: _report(path, window), 20.0, "a layout report of Operate", 0.1)
-    panel.screenshot(shots / f"operate-{size[0]}x{size[1]}.png")
+    reading = launch(rig, any_screen, "--port", "sim://coxiris")
+    reading.panel.wait_ready(b"DONE GET_SPEED")
+    window = reading.panel.geometry()[2:]
+    report = reading.settled_in("operate", lambda r: bool(r["connected"]))
+    reading.keep(shots / f"operate-{label(any_screen.size)}.png", report)
     area = window[0] * window[1]
     plots = {p["name"]: p for p in report["plots"] if p["visible"]}
     shares = {
@@ -62,7 +42,7 @@ def test_the_main_view_takes_a_third_of_the_window(
     }
     main = max(shares, key=shares.__getitem__)
     print(
-        f"{size[0]}x{size[1]} (window {window[0]}x{window[1]}): "
+        f"{label(any_screen.size)} (window {window[0]}x{window[1]}): "
         + ", ".join(f"{name} {share:.1%}" for name, share in shares.items())
     )
     problems = [
