@@ -88,6 +88,13 @@ def _tab_bar_height(window: QMainWindow, dock: QDockWidget) -> int:
     return 0
 
 
+def kept_height(window: QMainWindow, dock: QDockWidget) -> int:
+    """The height to name for `dock` in a resizeDocks call that must leave it as it is: that of
+    its tab group when it is in one (resizeDocks sizes the group, its tab bar included; the
+    dock's own height would take the bar's height off the group, Go to under the views cut)."""
+    return dock.height() + _tab_bar_height(window, dock)
+
+
 class DockBalance(QObject):
     """Watches the window's size: once started and after each resize, a panel in `area` that would
     scroll while another panel has spare room is given its full height (the spare goes to the
@@ -193,7 +200,7 @@ class DockBalance(QObject):
         }
         self.window.resizeDocks(
             docks + others,
-            new + [asked.get(dock.objectName(), dock.height()) for dock in others],
+            new + [asked.get(dock.objectName(), kept_height(self.window, dock)) for dock in others],
             Qt.Orientation.Vertical,
         )
         self.asked = {dock.objectName(): height for dock, height in zip(docks, new, strict=True)}
