@@ -207,7 +207,7 @@ class Streamer:
             return
         depth = int(status["queue"]) if isinstance(status, dict) else 0
         moving = bool(status["moving"]) if isinstance(status, dict) else False
-        waiting = depth + (1 if moving and depth == 0 else 0)
+        waiting = depth + (1 if moving else 0)  # the one under way has left the queue
         self.state.executed = max(self.state.executed, self.state.acknowledged - waiting)
         self.state.held_s = held_seconds(self.points, self.state.executed, self.state.acknowledged)
 

@@ -45,7 +45,7 @@ def _statuses(records: list[LogRecord]) -> list[tuple[int, tuple[int, int]]]:
 def _held(reply: tuple[int, int]) -> int:
     """What a GET_STATUS reply says the device holds: its queue, or the move under way."""
     queue, state = reply
-    return queue + (1 if state and queue == 0 else 0)
+    return queue + (1 if state else 0)  # the move under way has left the queue
 
 
 def test_the_held_moves_note_reaches_the_session_log_while_the_program_runs(

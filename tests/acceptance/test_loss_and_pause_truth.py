@@ -73,7 +73,7 @@ def _held(status: tuple[float, ...]) -> int:
     """The moves a GET_STATUS reply (queue, state) says the device holds, as the panel counts
     them: its queue, or the move under way once the queue is empty."""
     queue, moving = int(status[0]), bool(status[1])
-    return queue + (1 if moving and queue == 0 else 0)
+    return queue + (1 if moving else 0)  # the move under way has left the queue
 
 
 def _seconds(moves: list[tuple[float, ...]]) -> list[float]:
