@@ -8,7 +8,7 @@ import math
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from drivers import commands as cmd
 from drivers.capabilities import Capabilities, Completion
@@ -398,7 +398,11 @@ class Motion:
         """
         if not self.capabilities.homing:
             if not self.capabilities.position_feedback:  # the panel knows where (0, 0, 0) is
-                return self.move_to(0.0, 0.0, 0.0)
+                report = self.move_to(0.0, 0.0, 0.0)
+                if not report.known:  # back where the count began: its origin from now on
+                    report = replace(report, known=True)
+                    self._set_position(report)
+                return report
             raise BadInput(
                 Message("{protocol} has no way to go home", protocol=self.client.protocol.name)
             )

@@ -53,6 +53,22 @@ def test_run_is_off_while_disconnected_and_its_tooltip_says_why(
     assert "not connected to a device" in panel.run_button.toolTip()
 
 
+def test_run_is_off_while_the_pi_frame_position_is_unknown_and_says_why(
+    qtbot, window: MainWindow, tmp_path: Path
+) -> None:
+    """A fresh pi-frame (nothing kept for the port): its session says the position is not
+    known, so Run is off with the reason; an absolute Go to makes it known, and Run on."""
+    panel, _ = _parts(window)
+    _connect(qtbot, window, "sim://pi-frame?instant=1", "pi-frame")
+    _load(qtbot, window, _gcode(tmp_path))
+    assert not panel.run_button.isEnabled()
+    assert "Not now: the position is unknown" in panel.run_button.toolTip()
+    with wait_in_gui(qtbot, window.worker.job_finished, timeout=5000):
+        window.coordinates.go_requested.emit("absolute", (0.0, 0.0, 0.0))
+    qtbot.waitUntil(panel.run_button.isEnabled, timeout=5000)
+    assert "position is unknown" not in panel.run_button.toolTip()
+
+
 @pytest.mark.parametrize(("url", "protocol"), MODES)
 def test_the_progress_counts_one_unit_from_loading_to_the_end(
     qtbot, window: MainWindow, tmp_path: Path, url: str, protocol: str
@@ -83,7 +99,8 @@ def test_the_last_runs_figures_go_with_another_file_and_another_device(
     _connect(qtbot, window, "sim://pi-frame?instant=1", "pi-frame")
     qtbot.waitUntil(lambda: not _parts(window)[1].reading, timeout=5000)
     assert "sent " not in panel.figures.text() and panel.progress.value() == 0
-    assert panel.run_button.isEnabled()
+    assert not panel.run_button.isEnabled()  # a fresh pi-frame: its position is not known yet
+    assert "position is unknown" in panel.run_button.toolTip()
 
 
 def test_the_first_time_left_is_near_the_programs_own_estimate(

@@ -63,6 +63,7 @@ class ProgramPanel(QWidget):
         self._figures: tuple[int, int, int, float, float | None, int] | None = None
         self._blocked = ""  # why no program may start now ("": it may)
         self._offline = ""  # why there is no device to run it on ("": connected)
+        self._unknown = ""  # why the stage's position is not known ("": it is)
         self._refused = ""  # why this program cannot run ("": it can)
         self._loading = False
         self._saveable = False
@@ -387,6 +388,12 @@ class ProgramPanel(QWidget):
         self._offline = "" if connected else self.tr("not connected to a device")
         self._show_run()
 
+    def set_position_unknown(self, reason: str) -> None:
+        """Run off while the position is unknown (a program's coordinates are absolute), with
+        `reason` in its tooltip ("": known)."""
+        self._unknown = reason
+        self._show_run()
+
     def clear_figures(self) -> None:
         """The last run's counts and time go (another program, another device); the progress
         bar back to 0. An error shown stays."""
@@ -409,11 +416,12 @@ class ProgramPanel(QWidget):
             and not self._blocked
             and not self._refused
             and not self._offline
+            and not self._unknown
         )
         tip = self._run_tip
         if self._refused:
             tip = fill(self.tr("%1\nRefused: %2"), tip, self._refused)
-        for reason in (self._offline, self._blocked):
+        for reason in (self._offline, self._unknown, self._blocked):
             if reason:
                 tip = fill(self.tr("%1\nNot now: %2"), tip, reason)
         self.run_button.setToolTip(tip)

@@ -170,6 +170,7 @@ class Connection(QObject):
                 dtr=dtr,
                 rts=rts,
                 position=kept,
+                after_loss=self.machine.link_failed and self.machine.was_on(port, protocol),
             )
             thread.open(port, protocol, baud, options)  # a sim:// device speaks the variant
 
@@ -313,6 +314,7 @@ class Connection(QObject):
         fit_controls(window, info.capabilities, info.protocol)
         window.parameters.device_ready(info)
         window.devices.device_ready(info)
+        self.machine.show_unknown_to_program()
         window.tools.device_ready(info.protocol, info.variant, info.port)
         known = self.machine.known_position()
         if known is not None:

@@ -23,12 +23,13 @@ if TYPE_CHECKING:
     from app.window.worker_link import WorkerLink
     from drivers.events import PositionReport
     from drivers.motion import MoveStart
+    from drivers.position_truth import Whereabouts
     from drivers.travel import TravelLimits
 
 translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
 
 
-def _known_again(job: jobs.Job) -> str:
+def _known_again(job: jobs.Job | None) -> str:
     """What replaces "position unknown" once `job` reached a known place."""
     from app.window import jobs
 
@@ -54,21 +55,44 @@ class MachineState(QObject):
         self.moving = False
         self.failed = False
         self.link_failed = False  # the connection failed since the device was last ready
-        self.position_lost = False  # a device with no position feedback lost track of it
+        # What is known comes from the device session (drivers/position_truth.py): its reports
+        # say whether they are known, its Whereabouts why not (uncounted, lost) and, at a lost
+        # link, where a move under way had got to.
+        self._position_lost = False  # a device with no position feedback does not know it
         self.lost_status = "lost"  # or "uncounted": a fresh connection, nothing counted yet
         self.last_position: Point | None = None
         self.true_position: Point | None = None  # reported, not estimated
+        self.true_known = False  # the last report is from a known place (the session's)
         self.count_kept: Point | None = None  # (Visiomex, Firmata, pi-frame: keep_count)
         self.resumed_from: Point | None = None  # the kept position the connection goes on from
-        self.count_started = False  # a known place reached on this connection: kept from then
+        self.at_loss: Whereabouts | None = None  # the session's account when its link went
         self.unconfirmed_move = False  # a move started whose end no position has confirmed
         self.trail_device: tuple[str, str, str] | None = None  # port, protocol, identity
         self.home_from: Point | None = None
         self.estimate: MoveEstimate | None = None  # built with the worker
-        self.undone_estimate: Point | None = None  # a failed move's estimate at its failure
         self.pause: ProgramPause | None = None  # built with the worker
         self.bridging = False  # bridge mode: the readout follows the traffic (BridgeReadout)
         link.wirers.append(self._wire)
+
+    @property
+    def position_lost(self) -> bool:
+        """Whether the device cannot tell where it is and no known place was reached."""
+        return self._position_lost
+
+    @position_lost.setter
+    def position_lost(self, lost: bool) -> None:
+        self._position_lost = lost
+        self.show_unknown_to_program()
+
+    def show_unknown_to_program(self) -> None:
+        """The Program dock's Run is off while the position is unknown, saying why."""
+        devices = self.window.devices
+        if built(devices):
+            unknown = translate(
+                "MainWindow",
+                "the position is unknown: this device cannot report it; home it or set home",
+            )
+            devices.program.set_position_unknown(unknown if self._position_lost else "")
 
     def _wire(self, w: SerialWorker) -> None:
         """The worker's reports of where the stage is and what it does, to bound methods (queued
@@ -81,6 +105,7 @@ class MachineState(QObject):
         self.pause = ProgramPause(self)
         self.pause.wire(w)
         w.position_changed.connect(self._on_position)
+        w.whereabouts_changed.connect(self._on_whereabouts)
         w.target_changed.connect(self.show_target)
         w.speed_changed.connect(self._on_speed)
         w.speed_limits_changed.connect(self.window.speed.set_range)
@@ -138,23 +163,27 @@ class MachineState(QObject):
         runs, and the position shown is stale."""
         if self.unconfirmed_move:
             self.undo_move()
-        at_loss, self.undone_estimate = self.undone_estimate, None
+        at_loss, self.at_loss = self.at_loss, None
         self.window.buffer.break_trail()  # the next connection's positions: a new segment
         self.show_target(None)
         self.end_move()
         self.busy_job = None  # the worker dropped what was queued: nothing runs after this
         if self.pause is not None:
             self.pause.ended()
-        if at_loss is not None:  # mid-move: the estimate then, marked, not the move's start
-            self.window.readout.set_position(*at_loss)
+        if at_loss is not None and at_loss.status == "lost-moving" and at_loss.point is not None:
+            self.window.readout.set_position(*at_loss.point)  # the estimate then, marked
             self.window.readout.set_status("lost-moving")
         elif self.last_position is not None and not self.bridging:
             self.window.readout.set_status("stale")
+
+    def _on_whereabouts(self, where: Whereabouts) -> None:
+        self.at_loss = where
 
     def device_ready(self, info: DeviceInfo) -> None:
         """A device answered: whether its position is known (read again, or lost, or not yet
         counted), said once."""
         from drivers.position_count import counts_position, keeps_position  # (after the paint)
+        from drivers.position_truth import LIVE, UNKNOWN
 
         self.info = info
         device = (info.port, info.protocol, info.identity)
@@ -162,11 +191,14 @@ class MachineState(QObject):
         if another:
             self.window.buffer.clear(keep_last=True)  # another device: a trail of its own
         self.trail_device = device
-        self.count_kept, self.count_started = None, False  # until a known place is reached
+        self.count_kept = None  # until a known place is reached
         kept, self.resumed_from = self.resumed_from, None
+        where = info.whereabouts  # the session's: known, not counted yet, or lost
+        known_as = where.status if where is not None else LIVE
+        self.position_lost = known_as in UNKNOWN
+        self.lost_status = known_as if self.position_lost else "lost"
+        self.true_known = not self.position_lost
         if self.link_failed and not another:  # the same device after a lost link or a restart
-            self.position_lost = not info.capabilities.position_feedback
-            self.lost_status = "lost"
             self._tell(
                 translate(
                     "MainWindow",
@@ -179,9 +211,8 @@ class MachineState(QObject):
                 ),
                 status.WARNING if self.position_lost else status.INFO,
             )
-        elif keeps_position(info.capabilities) and kept is not None:  # left there, and kept
-            self.position_lost = False
-            self.count_kept, self.count_started = kept, True
+        elif keeps_position(info.capabilities) and not self.position_lost and kept is not None:
+            self.count_kept = kept  # left there, and kept
             self._tell(
                 fill(
                     translate(
@@ -192,9 +223,8 @@ class MachineState(QObject):
                     *(f"{axis:g}" for axis in kept),
                 )
             )
-        elif counts_position(info.protocol, info.capabilities):  # fresh: nothing counted yet
-            self.position_lost, self.lost_status = True, "uncounted"
-            self._tell(
+        elif self.position_lost and counts_position(info.protocol, info.capabilities):
+            self._tell(  # fresh: nothing counted yet
                 translate(
                     "MainWindow",
                     "position unknown: the device cannot be asked; Home or Set Home to start "
@@ -202,8 +232,7 @@ class MachineState(QObject):
                 ),
                 status.WARNING,
             )
-        elif keeps_position(info.capabilities):  # fresh, absolute targets and nothing kept
-            self.position_lost, self.lost_status = True, "uncounted"
+        elif self.position_lost:  # fresh, absolute targets and nothing kept
             self._tell(
                 translate(
                     "MainWindow",
@@ -213,8 +242,6 @@ class MachineState(QObject):
                 ),
                 status.WARNING,
             )
-        else:  # a fresh connection to a device that reports where it is
-            self.position_lost = False
         self.link_failed = False
         self.window.readout.set_status(self.settled_status())
         caps = info.capabilities  # a speed the device sets itself (Visiomex): the field is off
@@ -222,6 +249,10 @@ class MachineState(QObject):
         if caps.speed_fixed and info.parameters:  # its speed follows what the table writes
             unique = Qt.ConnectionType.UniqueConnection  # and what each move leaves
             self.window.parameters.device_speed.connect(self._on_speed, unique)
+
+    def was_on(self, port: str, protocol: str) -> bool:
+        """Whether the last device connected was on this port, with this protocol."""
+        return self.trail_device is not None and self.trail_device[:2] == (port, protocol)
 
     def known_position(self) -> Point | None:
         """The position as last shown, unless the device lost track of it."""
@@ -247,8 +278,9 @@ class MachineState(QObject):
     # -- the position ------------------------------------------------------------------------
     def _on_position(self, report: PositionReport) -> None:
         self.true_position = (report.x, report.y, report.z)
-        self.undone_estimate = None
+        self.true_known = report.known
         self.unconfirmed_move = False
+        self._follow_known(report)
         window = self.window
         window.buffer.keep_provisional()  # the estimate so far was the stage's way
         if self.home_from is not None and (report.x, report.y, report.z) == (0.0, 0.0, 0.0):
@@ -286,7 +318,7 @@ class MachineState(QObject):
         info, here = self.info, self.true_position
         if info is None or not keeps_position(info.capabilities) or here is None:
             return
-        if not self.count_started or self.position_lost or here == self.count_kept:
+        if not self.true_known or self.position_lost or here == self.count_kept:
             return
         self.count_kept = here
         write_counted_position(self.window.settings, info.protocol, info.port, here)
@@ -299,9 +331,20 @@ class MachineState(QObject):
         self.window.coordinates.set_known_position(x, y, z)
         self.window.buffer.append(time.monotonic() - self.t0, x, y, z)
 
+    def _follow_known(self, report: PositionReport) -> None:
+        """A device that cannot be asked: the session says when its position became known (a
+        Home, a Set Home, an absolute target), or was not (moves counted from nowhere)."""
+        info = self.info
+        if info is None or info.capabilities.position_feedback or self.bridging:
+            return
+        was_lost, self.position_lost = self.position_lost, not report.known
+        if was_lost and report.known:
+            if self.window.readout.status() in ("lost", "uncounted"):
+                self.window.readout.set_status("live")
+            self._tell(_known_again(self.busy_job))
+
     def _on_move_started(self, move: MoveStart) -> None:
         self.moving = True
-        self.undone_estimate = None
         self.unconfirmed_move = True
         self.show_status()
         if move.duration > 0 and self.estimate is not None:
@@ -314,7 +357,6 @@ class MachineState(QObject):
         position reported again."""
         self.unconfirmed_move = False
         if self.estimate is not None:
-            self.undone_estimate = self.estimate.now()  # shown if the link went with it
             self.estimate.stop()
         self.window.buffer.drop_provisional()
         self.show_target(None)
@@ -393,31 +435,6 @@ class MachineState(QObject):
 
         self.failed = False
         self.window.status_line.clear_error()
-        caps = self.info.capabilities if self.info is not None else None
-        readout = self.window.readout
-        if (
-            isinstance(job, jobs.SetHomeJob)  # places that the device itself knows again
-            or (caps is not None and caps.homing and isinstance(job, jobs.HomeJob))
-            or (caps is not None and caps.absolute_moves and isinstance(job, jobs.MoveToJob))
-        ):
-            was_lost, self.position_lost = self.position_lost, False  # a known place again
-            if readout.status() in ("lost", "uncounted"):
-                readout.set_status("live")
-            if was_lost:  # the "position unknown" message goes: counting starts here
-                self._tell(_known_again(job))
-        elif (
-            self.position_lost and self.lost_status == "uncounted" and isinstance(job, jobs.HomeJob)
-        ):
-            self.position_lost = False  # the home move is confirmed: counting starts here
-            readout.set_status("live")
-            self._tell(translate("MainWindow", "home confirmed: the position is counted from here"))
-        known = (
-            jobs.SetHomeJob,
-            jobs.HomeJob,
-            *((jobs.MoveToJob,) if caps and caps.absolute_moves else ()),
-        )
-        if not self.position_lost and isinstance(job, known):
-            self.count_started = True  # the pi-frame's assumed origin at connection is not kept
         self.keep_count()  # Home, Set Home: counting starts
         if isinstance(job, jobs.SetSpeedJob) and isinstance(result, float) and result != job.speed:
             self._tell(

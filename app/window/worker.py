@@ -33,6 +33,7 @@ from drivers.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.messages import Message, message_of
 from drivers.motion import KIND_UNITS, Motion, MoveStart
 from drivers.parameters import Parameter
+from drivers.position_truth import Whereabouts
 from drivers.protocol_sniff import looks_like
 from drivers.protocols.base import Reply, Setting
 from drivers.protocols.firmata import StepperVersion, configure_stepper
@@ -68,6 +69,8 @@ class DeviceInfo:
     settings: tuple[Setting, ...] = ()
     """The protocol's settings (ticks per mm...), with their values at connection."""
     values: dict[str, float] = field(default_factory=dict)
+    whereabouts: Whereabouts | None = None
+    """What the session knows of the position once the device is ready."""
 
 
 @dataclass(frozen=True)
@@ -83,6 +86,7 @@ class ConnectOptions:
     rts: bool | None = None  # RTS when the port opens (None: as the port opens it, asserted)
     position: tuple[float, float, float] | None = None
     """Where a device that cannot be asked was left, as kept (None: not known)."""
+    after_loss: bool = False  # the device was lost with its link before (the session knows)
 
 
 @dataclass
@@ -127,6 +131,7 @@ class SerialWorker(QObject):
     device_ready = Signal(object)  # DeviceInfo
     traffic = Signal(list)  # list[Traffic], batched
     position_changed = Signal(object)  # PositionReport
+    whereabouts_changed = Signal(object)  # Whereabouts: the session's, when its link is lost
     target_changed = Signal(object)  # (x, y, z) or None
     speed_changed = Signal(float)
     speed_limits_changed = Signal(float, float)
@@ -304,6 +309,7 @@ class SerialWorker(QObject):
                 start=False,  # the handshake identifies the device first
                 abort=self._abort,
                 position=options.position,
+                after_loss=options.after_loss,
             )
         except MotionError as exc:
             failed: object = exc
@@ -375,6 +381,7 @@ class SerialWorker(QObject):
                 protocol.parameters,
                 protocol.settings,
                 dict(protocol.values),
+                self._session.where() if self._session is not None else None,
             )
         )
         self._idle_position = self._idle_stable = None
@@ -478,8 +485,16 @@ class SerialWorker(QObject):
             return
         self._flush_traffic()
         self._log_note(f"disconnected from {self._link.url}")  # the session log keeps English
+        self._tell_lost()  # a move under way when the operator disconnected: its estimate
         self._end_session()
         self.state_changed.emit("disconnected", "")
+
+    def _tell_lost(self) -> None:
+        """The link went: the session's account of the position then (the estimate at the
+        loss during a move), for the window."""
+        if self._session is not None:
+            self._session.truth.link_lost()
+            self.whereabouts_changed.emit(self._session.where())
 
     def _end_session(self) -> None:
         """Close the session (its port) and forget it."""
@@ -581,6 +596,7 @@ class SerialWorker(QObject):
         """The device stopped making sense: drop the queue, say so, then talk to it again."""
         dropped = self.cancel_pending()
         self._idle_position = self._idle_stable = None
+        self._tell_lost()
         self.target_changed.emit(None)
         self._recovering = str(exc)
         self._next_recover = time.monotonic() + (
@@ -607,6 +623,8 @@ class SerialWorker(QObject):
         motion = self._motion
         assert motion is not None
         self._next_recover = time.monotonic() + RECOVER_S
+        if self._session is not None:
+            self._session.truth.found_again()  # what it counted before is not trusted
         try:
             self._handshake()
         except PortError:
@@ -649,9 +667,11 @@ class SerialWorker(QObject):
             raise
         except MacroStopped as exc:  # the operator's stop, between two steps
             self._flush_traffic()
+            self._move_ended()
             self.job_stopped.emit(job, localized(exc))
         except MotionError as exc:
             self._flush_traffic()  # the console shows the traffic before the failure
+            self._move_ended()
             self.job_failed.emit(job, failure_text(job, exc))
         else:
             self._flush_traffic()
@@ -661,6 +681,11 @@ class SerialWorker(QObject):
                 self.target_changed.emit(None)  # stopped short of it: no target any more
             self.busy_changed.emit(False)
             self._next_poll = time.monotonic() + self.poll_idle_s
+
+    def _move_ended(self) -> None:
+        """A job failed or was stopped short: the session's last report stands."""
+        if self._session is not None:
+            self._session.truth.move_ended()
 
     def _dispatch(self, motion: Motion, job: jobs.Job) -> object:
         if isinstance(job, jobs.MoveToJob):
@@ -768,11 +793,12 @@ class SerialWorker(QObject):
             error = Message("{error}; not sent: {jobs}", error=error, jobs=_described(dropped))
         self._recovering = ""
         self._flush_traffic()
+        self._tell_lost()
         self._end_session()
         if self._ready_once and url and _watchable(url):
             if self._watch is None:
                 now = time.monotonic()
-                lost = replace(options, position=None)  # where it stands is not known now
+                lost = replace(options, position=None, after_loss=True)  # not known now
                 self._watch = _PortWatch(
                     url, protocol_name, self._baud, lost, _device_node(url),
                     next_look=now + PORT_WATCH_S, retry_at=now + PORT_RETRY_S,
