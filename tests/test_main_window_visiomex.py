@@ -32,7 +32,7 @@ def test_the_window_adapts_to_two_axes_and_commanded_positions(qtbot, window: Ma
     assert not window.coordinates.isHidden()
     assert window.readout.position() == (0.0, 0.0, 0.0)
     assert window.readout.measured_label.text() == "commanded, not measured"
-    assert "(15, 16) alone" in window.speed.note_label.text()
+    assert "(15, 16) alone" in window.speed.note()  # (its first clause shown, all in the tooltip)
     assert window.connection_bar.variant() == "seed" and window.connection_bar.baud() == 9600
     assert window.console.send_line.ending_combo.currentText() == "none"
     assert "relative move" in window.coordinates.home_button.toolTip()

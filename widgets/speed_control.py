@@ -21,6 +21,17 @@ from widgets._units import INCH, MM, MM_PER_INCH, UnitSpinBox, check_units
 log = logging.getLogger(__name__)
 
 SLIDER_STEPS = 1000
+EDGE = 3  # px around and between the rows: the panel fits a short column (1024×640)
+
+
+def lead(note: str) -> str:
+    """What the panel shows of a note on one line: its first clause (up to its first colon),
+    else its first sentence, else all of it; the whole note is the tooltip."""
+    for mark in (": ", ". "):
+        first, found, rest = note.partition(mark)
+        if found and first.strip() and rest.strip():
+            return first.strip()
+    return note
 
 
 class SpeedControl(QWidget):
@@ -37,6 +48,7 @@ class SpeedControl(QWidget):
         self._units = MM
         self._reported: float | None = None
         self._fixed = ""  # why the speed cannot be set here ("" when it can)
+        self._note = ""  # what setting the speed does on this device, in full
 
         label = QLabel(self.tr("Speed:"))
         label.setToolTip(self.tr("Speed of the next moves"))
@@ -78,21 +90,32 @@ class SpeedControl(QWidget):
         bottom.addWidget(self.reported_label, 1)
         self.note_label = QLabel()
         self.note_label.setObjectName("speedNote")
-        self.note_label.setWordWrap(True)
+        self.note_label.setWordWrap(True)  # (a long first clause wraps in a narrow column)
         self.note_label.setStyleSheet("color: #616161;")
         self.note_label.setVisible(False)
         layout = QVBoxLayout(self)
+        margins = layout.contentsMargins()
+        layout.setContentsMargins(margins.left(), EDGE, margins.right(), EDGE)
+        layout.setSpacing(EDGE)
         layout.addLayout(top)
         layout.addLayout(bottom)
         layout.addWidget(self.note_label)
+        layout.addStretch(1)  # extra height goes below the panel, not between its rows
         label.setBuddy(self.spin)
         self.set_range(0.0, 100.0)
 
     # -- programmatic API (emits nothing) ------------------------------------------------
 
     def set_note(self, text: str) -> None:
-        """Say what setting the speed does on this device (hidden when empty)."""
-        self.note_label.setText(text)
+        """Say what setting the speed does on this device (hidden when empty): its first clause
+        under the field (`lead`; "…" when there is more), all of it as the tooltip."""
+        self._note = text
+        shown = lead(text)
+        self.note_label.setText(shown if shown == text else f"{shown.rstrip('.')}…")
+        self.note_label.setToolTip(text)
+        self.note_label.setCursor(
+            Qt.CursorShape.WhatsThisCursor if shown != text else Qt.CursorShape.ArrowCursor
+        )
         self.note_label.setVisible(bool(text))
         tip = self.tr("Send the speed in the field to the device")
         self.apply_button.setToolTip(tip + (f"\n{text}" if text else ""))
@@ -109,7 +132,11 @@ class SpeedControl(QWidget):
                 widget.setToolTip(reason)
         else:
             self._range_tips()
-            self.set_note(self.note_label.text())
+            self.set_note(self._note)
+
+    def note(self) -> str:
+        """The note on what setting the speed does, in full ("" when none)."""
+        return self._note
 
     def fixed(self) -> str:
         """Why the speed cannot be set on this device ("" when it can)."""

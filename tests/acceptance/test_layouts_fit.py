@@ -60,6 +60,14 @@ def _switch(
     the size the window has on the screen then)."""
     before = _sequence(path)
     panel.key(KEYS[layout])
+    return _settled(panel, path, before, layout, also)
+
+
+def _settled(
+    panel: Panel, path: Path, before: int, layout: str, also: Callable[[Report], bool]
+) -> Report:
+    """The first report after report number `before` of `layout` settled: at the window's size
+    on the screen, its views made, and that `also` accepts."""
 
     def settled() -> Report | None:
         panel.alive()
@@ -146,8 +154,9 @@ def test_each_layout_fits_the_screen(
     tmp_path: Path,
     shots: Path,
 ) -> None:
-    """Ctrl+3, Ctrl+2, Ctrl+1 on a COXIRIS device, then Ctrl+2 on a Visiomex one (typed in
-    Port after the first went away): every control of each layout whole, the plots inside."""
+    """Ctrl+3, Ctrl+2, Ctrl+1 on a COXIRIS device, then Ctrl+2 and Ctrl+1 on a Visiomex one
+    (typed in Port after the first went away; its Operate has lines of its own: a speed note,
+    "position unknown"): every control of each layout whole, the plots inside."""
     x = x_server_of(size)
     path = tmp_path / "layout-report.json"
     sim = rig.sim("coxiris", "--speed", "100")
@@ -184,5 +193,37 @@ def test_each_layout_fits_the_screen(
         lambda r: bool(_controls(r)["parameterEditorPanel"].get("visible")),
     )
     rows = report["parameter_rows"]  # type: ignore[assignment]
+    check("operate", "visiomex")
     print(f"{label}: {rows} parameter rows whole in Set up; screenshots in {shots}")
+    assert not found, "\n".join(found)
+
+
+@pytest.mark.parametrize("lang", LANGUAGES)
+def test_operate_fits_on_a_piframe_device(
+    lang: str,
+    x_server_of: Callable[[tuple[int, int]], XServer],
+    rig: Rig,
+    tmp_path: Path,
+    shots: Path,
+) -> None:
+    """Operate on a pi-frame device, whose position panel has a line more ("position unknown"):
+    one panel on the largest screen, its window made the size of each screen in turn (smallest
+    first, as a window fitted to it): every control of Operate whole, the plots inside."""
+    x = x_server_of(SIZES[-1])
+    path = tmp_path / "layout-report.json"
+    panel = rig.panel(x, "--port", "sim://pi-frame", "--lang", lang, env={ENVIRONMENT: str(path)})
+    panel.wait_state("idle", 30.0)
+    left, top = panel.geometry()[:2]  # below and beside the window manager's frame
+    found: list[str] = []
+    for width, height in SIZES:
+        before = _sequence(path)
+        x.xdotool("windowsize", panel.window, str(width - left), str(height - top))
+        report = _settled(panel, path, before, "operate", lambda r: bool(r["connected"]))
+        label = f"{width}x{height}-{lang}"
+        where = f"operate (pi-frame) at {label} (window {report['window']})"
+        panel.screenshot(shots / f"operate-pi-frame-{label}.png")
+        text = json.dumps(report, indent=1)
+        (shots / f"operate-pi-frame-{label}.json").write_text(text, encoding="utf-8")
+        found.extend(problems(report, where, CONTROLS["operate"]))
+    print(f"pi-frame, {lang}: screenshots in {shots}")
     assert not found, "\n".join(found)
