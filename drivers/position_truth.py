@@ -101,7 +101,10 @@ class PositionTruth:
         """What is known of the position at this instant."""
         report, move = self._motion.last_position, self._move
         point = (report.x, report.y, report.z) if report is not None else None
+        known = report is not None and report.known
         if self._lost_at is not None:
+            if not known:  # not known before the link went: no estimate makes it known
+                return Whereabouts(LOST, point, report)
             if move is not None:
                 return Whereabouts(LOST_MOVING, move.estimate(self._lost_at), report)
             return Whereabouts(STALE, point, report)

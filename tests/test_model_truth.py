@@ -25,7 +25,9 @@ import pytest
 from hypothesis import strategies as st
 from hypothesis.stateful import rule
 
+from drivers.errors import CommunicationError
 from drivers.events import PositionReport
+from drivers.position_truth import LOST, LOST_MOVING, STALE
 from drivers.protocols.base import Protocol
 from drivers.session import ProgressListener
 from drivers.toolpath.model import Toolpath
@@ -149,7 +151,21 @@ class TruthMachine(OperatorMachine):
                 f"{self.profile.protocol}: the device vanished at {at_kill} mm during a "
                 f"go to {target}; the session reported {report}; steps: {self.history}"
             )
+        elif isinstance(report, CommunicationError):
+            self._lost_on_the_way(before, target)
         self._reopen()
+
+    def _lost_on_the_way(self, before: Point, target: Point) -> None:
+        """The link went with the move: `where` marks the position as not known, and its
+        estimate at the loss lies on the way from where the move began to its target."""
+        where = self.session.where()
+        assert where.status in (LOST_MOVING, STALE, LOST) and not where.known, (where, self.history)
+        self.checked[where.status] += 1
+        if where.status == LOST_MOVING and where.point is not None and self.counting:
+            margin = self.profile.step + KILL_MARGIN
+            for axis, (a, b) in enumerate(zip(before, target, strict=True)):
+                low, high = min(a, b) - margin, max(a, b) + margin
+                assert low <= where.point[axis] <= high, (where, before, target, self.history)
 
     def teardown(self) -> None:
         """Close the session and stop the simulator."""
