@@ -6,7 +6,7 @@ import pytest
 from PySide6.QtCore import QSize, Qt
 from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QWidget
 
-from app.window.dock_balance import DockBalance, balanced_heights, need, stacked
+from app.window.dock_balance import DockBalance, balanced_heights, kept_height, need, stacked
 
 pytestmark = pytest.mark.timeout(60)
 LEFT = Qt.DockWidgetArea.LeftDockWidgetArea
@@ -33,20 +33,23 @@ class Tall(QLabel):
         return QSize(120, 20)
 
 
+def _dock(window: QMainWindow, name: str, height: int) -> QDockWidget:
+    dock = QDockWidget(name, window)
+    dock.setObjectName(name)
+    dock.setWidget(Tall(height))
+    return dock
+
+
 def _window(qtbot, heights: list[int]) -> tuple[QMainWindow, list[QDockWidget], QDockWidget]:
     window = QMainWindow()
     qtbot.addWidget(window)
     window.setCentralWidget(QWidget())
     docks = []
     for number, height in enumerate(heights):
-        dock = QDockWidget(f"dock {number}", window)
-        dock.setObjectName(f"dock{number}")
-        dock.setWidget(Tall(height))
+        dock = _dock(window, f"dock{number}", height)
         window.addDockWidget(LEFT, dock)
         docks.append(dock)
-    bottom = QDockWidget("bottom", window)
-    bottom.setObjectName("bottom")
-    bottom.setWidget(Tall(300))
+    bottom = _dock(window, "bottom", 300)
     window.addDockWidget(BOTTOM, bottom)
     window.setCorner(Qt.Corner.BottomLeftCorner, LEFT)
     window.resize(900, 800)
@@ -128,3 +131,30 @@ def test_a_tab_brought_in_front_under_the_views_gets_its_height(qtbot) -> None:
     window.tabifiedDockWidgetActivated.emit(arc)  # as a click on its tab does
     arc.raise_()
     qtbot.waitUntil(lambda: arc.height() == need(arc) > 420)
+
+
+# Issue 28 item 26: at 1024×640 Go to lost its tab bar's height, Home and Set Home cut.
+def test_a_left_balance_keeps_the_height_of_a_tab_group_below(qtbot) -> None:
+    window = QMainWindow()
+    qtbot.addWidget(window)
+    window.setCentralWidget(QWidget())
+    docks = [_dock(window, f"left{n}", height) for n, height in enumerate((40, 420, 40))]
+    for dock in docks:
+        window.addDockWidget(LEFT, dock)
+    goto, program = _dock(window, "goto", 150), _dock(window, "program", 150)
+    window.addDockWidget(BOTTOM, goto)
+    window.tabifyDockWidget(goto, program)
+    goto.raise_()
+    window.setCorner(Qt.Corner.BottomLeftCorner, LEFT)
+    window.resize(900, 800)
+    window.show()
+    qtbot.waitExposed(window)
+    window.resizeDocks([goto], [200], Qt.Orientation.Vertical)
+    window.resizeDocks(docks, [240, 240, 240], Qt.Orientation.Vertical)  # the tall one is short
+    qtbot.waitUntil(lambda: docks[1].height() < docks[1].sizeHint().height())
+    qtbot.waitUntil(lambda: goto.height() > 0 and not goto.visibleRegion().isEmpty())
+    height, group = goto.height(), kept_height(window, goto)
+    assert group > height  # its tab bar is counted
+    DockBalance(window, LEFT).start()
+    qtbot.waitUntil(lambda: docks[1].height() >= docks[1].sizeHint().height())
+    assert goto.height() == height  # (set in the same layout pass as the left column)
