@@ -7,13 +7,13 @@ import re
 from pathlib import Path
 
 import pytest
-from PySide6.QtCore import Qt
 
 from app.window.main_window import MainWindow
 from drivers.decoding import StreamDecoder
 from drivers.log_reader import parse_log
 from drivers.log_records import LogRecord
 from drivers.registry import create_protocol
+from tests.test_status_truth import pause_a_laser_zigzag
 from widgets import status_line as status
 
 pytestmark = pytest.mark.timeout(60)
@@ -54,22 +54,9 @@ def test_the_held_moves_note_reaches_the_session_log_while_the_program_runs(
     """Pause mid-program: the "still holds N moves" note is in the session log before Stop
     (the worker is busy with the program until then), N as the device's last GET_STATUS
     before it says, and before the queue's 0; the "has run what it held" note after that."""
-    with qtbot.waitSignal(window.settled, timeout=10000):
-        window.connect_device("sim://laser-frame?queue=8", "laser-frame", 115200)
+    pause_a_laser_zigzag(qtbot, window, tmp_path)
     log = window.link.session_log_path
     assert log is not None
-    path = tmp_path / "zigzag.csv"
-    rows = [f"{i * 0.5:g},{(i % 2) * 2:g},0,5" for i in range(1, 41)]  # 16 s at 5 mm/s
-    path.write_text("x,y,z,speed\n" + "\n".join(rows) + "\n")
-    panel = window.devices.program
-    panel._choose_path = lambda: str(path)  # type: ignore[method-assign]
-    qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
-    qtbot.waitUntil(lambda: not window.devices.programs.reading, timeout=5000)
-    qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
-    qtbot.waitUntil(lambda: device.queue_length() >= 6, timeout=10000)
-    qtbot.mouseClick(panel.pause_button, Qt.MouseButton.LeftButton)
-    qtbot.waitUntil(lambda: window.status_line.state() == status.PAUSED, timeout=5000)
     paused_at = len(_records(log))
 
     def noted(text: str) -> int | None:

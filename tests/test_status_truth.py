@@ -11,12 +11,33 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.window.main_window import MainWindow
+from drivers.sim.laser_device import LaserDevice
 from widgets import status_line as status
 from widgets.position_readout import PositionReadout
 
 pytestmark = pytest.mark.timeout(60)
 
 _HOLDS = re.compile(r"still holds (\d+) move\(s\).* in about (\d+) s")
+
+
+def pause_a_laser_zigzag(qtbot, window: MainWindow, tmp_path: Path) -> LaserDevice:
+    """A laser-frame device (a queue of 8) running a 16 s zigzag, paused once 6 moves are
+    queued on it; its simulated device."""
+    with qtbot.waitSignal(window.settled, timeout=10000):
+        window.connect_device("sim://laser-frame?queue=8", "laser-frame", 115200)
+    path = tmp_path / "zigzag.csv"
+    rows = [f"{i * 0.5:g},{(i % 2) * 2:g},0,5" for i in range(1, 41)]  # 16 s at 5 mm/s
+    path.write_text("x,y,z,speed\n" + "\n".join(rows) + "\n")
+    panel = window.devices.program
+    panel._choose_path = lambda: str(path)  # type: ignore[method-assign]
+    qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: not window.devices.programs.reading, timeout=5000)
+    qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
+    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    qtbot.waitUntil(lambda: device.queue_length() >= 6, timeout=10000)
+    qtbot.mouseClick(panel.pause_button, Qt.MouseButton.LeftButton)
+    qtbot.waitUntil(lambda: window.status_line.state() == status.PAUSED, timeout=5000)
+    return device
 
 
 def test_the_off_notice_goes_when_the_parameter_write_ends(qtbot, window: MainWindow) -> None:
@@ -44,20 +65,7 @@ def test_disconnect_replaces_connected_to(qtbot, window: MainWindow) -> None:
 def test_a_paused_laser_program_says_what_the_device_still_holds(
     qtbot, window: MainWindow, tmp_path: Path
 ) -> None:
-    with qtbot.waitSignal(window.settled, timeout=10000):
-        window.connect_device("sim://laser-frame?queue=8", "laser-frame", 115200)
-    path = tmp_path / "zigzag.csv"
-    rows = [f"{i * 0.5:g},{(i % 2) * 2:g},0,5" for i in range(1, 41)]  # 16 s at 5 mm/s
-    path.write_text("x,y,z,speed\n" + "\n".join(rows) + "\n")
-    panel = window.devices.program
-    panel._choose_path = lambda: str(path)  # type: ignore[method-assign]
-    qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
-    qtbot.waitUntil(lambda: not window.devices.programs.reading, timeout=5000)
-    qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
-    qtbot.waitUntil(lambda: device.queue_length() >= 6, timeout=10000)
-    qtbot.mouseClick(panel.pause_button, Qt.MouseButton.LeftButton)
-    qtbot.waitUntil(lambda: window.status_line.state() == status.PAUSED, timeout=5000)
+    device = pause_a_laser_zigzag(qtbot, window, tmp_path)
     seen: list[re.Match[str]] = []
 
     def said_held() -> bool:
