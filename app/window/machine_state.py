@@ -62,7 +62,6 @@ class MachineState(QObject):
         self.lost_status = "lost"  # or "uncounted": a fresh connection, nothing counted yet
         self.last_position: Point | None = None
         self.true_position: Point | None = None  # reported, not estimated
-        self.true_known = False  # the last report is from a known place (the session's)
         self.count_kept: Point | None = None  # (Visiomex, Firmata, pi-frame: keep_count)
         self.resumed_from: Point | None = None  # the kept position the connection goes on from
         self.at_loss: Whereabouts | None = None  # the session's account when its link went
@@ -81,8 +80,9 @@ class MachineState(QObject):
 
     @position_lost.setter
     def position_lost(self, lost: bool) -> None:
-        self._position_lost = lost
-        self.show_unknown_to_program()
+        if lost != self._position_lost:
+            self._position_lost = lost
+            self.show_unknown_to_program()
 
     def show_unknown_to_program(self) -> None:
         """The Program dock's Run is off while the position is unknown, saying why."""
@@ -197,7 +197,6 @@ class MachineState(QObject):
         known_as = where.status if where is not None else LIVE
         self.position_lost = known_as in UNKNOWN
         self.lost_status = known_as if self.position_lost else "lost"
-        self.true_known = not self.position_lost
         if self.link_failed and not another:  # the same device after a lost link or a restart
             self._tell(
                 translate(
@@ -278,7 +277,6 @@ class MachineState(QObject):
     # -- the position ------------------------------------------------------------------------
     def _on_position(self, report: PositionReport) -> None:
         self.true_position = (report.x, report.y, report.z)
-        self.true_known = report.known
         self.unconfirmed_move = False
         self._follow_known(report)
         window = self.window
@@ -318,7 +316,7 @@ class MachineState(QObject):
         info, here = self.info, self.true_position
         if info is None or not keeps_position(info.capabilities) or here is None:
             return
-        if not self.true_known or self.position_lost or here == self.count_kept:
+        if self.position_lost or here == self.count_kept:
             return
         self.count_kept = here
         write_counted_position(self.window.settings, info.protocol, info.port, here)
