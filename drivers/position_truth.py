@@ -93,10 +93,6 @@ class PositionTruth:
         if self._lost_at is None:
             self._lost_at = self.clock()
 
-    def moving(self) -> MoveStart | None:
-        """The move under way, unconfirmed by any report (None: none)."""
-        return self._move
-
     def now(self) -> Whereabouts:
         """What is known of the position at this instant."""
         report, move = self._motion.last_position, self._move
@@ -110,7 +106,7 @@ class PositionTruth:
             return Whereabouts(STALE, point, report)
         if report is None and self._motion.capabilities.position_feedback:
             return Whereabouts(UNREAD, None)
-        if report is None or not report.known:
+        if not known:
             return Whereabouts(LOST if self.after_loss else UNCOUNTED, point, report)
         if move is not None:
             return Whereabouts(ESTIMATED, move.estimate(self.clock()), report)
