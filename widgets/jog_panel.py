@@ -97,6 +97,7 @@ class JogPanel(QWidget):
         self._held: tuple[str, float] | None = None
         self._held_key: int | None = None
         self._releases = KeyReleases()  # of the jog and step keys
+        self._down_after_pair: int | None = None  # a jog key still down after a split pair
         self._held_button: QPushButton | None = None
         self.buttons: dict[tuple[str, float], QPushButton] = {}
 
@@ -350,7 +351,8 @@ class JogPanel(QWidget):
         Meta are left alone, and so is everything while disabled.
         """
         key = int(getattr(key, "value", key))
-        if not auto_repeat and self.is_repeat(key, timestamp):
+        paired = not auto_repeat and self.is_repeat(key, timestamp)
+        if paired:
             log.info("jog key %#x pressed at its release's time: paired with its release", key)
             auto_repeat = True
         bits = modifier_bits(modifiers)
@@ -364,7 +366,11 @@ class JogPanel(QWidget):
         axis, direction = target
         if axis not in self._axes:
             return False
-        if not auto_repeat:  # an auto-repeat, even one queued before the release, starts nothing
+        if auto_repeat:  # an auto-repeat, even one queued before the release, starts nothing
+            if paired:
+                self._down_after_pair = key  # its real release is still to come
+        else:
+            self._down_after_pair = None
             self._held_key = key
             self._held_button = None
             self._jog(axis, direction, bool(bits & _SHIFT))
@@ -385,6 +391,11 @@ class JogPanel(QWidget):
             return True
         if not auto_repeat and key == self._held_key:
             self.release()
+        elif not auto_repeat and key == self._down_after_pair:
+            # The key is let go at last: a step still under way (its split release was taken
+            # for a tap's) is told so, and stops where the device can stop; none starts.
+            self._down_after_pair = None
+            self.jog_released.emit()
         return True
 
     def keyPressEvent(self, event: QKeyEvent) -> None:
@@ -422,7 +433,7 @@ class JogPanel(QWidget):
 
     def release(self) -> None:
         """End the held jog (a key or button released, or the window lost the keyboard)."""
-        self._held_key = None
+        self._held_key = self._down_after_pair = None
         self._held_button = None
         if self._held is not None:
             self._held = None
@@ -430,7 +441,7 @@ class JogPanel(QWidget):
 
     def _button_pressed(self, axis: str, direction: float) -> None:
         shift = bool(modifier_bits(QApplication.keyboardModifiers()) & _SHIFT)
-        self._held_key = None
+        self._held_key = self._down_after_pair = None
         self._held_button = self.buttons[(axis, direction)]
         self._jog(axis, direction, shift)
 
