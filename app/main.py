@@ -16,7 +16,7 @@ from app.common.settings import DEFAULT_PORT, DEFAULT_PROTOCOL, open_settings
 from app.window.gc_main_thread import collect_for
 from app.window.main_window import MainWindow
 from app.window.preferences import read_preferences
-from drivers.registry import get_protocol_class, protocol_names
+from drivers.protocols.registry import get_protocol_class, protocol_names
 from widgets.gl_share import share_opengl_contexts  # imports no OpenGL, no numpy
 
 log = logging.getLogger("motionpanel")

@@ -57,8 +57,8 @@ def _console() -> object:
     """A shown console decoding COXIRIS, as the window has it."""
     from PySide6.QtWidgets import QApplication
 
-    from app.window.traffic_console import RawConsole
-    from drivers.registry import create_protocol
+    from app.window.console.traffic_console import RawConsole
+    from drivers.protocols.registry import create_protocol
 
     QApplication.instance() or QApplication([])
     console = RawConsole()
@@ -107,7 +107,7 @@ def trim(lines: int) -> dict[str, float]:
     """One trim of a console limited to `lines` lines holding 10% more (ms), following the
     tail and scrolled up (the median of 3 each, fed without a limit to the limit and its margin
     before each)."""
-    from app.window.traffic_console import TRIM_MARGIN
+    from app.window.console.traffic_console import TRIM_MARGIN
 
     console = _console()
     timings: dict[str, list[float]] = {}
@@ -370,8 +370,8 @@ TRACED = (  # Python functions the tracer times too: (module, class, method)
     ("widgets.position_view_2d", "PositionView2D", "_follow_time"),
     ("widgets.position_view_3d", "PositionView3D", "refresh"),
     ("widgets.position_view_3d", "PositionView3D", "render_scene"),
-    ("app.window.traffic_pacing", "FeedPacer", "take_pending"),
-    ("app.window.traffic_console", "RawConsole", "_show_new"),
+    ("app.window.console.pacing", "FeedPacer", "take_pending"),
+    ("app.window.console.traffic_console", "RawConsole", "_show_new"),
     ("widgets.traffic_timeline", "TrafficTimeline", "refresh"),
     ("pyqtgraph.graphicsItems.ViewBox.ViewBox", "ViewBox", "setRange"),
     ("pyqtgraph.graphicsItems.GridItem", "GridItem", "generatePicture"),

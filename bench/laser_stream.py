@@ -10,8 +10,8 @@ from __future__ import annotations
 import math
 import time
 
-from drivers.program import ProgramPoint
-from drivers.session import open_device
+from drivers.session.device_session import open_device
+from drivers.toolpath.point_program import ProgramPoint
 
 
 def _program(count: int) -> list[ProgramPoint]:

@@ -52,9 +52,9 @@ def measure(lines: int, trail_points: int, frames: int) -> dict[str, object]:
     QApplication.instance() or QApplication([])
     from trail_frame import SIZE, _buffer, _frames, raster_path
 
+    from drivers.device.travel import TravelLimits
     from drivers.toolpath.gcode import parse_gcode
     from drivers.toolpath.geometry import check_travel, flatten, summarize
-    from drivers.travel import TravelLimits
     from widgets.position_view_2d import PositionView2D
     from widgets.position_view_3d import PositionView3D, make_position_view_3d
 

@@ -25,10 +25,10 @@ from bench import bridge_latency, ser2net_latency, startup  # noqa: E402
 from bench.laser_stream import bench_laser_stream  # noqa: E402
 from bench.motionsim import motionsim  # noqa: E402
 from bench.visiomex_write import bench_visiomex_write  # noqa: E402
-from drivers import commands as cmd  # noqa: E402
+from drivers.device import commands as cmd  # noqa: E402
 from drivers.framers.lines import LineFramer  # noqa: E402
 from drivers.protocols.coxiris import CoxirisProtocol  # noqa: E402
-from drivers.session import open_device  # noqa: E402
+from drivers.session.device_session import open_device  # noqa: E402
 
 log = logging.getLogger("bench")
 
@@ -147,7 +147,7 @@ def bench_move_overhead(moves: int) -> dict[str, float]:
 
 def bench_traffic_memory(records: int) -> dict[str, float]:
     """Memory held by a traffic tap's records (what a log keeps per byte)."""
-    from drivers.traffic import Traffic
+    from drivers.traffic.records import Traffic
 
     tracemalloc.start()
     kept = [

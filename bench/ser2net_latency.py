@@ -25,9 +25,9 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from drivers.transport import Link, open_link  # noqa: E402
-from tests.ser2net_proc import SER2NET, Ser2netProcess  # noqa: E402
-from tests.simproc import SimProcess  # noqa: E402
+from drivers.link.transport import Link, open_link  # noqa: E402
+from tests.support.ser2net_proc import SER2NET, Ser2netProcess  # noqa: E402
+from tests.support.simproc import SimProcess  # noqa: E402
 
 QUERY = b"GET_POSITION\n"
 ANSWER_END = b"\r\n"

@@ -9,9 +9,9 @@ from __future__ import annotations
 import time
 
 from bench.motionsim import motionsim
-from drivers.protocols.visiomex_model import SILENCE
-from drivers.protocols.visiomex_params import PARAMETERS
-from drivers.session import open_device
+from drivers.protocols.visiomex.model import SILENCE
+from drivers.protocols.visiomex.params import PARAMETERS
+from drivers.session.device_session import open_device
 
 
 def bench_visiomex_write(count: int = len(PARAMETERS)) -> dict[str, float]:

@@ -6,9 +6,10 @@ import gc
 import os
 from collections.abc import Iterator
 
-from tests.worker_display import own_display_per_worker
+from tests.support.worker_display import own_display_per_worker
 
-own_display_per_worker()  # two test files at a time: a display each (tests/worker_display.py)
+# two test files at a time: a display each (tests/support/worker_display.py)
+own_display_per_worker()
 
 # Qt tests run headless unless a display is there (Xvfb in CI, for the OpenGL tests).
 _PLATFORM = os.environ.get("QT_QPA_PLATFORM")  # as the run was started
@@ -26,12 +27,12 @@ import pytest
 from PySide6.QtCore import QCoreApplication, QTranslator
 
 from app.window.main_window import MainWindow
-from drivers.client import Client
-from drivers.motion import Motion
+from drivers.device.client import Client
+from drivers.device.motion import Motion
+from drivers.link.transport import Link, open_link
 from drivers.protocols.coxiris import CoxirisProtocol
-from drivers.traffic import Traffic
-from drivers.transport import Link, open_link
-from tests.simproc import SimProcess
+from drivers.traffic.records import Traffic
+from tests.support.simproc import SimProcess
 
 
 class Recorder:

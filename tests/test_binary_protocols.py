@@ -6,11 +6,12 @@ import struct
 
 import pytest
 
-from drivers import commands as cmd
-from drivers.client import Client
+from drivers.device import commands as cmd
+from drivers.device.client import Client
+from drivers.device.events import ErrorReport, Feedback, TextLine
+from drivers.device.motion import Motion
 from drivers.errors import BadInput, DeviceError, DeviceTimeout
-from drivers.events import ErrorReport, Feedback, TextLine
-from drivers.motion import Motion
+from drivers.link.transport import open_link
 from drivers.protocols.firmata import (
     FirmataProtocol,
     StepperConfig,
@@ -21,7 +22,6 @@ from drivers.protocols.firmata import (
     step_parts,
 )
 from drivers.protocols.piframe import PiFrameProtocol
-from drivers.transport import open_link
 
 FIRMATA_REFERENCE = [  # PROTOCOLS.md §5: PyMata 2.20 / pymata4 1.15, byte for byte
     (StepperConfig(200, (8, 9)), "F0 72 00 48 01 08 09 F7"),

@@ -3,7 +3,7 @@
 
 Nothing waits by sleeping: a test waits for a line on a process's output, for bytes on a
 descriptor or for a condition, each with a deadline. What the device saw is its own `--record`;
-what the bridge saw is its `--log`; both are read back with drivers.log_reader.read_log.
+what the bridge saw is its `--log`; both are read back with drivers.traffic.log_reader.read_log.
 """
 
 from __future__ import annotations
@@ -25,11 +25,11 @@ from pathlib import Path
 
 import pytest
 
-from drivers.bridge import Bridge, DeviceVanished
 from drivers.errors import PortError
-from drivers.log_reader import LogRecord, read_log
-from drivers.traffic import RX, TX, Traffic
-from tests.simproc import ROOT, SimProcess
+from drivers.link.bridge import Bridge, DeviceVanished
+from drivers.traffic.log_reader import LogRecord, read_log
+from drivers.traffic.records import RX, TX, Traffic
+from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]
 
@@ -306,7 +306,7 @@ def test_a_failing_tap_is_logged_and_forwarding_goes_on(
         raise RuntimeError("disk full")
 
     with (
-        caplog.at_level(logging.ERROR, logger="drivers.bridge"),
+        caplog.at_level(logging.ERROR, logger="drivers.link.bridge"),
         Bridge(device.path, 115200, tap) as bridge,
     ):
         device.opened()

@@ -7,8 +7,8 @@ from __future__ import annotations
 import pytest
 
 from app.window.main_window import MainWindow
-from tests.motionctl_run import run_motionctl
-from tests.simproc import SimProcess
+from tests.support.motionctl_run import run_motionctl
+from tests.support.simproc import SimProcess
 
 pytestmark = pytest.mark.timeout(90)
 

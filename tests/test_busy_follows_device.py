@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from app.window.main_window import MainWindow
-from tests.simproc import SimProcess
+from tests.support.simproc import SimProcess
 from widgets import status_line as status
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60)]

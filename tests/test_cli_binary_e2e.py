@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.e2e_support import (
+from tests.support.e2e import (
     Run,
     device_received,
     device_sent,
@@ -25,7 +25,7 @@ from tests.e2e_support import (
     sent,
     traffic,
 )
-from tests.simproc import SimProcess
+from tests.support.simproc import SimProcess
 
 pytestmark = pytest.mark.usefixtures("settings_file")  # motionctl writes the settings
 

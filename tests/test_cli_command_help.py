@@ -10,7 +10,7 @@ import pytest
 
 from app.cli.command_line import COMMANDS, usage_of
 from app.cli.main import main
-from tests.simproc import ROOT
+from tests.support.simproc import ROOT
 
 pytestmark = [pytest.mark.usefixtures("settings_file"), pytest.mark.timeout(60)]
 

@@ -16,15 +16,15 @@ from app.cli.report import plain_error
 from app.common import macros
 from app.common.macros import Macro
 from app.common.settings import open_settings, read_speed
-from drivers import commands as cmd
-from drivers.client import Client
+from drivers.device import commands as cmd
+from drivers.device.client import Client
+from drivers.device.motion import Motion
+from drivers.link.transport import open_link
 from drivers.messages import Message, plain_number
-from drivers.motion import Motion
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.protocols.firmata import FirmataProtocol
-from drivers.traffic import TrafficLogWriter
-from drivers.transport import open_link
-from tests.simproc import ROOT
+from drivers.traffic.records import TrafficLogWriter
+from tests.support.simproc import ROOT
 
 pytestmark = pytest.mark.timeout(60)
 

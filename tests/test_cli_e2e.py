@@ -14,8 +14,8 @@ from pathlib import Path
 import pytest
 import serial
 
-from tests.e2e_support import device_received_text
-from tests.simproc import ROOT, SimProcess
+from tests.support.e2e import device_received_text
+from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60)]
 
@@ -241,7 +241,7 @@ def test_travel_limits_saved_by_the_panel_apply(sim: SimProcess, settings_file: 
     from PySide6.QtCore import QSettings
 
     from app.common.settings import write_travel
-    from drivers.travel import TravelLimits
+    from drivers.device.travel import TravelLimits
 
     settings = QSettings(str(settings_file), QSettings.Format.IniFormat)
     write_travel(settings, "coxiris", sim.path, TravelLimits(((-5, 5), (-5, 5), (0, 1))))

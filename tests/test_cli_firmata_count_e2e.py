@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.e2e_support import Run, device_received, motionctl
-from tests.simproc import SimProcess
+from tests.support.e2e import Run, device_received, motionctl
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.usefixtures("settings_file"), pytest.mark.timeout(90)]
 STEP = bytes.fromhex("F07201")  # STEPPER_DATA, STEPPER_STEP

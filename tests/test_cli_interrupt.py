@@ -21,9 +21,9 @@ import pytest
 
 from drivers.errors import BadFile
 from drivers.framers.stuffed import StuffedFramer
-from drivers.protocols.laser_codec import decode_instructions
-from tests.e2e_support import device_received
-from tests.simproc import ROOT, SimProcess
+from drivers.protocols.laser.codec import decode_instructions
+from tests.support.e2e import device_received
+from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]
 
@@ -156,10 +156,10 @@ def test_ctrl_c_without_a_stop_says_what_the_coxiris_device_does_next(sim_factor
 
 def test_ctrl_c_before_a_move_is_sent_says_the_stage_does_not_move() -> None:
     from app.cli.interrupt import MoveTracker, after_interrupt
-    from drivers.client import Client
-    from drivers.motion import Motion
-    from drivers.registry import create_protocol
-    from drivers.transport import open_link
+    from drivers.device.client import Client
+    from drivers.device.motion import Motion
+    from drivers.link.transport import open_link
+    from drivers.protocols.registry import create_protocol
 
     link = open_link("sim://coxiris", 115200)
     try:

@@ -12,8 +12,8 @@ from collections.abc import Iterator
 
 import pytest
 
-from tests.e2e_support import Run, motionctl
-from tests.simproc import SimProcess
+from tests.support.e2e import Run, motionctl
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.usefixtures("settings_file"), pytest.mark.timeout(120)]
 TICKS_PER_MM = 100  # the pi-frame's default setting

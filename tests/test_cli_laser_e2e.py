@@ -21,10 +21,10 @@ from pathlib import Path
 import pytest
 
 from drivers.framers.stuffed import StuffedFramer
-from drivers.protocols.laser_codec import FLOAT, INT16, crc16, decode_instructions
-from tests import e2e_support
-from tests.e2e_support import Record, Run, stream, traffic
-from tests.simproc import SimProcess
+from drivers.protocols.laser.codec import FLOAT, INT16, crc16, decode_instructions
+from tests.support import e2e as e2e_support
+from tests.support.e2e import Record, Run, stream, traffic
+from tests.support.simproc import SimProcess
 
 pytestmark = pytest.mark.usefixtures("settings_file")  # motionctl reads and writes the settings
 

@@ -12,9 +12,9 @@ from pathlib import Path
 
 import pytest
 
-from tests.e2e_support import motionctl
-from tests.program_files import Drawings, write_drawings
-from tests.simproc import SimProcess
+from tests.support.e2e import motionctl
+from tests.support.program_files import Drawings, write_drawings
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.usefixtures("settings_file"), pytest.mark.timeout(120)]
 

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.e2e_support import device_received_text
-from tests.simproc import ROOT, SimProcess
+from tests.support.e2e import device_received_text
+from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60)]
 

@@ -16,13 +16,13 @@ from pathlib import Path
 
 import pytest
 
-from drivers.param_profile import format_profile
-from drivers.protocols.visiomex import VisiomexProtocol
-from drivers.protocols.visiomex_params import PARAMETERS
-from drivers.traffic import Traffic, hexdump_lines
-from tests import e2e_support
-from tests.e2e_support import Run, device_received, sent, stream, traffic
-from tests.simproc import SimProcess
+from drivers.device.param_profile import format_profile
+from drivers.protocols.visiomex.params import PARAMETERS
+from drivers.protocols.visiomex.protocol import VisiomexProtocol
+from drivers.traffic.records import Traffic, hexdump_lines
+from tests.support import e2e as e2e_support
+from tests.support.e2e import Run, device_received, sent, stream, traffic
+from tests.support.simproc import SimProcess
 
 pytestmark = pytest.mark.usefixtures("settings_file")  # motionctl writes the settings
 SET_SECONDS = 1.0  # the firmware's silence window: no reply, and no second packet, sooner
@@ -382,7 +382,8 @@ def test_malformed_profiles_are_refused_naming_the_file(
 @pytest.mark.e2e
 @pytest.mark.timeout(5)
 def test_the_log_reader_rebuilds_records(tmp_path: Path) -> None:
-    """The hexdump reader, on what drivers/traffic.py writes: records apart, long ones whole."""
+    """The hexdump reader, on what drivers/traffic/records.py writes: records apart, long ones
+    whole."""
     records = [
         Traffic("tx", b"S03000382NNNNNNNNN", 10.0),
         Traffic("rx", b"FS0003\r\n", 11.0),

@@ -13,9 +13,9 @@ from pathlib import Path
 import pytest
 
 from app.common.settings import open_settings, read_counted_position
-from tests import e2e_support
-from tests.e2e_support import Run
-from tests.simproc import SimProcess
+from tests.support import e2e as e2e_support
+from tests.support.e2e import Run
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.usefixtures("settings_file")]
 STEP = 0.025  # mm: 10 mm a turn, 400 full steps, ×1 at power-on

@@ -11,8 +11,8 @@ from PySide6.QtWidgets import QPushButton
 
 from app.common.settings import read_counted_position
 from app.window.main_window import MainWindow
-from tests import e2e_support
-from tests.e2e_support import sent
+from tests.support import e2e as e2e_support
+from tests.support.e2e import sent
 
 pytestmark = pytest.mark.timeout(60)
 URL = "sim://visiomex?instant=1"

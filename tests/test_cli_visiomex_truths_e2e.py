@@ -14,9 +14,9 @@ from pathlib import Path
 import pytest
 
 from app.common.settings import open_settings, read_counted_position, write_counted_position
-from tests import e2e_support
-from tests.e2e_support import Run, device_received, sent, stream
-from tests.simproc import SimProcess
+from tests.support import e2e as e2e_support
+from tests.support.e2e import Run, device_received, sent, stream
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.usefixtures("settings_file")]
 

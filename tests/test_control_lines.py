@@ -9,14 +9,14 @@ from collections.abc import Iterator
 
 import pytest
 
-from drivers.control_lines import ControlLines
 from drivers.errors import BadInput, NoControlLines
+from drivers.link.control_lines import ControlLines
+from drivers.link.transport import Link, open_link
 from drivers.sim.clock import ManualClock
 from drivers.sim.coxiris_device import CoxirisDevice
 from drivers.sim.faults import FaultyDevice
 from drivers.sim.firmata_device import FirmataDevice
 from drivers.sim.piframe_device import PiFrameDevice
-from drivers.transport import Link, open_link
 
 pytestmark = pytest.mark.timeout(20)
 

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from drivers import commands as cmd
+from drivers.device import commands as cmd
+from drivers.device.events import Ack, Done, ErrorReport, PositionReport, TextLine
 from drivers.errors import BadInput, DeviceError, GarbledReply
-from drivers.events import Ack, Done, ErrorReport, PositionReport, TextLine
 from drivers.protocols.coxiris import CoxirisProtocol
 
 P = CoxirisProtocol()

@@ -6,7 +6,7 @@ import pytest
 from PySide6.QtCore import QSize, Qt
 from PySide6.QtWidgets import QDockWidget, QLabel, QMainWindow, QWidget
 
-from app.window.dock_balance import DockBalance, balanced_heights, kept_height, need, stacked
+from app.window.layout.dock_balance import DockBalance, balanced_heights, kept_height, need, stacked
 
 pytestmark = pytest.mark.timeout(60)
 LEFT = Qt.DockWidgetArea.LeftDockWidgetArea

@@ -10,7 +10,7 @@ from PySide6.QtCore import QEvent, Qt
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QApplication
 
-from app.window import jobs
+from app.window.device import jobs
 from app.window.main_window import MainWindow
 from widgets import status_line as status
 

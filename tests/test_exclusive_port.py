@@ -11,8 +11,8 @@ import pytest
 from app.cli.main import EXIT_NO_DEVICE
 from app.window.main_window import MainWindow
 from drivers.errors import PortBusy
-from drivers.transport import open_link
-from tests.simproc import ROOT, SimProcess
+from drivers.link.transport import open_link
+from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [
     pytest.mark.e2e,

@@ -12,8 +12,8 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QPushButton
 
 from app.window.main_window import MainWindow
-from tests.relay import wait_in_gui
-from tests.simproc import SimProcess
+from tests.support.relay import wait_in_gui
+from tests.support.simproc import SimProcess
 
 pytestmark = pytest.mark.timeout(60)
 

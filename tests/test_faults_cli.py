@@ -13,8 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.e2e_support import ROOT, motionctl
-from tests.simproc import SimProcess
+from tests.support.e2e import ROOT, motionctl
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(90)]
 

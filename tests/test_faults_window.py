@@ -15,11 +15,11 @@ import pytest
 from PySide6.QtCore import QObject, Slot
 from PySide6.QtWidgets import QLabel, QPushButton
 
-from app.window import jobs
+from app.window.device import jobs
 from app.window.main_window import MainWindow
-from drivers.registry import get_protocol_class
-from tests.relay import wait_in_gui
-from tests.simproc import SimProcess
+from drivers.protocols.registry import get_protocol_class
+from tests.support.relay import wait_in_gui
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60)]
 

@@ -21,10 +21,8 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from drivers import commands as cmd
-from drivers.decoding import DecodedFrame, StreamDecoder, decode_records
-from drivers.errors import BadInput, FrameError, MotionError
-from drivers.events import (
+from drivers.device import commands as cmd
+from drivers.device.events import (
     Ack,
     Done,
     ErrorReport,
@@ -34,15 +32,13 @@ from drivers.events import (
     TextLine,
     Undecodable,
 )
+from drivers.device.param_profile import ProfileError, parse_profile, read_profile
+from drivers.errors import BadInput, FrameError, MotionError
 from drivers.framers.base import Framer
 from drivers.framers.stuffed import StuffedFramer
-from drivers.log_reader import LogError, LogRecord, parse_log, read_any_log, read_log
-from drivers.param_profile import ProfileError, parse_profile, read_profile
-from drivers.program import ProgramError, parse_csv, parse_json, read_program
 from drivers.protocols.base import Exchange, Reply
 from drivers.protocols.firmata import StepperConfig, StepperStep, StepperVersion, seven_bit_pairs
-from drivers.protocols.laser import GetStatus, LaserReply, QueuedGroup
-from drivers.protocols.laser_codec import (
+from drivers.protocols.laser.codec import (
     CHAR,
     FLOAT,
     INT16,
@@ -51,13 +47,17 @@ from drivers.protocols.laser_codec import (
     Instruction,
     decode_instructions,
 )
-from drivers.protocols.visiomex_params import PARAMETERS as VISIOMEX_PARAMETERS
-from drivers.registry import create_protocol, get_protocol_class, protocol_names
-from drivers.spy_log import _row, parse_spy
-from drivers.traffic import Traffic, hexdump_lines
-from drivers.traffic_index import TrafficIndex
-from drivers.traffic_lines import KINDS
-from drivers.traffic_search import FilterError, compile_filter
+from drivers.protocols.laser.protocol import GetStatus, LaserReply, QueuedGroup
+from drivers.protocols.registry import create_protocol, get_protocol_class, protocol_names
+from drivers.protocols.visiomex.params import PARAMETERS as VISIOMEX_PARAMETERS
+from drivers.toolpath.point_program import ProgramError, parse_csv, parse_json, read_program
+from drivers.traffic.decoding import DecodedFrame, StreamDecoder, decode_records
+from drivers.traffic.index import TrafficIndex
+from drivers.traffic.lines import KINDS
+from drivers.traffic.log_reader import LogError, LogRecord, parse_log, read_any_log, read_log
+from drivers.traffic.records import Traffic, hexdump_lines
+from drivers.traffic.search import FilterError, compile_filter
+from drivers.traffic.spy_log import _row, parse_spy
 
 pytestmark = pytest.mark.timeout(120)
 
@@ -985,8 +985,8 @@ def test_filter_is_matched_line_by_line(text: str) -> None:
 def test_line_framer_split_wired_is_split_with_its_wire_spans(buffer: bytes, limit: int) -> None:
     """The line framer's fast path (bytes.splitlines) gives what `split` and the decoder's wire
     spans give, or None where a line is too long for it."""
-    from drivers.decoding import _wire_spans
     from drivers.framers.lines import LineFramer
+    from drivers.traffic.decoding import _wire_spans
 
     framer = LineFramer(b"\n", max_length=limit)
     fast = framer.split_wired(buffer)

@@ -8,12 +8,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from drivers import commands as cmd
-from drivers.client import Client
+from drivers.device import commands as cmd
+from drivers.device.client import Client
 from drivers.errors import MotionError
+from drivers.link.transport import Link
 from drivers.protocols.coxiris import CoxirisProtocol
-from drivers.transport import Link
-from tests.fakes import ScriptedPort
+from tests.support.fakes import ScriptedPort
 
 P = CoxirisProtocol()
 COMMANDS = [

@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 
 from drivers import files
+from drivers.device.param_profile import ProfileError, parse_profile, read_profile
 from drivers.errors import BadFile
 from drivers.files import (
     LOG_MAX_BYTES,
@@ -23,13 +24,12 @@ from drivers.files import (
     read_lines,
     read_text,
 )
-from drivers.log_reader import LogError, open_any_log, parse_log, read_any_log, read_log
-from drivers.param_profile import ProfileError, parse_profile, read_profile
-from drivers.program import ProgramError, parse_json, read_program
-from drivers.protocols.visiomex_params import PARAMETERS as VISIOMEX_PARAMETERS
-from drivers.spy_log import _row, parse_spy
-from tests.e2e_support import motionctl, sent
-from tests.simproc import ROOT
+from drivers.protocols.visiomex.params import PARAMETERS as VISIOMEX_PARAMETERS
+from drivers.toolpath.point_program import ProgramError, parse_json, read_program
+from drivers.traffic.log_reader import LogError, open_any_log, parse_log, read_any_log, read_log
+from drivers.traffic.spy_log import _row, parse_spy
+from tests.support.e2e import motionctl, sent
+from tests.support.simproc import ROOT
 
 pytestmark = [pytest.mark.timeout(30)]
 
@@ -255,12 +255,12 @@ def test_nothing_in_a_file_is_evaluated(tmp_path: Path) -> None:
 
 READER_SOURCES = [
     "drivers/files.py",
-    "drivers/param_profile.py",
-    "drivers/program.py",
-    "drivers/log_reader.py",
-    "drivers/spy_log.py",
+    "drivers/device/param_profile.py",
+    "drivers/toolpath/point_program.py",
+    "drivers/traffic/log_reader.py",
+    "drivers/traffic/spy_log.py",
     "app/common/settings.py",
-    "app/window/log_viewer.py",
+    "app/window/console/log_viewer.py",
     "app/cli/log.py",
     "app/cli/params.py",
 ]
@@ -394,7 +394,7 @@ def test_the_window_starts_with_a_fifo_for_its_settings(
 # -- the log viewer: streamed into its index, a clear error in its status ---------------------
 @pytest.fixture
 def viewer(qtbot):
-    from app.window.log_viewer import LogViewer
+    from app.window.console.log_viewer import LogViewer
 
     window = LogViewer(None, "coxiris")
     qtbot.addWidget(window)
@@ -425,7 +425,7 @@ def test_the_log_viewer_shows_a_clear_error_for_a_bad_file(
 def test_the_log_viewer_takes_a_log_in_batches(
     qtbot, viewer, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from app.window import log_viewer
+    from app.window.console import log_viewer
 
     monkeypatch.setattr(log_viewer, "LOOKAHEAD", 3)
     monkeypatch.setattr(log_viewer, "BATCH", 5)

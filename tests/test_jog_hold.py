@@ -14,7 +14,7 @@ from PySide6.QtCore import QCoreApplication, QEvent, Qt, QTimer
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QApplication, QWidget
 
-from app.window import jobs
+from app.window.device import jobs
 from app.window.main_window import MainWindow
 from widgets import status_line as status
 

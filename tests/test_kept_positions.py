@@ -15,7 +15,7 @@ from PySide6.QtCore import QSettings
 
 from app.common.kept_positions import positions_file, read_kept, write_kept
 from app.common.settings import read_counted_position, write_counted_position
-from tests.simproc import ROOT
+from tests.support.simproc import ROOT
 
 pytestmark = pytest.mark.timeout(120)
 COUNTS = 150
@@ -23,7 +23,7 @@ COUNTS = 150
 
 def _start(*args: str) -> subprocess.Popen[str]:
     return subprocess.Popen(
-        [sys.executable, "-m", "tests.kept_count_proc", *args],
+        [sys.executable, "-m", "tests.support.kept_count_proc", *args],
         stdin=subprocess.PIPE,
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,

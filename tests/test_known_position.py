@@ -13,15 +13,15 @@ from collections.abc import Iterator
 
 import pytest
 
-from drivers.capabilities import Completion
-from drivers.client import Client
+from drivers.device.capabilities import Completion
+from drivers.device.client import Client
+from drivers.device.events import PositionReport
+from drivers.device.motion import Motion
 from drivers.errors import DeviceTimeout
-from drivers.events import PositionReport
-from drivers.motion import Motion
+from drivers.link.transport import Link, open_link
 from drivers.protocols.coxiris import CoxirisProtocol
-from drivers.protocols.laser import LaserProtocol
-from drivers.registry import create_protocol, protocol_names
-from drivers.transport import Link, open_link
+from drivers.protocols.laser.protocol import LaserProtocol
+from drivers.protocols.registry import create_protocol, protocol_names
 from tests.conftest import Recorder
 
 pytestmark = pytest.mark.timeout(30)

@@ -9,19 +9,11 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from drivers import commands as cmd
+from drivers.device import commands as cmd
+from drivers.device.events import PositionReport, Undecodable
 from drivers.errors import BadInput, DeviceError, FrameError, QueueFull, Retransmit
-from drivers.events import PositionReport, Undecodable
 from drivers.framers.stuffed import StuffedFramer
-from drivers.program import ProgramError, parse_csv, parse_json
-from drivers.protocols.laser import (
-    GetStatus,
-    LaserProtocol,
-    LaserReply,
-    QueuedGroup,
-    move_instruction,
-)
-from drivers.protocols.laser_codec import (
+from drivers.protocols.laser.codec import (
     CHAR,
     FLOAT,
     INT16,
@@ -31,6 +23,14 @@ from drivers.protocols.laser_codec import (
     crc16,
     decode_instructions,
 )
+from drivers.protocols.laser.protocol import (
+    GetStatus,
+    LaserProtocol,
+    LaserReply,
+    QueuedGroup,
+    move_instruction,
+)
+from drivers.toolpath.point_program import ProgramError, parse_csv, parse_json
 
 
 def _reply(data: bytes) -> LaserReply:

@@ -6,13 +6,13 @@ import math
 
 import pytest
 
-from drivers import commands as cmd
-from drivers.client import Client
-from drivers.motion import Motion
-from drivers.program import ProgramPoint
-from drivers.protocols.laser import LaserProtocol
-from drivers.streaming import Streamer
-from drivers.transport import open_link
+from drivers.device import commands as cmd
+from drivers.device.client import Client
+from drivers.device.motion import Motion
+from drivers.link.transport import open_link
+from drivers.protocols.laser.protocol import LaserProtocol
+from drivers.toolpath.point_program import ProgramPoint
+from drivers.toolpath.streaming import Streamer
 
 pytestmark = pytest.mark.timeout(60)
 

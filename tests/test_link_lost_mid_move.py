@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 from app.window.main_window import MainWindow
-from tests.simproc import SimProcess
+from tests.support.simproc import SimProcess
 
 pytestmark = [
     pytest.mark.e2e,

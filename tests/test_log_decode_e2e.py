@@ -14,8 +14,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.e2e_support import motionctl
-from tests.simproc import ROOT, SimProcess
+from tests.support.e2e import motionctl
+from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(90), pytest.mark.usefixtures("settings_file")]
 

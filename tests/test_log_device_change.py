@@ -11,14 +11,14 @@ from pathlib import Path
 import pytest
 
 from app.common.session_log import open_session_log
-from app.window import jobs
-from app.window.log_viewer import LogViewer
-from app.window.worker import SerialWorker
-from drivers.decoding import DecodedFrame, decode_records
-from drivers.log_reader import read_log
-from drivers.registry import create_protocol
-from drivers.traffic_lines import KINDS
-from tests.simproc import ROOT
+from app.window.console.log_viewer import LogViewer
+from app.window.device import jobs
+from app.window.device.worker import SerialWorker
+from drivers.protocols.registry import create_protocol
+from drivers.traffic.decoding import DecodedFrame, decode_records
+from drivers.traffic.lines import KINDS
+from drivers.traffic.log_reader import read_log
+from tests.support.simproc import ROOT
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]
 

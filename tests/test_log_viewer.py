@@ -6,10 +6,10 @@ from pathlib import Path
 
 import pytest
 
-from app.window.log_viewer import LogViewer, detect_protocol
-from drivers.log_reader import LogRecord
-from drivers.traffic import Traffic, TrafficLogWriter
-from tests.simproc import ROOT
+from app.window.console.log_viewer import LogViewer, detect_protocol
+from drivers.traffic.log_reader import LogRecord
+from drivers.traffic.records import Traffic, TrafficLogWriter
+from tests.support.simproc import ROOT
 
 pytestmark = [pytest.mark.timeout(60)]
 
@@ -113,8 +113,8 @@ def test_detect_protocol_reads_the_connection_note() -> None:
 
 
 def test_a_simulator_s_record_opens_as_the_host_saw_it(qtbot, viewer, tmp_path):
-    from drivers.log_origin import device_side_note
     from drivers.protocols.firmata import FirmataProtocol
+    from drivers.traffic.log_origin import device_side_note
 
     record = tmp_path / "device.log"  # as motionsim --record writes it: the board speaks first
     with record.open("w", encoding="utf-8") as stream:

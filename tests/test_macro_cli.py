@@ -11,8 +11,8 @@ import pytest
 
 from app.common import macros
 from app.common.macros import Macro
-from tests.e2e_support import device_received, motionctl
-from tests.simproc import SimProcess
+from tests.support.e2e import device_received, motionctl
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60)]
 

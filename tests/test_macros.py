@@ -15,11 +15,11 @@ from hypothesis import strategies as st
 from app.common import macros
 from app.common.macros import BadMacro, BadMacroFile, Macro, MacroStopped
 from app.common.settings import open_settings
-from drivers.client import Client
+from drivers.device.client import Client
+from drivers.device.motion import Motion
 from drivers.errors import BadFile
-from drivers.motion import Motion
-from drivers.registry import create_protocol
-from drivers.transport import open_link
+from drivers.link.transport import open_link
+from drivers.protocols.registry import create_protocol
 
 pytestmark = pytest.mark.timeout(30)
 

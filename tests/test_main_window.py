@@ -9,7 +9,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QPushButton, QWidget
 
 from app.window.main_window import MainWindow
-from tests.relay import wait_in_gui
+from tests.support.relay import wait_in_gui
 
 pytestmark = pytest.mark.timeout(30)
 
@@ -151,7 +151,7 @@ def test_3d_view_is_real_opengl_and_draws_the_trail(qtbot, window: MainWindow) -
 def test_ports_appearing_and_disappearing_are_noticed(
     qtbot, window: MainWindow, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from app.window import ports
+    from app.window.device import ports
 
     listing = [("/dev/ttyUSB0", "USB serial")]
     monkeypatch.setattr(ports, "list_serial_ports", lambda: list(listing))
@@ -203,8 +203,8 @@ def test_export_from_the_menu(qtbot, window: MainWindow, tmp_path: Path) -> None
 
 
 def test_window_adapts_to_a_two_axis_commanded_only_protocol(qtbot, window: MainWindow) -> None:
-    from app.window.worker import DeviceInfo
-    from drivers.capabilities import Capabilities, Completion
+    from app.window.device.worker import DeviceInfo
+    from drivers.device.capabilities import Capabilities, Completion
 
     caps = Capabilities(
         axes=("x", "y"),
@@ -223,7 +223,7 @@ def test_window_adapts_to_a_two_axis_commanded_only_protocol(qtbot, window: Main
 def test_reconnects_when_the_lost_port_comes_back_slot_only(qtbot, window: MainWindow) -> None:
     """Only the window's slot for a port the port list shows again; the worker's own watch for
     a lost port is tested with real processes in test_reconnect_real.py."""
-    from tests.simproc import SimProcess
+    from tests.support.simproc import SimProcess
 
     sim = SimProcess("coxiris", "--speed", "100")
     try:
@@ -250,6 +250,6 @@ def test_reconnects_when_the_lost_port_comes_back_slot_only(qtbot, window: MainW
 
 
 def test_escape_stops(qtbot, window: MainWindow) -> None:
-    window.worker.submit(__import__("app.window.jobs").window.jobs.HomeJob())
+    window.worker.submit(__import__("app.window.device.jobs").window.jobs.HomeJob())
     qtbot.keyClick(window, Qt.Key.Key_Escape)
     assert "not sent" in window.status_line.message()

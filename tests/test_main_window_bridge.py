@@ -9,9 +9,9 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.window.main_window import MainWindow
-from drivers.log_reader import read_log
-from tests.motionctl_run import run_motionctl
-from tests.simproc import SimProcess
+from drivers.traffic.log_reader import read_log
+from tests.support.motionctl_run import run_motionctl
+from tests.support.simproc import SimProcess
 
 pytestmark = pytest.mark.timeout(60)
 

@@ -10,7 +10,7 @@ from PySide6.QtWidgets import QLabel, QMessageBox
 
 from app.common.settings import write_travel
 from app.window.main_window import MainWindow
-from drivers.travel import TravelLimits
+from drivers.device.travel import TravelLimits
 
 pytestmark = pytest.mark.timeout(40)
 

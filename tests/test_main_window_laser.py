@@ -10,7 +10,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget
 
 from app.window.main_window import MainWindow
-from drivers.program import read_program
+from drivers.toolpath.point_program import read_program
 from widgets import status_line as status
 
 pytestmark = pytest.mark.timeout(60)

@@ -9,8 +9,8 @@ from PySide6.QtWidgets import QApplication, QDockWidget, QMenu, QWidget
 
 from app.common.settings import write_travel
 from app.window.main_window import MainWindow
-from drivers.travel import TravelLimits
-from tests.relay import wait_in_gui
+from drivers.device.travel import TravelLimits
+from tests.support.relay import wait_in_gui
 
 pytestmark = pytest.mark.timeout(30)
 

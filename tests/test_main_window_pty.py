@@ -6,9 +6,9 @@ from collections.abc import Iterator
 
 import pytest
 
-from app.window import jobs
+from app.window.device import jobs
 from app.window.main_window import MainWindow
-from tests.simproc import SimProcess
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.timeout(40), pytest.mark.e2e]
 

@@ -10,8 +10,8 @@ from PySide6.QtWidgets import QDockWidget, QPushButton
 
 from app.common.settings import read_parameters
 from app.window.main_window import MainWindow
-from drivers.param_profile import format_profile
-from drivers.protocols.visiomex_params import PARAMETERS
+from drivers.device.param_profile import format_profile
+from drivers.protocols.visiomex.params import PARAMETERS
 
 pytestmark = pytest.mark.timeout(40)
 URL = "sim://visiomex?instant=1"

@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QPushButton
 
 from app.common.settings import read_parameters
 from app.window.main_window import MainWindow
-from tests.relay import wait_in_gui
+from tests.support.relay import wait_in_gui
 from widgets._i18n import number_text
 
 pytestmark = pytest.mark.timeout(60)

@@ -84,8 +84,8 @@ def _errors_for_people() -> set[str]:
     for name in (
         "app.common.macros",
         "app.cli.command_line",
-        "app.window.worker",
-        "app.window.jobs",
+        "app.window.device.worker",
+        "app.window.device.jobs",
     ):
         importlib.import_module(name)
     names: set[str] = set()

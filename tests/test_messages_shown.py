@@ -8,10 +8,10 @@ from collections.abc import Iterator
 import pytest
 
 from app.common import macros
-from app.window import jobs
+from app.window.device import jobs
+from app.window.device.worker_thread import WorkerThread
 from app.window.main_window import MainWindow
-from app.window.worker_thread import WorkerThread
-from tests.relay import wait_in_gui
+from tests.support.relay import wait_in_gui
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -100,8 +100,8 @@ def test_a_refused_connection_reaches_the_worker_state_translated(
 
 
 def test_the_console_shows_decoded_meanings_translated(qtbot, upper) -> None:
-    from app.window.traffic_console import RawConsole
-    from drivers.registry import create_protocol
+    from app.window.console.traffic_console import RawConsole
+    from drivers.protocols.registry import create_protocol
 
     console = RawConsole()
     qtbot.addWidget(console)

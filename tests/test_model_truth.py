@@ -25,14 +25,13 @@ import pytest
 from hypothesis import strategies as st
 from hypothesis.stateful import rule
 
+from drivers.device.events import PositionReport
+from drivers.device.position_truth import LOST, LOST_MOVING, STALE
 from drivers.errors import CommunicationError
-from drivers.events import PositionReport
-from drivers.position_truth import LOST, LOST_MOVING, STALE
 from drivers.protocols.base import Protocol
-from drivers.session import ProgressListener
+from drivers.session.device_session import ProgressListener
 from drivers.toolpath.model import Toolpath
-from tests.model_truth_machine import OperatorMachine, RigMachine, run_model
-from tests.model_truth_support import (
+from tests.support.model_truth import (
     KILL_MARGIN,
     PROFILES,
     QUARTERS,
@@ -48,6 +47,7 @@ from tests.model_truth_support import (
     settled,
     still,
 )
+from tests.support.model_truth_machine import OperatorMachine, RigMachine, run_model
 
 pytestmark = [pytest.mark.e2e]
 

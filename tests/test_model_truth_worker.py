@@ -3,7 +3,8 @@ protocols, random sequences of operator actions (jog, go to, home, set home, spe
 run, paused or stopped, a raw move, disconnect and connect again, the device killed mid-move and
 served again on the same path) as the window submits them to its SerialWorker on its QThread,
 against `motionsim --control` in another process. Observed only through the worker's signals,
-received in the GUI thread (tests/relay.py): after every step the last position_changed report,
+received in the GUI thread (tests/support/relay.py): after every step the last position_changed
+report,
 if it claims to be the device's (measured, or commanded and confirmed, from a known place), is
 the simulator's own `where` within one motor step; a count the worker's session keeps from its
 own home is held to the same rule once its move had the time to end.
@@ -20,18 +21,18 @@ from typing import Any
 import pytest
 from PySide6.QtCore import QObject
 
-from app.window import jobs
-from app.window.worker import ConnectOptions
-from app.window.worker_thread import WorkerThread
-from drivers.events import PositionReport
+from app.window.device import jobs
+from app.window.device.worker import ConnectOptions
+from app.window.device.worker_thread import WorkerThread
+from drivers.device.events import PositionReport
+from drivers.device.travel import parse_travel
 from drivers.protocols.base import Protocol
-from drivers.session import ProgressListener
-from drivers.session_setup import make_protocol
+from drivers.session.device_session import ProgressListener
+from drivers.session.setup import make_protocol
 from drivers.toolpath.model import Toolpath
-from drivers.travel import parse_travel
-from tests.model_truth_machine import OperatorMachine, run_model
-from tests.model_truth_support import KILL_MARGIN, TRAVEL, Point, claims
-from tests.relay import GuiRelay, wait_in_gui
+from tests.support.model_truth import KILL_MARGIN, TRAVEL, Point, claims
+from tests.support.model_truth_machine import OperatorMachine, run_model
+from tests.support.relay import GuiRelay, wait_in_gui
 
 pytestmark = [pytest.mark.e2e]
 

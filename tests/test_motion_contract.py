@@ -10,16 +10,16 @@ from dataclasses import replace
 
 import pytest
 
-from drivers import commands as cmd
-from drivers.capabilities import Capabilities, Completion
-from drivers.client import Client
+from drivers.device import commands as cmd
+from drivers.device.capabilities import Capabilities, Completion
+from drivers.device.client import Client
+from drivers.device.events import Event, Feedback, PositionReport, TextLine
+from drivers.device.motion import Motion
 from drivers.errors import Aborted, BadInput
-from drivers.events import Event, Feedback, PositionReport, TextLine
 from drivers.framers.lines import LineFramer
-from drivers.motion import Motion
+from drivers.link.transport import Link
 from drivers.protocols.base import Exchange, Protocol
-from drivers.transport import Link
-from tests.fakes import ScriptedPort
+from tests.support.fakes import ScriptedPort
 
 pytestmark = pytest.mark.timeout(20)
 

@@ -7,22 +7,22 @@ import time
 
 import pytest
 
-from drivers import commands as cmd
-from drivers.client import Client
+from drivers.device import commands as cmd
+from drivers.device.client import Client
+from drivers.device.events import PositionReport
+from drivers.device.guard import MotionGuard, RawRefused, unreadable
+from drivers.device.motion import Motion
+from drivers.device.travel import TravelLimits
 from drivers.errors import BadInput, FrameError
-from drivers.events import PositionReport
-from drivers.motion import Motion
-from drivers.motion_guard import MotionGuard, RawRefused, unreadable
-from drivers.program import ProgramPoint
+from drivers.link.transport import Link, open_link
 from drivers.protocols.base import MoveSequence, Protocol
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.protocols.firmata import FirmataProtocol, StepperStep, StepperVersion
-from drivers.protocols.laser import GetStatus, LaserProtocol, QueuedGroup, move_instruction
+from drivers.protocols.laser.protocol import GetStatus, LaserProtocol, QueuedGroup, move_instruction
 from drivers.protocols.piframe import PiFrameProtocol
-from drivers.protocols.visiomex import VisiomexProtocol
-from drivers.streaming import Streamer
-from drivers.transport import Link, open_link
-from drivers.travel import TravelLimits
+from drivers.protocols.visiomex.protocol import VisiomexProtocol
+from drivers.toolpath.point_program import ProgramPoint
+from drivers.toolpath.streaming import Streamer
 from tests.conftest import Recorder
 
 pytestmark = pytest.mark.timeout(30)

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 import pytest
 
-from drivers import commands as cmd
-from drivers.client import Client
+from drivers.device import commands as cmd
+from drivers.device.client import Client
+from drivers.device.events import PositionReport, TextLine
+from drivers.device.motion import Motion
 from drivers.errors import BadInput, DeviceError, DeviceTimeout
-from drivers.events import PositionReport, TextLine
-from drivers.motion import Motion
+from drivers.link.transport import Link
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.sim.coxiris_device import HELP_LINES
-from drivers.transport import Link
 from tests.conftest import Recorder
 
 pytestmark = pytest.mark.timeout(20)

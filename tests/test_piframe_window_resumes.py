@@ -13,8 +13,8 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QPushButton
 
 from app.window.main_window import MainWindow
-from tests import e2e_support
-from tests.simproc import SimProcess
+from tests.support import e2e as e2e_support
+from tests.support.simproc import SimProcess
 from widgets import status_line as status
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.e2e]

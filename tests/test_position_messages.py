@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from app.common.position_messages import Lengths, position_localized
-from app.window.worker import SerialWorker
+from app.window.device.worker import SerialWorker
 from drivers.errors import DeviceError
 from drivers.messages import Message
 from tests.widgets.test_units_shown import english_numbers  # noqa: F401 (autouse)

@@ -8,9 +8,8 @@ import time
 
 import pytest
 
-from drivers.errors import CommunicationError, MotionError
-from drivers.motion import MoveStart
-from drivers.position_truth import (
+from drivers.device.motion import MoveStart
+from drivers.device.position_truth import (
     ESTIMATED,
     LIVE,
     LOST,
@@ -20,8 +19,9 @@ from drivers.position_truth import (
     UNREAD,
     PositionTruth,
 )
-from drivers.session import open_device
-from tests.simproc import SimProcess
+from drivers.errors import CommunicationError, MotionError
+from drivers.session.device_session import open_device
+from tests.support.simproc import SimProcess
 
 pytestmark = pytest.mark.timeout(60)
 

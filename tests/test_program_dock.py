@@ -10,12 +10,12 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDockWidget
 
+from app.window.docks.program_dock import ProgramDock
 from app.window.main_window import MainWindow
-from app.window.program_dock import ProgramDock
 from drivers.sim.piframe_device import CIRCULAR, DWELL
 from drivers.toolpath.geometry import flatten
 from drivers.toolpath.loader import load_toolpath
-from tests.relay import wait_in_gui
+from tests.support.relay import wait_in_gui
 from widgets.program_panel import ERROR_STYLE, ProgramPanel
 
 pytestmark = pytest.mark.timeout(60)

@@ -12,11 +12,11 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QApplication, QTabBar
 
+from app.window.docks.program_dock import ProgramDock
 from app.window.keyboard_jog import arrow_key_user
 from app.window.main_window import MainWindow
-from app.window.program_dock import ProgramDock
-from drivers.streaming import StreamProgress
-from tests.relay import wait_in_gui
+from drivers.toolpath.streaming import StreamProgress
+from tests.support.relay import wait_in_gui
 from tests.test_program_dock import GCODE, _connect, _gcode, _load, _parts, _run_to_end
 from widgets.program_panel import ProgramPanel
 

@@ -9,10 +9,10 @@ from pathlib import Path
 import pytest
 
 from app.window.main_window import MainWindow
-from drivers.decoding import StreamDecoder
-from drivers.log_reader import parse_log
-from drivers.log_records import LogRecord
-from drivers.registry import create_protocol
+from drivers.protocols.registry import create_protocol
+from drivers.traffic.decoding import StreamDecoder
+from drivers.traffic.log_reader import parse_log
+from drivers.traffic.log_records import LogRecord
 from tests.test_status_truth import pause_a_laser_zigzag
 from widgets import status_line as status
 

@@ -1,5 +1,5 @@
 """Issue 23's "done when", from the window: a DXF drawn in a CAD program, an SVG from an
-illustration program and G-code from a CAM program (tests/program_files.py) each load in the
+illustration program and G-code from a CAM program (tests/support/program_files.py) each load in the
 Program dock, are drawn before anything is sent, and run to their last point on every simulator
 (in-process `sim://` devices; the same files through `motionctl run` and `motionsim` in another
 process: tests/test_cli_program_e2e.py)."""
@@ -13,7 +13,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QLabel, QPushButton
 
 from app.window.main_window import MainWindow
-from tests.program_files import write_drawings
+from tests.support.program_files import write_drawings
 from widgets import status_line as status
 
 pytestmark = pytest.mark.timeout(120)

@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 
 from app.window.main_window import MainWindow
-from tests.relay import GuiRelay, wait_in_gui
-from tests.simproc import SimProcess
+from tests.support.relay import GuiRelay, wait_in_gui
+from tests.support.simproc import SimProcess
 
 pytestmark = [
     pytest.mark.e2e,

@@ -13,14 +13,14 @@ from pathlib import Path
 
 import pytest
 
-from drivers import commands as cmd
-from drivers import transport
-from drivers.client import Client
+from drivers.device import commands as cmd
+from drivers.device.client import Client
+from drivers.link import transport
+from drivers.link.transport import Link, open_link
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.sim.coxiris_device import CoxirisDevice
 from drivers.sim.pty_server import USB_FRAME, PtyServer
-from drivers.traffic import Traffic
-from drivers.transport import Link, open_link
+from drivers.traffic.records import Traffic
 from tests.conftest import Recorder
 
 pytestmark = pytest.mark.timeout(20)

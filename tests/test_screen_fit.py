@@ -1,4 +1,5 @@
-"""app/window/screen_fit.py: a first window and a remembered one fit the screen they open on."""
+"""app/window/layout/screen_fit.py: a first window and a remembered one fit the screen they open
+on."""
 
 from __future__ import annotations
 
@@ -6,8 +7,8 @@ import pytest
 from PySide6.QtCore import QMargins, QRect, QSize
 from PySide6.QtWidgets import QMainWindow
 
-from app.window import screen_fit
-from app.window.screen_fit import FRAME_GUESS, ScreenFit, fit_new_window, fitted
+from app.window.layout import screen_fit
+from app.window.layout.screen_fit import FRAME_GUESS, ScreenFit, fit_new_window, fitted
 
 pytestmark = pytest.mark.timeout(60)
 

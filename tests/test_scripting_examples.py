@@ -10,7 +10,7 @@ import sys
 
 import pytest
 
-from tests.simproc import ROOT
+from tests.support.simproc import ROOT
 
 pytestmark = pytest.mark.timeout(60)
 

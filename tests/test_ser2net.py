@@ -16,9 +16,9 @@ import pytest
 
 import drivers
 from app.window.main_window import MainWindow
-from drivers.transport import open_link
-from tests.ser2net_proc import SER2NET, Ser2netProcess, free_port
-from tests.simproc import ROOT, SimProcess
+from drivers.link.transport import open_link
+from tests.support.ser2net_proc import SER2NET, Ser2netProcess, free_port
+from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [
     pytest.mark.timeout(60),

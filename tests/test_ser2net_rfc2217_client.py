@@ -13,8 +13,8 @@ import pytest
 import serial
 from serial import rfc2217
 
+from drivers.link.transport import open_link
 from drivers.sim.device import SimulatedDevice
-from drivers.transport import open_link
 
 pytestmark = pytest.mark.timeout(30)
 

@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 
 from app.common.session_log import PATTERN, open_session_log, prune
-from drivers.log_reader import LogError
-from tests.e2e_support import stream as _bytes
-from tests.simproc import ROOT, SimProcess
+from drivers.traffic.log_reader import LogError
+from tests.support.e2e import stream as _bytes
+from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -79,7 +79,7 @@ def test_a_killed_panel_leaves_its_log_complete(tmp_path: Path) -> None:
 
 def test_a_disconnect_and_a_quit_are_noted_as_such(qtbot, tmp_path: Path, monkeypatch) -> None:
     from app.window.main_window import MainWindow  # (the window's tests only need Qt)
-    from drivers.log_reader import read_log
+    from drivers.traffic.log_reader import read_log
 
     monkeypatch.setenv("MOTIONPANEL_SETTINGS", str(tmp_path / "settings.ini"))
     window = MainWindow()

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pyfirmata2
 import pytest
 
-from tests.simproc import SimProcess
+from tests.support.simproc import SimProcess
 
 
 @pytest.mark.e2e

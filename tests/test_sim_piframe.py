@@ -9,7 +9,7 @@ import time
 import pytest
 import serial
 
-import drivers.transport  # noqa: F401  (registers the sim:// handler)
+import drivers.link.transport  # noqa: F401  (registers the sim:// handler)
 from drivers.sim.clock import ManualClock
 from drivers.sim.piframe_device import (
     CIRCULAR,

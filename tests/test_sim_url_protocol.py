@@ -8,8 +8,8 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.window.main_window import MainWindow
-from drivers.protocol_sniff import looks_like, sniff
-from tests.simproc import SimProcess
+from drivers.protocols.sniff import looks_like, sniff
+from tests.support.simproc import SimProcess
 from widgets.connection_bar import ConnectionBar, sim_protocol
 
 pytestmark = pytest.mark.timeout(60)

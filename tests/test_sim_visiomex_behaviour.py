@@ -7,9 +7,9 @@ import time
 import pytest
 import serial
 
-import drivers.transport  # noqa: F401  (registers the sim:// handler)
+import drivers.link.transport  # noqa: F401  (registers the sim:// handler)
 from app.simcli import build_parser
-from drivers.protocols.visiomex_timing import stepping_start
+from drivers.protocols.visiomex.timing import stepping_start
 from drivers.sim.clock import ManualClock
 from drivers.sim.registry import create_device
 from drivers.sim.visiomex_device import POWER_ON, SILENCE, VisiomexDevice

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from drivers.protocols.visiomex_model import (
+from drivers.protocols.visiomex.model import (
     BOOT_ONLY,
     NEVER_READ,
     OVERWRITTEN_AFTER_SET,
@@ -19,7 +19,7 @@ from drivers.protocols.visiomex_model import (
     parse_atof,
     parse_atol,
 )
-from drivers.protocols.visiomex_timing import interpolate
+from drivers.protocols.visiomex.timing import interpolate
 
 pytestmark = pytest.mark.timeout(30)
 

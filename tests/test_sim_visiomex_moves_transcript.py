@@ -9,10 +9,10 @@ from typing import Any
 
 import pytest
 
-from drivers.commands import MoveBy, Raw, SetParameter
+from drivers.device.commands import MoveBy, Raw, SetParameter
 from drivers.errors import BadInput
-from drivers.protocols.visiomex import VisiomexProtocol
-from drivers.protocols.visiomex_model import parse_atol
+from drivers.protocols.visiomex.model import parse_atol
+from drivers.protocols.visiomex.protocol import VisiomexProtocol
 from drivers.sim.clock import ManualClock
 from drivers.sim.visiomex_device import VisiomexDevice
 

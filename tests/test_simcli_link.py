@@ -11,9 +11,9 @@ from pathlib import Path
 
 import pytest
 
+from drivers.link.transport import open_link
 from drivers.sim.pty_server import make_link, remove_link
-from drivers.transport import open_link
-from tests.simproc import SimProcess
+from tests.support.simproc import SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60)]
 

@@ -20,12 +20,12 @@ from typing import Any
 import pytest
 import serial
 
-from drivers import commands as cmd
-from drivers.decoding import decode_records
-from drivers.log_reader import LogError, LogRecord, parse_log, read_any_log
-from drivers.registry import create_protocol
-from drivers.spy_log import parse_spy
-from tests.simproc import ROOT, SimProcess
+from drivers.device import commands as cmd
+from drivers.protocols.registry import create_protocol
+from drivers.traffic.decoding import decode_records
+from drivers.traffic.log_reader import LogError, LogRecord, parse_log, read_any_log
+from drivers.traffic.spy_log import parse_spy
+from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]
 
@@ -179,7 +179,7 @@ def test_the_committed_capture_parses_and_is_what_this_pyserial_writes(
     fresh = tmp_path / "capture.txt"
     _capture_fixture_session(fresh, port, controller)
     assert _unstamped(fresh.read_text()) == _unstamped(fixture), (
-        "pyserial's spy:// writes another format now: check drivers/spy_log.py against it, "
+        "pyserial's spy:// writes another format now: check drivers/traffic/spy_log.py against it, "
         "then rewrite the capture with `python -m tests.test_spy_log`"
     )
 

@@ -14,7 +14,7 @@ import pytest
 from PySide6.QtWidgets import QDockWidget
 
 from app.window.main_window import MainWindow
-from drivers.registry import get_protocol_class, has_variants, protocol_names
+from drivers.protocols.registry import get_protocol_class, has_variants, protocol_names
 from widgets.lazy_view import LazyPart, built
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -23,36 +23,36 @@ HEAVY = (
     "numpy",
     "pyqtgraph",
     "OpenGL",
-    "app.window.traffic_console",
-    "app.window.traffic_display",
-    "app.window.traffic_export",
-    "app.window.traffic_filter_bar",
-    "app.window.traffic_navigation",
-    "app.window.traffic_pacing",
-    "app.window.traffic_status",
-    "app.window.device_docks",
-    "app.window.parameter_dock",
-    "app.window.log_viewer",
-    "drivers.traffic_index",
-    "drivers.traffic_lines",
-    "drivers.traffic_pairing",
-    "drivers.traffic_search",
-    "drivers.traffic_spool",
+    "app.window.console.traffic_console",
+    "app.window.console.display",
+    "app.window.console.export",
+    "app.window.console.filter_bar",
+    "app.window.console.navigation",
+    "app.window.console.pacing",
+    "app.window.console.status",
+    "app.window.docks.device_docks",
+    "app.window.docks.parameter_dock",
+    "app.window.console.log_viewer",
+    "drivers.traffic.index",
+    "drivers.traffic.lines",
+    "drivers.traffic.pairing",
+    "drivers.traffic.search",
+    "drivers.traffic.spool",
     "serial.tools.list_ports",
     # the serial worker, its thread, the jobs and the motion engine under them
-    "app.window.worker",
-    "app.window.worker_thread",
-    "app.window.jobs",
-    "app.window.move_estimate",
-    "drivers.motion",
-    "drivers.client",
-    "drivers.transport",
+    "app.window.device.worker",
+    "app.window.device.worker_thread",
+    "app.window.device.jobs",
+    "app.window.device.move_estimate",
+    "drivers.device.motion",
+    "drivers.device.client",
+    "drivers.link.transport",
     "serial",
     # the protocols (the connection bar knows which have wire variants without them)
     "drivers.protocols.base",
     "drivers.protocols.coxiris",
-    "drivers.commands",
-    "drivers.events",
+    "drivers.device.commands",
+    "drivers.device.events",
 )
 
 
@@ -77,7 +77,8 @@ class Painted(QObject):
 
 def ready():
     seen["ready"] = sorted(
-        m for m in ("numpy", "app.window.traffic_console", "app.window.worker") if m in sys.modules
+        m for m in ("numpy", "app.window.console.traffic_console", "app.window.device.worker") if m
+        in sys.modules
     )
     QTimer.singleShot(0, app.quit)
 
@@ -104,7 +105,7 @@ print(json.dumps(seen))
     seen = json.loads(out.stdout.strip().splitlines()[-1])
     assert seen == {
         "painted": [],
-        "ready": ["app.window.traffic_console", "app.window.worker", "numpy"],
+        "ready": ["app.window.console.traffic_console", "app.window.device.worker", "numpy"],
     }
 
 

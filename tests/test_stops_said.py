@@ -9,7 +9,7 @@ import pytest
 from PySide6.QtCore import Qt
 
 from app.common.macros import Macro
-from app.window import jobs
+from app.window.device import jobs
 from app.window.main_window import MainWindow
 from widgets import status_line as status
 

@@ -26,11 +26,11 @@ from PySide6.QtWidgets import QApplication
 
 import app
 import widgets
-from app.window import jobs
+from app.window.console.traffic_console import RawConsole
+from app.window.device import jobs
+from app.window.device.worker import SerialWorker
 from app.window.main_window import MainWindow
-from app.window.traffic_console import RawConsole
-from app.window.worker import SerialWorker
-from tests.relay import GuiRelay
+from tests.support.relay import GuiRelay
 from widgets.position_buffer import PositionBuffer
 from widgets.traffic_timeline import TrafficTimeline
 

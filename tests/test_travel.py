@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import pytest
 
+from drivers.device.motion import Motion, MoveStart
+from drivers.device.travel import TravelLimits, check_resolution, parse_travel
 from drivers.errors import BadInput
-from drivers.motion import Motion, MoveStart
-from drivers.transport import Link
-from drivers.travel import TravelLimits, check_resolution, parse_travel
+from drivers.link.transport import Link
 from tests.conftest import Recorder
 
 pytestmark = pytest.mark.timeout(20)

@@ -8,9 +8,9 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialog, QDockWidget
 
 from app.common.settings import read_travel
-from app.window.layouts import SETUP
+from app.window.layout.layouts import SETUP
 from app.window.main_window import MainWindow
-from drivers.travel import TravelLimits
+from drivers.device.travel import TravelLimits
 from widgets.travel_limits_dialog import TravelLimitsDialog
 from widgets.travel_limits_form import TravelLimitsForm, TravelLimitsPanel
 

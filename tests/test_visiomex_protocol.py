@@ -6,19 +6,19 @@ import math
 
 import pytest
 
-from drivers import commands as cmd
-from drivers.client import Client
+from drivers.device import commands as cmd
+from drivers.device.client import Client
+from drivers.device.events import ErrorReport, Feedback, TextLine
+from drivers.device.motion import Motion
+from drivers.device.param_profile import ProfileError, format_profile, parse_profile
 from drivers.errors import BadInput, DeviceError, DeviceRestarted, DeviceTimeout
-from drivers.events import ErrorReport, Feedback, TextLine
-from drivers.motion import Motion
-from drivers.param_profile import ProfileError, format_profile, parse_profile
-from drivers.protocols.visiomex import VisiomexProtocol
-from drivers.protocols.visiomex_model import POWER_ON
-from drivers.protocols.visiomex_params import DEFAULTS, PARAMETERS
-from drivers.registry import create_protocol
-from drivers.traffic import TX
-from drivers.transport import Link, open_link
-from tests.fakes import ScriptedPort
+from drivers.link.transport import Link, open_link
+from drivers.protocols.registry import create_protocol
+from drivers.protocols.visiomex.model import POWER_ON
+from drivers.protocols.visiomex.params import DEFAULTS, PARAMETERS
+from drivers.protocols.visiomex.protocol import VisiomexProtocol
+from drivers.traffic.records import TX
+from tests.support.fakes import ScriptedPort
 
 # (id, name, unit, a value, its wire digits): every parameter's scaling, as decided
 SCALING = [

@@ -13,8 +13,8 @@ from PySide6.QtWidgets import QDialogButtonBox, QLabel
 
 from app.common import macros
 from app.window.main_window import MainWindow
-from tests.e2e_support import device_received
-from tests.simproc import SimProcess
+from tests.support.e2e import device_received
+from tests.support.simproc import SimProcess
 from widgets.about_dialog import AboutDialog
 from widgets.shortcuts_dialog import ShortcutsDialog
 

@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 from PySide6.QtCore import QSettings, Qt
 
-from app.window.work_frame import WorkFrame
+from app.window.docks.work_frame import WorkFrame
 from widgets.coordinate_entry import WORK, CoordinateEntry
 from widgets.position_readout import PositionReadout
 

@@ -4,11 +4,11 @@ from __future__ import annotations
 
 import pytest
 
-from app.window import jobs
-from app.window.worker import DeviceInfo
-from app.window.worker_thread import WorkerThread
-from drivers.events import PositionReport
-from tests.relay import wait_in_gui
+from app.window.device import jobs
+from app.window.device.worker import DeviceInfo
+from app.window.device.worker_thread import WorkerThread
+from drivers.device.events import PositionReport
+from tests.support.relay import wait_in_gui
 
 pytestmark = pytest.mark.timeout(30)
 

@@ -11,10 +11,10 @@ from typing import Any
 import pytest
 from PySide6.QtCore import QObject, Signal
 
-from app.window.worker import ConnectOptions
-from app.window.worker_thread import WorkerThread
-from drivers.control_lines import ControlLines
-from tests.relay import GuiRelay, wait_in_gui
+from app.window.device.worker import ConnectOptions
+from app.window.device.worker_thread import WorkerThread
+from drivers.link.control_lines import ControlLines
+from tests.support.relay import GuiRelay, wait_in_gui
 
 pytestmark = pytest.mark.timeout(30)
 

@@ -12,7 +12,7 @@ from widgets._i18n import fill
 log = logging.getLogger(__name__)
 
 ON, OFF, UNKNOWN = "on", "off", "unknown"
-BREAK_MS = 250  # the break the worker sends (drivers.control_lines.BREAK_S)
+BREAK_MS = 250  # the break the worker sends (drivers.link.control_lines.BREAK_S)
 LINES = ("dtr", "rts", "cts", "dsr", "cd", "ri")
 UNKNOWN_MARK = "\N{EN DASH}"  # after the name of a line the port cannot report
 # Off and unknown follow the palette (light or dark theme), their outline and text of a contrast

@@ -39,7 +39,7 @@ from PySide6.QtWidgets import (
 from widgets._i18n import fill
 from widgets._number_field import NumberSpinBox, TypedNumber, WholeSpinBox, mark_invalid
 
-CONSOLE_BYTES_PER_LINE = 33  # the console's memory per line (drivers/traffic_index.py)
+CONSOLE_BYTES_PER_LINE = 33  # the console's memory per line (drivers/traffic/index.py)
 PORTABLE = QKeySequence.SequenceFormat.PortableText
 INVALID_STYLE = "border: 1px solid #c62828;"
 # field -> objectName of its control

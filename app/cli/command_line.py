@@ -11,17 +11,17 @@ from app.cli.log import USAGE as LOG_USAGE
 from app.cli.log import check_log_offline
 from app.cli.params import check_param_offline, run_param
 from app.cli.run_program import check_run_offline
-from drivers import commands as cmd
+from drivers.device import commands as cmd
+from drivers.device.events import PositionReport
+from drivers.device.guard import MotionGuard
+from drivers.device.motion import KIND_UNITS, Motion
+from drivers.device.position_count import firmware_move_mm, kind_note, no_identity
+from drivers.device.travel import TravelLimits, check_resolution
 from drivers.errors import BadInput
-from drivers.events import PositionReport
 from drivers.messages import Message
-from drivers.motion import KIND_UNITS, Motion
-from drivers.motion_guard import MotionGuard
-from drivers.numbers import parse_number
-from drivers.position_count import firmware_move_mm, kind_note, no_identity
 from drivers.protocols.base import Protocol
-from drivers.traffic import RX, Traffic
-from drivers.travel import TravelLimits, check_resolution
+from drivers.protocols.numbers import parse_number
+from drivers.traffic.records import RX, Traffic
 
 PROTOCOL_CHOICES = ("coxiris", "visiomex", "laser-frame", "pi-frame", "firmata")
 COMMANDS = (

@@ -10,11 +10,10 @@ from typing import Any
 from PySide6.QtCore import QSettings
 
 from app.common.settings import read_counted_position, write_counted_position
-from drivers import commands as cmd
-from drivers.errors import BadInput, FrameError
-from drivers.events import PositionReport
-from drivers.motion import Motion
-from drivers.position_count import (
+from drivers.device import commands as cmd
+from drivers.device.events import PositionReport
+from drivers.device.motion import Motion
+from drivers.device.position_count import (
     commanded,
     keeps_count,
     needs_count,
@@ -23,6 +22,7 @@ from drivers.position_count import (
     starts_count,
     unknown_note,
 )
+from drivers.errors import BadInput, FrameError
 from drivers.protocols.base import Point, Protocol
 
 log = logging.getLogger(__name__)

@@ -8,11 +8,10 @@ import sys
 from typing import Any
 
 from app.cli.run_program import RUN_USAGE, run_program
-from drivers import commands as cmd
+from drivers.device import commands as cmd
+from drivers.device.motion import Motion
 from drivers.errors import BadInput
 from drivers.messages import Message
-from drivers.motion import Motion
-from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
 from drivers.protocols.firmata import (
     FirmataProtocol,
@@ -22,7 +21,8 @@ from drivers.protocols.firmata import (
     configure_stepper,
     step_parts,
 )
-from drivers.protocols.laser import GetStatus
+from drivers.protocols.laser.protocol import GetStatus
+from drivers.protocols.numbers import parse_number
 
 log = logging.getLogger(__name__)
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import logging
 
-from drivers import commands as cmd
+from drivers.device import commands as cmd
+from drivers.device.motion import Motion, MoveStart
 from drivers.errors import MotionError
 from drivers.messages import Message
-from drivers.motion import Motion, MoveStart
 
 log = logging.getLogger(__name__)
 

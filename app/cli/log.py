@@ -1,6 +1,6 @@
 """`motionctl log decode FILE [--protocol P] [--filter REGEX] [--json]`: a traffic log, decoded by
 the protocol given, else by the one its connection notes name, else by the one its traffic reads
-as (drivers/log_origin.py); a simulator's record as the host's side of the link."""
+as (drivers/traffic/log_origin.py); a simulator's record as the host's side of the link."""
 
 from __future__ import annotations
 
@@ -9,13 +9,13 @@ import re
 from collections.abc import Callable
 from typing import Any
 
-from drivers.decoding import DecodedFrame, decode_records
 from drivers.errors import BadInput, MotionError
-from drivers.log_origin import Origin, host_view, origin_of
-from drivers.log_reader import LogRecord, read_any_log
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
-from drivers.registry import create_protocol
+from drivers.protocols.registry import create_protocol
+from drivers.traffic.decoding import DecodedFrame, decode_records
+from drivers.traffic.log_origin import Origin, host_view, origin_of
+from drivers.traffic.log_reader import LogRecord, read_any_log
 
 log = logging.getLogger("motionctl")
 

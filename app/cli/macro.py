@@ -6,9 +6,9 @@ import sys
 from typing import Any
 
 from app.common import macros
-from drivers.motion import Motion
+from drivers.device.motion import Motion
 from drivers.protocols.base import Protocol
-from drivers.registry import protocol_names
+from drivers.protocols.registry import protocol_names
 
 
 def find_macro(settings: Any, protocol: Protocol, name: str) -> macros.Macro:

@@ -29,12 +29,12 @@ from app.common.settings import (
     write_parameters,
     write_protocol_settings,
 )
+from drivers.device.motion import Motion
+from drivers.device.travel import TravelLimits, parse_travel
 from drivers.errors import BadInput, CommunicationError, DeviceError, MotionError, UnknownProtocol
-from drivers.motion import Motion
 from drivers.protocols.base import Protocol
-from drivers.registry import create_protocol
-from drivers.session import open_device
-from drivers.travel import TravelLimits, parse_travel
+from drivers.protocols.registry import create_protocol
+from drivers.session.device_session import open_device
 
 log = logging.getLogger("motionctl")
 

@@ -7,12 +7,12 @@ import time
 from collections.abc import Callable
 from typing import Any
 
+from drivers.device.motion import Motion
+from drivers.device.param_profile import read_profile
+from drivers.device.parameters import Parameter, ParameterWritten
 from drivers.errors import BadInput
-from drivers.motion import Motion
-from drivers.numbers import parse_number
-from drivers.param_profile import read_profile
-from drivers.parameters import Parameter, ParameterWritten
 from drivers.protocols.base import Protocol
+from drivers.protocols.numbers import parse_number
 
 SECONDS_PER_PACKET = 1.05  # a Visiomex reply comes 1 s after the packet; used for "time left"
 Remember = Callable[[dict[str, float]], None]

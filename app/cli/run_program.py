@@ -9,17 +9,17 @@ import time
 from dataclasses import dataclass
 from typing import Any
 
+from drivers.device.motion import Motion
+from drivers.device.travel import TravelLimits
 from drivers.errors import BadInput
 from drivers.messages import Message
-from drivers.motion import Motion
-from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
-from drivers.streaming import StreamProgress
+from drivers.protocols.numbers import parse_number
 from drivers.toolpath.geometry import check_fits, check_speeds, flatten
 from drivers.toolpath.loader import load_toolpath
 from drivers.toolpath.model import CHORD_TOLERANCE, Toolpath
 from drivers.toolpath.runner import ProgramRunner
-from drivers.travel import TravelLimits
+from drivers.toolpath.streaming import StreamProgress
 
 RUN_USAGE = "run FILE [--layer NAME]... [--tolerance MM] [--svg-scale MM]"
 PROGRESS_EVERY = 0.5  # s between progress lines

@@ -8,8 +8,8 @@ import logging
 from PySide6.QtCore import QSettings
 
 from app.common.settings import read_speed, write_speed
+from drivers.device.motion import Motion
 from drivers.errors import BadInput
-from drivers.motion import Motion
 from drivers.protocols.base import Protocol
 
 log = logging.getLogger(__name__)

@@ -12,13 +12,13 @@ from typing import Any
 
 from app.cli.command_line import UsageError, run_command, validate_offline
 from app.cli.devices import DEVICE_COMMANDS
+from drivers.device.motion import Motion
 from drivers.errors import BadFile, BadInput, MotionError
 from drivers.files import MACRO_MAX_BYTES, read_text
 from drivers.messages import Message, message_of
-from drivers.motion import Motion
-from drivers.numbers import parse_number
 from drivers.protocols.base import Protocol
-from drivers.registry import protocol_names
+from drivers.protocols.numbers import parse_number
+from drivers.protocols.registry import protocol_names
 
 log = logging.getLogger(__name__)
 

@@ -17,11 +17,11 @@ from PySide6.QtCore import QSettings, QStandardPaths
 
 from app.common.kept_positions import positions_file, read_kept, write_kept
 from app.common.messages import localized
+from drivers.device.travel import TravelLimits, parse_travel
 from drivers.errors import BadFile, BadInput
 from drivers.files import SETTINGS_MAX_BYTES, check_user_file
 from drivers.messages import Message, message_of, message_template
-from drivers.registry import get_protocol_class
-from drivers.travel import TravelLimits, parse_travel
+from drivers.protocols.registry import get_protocol_class
 
 log = logging.getLogger(__name__)
 

@@ -13,20 +13,20 @@ from PySide6.QtGui import QCloseEvent
 from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolBar, QWidget
 
 from app.common.settings import open_settings, read_number, settings_problem
-from app.window.connection import Connection
-from app.window.dock_balance import DockBalance
-from app.window.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
-from app.window.job_desk import JobDesk
+from app.window.console.log_viewers import LogViewers
+from app.window.device.connection import Connection
+from app.window.device.job_desk import JobDesk
+from app.window.device.machine_state import MachineState
+from app.window.device.ports import PortWatcher
+from app.window.device.worker_link import WorkerLink
 from app.window.keyboard_jog import KeyboardJog
-from app.window.layout_report import watch as watch_layout
-from app.window.layouts import DEVICE, OPERATE, Layouts
-from app.window.log_viewers import LogViewers
-from app.window.machine_state import MachineState
+from app.window.layout.dock_balance import DockBalance
+from app.window.layout.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
+from app.window.layout.layout_report import watch as watch_layout
+from app.window.layout.layouts import DEVICE, OPERATE, Layouts
+from app.window.layout.screen_fit import ScreenFit
 from app.window.menus import build_menus
-from app.window.ports import PortWatcher
-from app.window.screen_fit import ScreenFit
 from app.window.window_tools import WindowTools
-from app.window.worker_link import WorkerLink
 from widgets import status_line as status
 from widgets.connection_bar import ConnectionBar
 from widgets.coordinate_entry import CoordinateEntry
@@ -39,15 +39,15 @@ from widgets.status_line import StatusLine
 from widgets.view_tabs import ViewTabs
 
 if TYPE_CHECKING:
-    from app.window import jobs
-    from app.window.device_docks import DeviceDocks
-    from app.window.parameter_dock import ParameterDock
+    from app.window.console.traffic_console import RawConsole
+    from app.window.device import jobs
+    from app.window.device.worker import SerialWorker
+    from app.window.device.worker_thread import WorkerThread
+    from app.window.docks.device_docks import DeviceDocks
+    from app.window.docks.parameter_dock import ParameterDock
     from app.window.services import Point
-    from app.window.traffic_console import RawConsole
-    from app.window.worker import SerialWorker
-    from app.window.worker_thread import WorkerThread
+    from drivers.device.travel import TravelLimits
     from drivers.toolpath.geometry import FlatPath
-    from drivers.travel import TravelLimits
     from widgets._axes import Box
     from widgets.position_buffer import PositionBuffer
     from widgets.traffic_timeline import TrafficTimeline
@@ -350,8 +350,8 @@ class MainWindow(QMainWindow):
     def _build_console(self) -> RawConsole:
         """The traffic console and its timeline, in their docks (the calls made on the console
         until now are replayed on it next)."""
-        from app.window.traffic_console import RawConsole
-        from app.window.traffic_feed import TimelineFeed
+        from app.window.console.feed import TimelineFeed
+        from app.window.console.traffic_console import RawConsole
         from widgets.traffic_timeline import TrafficTimeline
 
         self.console = console = RawConsole(self)
@@ -373,14 +373,14 @@ class MainWindow(QMainWindow):
 
     def _build_parameters(self) -> ParameterDock:
         """The parameter editor, in its dock."""
-        from app.window.parameter_dock import ParameterDock
+        from app.window.docks.parameter_dock import ParameterDock
 
         self.parameters = ParameterDock(self, self)
         return self.parameters
 
     def _build_devices(self) -> DeviceDocks:
         """The device-specific panels, in their docks."""
-        from app.window.device_docks import DeviceDocks
+        from app.window.docks.device_docks import DeviceDocks
 
         self.devices = DeviceDocks(self, self, self.layouts.device_docks)
         return self.devices

@@ -44,7 +44,7 @@ from widgets._i18n import fill
 log = logging.getLogger(__name__)
 
 CONTEXT = "Preferences"  # the translation context of the labels and messages
-BYTES_PER_CONSOLE_LINE = 33  # the console's memory per line (drivers/traffic_index.py)
+BYTES_PER_CONSOLE_LINE = 33  # the console's memory per line (drivers/traffic/index.py)
 CONSOLE_MIN_LINES = 10_000
 CONSOLE_MAX_LINES = 10_000_000
 UNITS = ("mm", "in")

@@ -14,12 +14,12 @@ if TYPE_CHECKING:
     from PySide6.QtGui import QAction
     from PySide6.QtWidgets import QMenuBar
 
-    from app.window.jobs import Job
+    from app.window.device.jobs import Job
+    from app.window.device.worker import SerialWorker
+    from app.window.device.worker_thread import WorkerThread
     from app.window.keyboard_jog import KeyboardJog
-    from app.window.worker import SerialWorker
-    from app.window.worker_thread import WorkerThread
+    from drivers.device.travel import TravelLimits
     from drivers.toolpath.geometry import FlatPath
-    from drivers.travel import TravelLimits
     from widgets._axes import Box
     from widgets.connection_bar import ConnectionBar
     from widgets.coordinate_entry import CoordinateEntry

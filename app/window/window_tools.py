@@ -12,15 +12,15 @@ from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QApplication, QDockWidget, QMenu
 
 from app.common.settings import device_key
+from app.window.docks.work_frame import WorkFrame
 from app.window.preferences import Preferences, read_preferences, write_preferences
-from app.window.work_frame import WorkFrame
 from widgets._i18n import fill
 from widgets.lazy_view import LazyPart, LazyView, built
 
 if TYPE_CHECKING:
-    from app.window.macro_dock import MacroDock
+    from app.window.docks.macro_dock import MacroDock
     from app.window.services import WindowParts
-    from drivers.control_lines import ControlLines
+    from drivers.link.control_lines import ControlLines
 
 log = logging.getLogger(__name__)
 
@@ -78,7 +78,7 @@ class WindowTools(QObject):
 
     # -- built after the first paint -----------------------------------------------------------
     def _build_macros(self) -> MacroDock:
-        from app.window.macro_dock import MacroDock
+        from app.window.docks.macro_dock import MacroDock
 
         self.macros = MacroDock(self.window, self.window)  # type: ignore[arg-type]
         return self.macros

@@ -6,14 +6,14 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import ClassVar
 
-from drivers.capabilities import Capabilities
-from drivers.commands import Command, MoveBy, SetParameter
+from drivers.device.capabilities import Capabilities
+from drivers.device.commands import Command, MoveBy, SetParameter
+from drivers.device.events import Event
+from drivers.device.move_outcome import MoveOutcome
+from drivers.device.parameters import Parameter, ParameterWritten, find_parameter
 from drivers.errors import BadInput, FrameError, MotionError
-from drivers.events import Event
 from drivers.framers.base import Framer
 from drivers.messages import Message, message_of
-from drivers.move_outcome import MoveOutcome
-from drivers.parameters import Parameter, ParameterWritten, find_parameter
 
 Point = tuple[float, float, float]
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import re
 
-from drivers.capabilities import Capabilities, Completion
-from drivers.commands import (
+from drivers.device.capabilities import Capabilities, Completion
+from drivers.device.commands import (
     CheckErrors,
     Command,
     GetId,
@@ -21,12 +21,12 @@ from drivers.commands import (
     SetHome,
     SetSpeed,
 )
+from drivers.device.events import Ack, Done, ErrorReport, Event, PositionReport, TextLine
 from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
-from drivers.events import Ack, Done, ErrorReport, Event, PositionReport, TextLine
 from drivers.framers.lines import LineFramer
 from drivers.messages import Message
-from drivers.numbers import format_number
 from drivers.protocols.base import Exchange, Protocol
+from drivers.protocols.numbers import format_number
 
 MAX_COMMAND_LENGTH = 63  # the firmware's 64-byte buffer keeps 63 characters and a NUL
 HELP_LINE_COUNT = 12

@@ -11,11 +11,11 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from drivers.capabilities import Capabilities, Completion
-from drivers.client import Client
-from drivers.commands import Command, GetId, MoveBy, Raw
+from drivers.device.capabilities import Capabilities, Completion
+from drivers.device.client import Client
+from drivers.device.commands import Command, GetId, MoveBy, Raw
+from drivers.device.events import ErrorReport, Event, Feedback, TextLine
 from drivers.errors import BadInput, DeviceError, FrameError
-from drivers.events import ErrorReport, Event, Feedback, TextLine
 from drivers.framers.sysex import SysexFramer
 from drivers.messages import Message
 from drivers.protocols.base import Exchange, Point, Protocol, Setting

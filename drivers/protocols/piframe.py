@@ -13,10 +13,10 @@ import dataclasses
 import math
 import struct
 
-from drivers.capabilities import Capabilities, Completion
-from drivers.commands import Arc, Command, Dwell, Home, MoveTo, Raw, SetHome
+from drivers.device.capabilities import Capabilities, Completion
+from drivers.device.commands import Arc, Command, Dwell, Home, MoveTo, Raw, SetHome
+from drivers.device.events import Event, Feedback
 from drivers.errors import BadInput, FrameError
-from drivers.events import Event, Feedback
 from drivers.framers.fixed import FixedFramer
 from drivers.messages import Message
 from drivers.protocols.base import Exchange, Point, Protocol, Setting

@@ -8,7 +8,7 @@ from collections import deque
 from collections.abc import Container
 from typing import ClassVar
 
-from drivers.control_lines import ControlLines
+from drivers.link.control_lines import ControlLines
 from drivers.sim.clock import Clock, monotonic
 
 log = logging.getLogger(__name__)

@@ -14,8 +14,8 @@ import time
 from collections import deque
 from collections.abc import Callable
 
-from drivers.control_lines import ControlLines
 from drivers.framers.base import Framer
+from drivers.link.control_lines import ControlLines
 from drivers.sim.device import SimulatedDevice
 
 FAULT_COMMANDS = {

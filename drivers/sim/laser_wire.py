@@ -10,7 +10,7 @@ import math
 import struct
 from dataclasses import dataclass
 
-from drivers.protocols.laser_codec import crc16
+from drivers.protocols.laser.codec import crc16
 
 MOVE_LINEAR, DWELL, GO_HOME = 0x01, 0x02, 0x03
 GET_POSITION, GET_STATUS, SET_HOME, STOP, GET_ID = 0x10, 0x11, 0x12, 0x13, 0x14

@@ -5,8 +5,7 @@ from __future__ import annotations
 import logging
 from dataclasses import dataclass
 
-from drivers.protocols.visiomex import BOOT_BANNER
-from drivers.protocols.visiomex_model import (
+from drivers.protocols.visiomex.model import (
     DRIVING_MECHANISM,
     FULLCYCLE,
     MICROSTEP,
@@ -15,7 +14,8 @@ from drivers.protocols.visiomex_model import (
     FirmwareState,
     debug_lines,
 )
-from drivers.protocols.visiomex_timing import HOST_PACING, REPLY_LATENCY, stepping_start
+from drivers.protocols.visiomex.protocol import BOOT_BANNER
+from drivers.protocols.visiomex.timing import HOST_PACING, REPLY_LATENCY, stepping_start
 from drivers.sim.clock import Clock, monotonic
 from drivers.sim.device import BITS_PER_BYTE, SimulatedDevice
 from drivers.sim.visiomex_firmware import (

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from drivers.protocols.visiomex_model import PARAMETER_COUNT, POWER_ON, parse_atof, parse_atol
+from drivers.protocols.visiomex.model import PARAMETER_COUNT, POWER_ON, parse_atof, parse_atol
 
 __all__ = [
     "MOVE_TYPE",

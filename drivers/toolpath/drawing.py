@@ -15,8 +15,8 @@ import numpy as np
 import numpy.typing as npt
 
 from drivers.messages import Message
-from drivers.program import MAX_POINTS
 from drivers.toolpath.model import ArcTo, Line, Point, Source, Step, Toolpath, ToolpathError
+from drivers.toolpath.point_program import MAX_POINTS
 
 JOIN = 1e-6  # mm: a piece starting this close to where the last one ended needs no travel move
 DEGENERATE = 1e-9  # mm: a line or arc shorter than this is left out

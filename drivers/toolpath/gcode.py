@@ -22,8 +22,8 @@ from pathlib import Path
 
 from drivers.files import PROGRAM_MAX_BYTES, read_text
 from drivers.messages import Message
-from drivers.program import FLOAT32_MAX
 from drivers.toolpath.model import ArcTo, Dwell, Line, Source, Step, Toolpath, ToolpathError
+from drivers.toolpath.point_program import FLOAT32_MAX
 
 MAX_LINES = 1_000_000
 """A program's lines at most, as many as a CSV program's points (program.MAX_POINTS): some

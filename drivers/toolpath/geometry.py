@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from drivers.device.travel import TravelLimits
 from drivers.errors import BadInput
 from drivers.messages import Message
 from drivers.toolpath.model import (
@@ -26,7 +27,6 @@ from drivers.toolpath.model import (
     arc_angles,
     arc_sweep,
 )
-from drivers.travel import TravelLimits
 
 MAX_CHORDS = 100_000  # per arc: a huge arc at a tiny tolerance stays bounded
 FloatArray = npt.NDArray[np.float64]

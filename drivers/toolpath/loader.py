@@ -6,8 +6,8 @@ from collections.abc import Collection, Sequence
 from pathlib import Path
 
 from drivers.messages import Message
-from drivers.program import ProgramPoint, read_program
 from drivers.toolpath.model import CHORD_TOLERANCE, Line, Source, Step, Toolpath, ToolpathError
+from drivers.toolpath.point_program import ProgramPoint, read_program
 
 GCODE_SUFFIXES = (".gcode", ".nc", ".ngc", ".tap")
 POINT_SUFFIXES = (".csv", ".json")

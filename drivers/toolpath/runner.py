@@ -1,7 +1,7 @@
 """Running a toolpath on a device, the way each protocol can take it.
 
 - A device with a command queue (laser-frame) is streamed the flattened path, grouped and
-  acknowledged (drivers/streaming.py), dwells queued as DWELL.
+  acknowledged (drivers/toolpath/streaming.py), dwells queued as DWELL.
 - A device with arc moves (pi-frame) gets each arc as its own arc command (a Circular frame)
   and each straight move as a move; dwells go to the device.
 - Any other device (COXIRIS, Visiomex, Firmata) runs the flattened path as a sequence of moves,
@@ -21,14 +21,14 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 
-from drivers import commands as cmd
+from drivers.device import commands as cmd
+from drivers.device.motion import Motion
 from drivers.errors import Aborted, BadInput
 from drivers.messages import Message
-from drivers.motion import Motion
-from drivers.program import ProgramDwell, ProgramPoint
-from drivers.streaming import Streamer, StreamProgress
 from drivers.toolpath.geometry import FlatPath, check_fits, check_speeds, flatten
 from drivers.toolpath.model import CHORD_TOLERANCE, ArcTo, Dwell, Toolpath, arc_angles
+from drivers.toolpath.point_program import ProgramDwell, ProgramPoint
+from drivers.toolpath.streaming import Streamer, StreamProgress
 
 log = logging.getLogger(__name__)
 

@@ -1,4 +1,4 @@
-"""The panel's layout report (MOTIONPANEL_LAYOUT_REPORT, app/window/layout_report.py) as the
+"""The panel's layout report (MOTIONPANEL_LAYOUT_REPORT, app/window/layout/layout_report.py) as the
 acceptance tier reads it: the panel launched to write it, a layout switched to from the
 keyboard, and the report taken once the window has settled (a newer one than before, of that
 layout, at the size the window has on the screen, its views made)."""
@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from app.window.layout_report import ENVIRONMENT
+from app.window.layout.layout_report import ENVIRONMENT
 from tests.acceptance.conftest import Rig
 from tests.acceptance.xsession import Panel, XServer, wait_for
 

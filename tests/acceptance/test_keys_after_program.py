@@ -6,7 +6,8 @@ are made again, last in the focus chain, right after the Program dock's buttons)
 clicked with the mouse. The focus goes to Run, which goes off under it while the program runs,
 and Qt moves the focus on to the next in the chain: Pause and Stop are off too, so a tab bar,
 whose arrows switch tabs. The Run button is found on the screen from the panel's layout report
-(MOTIONPANEL_LAYOUT_REPORT, app/window/layout_report.py); the device's own record says what the
+(MOTIONPANEL_LAYOUT_REPORT, app/window/layout/layout_report.py); the device's own record says what
+the
 keys sent.
 """
 
@@ -18,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from app.window.layout_report import ENVIRONMENT
+from app.window.layout.layout_report import ENVIRONMENT
 from tests.acceptance.conftest import Rig
 from tests.acceptance.xsession import Panel, XServer, numbers, wait_for, write_program
 

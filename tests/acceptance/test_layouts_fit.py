@@ -2,7 +2,7 @@
 
 The real panel on a screen of each size, its window fitted to the screen, switched by Ctrl+1/2/3
 from the keyboard; a screenshot of each layout is kept. Qt's own account of what it shows comes
-from the panel's layout report (MOTIONPANEL_LAYOUT_REPORT, app/window/layout_report.py): no
+from the panel's layout report (MOTIONPANEL_LAYOUT_REPORT, app/window/layout/layout_report.py): no
 control of the layout's list may be hidden, clipped, covered or overlapping another, and the
 plots lie wholly inside the window.
 """
@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from app.window.layout_report import CONTROLS, ENVIRONMENT
+from app.window.layout.layout_report import CONTROLS, ENVIRONMENT
 from tests.acceptance.conftest import Rig
 from tests.acceptance.xsession import Panel, XServer, wait_for
 

@@ -50,15 +50,15 @@ def _where(sim) -> list[float]:
     return [float(v) for v in sim.fault("where").split()[2:]]
 
 
-# app/window/program_pause.py: what the window says of a paused laser-frame program
+# app/window/device/program_pause.py: what the window says of a paused laser-frame program
 _HOLDS = re.compile(r"the device still holds (\d+) move\(s\) .* in about (\d+) s")
 _STANDS_STILL = "paused: the device has run what it held; the stage stands still"
 
 
 def _device_replies(sim: Sim) -> list[Frame]:
     """The frames the device sent, by its own record (motionsim --record), decoded."""
-    from drivers.decoding import StreamDecoder
-    from drivers.registry import create_protocol
+    from drivers.protocols.registry import create_protocol
+    from drivers.traffic.decoding import StreamDecoder
 
     decoder = StreamDecoder(create_protocol("laser-frame"))
     return [

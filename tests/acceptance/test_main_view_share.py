@@ -3,7 +3,8 @@ every laptop size, and no plot is clipped.
 
 The real panel on a screen of each size, its window fitted to the screen (as an operator would),
 in Operate; Qt's own account of the layout comes from the layout report
-(MOTIONPANEL_LAYOUT_REPORT, app/window/layout_report.py): the largest position view's share of
+(MOTIONPANEL_LAYOUT_REPORT, app/window/layout/layout_report.py): the largest position view's share
+of
 the window's area, and each plot's place against the window and its neighbours.
 """
 

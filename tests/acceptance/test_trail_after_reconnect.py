@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 from PySide6.QtGui import QImage
 
-from app.window.layout_report import ENVIRONMENT
+from app.window.layout.layout_report import ENVIRONMENT
 from tests.acceptance.conftest import Rig
 from tests.acceptance.test_layouts_fit import _switch
 from tests.acceptance.test_parts_whole import _tab

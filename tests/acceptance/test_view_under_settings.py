@@ -26,7 +26,7 @@ import pytest
 from PySide6.QtCore import QSettings
 from PySide6.QtGui import QImage
 
-from app.window.layout_report import ENVIRONMENT
+from app.window.layout.layout_report import ENVIRONMENT
 from tests.acceptance.conftest import Rig
 from tests.acceptance.xsession import Panel, XServer, hold, wait_for
 

@@ -9,7 +9,7 @@ import pytest
 
 from tests.acceptance.conftest import Rig
 from tests.acceptance.xsession import XServer, numbers, wait_for, write_settings
-from tests.ser2net_proc import SER2NET, Ser2netProcess
+from tests.support.ser2net_proc import SER2NET, Ser2netProcess
 
 pytestmark = pytest.mark.skipif(SER2NET is None, reason="ser2net is not installed")
 

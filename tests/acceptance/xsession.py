@@ -27,7 +27,7 @@ from PySide6.QtCore import QSettings
 from PySide6.QtGui import QImage
 
 from app.common.settings import write_travel
-from drivers.travel import TravelLimits
+from drivers.device.travel import TravelLimits
 
 log = logging.getLogger(__name__)
 
@@ -315,8 +315,8 @@ class DeviceRecord:
     def received_frames(self, protocol: str) -> list[Line]:
         """What the device received, decoded by the protocol's own decoder (drivers/decoding),
         each frame's meaning as a line (e.g. "STOP" for laser-frame)."""
-        from drivers.decoding import StreamDecoder
-        from drivers.registry import create_protocol
+        from drivers.protocols.registry import create_protocol
+        from drivers.traffic.decoding import StreamDecoder
 
         decoder = StreamDecoder(create_protocol(protocol))
         frames: list[Line] = []
@@ -344,8 +344,8 @@ class Frame:
 
 def decode_frames(entries: Iterable[Entry], protocol: str) -> list[Frame]:
     """`entries` of a session log (the panel's directions), decoded by `protocol`'s decoder."""
-    from drivers.decoding import StreamDecoder
-    from drivers.registry import create_protocol
+    from drivers.protocols.registry import create_protocol
+    from drivers.traffic.decoding import StreamDecoder
 
     decoder = StreamDecoder(create_protocol(protocol))
     frames: list[Frame] = []

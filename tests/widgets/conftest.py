@@ -16,7 +16,7 @@ from widgets.position_view_3d import share_opengl_contexts
 
 share_opengl_contexts()  # as the application does: several GL views over the session
 
-from app.window.traffic_console import RawConsole  # noqa: E402
+from app.window.console.traffic_console import RawConsole  # noqa: E402
 from widgets.arc_entry import ArcEntry  # noqa: E402
 from widgets.coordinate_entry import CoordinateEntry  # noqa: E402
 from widgets.position_readout import PositionReadout  # noqa: E402
@@ -56,7 +56,7 @@ def entry(qtbot) -> CoordinateEntry:
 @pytest.fixture
 def console(qtbot) -> RawConsole:
     """A shown traffic console decoding COXIRIS, its times from 0."""
-    from drivers.registry import create_protocol
+    from drivers.protocols.registry import create_protocol
 
     widget = RawConsole()
     qtbot.addWidget(widget)

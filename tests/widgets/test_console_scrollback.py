@@ -11,11 +11,11 @@ import pytest
 from PySide6.QtCore import QCoreApplication
 from PySide6.QtWidgets import QAbstractItemView
 
-from app.window.traffic_console import TRIM_MARGIN, RawConsole
-from app.window.traffic_table import BYTES, REPLY
-from drivers.registry import create_protocol
-from drivers.traffic_index import TrafficIndex
-from drivers.traffic_search import compile_filter
+from app.window.console.table import BYTES, REPLY
+from app.window.console.traffic_console import TRIM_MARGIN, RawConsole
+from drivers.protocols.registry import create_protocol
+from drivers.traffic.index import TrafficIndex
+from drivers.traffic.search import compile_filter
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -258,7 +258,7 @@ def test_a_view_scrolled_up_keeps_its_lines_in_place(console: RawConsole) -> Non
 
 
 def test_the_timeline_starts_again_from_the_oldest_line_kept(console: RawConsole, qtbot) -> None:
-    from app.window.traffic_feed import TimelineFeed
+    from app.window.console.feed import TimelineFeed
     from widgets.traffic_timeline import TrafficTimeline
 
     timeline = TrafficTimeline()

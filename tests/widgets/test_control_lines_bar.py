@@ -6,7 +6,7 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QCheckBox, QLabel, QPushButton
 
-from drivers.control_lines import ControlLines
+from drivers.link.control_lines import ControlLines
 from widgets.connection_bar import ConnectionBar
 from widgets.control_lines_bar import ControlLinesBar
 

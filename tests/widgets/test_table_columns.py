@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from app.window.traffic_table import BYTES, MEANING, REPLY
+from app.window.console.table import BYTES, MEANING, REPLY
 from widgets.parameter_editor import ParameterEditor, ParameterRow
 from widgets.parameter_table import DESC_COL, DESC_LEAST, WRITTEN_COL
 from widgets.parameter_values import AFTER_SET
@@ -50,7 +50,7 @@ def test_last_written_shows_a_computed_value_whole_and_the_description_has_room(
 
 
 def test_the_console_gives_bytes_and_meaning_the_width_not_the_reply(qtbot) -> None:
-    from app.window.traffic_console import RawConsole
+    from app.window.console.traffic_console import RawConsole
 
     console = RawConsole()
     qtbot.addWidget(console)

@@ -9,10 +9,10 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QColor
 
-from app.window.traffic_console import RawConsole
-from app.window.traffic_table import BYTES, ERROR_BACKGROUND, MATCH_BACKGROUND, REPLY
-from drivers.registry import create_protocol
-from drivers.traffic_lines import KINDS
+from app.window.console.table import BYTES, ERROR_BACKGROUND, MATCH_BACKGROUND, REPLY
+from app.window.console.traffic_console import RawConsole
+from drivers.protocols.registry import create_protocol
+from drivers.traffic.lines import KINDS
 
 pytestmark = pytest.mark.timeout(60)
 LEFT = Qt.MouseButton.LeftButton
@@ -160,7 +160,7 @@ def test_a_retransmission_links_to_its_first_copy(qtbot) -> None:
     console = RawConsole()
     qtbot.addWidget(console)
     console.set_protocol(create_protocol("laser-frame"))
-    from drivers.commands import GetPosition
+    from drivers.device.commands import GetPosition
 
     frame = create_protocol("laser-frame").encode(GetPosition())
     console.append_traffic("tx", frame, 1.0)  # no answer
@@ -338,7 +338,7 @@ def test_send_disabled(console: RawConsole, qtbot, record) -> None:
 def test_the_timeline_gets_the_bytes_of_each_second_and_its_first_line(console, qtbot) -> None:
     """TimelineFeed adds a second's bytes of a direction in one call: the same bins and first
     lines as a call a line, and the latencies."""
-    from app.window.traffic_feed import TimelineFeed
+    from app.window.console.feed import TimelineFeed
     from widgets.traffic_timeline import TrafficTimeline
 
     timeline = TrafficTimeline()

@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from app.window.traffic_console import RawConsole
-from drivers.traffic import Traffic
+from app.window.console.traffic_console import RawConsole
+from drivers.traffic.records import Traffic
 
 pytestmark = pytest.mark.timeout(60)
 

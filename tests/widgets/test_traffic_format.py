@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from drivers.traffic_lines import escape
+from drivers.traffic.lines import escape
 from widgets.traffic_format import parse_hex, unescape
 
 

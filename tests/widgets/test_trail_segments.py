@@ -181,7 +181,7 @@ def _connect(qtbot, win: MainWindow, url: str, protocol: str, baud: int = 115200
 def test_a_reconnect_breaks_the_trail_and_another_device_clears_it(
     qtbot, window: MainWindow
 ) -> None:
-    from app.window import jobs
+    from app.window.device import jobs
 
     _connect(qtbot, window, "sim://coxiris?speed=100", "coxiris")
     finished: list[object] = []

@@ -9,16 +9,16 @@ from PySide6.QtCore import Qt
 from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QLineEdit
 
-from app.window.parameter_dock import editor_rows, shown_derivation
-from drivers.param_profile import ProfileError, format_profile, parse_profile
-from drivers.protocols.visiomex import VisiomexProtocol
-from drivers.protocols.visiomex_advice import firmware_after_writing, timed_move
-from drivers.protocols.visiomex_model import (
+from app.window.docks.parameter_dock import editor_rows, shown_derivation
+from drivers.device.param_profile import ProfileError, format_profile, parse_profile
+from drivers.protocols.visiomex.advice import firmware_after_writing, timed_move
+from drivers.protocols.visiomex.model import (
     OVERWRITTEN_AFTER_SET,
     OVERWRITTEN_AT_MOVE,
     POWER_ON,
 )
-from drivers.protocols.visiomex_params import BY_ID, PARAMETERS
+from drivers.protocols.visiomex.params import BY_ID, PARAMETERS
+from drivers.protocols.visiomex.protocol import VisiomexProtocol
 from widgets.parameter_editor import ParameterEditor
 from widgets.parameter_table import NAME_COL, WRITTEN_COL
 

@@ -6,8 +6,8 @@ from __future__ import annotations
 import pytest
 from PySide6.QtCore import Qt
 
+from drivers.device.work_zero import WorkZero, format_work_zero, parse_work_zero
 from drivers.errors import BadInput
-from drivers.work_zero import WorkZero, format_work_zero, parse_work_zero
 from widgets.coordinate_entry import MACHINE, WORK, CoordinateEntry
 from widgets.position_readout import PositionReadout
 

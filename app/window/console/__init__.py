@@ -1,0 +1,1 @@
+"""The traffic console and the offline log viewer."""

@@ -1,0 +1,1 @@
+"""The window's docks: program, macros, parameters, work zero, device kinds."""

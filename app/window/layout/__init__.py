@@ -1,0 +1,1 @@
+"""The window's layouts and how its panels share the screen."""

@@ -1,0 +1,1 @@
+"""The laser-robot framed link: its codec and its protocol."""

@@ -1,0 +1,102 @@
+"""Which protocol bytes from a device read as: a device that answers in another protocol's way
+is named ("this looks like a Visiomex controller, not COXIRIS")."""
+
+from __future__ import annotations
+
+import logging
+
+from drivers.device.events import Event, TextLine, Undecodable
+from drivers.errors import MotionError
+from drivers.framers.lines import LineFramer
+from drivers.messages import Message
+from drivers.protocols.base import Protocol
+from drivers.protocols.registry import create_protocol, protocol_names
+
+log = logging.getLogger(__name__)
+
+DEVICE_NAMES = {
+    "coxiris": "COXIRIS",
+    "visiomex": "Visiomex",
+    "firmata": "Firmata",
+    "laser-frame": "laser-frame",
+    "pi-frame": "pi-frame",
+}
+"""How each protocol's devices are called in a sentence (the protocol's name if not here)."""
+
+
+def device_name(protocol: str) -> str:
+    """`Visiomex` for "visiomex": the protocol's devices as a sentence names them."""
+    return DEVICE_NAMES.get(protocol, protocol)
+
+
+def recognised(protocol: Protocol, data: bytes) -> int:
+    """How many frames in `data` the protocol reads as something of its own: a reply, a report,
+    its boot banner; plain text lines and undecodable frames do not count."""
+    try:
+        framer = protocol.new_framer()
+        frames, rest = framer.split(data)
+        if rest and isinstance(framer, LineFramer):
+            # A line the device was still printing when the wait gave up counts too: a
+            # Visiomex banner's `Checkpoint 2` can come a few ms before its CR LF.
+            frames += framer.split(rest + framer.terminator)[0]
+    except MotionError:
+        return 0
+    count = 0
+    for frame in frames:
+        try:
+            events: list[Event] = protocol.decode(frame)
+        except MotionError:
+            continue
+        for event in events:
+            if protocol.is_restart(event) or not isinstance(event, TextLine | Undecodable):
+                count += 1
+    return count
+
+
+def recognised_sent(protocol: Protocol, data: bytes) -> int:
+    """How many frames in bytes a host sent the protocol reads as moves its device makes (a
+    device that never answers, such as pi-frame's, is known by what it is sent)."""
+    framer = protocol.new_tx_framer()
+    try:
+        frames = [data] if framer is None else framer.split(data)[0]
+    except MotionError:
+        return 0
+    count = 0
+    for frame in frames:
+        try:
+            command = protocol.sent_command(frame)
+        except MotionError:
+            continue
+        count += command is not None
+    return count
+
+
+def sniff(data: bytes, expected: str) -> str | None:
+    """The protocol, other than `expected`, that reads `data` best, when it reads more of it as
+    its own than `expected` does; None when none does (or nothing came)."""
+    if not data:
+        return None
+    scores: dict[str, int] = {}
+    for name in protocol_names():
+        try:
+            scores[name] = recognised(create_protocol(name), data)
+        except MotionError as exc:  # a protocol that cannot be made is no candidate
+            log.debug("sniffing as %s: %s", name, exc)
+    own = scores.pop(expected, 0)
+    best = max(scores, key=lambda name: scores[name], default=None)
+    if best is None or scores[best] <= own:
+        return None
+    return best
+
+
+def looks_like(data: bytes, expected: str) -> Message | None:
+    """ "this looks like a Visiomex controller, not COXIRIS" when `data` reads as another
+    protocol's; None otherwise."""
+    found = sniff(data, expected)
+    if found is None:
+        return None
+    return Message(
+        "this looks like a {found} controller, not {expected}",
+        found=device_name(found),
+        expected=device_name(expected),
+    )

@@ -1,0 +1,1 @@
+"""The Visiomex VMR2P0R0001 packet protocol: codec, parameters, the firmware's arithmetic."""

@@ -1,0 +1,1 @@
+"""Helpers the tests share: simulator processes, relays, fakes, e2e runners."""
