@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from contextlib import contextmanager
+from pathlib import Path
 
 import pytest
 from PySide6.QtCore import QObject, Slot
@@ -58,9 +59,10 @@ class States(QObject):
 def device(qtbot, window: MainWindow, protocol: str, *args: str) -> Iterator[SimProcess]:
     """`motionsim --control PROTOCOL --instant` with the window connected to it."""
     sim = SimProcess(protocol, "--instant", *args, control=True)
+    port = args[args.index("--link") + 1] if "--link" in args else sim.path  # its own name
     try:
         with qtbot.waitSignal(window.settled, timeout=WAIT_MS):
-            window.connect_device(sim.path, protocol, get_protocol_class(protocol).default_baud())
+            window.connect_device(port, protocol, get_protocol_class(protocol).default_baud())
         window.worker.poll_idle_s = 0.2  # the idle position reads, sooner than the 1 s default
         if protocol == "firmata":  # the stepper is configured from its panel first
             window.findChild(QPushButton, "firmataConfigure").click()
@@ -223,12 +225,15 @@ def test_a_reply_to_another_command_never_leaves_a_false_position(
 
 @pytest.mark.parametrize("protocol", ("coxiris", "laser-frame", "visiomex", "firmata", "pi-frame"))
 def test_a_vanished_device_is_an_error_and_reconnects_when_back_slot_only(
-    qtbot, window: MainWindow, protocol: str
+    qtbot, window: MainWindow, protocol: str, tmp_path: Path
 ) -> None:
     """Only the window's slot for a port the port list shows again; the worker's own watch for
-    a lost port is tested with real processes in test_reconnect_real.py."""
+    a lost port is tested with real processes in test_reconnect_real.py. The device comes back
+    under the same name (`--link`), as a USB adapter does: a pty of another number would be
+    another port, so another device, whatever else ran beside the test."""
     states = States(window)
-    with device(qtbot, window, protocol) as sim:
+    link = str(tmp_path / "ttyDEVICE")
+    with device(qtbot, window, protocol, "--link", link) as sim:
         jog(qtbot, window, 2.0)
         sim.fault("vanish")
         first_error(qtbot, states)
@@ -237,13 +242,11 @@ def test_a_vanished_device_is_an_error_and_reconnects_when_back_slot_only(
         window.disconnect_device()  # the worker watches no more: only the slot reconnects
         qtbot.waitUntil(lambda: window.worker._watch is None, timeout=WAIT_MS)
         window.connection.last = last
-        back = SimProcess(protocol, "--instant")
+        back = SimProcess(protocol, "--instant", "--link", link)
         try:
-            # A new pty may get another number: announce it as the lost port's return.
-            _, name, baud = window.connection.last
-            window.connection.last = (back.path, name, baud)
+            assert window.connection.last[0] == link
             with qtbot.waitSignal(window.settled, timeout=WAIT_MS):
-                window.port_watcher.port_added.emit(back.path)
+                window.port_watcher.port_added.emit(link)
             wait_connected(qtbot, window)
             assert_position_truthful(window, protocol, 0.0)
         finally:
