@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from types import FrameType
 
 from drivers.errors import UnknownProtocol
-from drivers.protocols.registry import create_protocol
+from drivers.protocols.registry import create_protocol, entries, has_variants
 from drivers.sim.faults import FAULT_COMMANDS, FaultError, FaultyDevice
 from drivers.sim.pty_server import PtyServer
 from drivers.sim.registry import create_device, simulator_names
@@ -30,7 +30,11 @@ def build_parser() -> argparse.ArgumentParser:
         description="Serve a simulated positioning device on a pseudo-terminal. The first line "
         "on stdout is the device path; it serves until SIGTERM or SIGINT.",
     )
-    parser.add_argument("protocol", help="one of: " + ", ".join(simulator_names()))
+    simulated = [entry for entry in entries() if entry.name in simulator_names()]
+    parser.add_argument(
+        "protocol",
+        help="one of: " + "; ".join(f"{e.name} ({e.description})" for e in simulated),
+    )
     parser.add_argument("--baud", type=int, help="line rate to emulate (default: the device's)")
     parser.add_argument(
         "--no-line-timing",
@@ -44,8 +48,10 @@ def build_parser() -> argparse.ArgumentParser:
     )
     parser.add_argument(
         "--variant",
-        choices=("seed", "prefixed", "board12"),
-        help="Visiomex: packet profile (default: seed)",
+        choices=list(dict.fromkeys(v for e in simulated for v in e.variants)),
+        help="the protocol's wire variant, "
+        + "; ".join(f"{e.name}: {', '.join(e.variants)}" for e in simulated if e.variants)
+        + " (default: the first)",
     )
     parser.add_argument(
         "--no-bugs",
@@ -123,8 +129,6 @@ def main(argv: Sequence[str] | None = None) -> int:
             device_options["speed"] = options.speed
     elif options.protocol == "visiomex":
         device_options["bugs"] = not options.no_bugs
-        if options.variant is not None:
-            device_options["variant"] = options.variant
         if options.pace is not None:
             device_options["pace"] = options.pace
     elif options.protocol == "firmata" and options.reset_delay is not None:
@@ -133,6 +137,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         for key in _LASER_OPTIONS:
             if getattr(options, key) is not None:
                 device_options[key] = getattr(options, key)
+    if options.variant is not None and has_variants(options.protocol):
+        device_options["variant"] = options.variant
     try:
         probe = create_device(options.protocol, **device_options)
     except (UnknownProtocol, ValueError) as exc:  # ValueError: a fault rate out of range
@@ -142,7 +148,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     device = create_device(options.protocol, baud=baud, **device_options)
     faulty = None
     if options.control:
-        variant = options.variant if options.protocol == "visiomex" else None
+        variant = options.variant if has_variants(options.protocol) else None
         faulty = FaultyDevice(
             lambda: create_device(options.protocol, baud=baud, **device_options),
             create_protocol(options.protocol, variant).new_framer(),
@@ -160,7 +166,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"motionsim: cannot link {options.link}: {exc}", file=sys.stderr)
         return 2
     if writer is not None:  # what the log readers need: protocol, port, and whose side it is
-        variant = options.variant if options.protocol == "visiomex" else None
+        variant = options.variant if has_variants(options.protocol) else None
         speaks = create_protocol(options.protocol, variant)
         writer.note(device_side_note(server.path, speaks, baud or probe.default_baud))
 

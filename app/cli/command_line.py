@@ -21,9 +21,10 @@ from drivers.errors import BadInput
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
 from drivers.protocols.numbers import parse_number
+from drivers.protocols.registry import protocol_names
 from drivers.traffic.records import RX, Traffic
 
-PROTOCOL_CHOICES = ("coxiris", "visiomex", "laser-frame", "pi-frame", "firmata")
+PROTOCOL_CHOICES = tuple(protocol_names())  # the built-in protocols and the installed plugins'
 COMMANDS = (
     "id", "position", "home", "set-home", "move", "jog", "speed", "limits", "check", "raw", "param",
     *DEVICE_COMMANDS, "log", "macro",

@@ -10,23 +10,16 @@ from drivers.errors import MotionError
 from drivers.framers.lines import LineFramer
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
-from drivers.protocols.registry import create_protocol, protocol_names
+from drivers.protocols.registry import create_protocol, entries
 
 log = logging.getLogger(__name__)
 
-DEVICE_NAMES = {
-    "coxiris": "COXIRIS",
-    "visiomex": "Visiomex",
-    "firmata": "Firmata",
-    "laser-frame": "laser-frame",
-    "pi-frame": "pi-frame",
-}
-"""How each protocol's devices are called in a sentence (the protocol's name if not here)."""
-
 
 def device_name(protocol: str) -> str:
-    """`Visiomex` for "visiomex": the protocol's devices as a sentence names them."""
-    return DEVICE_NAMES.get(protocol, protocol)
+    """`Visiomex` for "visiomex": the protocol's devices as a sentence names them (its
+    declaration's display name; the protocol's name if it has none)."""
+    names = {entry.name: entry.display_name for entry in entries()}
+    return names.get(protocol) or protocol
 
 
 def recognised(protocol: Protocol, data: bytes) -> int:
@@ -77,7 +70,7 @@ def sniff(data: bytes, expected: str) -> str | None:
     if not data:
         return None
     scores: dict[str, int] = {}
-    for name in protocol_names():
+    for name in (entry.name for entry in entries() if entry.sniff):
         try:
             scores[name] = recognised(create_protocol(name), data)
         except MotionError as exc:  # a protocol that cannot be made is no candidate

@@ -1,36 +1,42 @@
-"""Simulated devices by protocol name, imported lazily."""
+"""Simulated devices by protocol name, read from the protocols' declarations and imported lazily."""
 
 from __future__ import annotations
 
-import importlib
 from typing import Any
 
 from drivers.errors import UnknownProtocol
+from drivers.protocols.registry import ProtocolEntry, entries, load_object
 from drivers.sim.clock import Clock, monotonic
 from drivers.sim.device import SimulatedDevice
 
-SIMULATORS: dict[str, tuple[str, str]] = {
-    "coxiris": ("drivers.sim.coxiris_device", "CoxirisDevice"),
-    "visiomex": ("drivers.sim.visiomex_device", "VisiomexDevice"),
-    "pi-frame": ("drivers.sim.piframe_device", "PiFrameDevice"),
-    "firmata": ("drivers.sim.firmata_device", "FirmataDevice"),
-    "laser-frame": ("drivers.sim.laser_device", "LaserDevice"),
-}
+
+def _simulated() -> dict[str, ProtocolEntry]:
+    return {entry.name: entry for entry in entries() if entry.simulator}
 
 
 def simulator_names() -> list[str]:
     """Protocols that have a simulated device."""
-    return sorted(SIMULATORS)
+    return sorted(_simulated())
+
+
+def simulator_class(name: str) -> type[SimulatedDevice]:
+    """The simulated device class of protocol `name`; UnknownProtocol where there is none or it
+    cannot be loaded."""
+    entry = _simulated().get(name)
+    if entry is None or entry.simulator is None:
+        known = ", ".join(simulator_names())
+        raise UnknownProtocol(f"no simulator for {name!r} (simulators: {known})")
+    try:
+        loaded = load_object(entry.simulator)
+    except Exception as exc:  # a plugin's broken module: that simulator only is lost
+        raise UnknownProtocol(f"the {name} simulator cannot be loaded: {exc}") from exc
+    if not (isinstance(loaded, type) and issubclass(loaded, SimulatedDevice)):
+        raise UnknownProtocol(f"the {name} simulator {entry.simulator} is not a SimulatedDevice")
+    return loaded
 
 
 def create_device(
     name: str, clock: Clock = monotonic, baud: int | None = None, **options: Any
 ) -> SimulatedDevice:
     """A simulated device for protocol `name`; `options` go to its constructor."""
-    try:
-        module_name, class_name = SIMULATORS[name]
-    except KeyError:
-        known = ", ".join(simulator_names())
-        raise UnknownProtocol(f"no simulator for {name!r} (simulators: {known})") from None
-    device_class: type[SimulatedDevice] = getattr(importlib.import_module(module_name), class_name)
-    return device_class(clock, baud, **options)
+    return simulator_class(name)(clock, baud, **options)
