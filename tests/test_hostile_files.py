@@ -130,15 +130,17 @@ def test_a_file_grown_past_its_limit_after_the_check_is_read_no_further(
     path.write_text(good + "\n" * 4096, encoding="utf-8")
     monkeypatch.setattr(files, "_check_status", lambda *args: None)
     for constant in ("PROFILE_MAX_BYTES", "PROGRAM_MAX_BYTES", "LOG_MAX_BYTES"):
-        monkeypatch.setattr(f"drivers.{_module(constant)}.{constant}", 1024)
+        monkeypatch.setattr(f"{_module(constant)}.{constant}", 1024)
     monkeypatch.setattr(files, "CHUNK_BYTES", 256)
     assert "larger than 1 KiB" in _refused(read, error, path)
 
 
 def _module(constant: str) -> str:
-    return {"PROFILE": "param_profile", "PROGRAM": "program", "LOG": "log_reader"}[
-        constant.split("_")[0]
-    ]
+    return {
+        "PROFILE": "drivers.device.param_profile",
+        "PROGRAM": "drivers.toolpath.point_program",
+        "LOG": "drivers.traffic.log_reader",
+    }[constant.split("_")[0]]
 
 
 def test_a_file_swapped_for_a_fifo_after_the_check_does_not_block(

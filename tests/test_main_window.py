@@ -250,6 +250,6 @@ def test_reconnects_when_the_lost_port_comes_back_slot_only(qtbot, window: MainW
 
 
 def test_escape_stops(qtbot, window: MainWindow) -> None:
-    window.worker.submit(__import__("app.window.device.jobs").window.jobs.HomeJob())
+    window.worker.submit(__import__("app.window.device.jobs").window.device.jobs.HomeJob())
     qtbot.keyClick(window, Qt.Key.Key_Escape)
     assert "not sent" in window.status_line.message()
