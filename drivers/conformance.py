@@ -52,8 +52,14 @@ def check_entry(entry: ProtocolEntry, settings: Mapping[str, float] | None = Non
     except MotionError as exc:
         return [*problems, f"{entry.name}: the protocol class cannot be loaded: {exc}"]
     problems += check_protocol_class(entry, protocol_class)
-    for variant in entry.variants or (None,):
-        problems += check_protocol(entry.name, protocol_class(variant))
+    names: list[str | None] = [v.name for v in protocol_class.variants]
+    for variant in names or [None]:
+        try:
+            protocol = protocol_class(variant)
+        except Exception as exc:  # a front end makes one with the name alone
+            problems.append(f"{entry.name}: {protocol_class.__name__}({variant!r}) failed: {exc}")
+            continue
+        problems += check_protocol(entry.name, protocol)
     if entry.simulator is not None:
         problems += check_simulator(entry)
         if not problems:
@@ -79,8 +85,9 @@ def check_declaration(entry: ProtocolEntry) -> Problems:
 def check_protocol_class(entry: ProtocolEntry, protocol_class: type[Protocol]) -> Problems:
     """The class attributes a front end reads before it makes an instance."""
     problems = []
-    if getattr(protocol_class, "name", None) != entry.name:
-        problems.append(f"{entry.name}: the class's name is {protocol_class.name!r}")
+    said = getattr(protocol_class, "name", None)
+    if said != entry.name:
+        problems.append(f"{entry.name}: the class's name is {said!r}")
     declared = tuple(v.name for v in protocol_class.variants)
     if declared != entry.variants:
         problems.append(
@@ -189,8 +196,9 @@ def check_simulator(entry: ProtocolEntry) -> Problems:
     except MotionError as exc:
         return [f"{entry.name}: {exc}"]
     problems = []
-    if getattr(device_class, "protocol", None) != entry.name:
-        problems.append(f"{entry.name}: the simulator's protocol is {device_class.protocol!r}")
+    said = getattr(device_class, "protocol", None)
+    if said != entry.name:
+        problems.append(f"{entry.name}: the simulator's protocol is {said!r}")
     try:
         make: Callable[..., SimulatedDevice] = device_class
         device = make(lambda: 0.0, None, instant=True, mute=False)

@@ -1,9 +1,10 @@
 """Fuzzing every framer, decoder and file reader: any bytes in, only the project's errors out.
 
-For each of the five protocols (every wire variant): the framers (RX and TX) fed any stream in
-any chunking make progress, keep bounded memory and frame alike however the bytes arrive; the
-decoder, `describe_sent`, `sent_kind`, `expects_reply`, `check_raw`, `raw_exchange` and the
-reply trackers take anything; `StreamDecoder` and `TrafficIndex` take any traffic and read every
+For each registered protocol, the five built-in ones and any installed plugin's (every wire
+variant): the framers (RX and TX) fed any stream in any chunking make progress, keep bounded
+memory and frame alike however the bytes arrive; the decoder, `describe_sent`, `sent_kind`,
+`expects_reply`, `check_raw`, `raw_exchange` and the reply trackers take anything;
+`StreamDecoder` and `TrafficIndex` take any traffic and read every
 line back; the log, spy, profile and program readers take any text or bytes. The streams mix
 valid frames (encoded commands, documented replies) with their mutations and pure noise, so the
 fuzzer reaches deep into the decoders. Regression tests for what it found are at the end.
@@ -48,8 +49,10 @@ from drivers.protocols.laser.codec import (
     decode_instructions,
 )
 from drivers.protocols.laser.protocol import GetStatus, LaserReply, QueuedGroup
-from drivers.protocols.registry import create_protocol, get_protocol_class, protocol_names
+from drivers.protocols.registry import BUILT_IN, create_protocol, get_protocol_class, protocol_names
 from drivers.protocols.visiomex.params import PARAMETERS as VISIOMEX_PARAMETERS
+from drivers.sim.clock import ManualClock
+from drivers.sim.registry import create_device, simulator_names
 from drivers.toolpath.point_program import ProgramError, parse_csv, parse_json, read_program
 from drivers.traffic.decoding import DecodedFrame, StreamDecoder, decode_records
 from drivers.traffic.index import TrafficIndex
@@ -75,7 +78,7 @@ def _all_variants() -> list[tuple[str, str | None]]:
 
 VARIANTS = _all_variants()
 IDS = [f"{n}-{v}" if v else n for n, v in VARIANTS]
-assert {n for n, _ in VARIANTS} == {"coxiris", "visiomex", "pi-frame", "firmata", "laser-frame"}
+assert {n for n, _ in VARIANTS} == set(protocol_names())  # every registered one, plugins too
 
 # -- valid material to start from ---------------------------------------------------------------
 
@@ -229,8 +232,40 @@ def stream_of(samples: list[bytes], max_pieces: int = 10) -> st.SearchStrategy[b
     return st.lists(st.one_of(*pieces), max_size=max_pieces).map(b"".join)
 
 
+def test_the_sample_replies_are_those_of_the_built_in_protocols() -> None:
+    assert set(REPLIES) == {entry.name for entry in BUILT_IN}
+
+
+def simulated_replies(name: str) -> list[bytes]:
+    """What the protocol's simulator answers to the sample commands (a plugin's replies: the
+    built-in protocols have theirs written out in REPLIES)."""
+    if name not in simulator_names():
+        return []
+    protocol, clock = create_protocol(name), ManualClock()
+    device = create_device(name, clock, instant=True)
+    device.boot()
+    out = []
+    for frame in sent_samples(protocol):
+        device.receive(frame)
+        clock.advance(1.0)
+        out.append(device.read_output())
+    return [reply for reply in out if reply]
+
+
+_SIMULATED: dict[str, list[bytes]] = {}
+
+
+def replies_of(name: str) -> list[bytes]:
+    """The sample replies of a protocol: written out, or its simulator's."""
+    if name in REPLIES:
+        return REPLIES[name]
+    if name not in _SIMULATED:
+        _SIMULATED[name] = simulated_replies(name)
+    return _SIMULATED[name]
+
+
 def samples_for(protocol) -> list[bytes]:
-    return REPLIES[protocol.name] + sent_samples(protocol)
+    return replies_of(protocol.name) + sent_samples(protocol)
 
 
 def chunked(data: bytes) -> st.SearchStrategy[list[bytes]]:
@@ -414,7 +449,7 @@ BUILT_EVENTS = st.one_of(
 @given(data=st.data())
 def test_reply_trackers_take_any_events(name, variant, data) -> None:
     protocol = create_protocol(name, variant)
-    stream = data.draw(stream_of(REPLIES[name] or sent_samples(protocol)), "replies")
+    stream = data.draw(stream_of(replies_of(name) or sent_samples(protocol)), "replies")
     events: list[Event] = []
     for frame in protocol.new_framer().split(stream)[0]:
         events += decode_or_none(protocol, frame) or []
@@ -441,7 +476,7 @@ DIRECTION = st.sampled_from(["tx", "rx"])
 
 def traffic_of(protocol) -> st.SearchStrategy[list[tuple[str, bytes]]]:
     tx = stream_of(sent_samples(protocol), max_pieces=3)
-    rx = stream_of(REPLIES[protocol.name] or sent_samples(protocol), max_pieces=3)
+    rx = stream_of(replies_of(protocol.name) or sent_samples(protocol), max_pieces=3)
     return st.lists(
         st.one_of(st.tuples(st.just("tx"), tx), st.tuples(st.just("rx"), rx)), max_size=10
     )
@@ -482,7 +517,7 @@ def test_replayed_reply_trackers_pair_as_live_ones(name, variant, data) -> None:
     with every tracker built and fed live. Traffic is repeated so that scripts are replayed."""
     protocol = create_protocol(name, variant)
     whole = [("tx", frame) for frame in sent_samples(protocol)]  # whole frames: trackers engage
-    whole += [("rx", frame) for frame in REPLIES[protocol.name]]
+    whole += [("rx", frame) for frame in replies_of(protocol.name)]
     vocabulary = st.lists(st.sampled_from(whole), min_size=2, max_size=6, unique=True)
     exchanges = vocabulary.flatmap(lambda words: st.lists(st.sampled_from(words), max_size=60))
     traffic = data.draw(st.one_of(exchanges, traffic_of(protocol)), "traffic") * 3
