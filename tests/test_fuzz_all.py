@@ -232,13 +232,14 @@ def stream_of(samples: list[bytes], max_pieces: int = 10) -> st.SearchStrategy[b
     return st.lists(st.one_of(*pieces), max_size=max_pieces).map(b"".join)
 
 
-def test_the_sample_replies_are_those_of_the_built_in_protocols() -> None:
-    assert set(REPLIES) == {entry.name for entry in BUILT_IN}
+def test_the_sample_replies_are_of_built_in_protocols() -> None:
+    """No sample replies left of a protocol gone (one without them uses its simulator's)."""
+    assert set(REPLIES) <= {entry.name for entry in BUILT_IN}
 
 
 def simulated_replies(name: str) -> list[bytes]:
-    """What the protocol's simulator answers to the sample commands (a plugin's replies: the
-    built-in protocols have theirs written out in REPLIES)."""
+    """What the protocol's simulator answers to the sample commands (for a protocol without
+    replies written out in REPLIES, a plugin's)."""
     if name not in simulator_names():
         return []
     protocol, clock = create_protocol(name), ManualClock()
