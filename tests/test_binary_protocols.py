@@ -23,7 +23,7 @@ from drivers.protocols.firmata import (
 )
 from drivers.protocols.piframe import PiFrameProtocol
 
-FIRMATA_REFERENCE = [  # PROTOCOLS.md §5: PyMata 2.20 / pymata4 1.15, byte for byte
+FIRMATA_REFERENCE = [  # drivers/protocols/README.md §5: PyMata 2.20 / pymata4 1.15, byte for byte
     (StepperConfig(200, (8, 9)), "F0 72 00 48 01 08 09 F7"),
     (StepperConfig(4096, (8, 9, 10, 11)), "F0 72 00 00 20 08 09 0A 0B F7"),
     (StepperStep(300, 500), "F0 72 01 2C 02 00 74 03 01 F7"),

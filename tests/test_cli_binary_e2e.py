@@ -53,7 +53,8 @@ def pi_frame(
     end: int = 0,
     direction: int = 0,
 ) -> bytes:
-    """PROTOCOLS.md §4: `7B 7D`, action, X Y Z signed, seven unsigned fields, direction, `2A`."""
+    """drivers/protocols/README.md §4: `7B 7D`, action, X Y Z signed, seven unsigned fields,
+    direction, `2A`."""
     fields = struct.pack(">hhh", x, y, z) + struct.pack(">7H", *speeds, radius, angular, start, end)
     return b"\x7b\x7d" + bytes([action]) + fields + bytes([direction]) + b"\x2a"
 

@@ -40,7 +40,8 @@ def hexes(text: str) -> bytes:
 
 
 def frame_of(data: bytes) -> bytes:
-    """PROTOCOLS.md §3 framing, written out: `EB 90 82 F0`, data with 90 doubled, `90 82`, sum."""
+    """drivers/protocols/README.md §3 framing, written out: `EB 90 82 F0`, data with 90 doubled,
+    `90 82`, sum."""
     return (
         hexes("EB 90 82 F0")
         + data.replace(b"\x90", b"\x90\x90")

@@ -50,7 +50,8 @@ SETUP = {"visiomex": (("set-home",),), "pi-frame": (("set-home",), ("speed", "25
 OPTIONS = {"visiomex": ("--tolerance", "1")}  # each of its moves is a packet and 1 s of silence
 UNITS = {"pi-frame": 100.0}  # ticks per mm (the default setting)
 # The Visiomex firmware truncates each relative move to whole motor steps (38.9 a mm at its
-# power-on parameters, PROTOCOLS.md §2b): its axes end within a step of the counted point.
+# power-on parameters, drivers/protocols/README.md §2b): its axes end within a step of the counted
+# point.
 WITHIN = {"visiomex": 0.026}
 # Each Visiomex move is a packet and 1 s of silence: its drawings are the short ones along X
 # (the G-code, in X and Y, has an arc).

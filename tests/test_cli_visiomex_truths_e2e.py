@@ -1,8 +1,8 @@
 """What motionctl tells of the Visiomex firmware (issue 20), against `motionsim visiomex` in
 another process through a real pseudo-terminal: a rotational or steps jog in its own unit and
-what the firmware really moves (µm, whatever the type letter: PROTOCOLS.md §2b); `move X Y`
-absolute from the position counted for the port across runs, refused where none is counted;
-`id` saying there is no identity query."""
+what the firmware really moves (µm, whatever the type letter: drivers/protocols/README.md §2b);
+`move X Y` absolute from the position counted for the port across runs, refused where none is
+counted; `id` saying there is no identity query."""
 
 from __future__ import annotations
 

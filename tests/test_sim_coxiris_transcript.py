@@ -30,7 +30,7 @@ def _expected(sent: bytes, received: bytes, timed: bool) -> bytes:
     if timed and len(line) >= BUFFER_SIZE:
         # Recorded behind a pty, where the whole write is in the buffer at once and the parser
         # drops the rest of the line. On a UART the sketch reads faster than bytes arrive, so the
-        # rest of the line is parsed as a new (unknown) command (PROTOCOLS.md §1).
+        # rest of the line is parsed as a new (unknown) command (drivers/protocols/README.md §1).
         return received + _unknown_reply(line[BUFFER_SIZE:].upper())
     return received
 

@@ -1,4 +1,4 @@
-"""The simulated FirmataPlus board (PROTOCOLS.md §5), on a manual clock."""
+"""The simulated FirmataPlus board (drivers/protocols/README.md §5), on a manual clock."""
 
 from __future__ import annotations
 

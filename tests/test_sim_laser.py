@@ -1,4 +1,4 @@
-"""The simulated laser-processing robot (PROTOCOLS.md §3), on a manual clock."""
+"""The simulated laser-processing robot (drivers/protocols/README.md §3), on a manual clock."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The simulated pi-frame device (PROTOCOLS.md §4), on a manual clock."""
+"""The simulated pi-frame device (drivers/protocols/README.md §4), on a manual clock."""
 
 from __future__ import annotations
 

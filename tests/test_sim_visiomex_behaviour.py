@@ -14,7 +14,7 @@ from drivers.sim.clock import ManualClock
 from drivers.sim.registry import create_device
 from drivers.sim.visiomex_device import POWER_ON, SILENCE, VisiomexDevice
 
-STEP = 4000e-6 + 4000e-6  # one power-on X step: 15 high, 16 low (PROTOCOLS.md §2b)
+STEP = 4000e-6 + 4000e-6  # one power-on X step: 15 high, 16 low (drivers/protocols/README.md §2b)
 
 
 def _device(**options: object) -> tuple[VisiomexDevice, ManualClock]:

@@ -1,5 +1,5 @@
-"""The Visiomex firmware model (PROTOCOLS.md §2b): power-on values, recalculation, float32 step
-counts, C number parsing and printing, the stepping loops and their ramps."""
+"""The Visiomex firmware model (drivers/protocols/README.md §2b): power-on values, recalculation,
+float32 step counts, C number parsing and printing, the stepping loops and their ramps."""
 
 from __future__ import annotations
 

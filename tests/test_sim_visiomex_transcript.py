@@ -21,7 +21,8 @@ _FEEDBACK = re.compile(rb"^(?=(?:FS|FP|FA|EP|EF)\d{4}\r$)", re.MULTILINE)
 def _as_sent_by(variant: str, text: str) -> bytes:
     """Recorded output as `variant` sends it: `prefixed` marks feedback packets with `>`."""
     data = text.encode("latin-1")
-    # Later firmware prefixes every feedback packet, debug lines stay as they are (PROTOCOLS.md §2).
+    # Later firmware prefixes every feedback packet, debug lines stay as they are
+    # (drivers/protocols/README.md §2).
     return _FEEDBACK.sub(b">", data) if variant == "prefixed" else data
 
 

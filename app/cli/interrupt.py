@@ -1,5 +1,5 @@
 """motionctl after Ctrl-C: the protocol's stop sent where it has one, and what the device does
-next said exactly where it has none (PROTOCOLS.md; the exit status stays 130)."""
+next said exactly where it has none (drivers/protocols/README.md; the exit status stays 130)."""
 
 from __future__ import annotations
 

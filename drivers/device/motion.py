@@ -567,8 +567,8 @@ class Motion:
                 if completion is Completion.ESTIMATE and self.wait(delay + duration):
                     raise Aborted(ABANDONED)
             elif completion is Completion.ESTIMATE:
-                # The device never says when it is done (PROTOCOLS.md §4, §5): each part is
-                # sent once the previous one should have ended (Firmata splits long moves).
+                # The device never says when it is done (drivers/protocols/README.md §4, §5): each
+                # part is sent once the previous one should have ended (Firmata splits long moves).
                 parts = protocol.expand(command)
                 for part in parts:
                     self.client.send_only(part)

@@ -7,8 +7,9 @@ The pi-frame has no feedback either and its frames carry absolute targets, so a 
 is sent as a target reckoned from the position commanded last. Either is kept between runs
 (by the panel and motionctl alike); where none is kept, what needs it is refused, never
 reckoned from an assumed origin. A move packet is counted as the
-firmware reads it: on the seed firmware (@902bd4d, PROTOCOLS.md §2b "Move packet") the type
-letter is never read, so the digits are µm whether the packet says linear, rotational or steps.
+firmware reads it: on the seed firmware (@902bd4d, drivers/protocols/README.md §2b "Move packet")
+the type letter is never read, so the digits are µm whether the packet says linear, rotational or
+steps.
 """
 
 from __future__ import annotations

@@ -1,4 +1,5 @@
-"""Fixed-length framer: header, fixed body, trailer (the 25-byte pi-frame, PROTOCOLS.md §4)."""
+"""Fixed-length framer: header, fixed body, trailer (the 25-byte pi-frame,
+drivers/protocols/README.md §4)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""Silence framer: a packet ends after a time without bytes (Visiomex, PROTOCOLS.md §2).
+"""Silence framer: a packet ends after a time without bytes (Visiomex, drivers/protocols/README.md
+§2).
 
 The firmware reads packets with `Serial.readString()`, which returns after 1 s of silence; there
 is no terminator and no length check. Content never ends a frame: the I/O layer calls `flush`

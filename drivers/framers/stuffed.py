@@ -1,4 +1,4 @@
-"""Stuffed framer for the laser-robot link (PROTOCOLS.md §3).
+"""Stuffed framer for the laser-robot link (drivers/protocols/README.md §3).
 
 Frame: header `EB 90 82`, flag `F0`, data with every `90` doubled, tail `90 82`, then a checksum
 byte: the sum of the unstuffed data bytes mod 256. The checksum comes after the tail, so it is not

@@ -1,4 +1,5 @@
-"""Firmata framer (PROTOCOLS.md §5): SysEx `F0 ... F7` and the base protocol's short messages."""
+"""Firmata framer (drivers/protocols/README.md §5): SysEx `F0 ... F7` and the base protocol's short
+messages."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""COXIRIS ASCII protocol (PROTOCOLS.md §1): `CMD args\\n` -> `ACK CMD` ... `DONE CMD[: data]`."""
+"""COXIRIS ASCII protocol (drivers/protocols/README.md §1): `CMD args\\n` -> `ACK CMD` ...
+`DONE CMD[: data]`."""
 
 from __future__ import annotations
 
@@ -112,7 +113,8 @@ def parsed_part(line: bytes) -> bytes:
     """What the firmware parses of a line: the bytes before its first NUL.
 
     A NUL does not end a line and still counts toward the 63 characters, but the parser reads
-    the line as a C string, so the rest of it is ignored (PROTOCOLS.md §1, coxiris-nul.json)."""
+    the line as a C string, so the rest of it is ignored (drivers/protocols/README.md §1,
+    coxiris-nul.json)."""
     return line.split(b"\0", 1)[0]
 
 
@@ -169,8 +171,8 @@ class CoxirisExchange(Exchange):
     def handle(self, event: Event) -> bool:
         """Track one event of the reply."""
         if self._unknown_pending:
-            # PROTOCOLS.md §1: the line after `ERROR: Unknown command - ` echoes the command name;
-            # an echo of another name is the tail of an earlier reply, not ours.
+            # drivers/protocols/README.md §1: the line after `ERROR: Unknown command - ` echoes the
+            # command name; an echo of another name is the tail of an earlier reply, not ours.
             self._unknown_pending = False
             if isinstance(event, TextLine) and event.text == self.name:
                 self._trailing_lines = 1 + HELP_LINE_COUNT  # "Available commands:" and the help
@@ -258,7 +260,8 @@ class CoxirisProtocol(Protocol):
         speed_limits_queryable=True,
         completion=Completion.REPLY,
         resolution=0.01,  # positions are printed with two decimals
-        busy_silent=True,  # a blocking move callback delays every reply (PROTOCOLS.md §1)
+        # a blocking move callback delays every reply (drivers/protocols/README.md §1)
+        busy_silent=True,
         notes=(
             Message("speeds are reported rounded to whole mm/s"),
             Message("positions are reported to 0.01 mm"),

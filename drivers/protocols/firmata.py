@@ -1,4 +1,5 @@
-"""Firmata with the FirmataPlus stepper extension (PROTOCOLS.md §5), one motor as the X axis.
+"""Firmata with the FirmataPlus stepper extension (drivers/protocols/README.md §5), one motor as the
+X axis.
 
 Stepper messages are SysEx `F0 72 <sub> ... F7` with 7-bit data: config (steps per revolution,
 2 or 4 pins), step (speed in rpm on 21 bits, steps on 14 bits, direction), library version. The

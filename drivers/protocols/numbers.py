@@ -10,7 +10,8 @@ from drivers.errors import BadInput
 from drivers.messages import Message
 
 # What the COXIRIS firmware accepts: optional sign, digits, at most one '.', at least one digit
-# (PROTOCOLS.md §1: `+.5`, `1.`, `-2` accepted; `1e3`, `.`, `nan`, `0x10`, `1,5` rejected).
+# (drivers/protocols/README.md §1: `+.5`, `1.`, `-2` accepted; `1e3`, `.`, `nan`, `0x10`, `1,5`
+# rejected).
 _DEVICE_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)")
 
 # Arduino's Print::printFloat prints "ovf" beyond this magnitude.

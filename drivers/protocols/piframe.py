@@ -1,4 +1,4 @@
-"""The Raspberry Pi motion frame (PROTOCOLS.md §4): 25 bytes, big-endian, write-only.
+"""The Raspberry Pi motion frame (drivers/protocols/README.md §4): 25 bytes, big-endian, write-only.
 
 `7B 7D`, action (0 Dwell, 1 Linear, 2 Circular, 3 SetHome), ten 16-bit fields X, Y, Z, speed X,
 Y, Z, radius, angular speed, start angle, end angle, direction (1 byte), `2A`. X/Y/Z are signed

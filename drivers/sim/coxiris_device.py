@@ -1,4 +1,5 @@
-"""The COXIRIS device as its CommandParser firmware behaves on the wire (PROTOCOLS.md §1)."""
+"""The COXIRIS device as its CommandParser firmware behaves on the wire (drivers/protocols/README.md
+§1)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,8 @@ from drivers.sim.stage import Stage
 DEVICE_ID = "CX25F7TK9P"
 BUFFER_SIZE = 64  # the parser keeps 63 characters; the 64th before a terminator overflows
 # Only CR or LF ends a line. A NUL is stored like any other character (it counts toward the 63),
-# but the parser reads the line as a C string: the command ends at the first NUL (PROTOCOLS.md §1).
+# but the parser reads the line as a C string: the command ends at the first NUL
+# (drivers/protocols/README.md §1).
 LINE_ENDS = frozenset(b"\r\n")
 _NUMBER = re.compile(rb"[+-]?(?:\d+\.?\d*|\.\d+)")
 
@@ -112,8 +114,8 @@ class CoxirisDevice(SimulatedDevice):
             self._line.clear()
             self._say("ERROR: Command too long", t)
             # The parser then drops what has arrived of this line, up to its line end; what
-            # arrives later starts a new command (PROTOCOLS.md §1), as does a next line already
-            # received (issue 11).
+            # arrives later starts a new command (drivers/protocols/README.md §1), as does a next
+            # line already received (issue 11).
             self.discard_available(t, until=LINE_ENDS)
             return
         self._line.append(byte)

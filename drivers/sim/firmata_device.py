@@ -1,4 +1,5 @@
-"""A FirmataPlus board (Arduino) driving one stepper, as PyMata sees it (PROTOCOLS.md §5)."""
+"""A FirmataPlus board (Arduino) driving one stepper, as PyMata sees it (drivers/protocols/README.md
+§5)."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""The laser-processing robot (PROTOCOLS.md §3): stuffed frames in, one reply frame per frame out.
+"""The laser-processing robot (drivers/protocols/README.md §3): stuffed frames in, one reply frame
+per frame out.
 
 Queued instructions (MOVE_LINEAR, DWELL, GO_HOME) run in order on a 3-axis stage; immediate ones
 are answered at once. Line faults can be injected (seeded), for exercising the host's retransmits.

@@ -1,4 +1,5 @@
-"""The laser robot's frame data as its firmware reads it (PROTOCOLS.md §3): instructions, checked.
+"""The laser robot's frame data as its firmware reads it (drivers/protocols/README.md §3):
+instructions, checked.
 
 Data = instructions; instruction = command word (0x01..0x7F) + typed fields; field = marker +
 count + little-endian values (`F0` float32, `F1` int16, `F2` uint8, `F3` char).

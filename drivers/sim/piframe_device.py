@@ -1,4 +1,5 @@
-"""The Raspberry Pi motion-frame device (PROTOCOLS.md §4): write-only, 25-byte binary frames."""
+"""The Raspberry Pi motion-frame device (drivers/protocols/README.md §4): write-only, 25-byte binary
+frames."""
 
 from __future__ import annotations
 

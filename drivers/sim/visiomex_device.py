@@ -1,4 +1,5 @@
-"""The Visiomex VMR2P0R0001 firmware as it behaves on the wire (PROTOCOLS.md §2 and §2b)."""
+"""The Visiomex VMR2P0R0001 firmware as it behaves on the wire (drivers/protocols/README.md §2 and
+§2b)."""
 
 from __future__ import annotations
 
@@ -53,10 +54,10 @@ class VisiomexDevice(SimulatedDevice):
     """The Nucleo sketch: fixed-position ASCII packets, framed by 1 s of silence.
 
     `variant` picks the packet profile (`seed`, `prefixed`, `board12`); `bugs=True` is the public
-    firmware (PROTOCOLS.md §2b), `bugs=False` the documented behaviour (the same arithmetic and
-    timing, with the documented checks, units and Y loop). `instant` makes stepping take no
-    time; `mute` makes a device that never sends anything. `pace`: "recorded" sends a byte every
-    1.06 byte times, as the recorded firmware does (transcripts/visiomex-moves.json), "uart" at
+    firmware (drivers/protocols/README.md §2b), `bugs=False` the documented behaviour (the same
+    arithmetic and timing, with the documented checks, units and Y loop). `instant` makes stepping
+    take no time; `mute` makes a device that never sends anything. `pace`: "recorded" sends a byte
+    every 1.06 byte times, as the recorded firmware does (tests/data/visiomex-moves.json), "uart" at
     the board UART's line rate.
     """
 

@@ -1,6 +1,6 @@
-"""The parameter editor tells what the Visiomex firmware will really do (PROTOCOLS.md §2b): steps
-per move, a 10 mm move's time, whether Y moves, which written values do not stay; outputs are
-never written by "Write changed" nor kept in a profile."""
+"""The parameter editor tells what the Visiomex firmware will really do (drivers/protocols/README.md
+§2b): steps per move, a 10 mm move's time, whether Y moves, which written values do not stay;
+outputs are never written by "Write changed" nor kept in a profile."""
 
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ from drivers.protocols.visiomex.protocol import VisiomexProtocol
 from widgets.parameter_editor import ParameterEditor
 from widgets.parameter_table import NAME_COL, WRITTEN_COL
 
-RAMPS_21_24 = {  # PROTOCOLS.md §2b, case "21-24"
+RAMPS_21_24 = {  # drivers/protocols/README.md §2b, case "21-24"
     "input_speed_steady_x": 6000,
     "input_speed_steady_y": 6000,
     "input_acceleration_x": 1,

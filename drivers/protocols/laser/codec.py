@@ -1,4 +1,5 @@
-"""The laser-robot link's data (PROTOCOLS.md §3): instructions of a command word and typed fields.
+"""The laser-robot link's data (drivers/protocols/README.md §3): instructions of a command word and
+typed fields.
 
 Field = marker + count + values, little-endian: `F0` float32, `F1` int16, `F2` uint8, `F3` char.
 An instruction is a command word (0x01..0x7F) followed by its fields; a frame's data holds one or

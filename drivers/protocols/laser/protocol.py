@@ -1,4 +1,5 @@
-"""The laser-processing robot link (PROTOCOLS.md §3): stuffed frames, acknowledged, retransmitted.
+"""The laser-processing robot link (drivers/protocols/README.md §3): stuffed frames, acknowledged,
+retransmitted.
 
 Immediate instructions (GET_POSITION 0x10, GET_STATUS 0x11, SET_HOME 0x12, STOP 0x13, GET_ID 0x14)
 go alone and are answered with their command word (and data). Queued ones (MOVE_LINEAR 0x01,

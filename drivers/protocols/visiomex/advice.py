@@ -1,6 +1,6 @@
 """What the Visiomex firmware will really do with a set of parameter values, in the technician's
 words: steps per move, how long a move steps, whether Y moves at all, and which written values it
-overwrites or never reads (PROTOCOLS.md §2b).
+overwrites or never reads (drivers/protocols/README.md §2b).
 
 Every figure comes from the firmware model (visiomex_model.FirmwareState): the values are set on a
 freshly booted model in id order, as "Write changed" would send them, and a move is tried on a

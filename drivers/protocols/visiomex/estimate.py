@@ -1,5 +1,6 @@
-"""How long a Visiomex move takes on the wire, from the firmware model (PROTOCOLS.md §2b): the
-1 s of silence, the debug lines and `FP0001` going out while stepping starts, then `FA0001`."""
+"""How long a Visiomex move takes on the wire, from the firmware model (drivers/protocols/README.md
+§2b): the 1 s of silence, the debug lines and `FP0001` going out while stepping starts, then
+`FA0001`."""
 
 from __future__ import annotations
 

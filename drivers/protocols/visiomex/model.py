@@ -1,5 +1,6 @@
-"""The Visiomex firmware's own arithmetic (PROTOCOLS.md §2b): its parameters from power-on, the
-recalculation after every set, C number parsing and printing, and a move's step counts.
+"""The Visiomex firmware's own arithmetic (drivers/protocols/README.md §2b): its parameters from
+power-on, the recalculation after every set, C number parsing and printing, and a move's step
+counts.
 
 One source for the simulator and for the driver's estimates. Every figure is computed as the
 firmware computes it: 32-bit floats rounded at every operation, unsigned 32-bit integers, and
@@ -20,7 +21,7 @@ PARAMETER_COUNT = 28  # ids 1-28 are answered FSnnnn (28 is stored and never rea
 U32 = 1 << 32
 OVF_LIMIT = 4294967040.0  # Print::printFloat writes `ovf` beyond this
 
-# Declared values, before the boot's recalculation (PROTOCOLS.md §2b, "decl.").
+# Declared values, before the boot's recalculation (drivers/protocols/README.md §2b, "decl.").
 _DECLARED: dict[int, float] = {
     1: 10, 2: 10, 3: 38.2, 4: 38.2, 5: 400, 6: 400, 7: 1, 8: 1, 9: 3, 10: 3,
     11: 1000, 12: 1000, 13: 5000, 14: 5000, 15: 4000, 16: 4000, 17: 500, 18: 500,

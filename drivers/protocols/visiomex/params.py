@@ -1,9 +1,10 @@
-"""The 27 Visiomex VMR2P0R0001 parameters (PROTOCOLS.md §2, seed `001_*`).
+"""The 27 Visiomex VMR2P0R0001 parameters (drivers/protocols/README.md §2, seed `001_*`).
 
 Scaling: the seed gives only the pulley diameter (mm×10: 38.2 mm -> `000382`); every other value
 is a whole number of its unit on the wire (project decision). Defaults are what the firmware
-holds at power-on after its boot recalculation (PROTOCOLS.md §2b, `visiomex_model.POWER_ON`):
-a move of 10 mm is 400 steps (10 mm thread, 400 full steps, ×1 microstepping), 4000 µs delays.
+holds at power-on after its boot recalculation (drivers/protocols/README.md §2b,
+`visiomex_model.POWER_ON`): a move of 10 mm is 400 steps (10 mm thread, 400 full steps, ×1
+microstepping), 4000 µs delays.
 """
 
 from __future__ import annotations

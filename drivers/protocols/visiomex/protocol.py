@@ -1,4 +1,5 @@
-"""Visiomex VMR2P0R0001 packets (PROTOCOLS.md §2): `S` sets, `M` moves, `FS`/`FP`/`FA`/`E` lines.
+"""Visiomex VMR2P0R0001 packets (drivers/protocols/README.md §2): `S` sets, `M` moves,
+`FS`/`FP`/`FA`/`E` lines.
 
 Packets have no terminator: the firmware ends one after 1 s of silence (`Serial.readString()`),
 so a reply comes about 1 s after the last byte and two packets within 1 s merge. The client keeps
@@ -225,8 +226,8 @@ class VisiomexProtocol(Protocol):
         self.known: dict[int, float] = dict(DEFAULTS)
         """What the device holds, as far as the panel knows: boot defaults and confirmed sets."""
         self.firmware = FirmwareState.boot()
-        """The firmware's own state (PROTOCOLS.md §2b): every confirmed set and every move sent
-        advance it, so estimates follow what the device computes."""
+        """The firmware's own state (drivers/protocols/README.md §2b): every confirmed set and every
+        move sent advance it, so estimates follow what the device computes."""
 
     def assume_parameters(self, values: dict[str, float]) -> None:
         """Take values written earlier (saved by the panel) as what the device holds."""
@@ -403,7 +404,7 @@ class VisiomexProtocol(Protocol):
         if first == "M" or (first == "D" and self.format.home):
             return VisiomexExchange(Raw(data), what, None, extra=self._raw_move_seconds(text))
         if first == "G":
-            return None  # the firmware answers G with nothing (PROTOCOLS.md §2)
+            return None  # the firmware answers G with nothing (drivers/protocols/README.md §2)
         return VisiomexExchange(Raw(data), what, "FS")
 
     def _raw_move_seconds(self, text: str) -> float:
@@ -412,7 +413,7 @@ class VisiomexProtocol(Protocol):
 
     def move_packet_seconds(self, text: str) -> float:
         """Seconds from a move packet's last byte to the end of its `FA0001`, as the firmware
-        will take them from the state it is in now (PROTOCOLS.md §2b)."""
+        will take them from the state it is in now (drivers/protocols/README.md §2b)."""
         return move_seconds(self.firmware, *self._firmware_reads(text))
 
     def _firmware_reads(self, text: str) -> tuple[float, float, int]:
@@ -510,8 +511,8 @@ class VisiomexProtocol(Protocol):
 
     # -- what the panel knows of the device ---------------------------------------------------
     def parameter_written(self, command: SetParameter) -> ParameterWritten:
-        """Keep the value and recompute as the firmware does (PROTOCOLS.md §2b): it forces
-        driving_mechanism to 1 and overwrites its outputs after every set."""
+        """Keep the value and recompute as the firmware does (drivers/protocols/README.md §2b): it
+        forces driving_mechanism to 1 and overwrites its outputs after every set."""
         parameter = self.parameter(command.param_id)
         self.known[parameter.id] = command.value
         self.firmware.set(parameter.id, parameter.to_wire(command.value))

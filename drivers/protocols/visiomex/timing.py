@@ -1,4 +1,5 @@
-"""The Visiomex firmware's stepping loops, ramps and timing on the wire (PROTOCOLS.md §2b).
+"""The Visiomex firmware's stepping loops, ramps and timing on the wire (drivers/protocols/README.md
+§2b).
 
 X steps Step x times, high for D15 and low for D16 (Y's delay); its ramps follow 13 ↔ 11 over the
 ramp length A. Y then steps R_y times (the ramp count, not Step y), high and low for D16. Neither
@@ -10,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 UART_BYTE_SECONDS = 10 / 9600  # 9600 8N1 on the board's UART
-# The recorded firmware (the host build behind a pty, transcripts/visiomex-moves.json) sends a
+# The recorded firmware (the host build behind a pty, tests/data/visiomex-moves.json) sends a
 # byte every ~1.1 ms, not 1.042: its 382 lines before stepping fit 1.4 ms + 1.117 ms a byte.
 HOST_PACING = 1.06
 BYTE_SECONDS = UART_BYTE_SECONDS * HOST_PACING

@@ -1,7 +1,8 @@
-"""Where a Visiomex move packet leaves the stage, by the firmware's own arithmetic (PROTOCOLS.md
-§2b): the step counts truncated in 32-bit floats, X stepping them all, the Y loop stepping the ramp
-count R_y (none at power-on), each step a cycle length ÷ (full steps × microstepping) long. Also
-what the move leaves in 15, 16, 19 and 20, and the speed the axes really step at.
+"""Where a Visiomex move packet leaves the stage, by the firmware's own arithmetic
+(drivers/protocols/README.md §2b): the step counts truncated in 32-bit floats, X stepping them all,
+the Y loop stepping the ramp count R_y (none at power-on), each step a cycle length ÷ (full steps ×
+microstepping) long. Also what the move leaves in 15, 16, 19 and 20, and the speed the axes really
+step at.
 """
 
 from __future__ import annotations
