@@ -33,7 +33,11 @@ def _documents() -> list[Path]:
     found = []
     for path in sorted(ROOT.rglob("*")):
         parts = path.relative_to(ROOT).parts
-        if path.suffix in (".py", ".md") and not any(p.startswith(".") for p in parts):
+        if (
+            path.suffix in (".py", ".md")
+            and path.is_file()
+            and not any(p.startswith(".") for p in parts)
+        ):
             found.append(path)
     return found
 
