@@ -22,8 +22,6 @@ CITATION = re.compile(
     r"drivers/protocols/README\.md((?:[\s#,]*(?:and\s+)?" + SECTION + r")+)", re.MULTILINE
 )
 HEADING = re.compile(r"^#{2,3} (" + SECTION + r") ", re.MULTILINE)
-# The top README is its owner's to edit: its protocol sections are still to become pointers.
-PENDING = frozenset({ROOT / "README.md"})
 
 pytestmark = pytest.mark.timeout(60)
 
@@ -60,20 +58,8 @@ def test_the_scan_sees_the_code_and_the_protocol_page() -> None:
 
 
 def test_no_file_cites_a_document_outside_the_repository() -> None:
-    offending = [
-        hit for path in _documents() if path not in PENDING for hit in _outside_references(path)
-    ]
+    offending = [hit for path in _documents() for hit in _outside_references(path)]
     assert not offending, "cite drivers/protocols/README.md instead:\n" + "\n".join(offending)
-
-
-@pytest.mark.xfail(
-    strict=True,
-    reason="README.md still cites the shared notes; once its protocol sections point to "
-    "drivers/protocols/README.md, remove this marker and the PENDING entry",
-)
-def test_the_top_readme_cites_the_repository_only() -> None:
-    offending = [hit for path in sorted(PENDING) for hit in _outside_references(path)]
-    assert not offending, "\n".join(offending)
 
 
 def test_every_cited_section_is_a_heading_of_the_protocol_page() -> None:
