@@ -1,47 +1,46 @@
-"""One connected device: the scripting API, and the set-up every front end shares.
+"""One connected device: the scripting API, and the one API every front end drives a device by.
 
-    import drivers
+    from drivers import open_device
 
-    with drivers.open_device("sim://coxiris", "coxiris") as stage:
+    with open_device("sim://coxiris", "coxiris") as stage:
         stage.move_to(10, 5)
         print(stage.position())
 
 `open_device` opens the port as the protocol needs it, builds the client and the motion layer,
-sets the travel box (every move is checked against it before anything is sent), taps the
-traffic (listeners, a log file) and sends the device's start-up commands. The session is closed
-when the `with` block ends, an exception included.
+sets the travel box (every move, raw bytes included, is checked against it before anything is
+sent), taps the traffic (subscriptions, a log file) and sends the device's start-up commands. The
+session is closed when the `with` block ends, an exception included.
 
-Public and stable: `open_device`, `DeviceSession` (the methods and properties without a leading
-underscore; `session.parameters` is a `DeviceParameters`, drivers/session/parameters.py, and
-`session.tap` a `TrafficTap`, drivers/session/tap.py; `session.where()` a `Whereabouts`,
-drivers/device/position_truth.py), `NoStop`, `NoPrograms`, `ProgressListener`.
-`DeviceSession.link`, `.client`, `.motion` and `.protocol` are the layers underneath, for front
-ends that need more (the panel's worker); they follow the driver layer's own changes. Macros
-(app/common/macros.py) are motionctl's command vocabulary and stay on the application side: run
-one with `app.common.macros.run_macro(session.motion, macro)`.
+The stable names are those of `drivers.__all__`; `DeviceSession.link`, `.client`, `.motion` are
+the layers underneath and internal (front ends use the session's own methods and `on_...`
+subscriptions, drivers/session/subscriptions.py).
 """
 
 from __future__ import annotations
 
 import threading
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
-from contextlib import contextmanager
+from contextlib import AbstractContextManager, contextmanager
 from types import TracebackType
+from typing import TypeVar
 
 from drivers.device import commands as cmd
 from drivers.device.capabilities import Capabilities
 from drivers.device.client import Client
 from drivers.device.events import PositionReport
+from drivers.device.guard import RawMove
 from drivers.device.motion import Motion
+from drivers.device.parameters import ParameterWritten
 from drivers.device.position_count import resume
 from drivers.device.position_truth import PositionTruth, Whereabouts
-from drivers.device.travel import TravelLimits
+from drivers.device.travel import Point, TravelLimits
 from drivers.errors import BadInput, CommunicationError, MotionError
 from drivers.link.transport import Link, TrafficListener
 from drivers.messages import Message
-from drivers.protocols.base import Protocol
+from drivers.protocols.base import Protocol, Reply
 from drivers.session.parameters import DeviceParameters
 from drivers.session.setup import LogTarget, make_protocol, open_device_link, travel_limits
+from drivers.session.subscriptions import SessionLines, SessionSubscriptions
 from drivers.session.tap import TrafficTap
 from drivers.toolpath.loader import from_points
 from drivers.toolpath.model import CHORD_TOLERANCE, Toolpath
@@ -60,6 +59,7 @@ __all__ = [
     "open_device",
 ]
 
+_R = TypeVar("_R")
 ProgressListener = Callable[[StreamProgress], None]
 """Told how far a program has got (a StreamProgress) after each frame or move."""
 
@@ -72,7 +72,7 @@ class NoPrograms(BadInput):
     """Kept for scripts that catch it: every protocol runs programs now (none raises it)."""
 
 
-class DeviceSession:
+class DeviceSession(SessionSubscriptions, SessionLines):
     """One open device: typed operations, the travel guard, the traffic tap and its log.
 
     Not thread-safe, like the client under it: one thread drives it; only `stop` may be called
@@ -92,21 +92,42 @@ class DeviceSession:
     ) -> None:
         """A session over an open link (`open_device` opens one); it owns and closes the link.
         `after_loss`: it goes on after a lost link (see `where`)."""
+        client = Client(link, protocol, timeout=timeout)
+        if abort is not None:
+            client.abort = abort
+        self._attach(link, protocol, client, Motion(client), parameters, after_loss)
+        self.motion.travel = travel
+
+    def _attach(
+        self,
+        link: Link,
+        protocol: Protocol,
+        client: Client,
+        motion: Motion,
+        parameters: Mapping[str, float] | None = None,
+        after_loss: bool = False,
+    ) -> None:
+        """Take on the layers (made by `__init__`, or a front end's own: `_around`)."""
         self.link = link
         self.protocol = protocol
-        self.client = Client(link, protocol, timeout=timeout)
-        if abort is not None:
-            self.client.abort = abort
-        self.motion = Motion(self.client)
-        self.motion.travel = travel
+        self.client = client
+        self.motion = motion
         self.truth = PositionTruth(self.motion, after_loss=after_loss)
         """What is known of the position (`where` reads it; the panel's worker feeds it)."""
         self.parameters = DeviceParameters(self.motion, parameters, self._operation)
         """The device's parameters: `all`, `kept()`, `set`, `write`, `write_profile`."""
         self.tap = TrafficTap(link)
         """The traffic tap: listeners, logs (`remove_listener`, `note`)."""
+        self._move_ended: list[Callable[[PositionReport], None]] = []
         self._runner: ProgramRunner | None = None
         self._running_in: int | None = None  # the thread an operation runs in (None: idle)
+
+    @classmethod
+    def _around(cls, motion: Motion) -> DeviceSession:
+        """A session over a Motion made elsewhere (for callers that still pass one; internal)."""
+        session = cls.__new__(cls)
+        session._attach(motion.client.link, motion.client.protocol, motion.client, motion)
+        return session
 
     # -- life cycle ----------------------------------------------------------------------------
     def __enter__(self) -> DeviceSession:
@@ -189,19 +210,19 @@ class DeviceSession:
     def move_to(self, x: float, y: float, z: float = 0.0) -> PositionReport:
         """Move to (x, y, z) mm and wait until the move has ended; the position then."""
         with self._operation():
-            return self.motion.move_to(x, y, z)
+            return self._ended(self.motion.move_to(x, y, z))
 
     def move_by(
         self, dx: float, dy: float, dz: float = 0.0, kind: str = "linear"
     ) -> PositionReport:
         """Move by (dx, dy, dz): mm, or the protocol's `kind` (rotational, steps); the position."""
         with self._operation():
-            return self.motion.move_by(dx, dy, dz, kind)
+            return self._ended(self.motion.move_by(dx, dy, dz, kind))
 
     def home(self) -> PositionReport:
         """Go to (0, 0, 0) and wait until there; the position then."""
         with self._operation():
-            return self.motion.home()
+            return self._ended(self.motion.home())
 
     def set_home(self) -> None:
         """Make the current position the origin."""
@@ -227,6 +248,8 @@ class DeviceSession:
         protocol has no stop); otherwise NoStop where the protocol has no stop command."""
         if self.stop_program():  # run_program sends the device's stop once sending ends
             return
+        if self._running_in not in (None, threading.get_ident()) and not self.capabilities.stop:
+            self.motion.stop_requested.set()  # a macro or a wait ends at its next step
         if not self.capabilities.stop:
             raise NoStop(
                 Message(
@@ -239,6 +262,139 @@ class DeviceSession:
             return
         with self._operation():
             self.client.execute(cmd.Stop())
+
+    def arc(
+        self,
+        cx: float,
+        cy: float,
+        radius: float,
+        start: float,
+        end: float,
+        *,
+        ccw: bool = False,
+        z: float = 0.0,
+    ) -> PositionReport:
+        """An arc around (cx, cy) mm from angle `start` to `end` (degrees from +X), clockwise
+        unless `ccw`, Z going to `z`; a straight move to its start first where the stage is
+        elsewhere; every point is checked against the travel box first. The position then."""
+        with self._operation():
+            arc = cmd.Arc(cx, cy, radius, start, end, ccw, z)
+            return self._ended(self.motion.arc(arc))
+
+    def dwell(self, seconds: float) -> None:
+        """Pause the device's queue for `seconds` (to the millisecond) and wait it out."""
+        with self._operation():
+            self.motion.dwell(round(seconds * 1000))
+
+    def wait(self, seconds: float) -> bool:
+        """Wait `seconds` reading the port (an error the device reports is raised); True when
+        the wait was abandoned (the session's abort)."""
+        with self._operation():
+            return self.motion.wait(seconds)
+
+    def check(self) -> None:
+        """Run the device's diagnostics; DeviceError lists what it reported."""
+        with self._operation():
+            self.motion.check()
+
+    def check_raw(self, data: bytes, force: bool = False) -> RawMove | None:
+        """What the guard makes of raw bytes (as `send_raw` would send them), nothing sent:
+        the move checked from where the stage is (None: they move nothing, or go unread);
+        BadInput (RawRefused) when they would be refused."""
+        with self._operation():
+            move = self.motion.guard.read_raw(self.protocol, data, force)
+            if move is None:
+                return None
+            return self._check_move(move, self._here())
+
+    def check_commands(self, commands: Sequence[cmd.Command]) -> Point | None:
+        """Check commands with the guard as the device would make them, one after another from
+        where the stage is, nothing sent; where the last move ends (None: none moves)."""
+        with self._operation():
+            start, end = self._here(), None
+            for command in commands:
+                move = self._move_in(command)
+                if move is not None:
+                    end = start = self._check_move(move, start).target
+            return end
+
+    def send_raw(self, data: bytes, force: bool = False) -> Reply | PositionReport | None:
+        """Send bytes as they are, once the guard has read them with the protocol's decoder: a
+        move is checked like a typed one and followed to its end (the position then); bytes
+        that cannot be read go only where no travel box is set, or with `force`. Else the
+        reply (None: none is followed)."""
+        with self._operation():
+            return self._ended(self.motion.send_raw(data, force))
+
+    def raw(self, text: bytes, force: bool = False) -> Reply | PositionReport | None:
+        """Send a command as typed (the protocol adds what ends it, e.g. a line feed), through
+        the guard as `send_raw`."""
+        with self._operation():
+            return self._ended(self.motion.raw(text, force))
+
+    def send(
+        self, command: cmd.Command, *, reply: bool = True, timeout: float | None = None
+    ) -> Reply | None:
+        """Send a typed command of the device's own (a query, a setting, a Firmata step) once
+        the guard has checked any move it makes from where the stage is; its reply (None where
+        `reply` is False: nothing is waited for). `timeout`: seconds the reply may take."""
+        with self._operation():
+            move = self._move_in(command)
+            if move is not None:
+                self._check_move(move, self._here())
+            if not reply:
+                self.client.send_only(command)
+                return None
+            return self.client.execute(command, timeout=timeout)
+
+    def set_parameter(self, key: str | int, value: float) -> ParameterWritten:
+        """Write one device parameter (by name or id) once the device has confirmed it."""
+        with self._operation():
+            return self.motion.set_parameter(key, value)
+
+    def poll(self) -> None:
+        """Read what the device said unasked (the subscribers hear it), waiting for nothing."""
+        with self._operation():
+            self.client.poll()
+
+    # -- the operation under way ---------------------------------------------------------------
+    def operation(self) -> AbstractContextManager[None]:
+        """One operation of many steps (a macro): a `stop` from another thread during it is
+        kept (`stop_requested`) until it ends, the steps' own operations included."""
+        return self._operation()
+
+    @property
+    def stop_requested(self) -> bool:
+        """Whether a stop was asked during the operation under way."""
+        return self.motion.stop_requested.is_set()
+
+    @property
+    def last_position(self) -> PositionReport | None:
+        """The position last known (read, or where the last move ended), nothing asked."""
+        return self.motion.last_position
+
+    @property
+    def timeout(self) -> float:
+        """Seconds a reply may take (settable: e.g. shorter once interrupted)."""
+        return self.client.timeout
+
+    @timeout.setter
+    def timeout(self, seconds: float) -> None:
+        self.client.timeout = seconds
+
+    @property
+    def poll_interval(self) -> float:
+        """Seconds between position reads while a move is waited on (settable)."""
+        return self.motion.poll_interval
+
+    @poll_interval.setter
+    def poll_interval(self, seconds: float) -> None:
+        self.motion.poll_interval = seconds
+
+    @property
+    def simulator(self) -> object | None:
+        """The simulated device behind a `sim://` port (None: a real one)."""
+        return getattr(self.link.port, "device", None)
 
     # -- programs ------------------------------------------------------------------------------
     def run_program(
@@ -304,6 +460,32 @@ class DeviceSession:
             baud = int(getattr(self.link.port, "baudrate", 0) or 0)
             writer.note(connection_note(self.link.url, self.protocol, baud))
         return writer
+
+    def _ended(self, result: _R) -> _R:
+        """Tell the move-ended subscribers where a move ended (a PositionReport result)."""
+        if isinstance(result, PositionReport):
+            for listener in list(self._move_ended):
+                listener(result)
+        return result
+
+    def _here(self) -> Point:
+        """Where the stage is (asked where it cannot be known otherwise)."""
+        here = self.motion.last_position
+        if here is None or self.capabilities.position_feedback:
+            here = self.motion.position()
+        return (here.x, here.y, here.z)
+
+    def _move_in(self, command: cmd.Command) -> cmd.Command | None:
+        """The move a typed command makes, as the protocol's decoder reads its bytes (None:
+        it moves nothing)."""
+        if isinstance(command, cmd.MoveTo | cmd.MoveBy | cmd.Home | cmd.Arc):
+            return command
+        return self.motion.guard.read_raw(self.protocol, self.protocol.encode(command), True)
+
+    def _check_move(self, move: cmd.Command, start: Point) -> RawMove:
+        """A move checked by the guard from `start` (resolution, travel box: never clamped)."""
+        resolution = self.capabilities.resolution
+        return self.motion.guard.raw_move(self.protocol, move, start, resolution, self.notify)
 
     # -- helpers -------------------------------------------------------------------------------
     @contextmanager
