@@ -156,22 +156,21 @@ def test_ctrl_c_without_a_stop_says_what_the_coxiris_device_does_next(sim_factor
 
 def test_ctrl_c_before_a_move_is_sent_says_the_stage_does_not_move() -> None:
     from app.cli.interrupt import MoveTracker, after_interrupt
-    from drivers.device.client import Client
-    from drivers.device.motion import Motion
     from drivers.link.transport import open_link
     from drivers.protocols.registry import create_protocol
+    from drivers.session.device_session import DeviceSession
 
     link = open_link("sim://coxiris", 115200)
     try:
-        motion = Motion(Client(link, create_protocol("coxiris")))
+        session = DeviceSession(link, create_protocol("coxiris"))
         tracker = MoveTracker()
-        motion.move_listeners.append(tracker)
-        text = after_interrupt(motion, "move", tracker)
+        session.on_move_started(tracker)
+        text = after_interrupt(session, "move", tracker)
         assert text == "interrupted before the move was sent: the stage does not move"
-        motion.move_to(0.5, 0.0, 0.0)
+        session.move_to(0.5, 0.0, 0.0)
         assert tracker.last is not None and tracker.last.target == (0.5, 0.0, 0.0)
-        assert "to (0.5, 0, 0) mm" in after_interrupt(motion, "move", tracker)
-        assert after_interrupt(motion, "position", tracker) == (
+        assert "to (0.5, 0, 0) mm" in after_interrupt(session, "move", tracker)
+        assert after_interrupt(session, "position", tracker) == (
             "interrupted: position does not move the stage"
         )
     finally:

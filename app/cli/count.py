@@ -11,8 +11,6 @@ from PySide6.QtCore import QSettings
 
 from app.common.settings import read_counted_position, write_counted_position
 from drivers.device import commands as cmd
-from drivers.device.events import PositionReport
-from drivers.device.motion import Motion
 from drivers.device.position_count import (
     commanded,
     keeps_count,
@@ -24,6 +22,7 @@ from drivers.device.position_count import (
 )
 from drivers.errors import BadInput, FrameError
 from drivers.protocols.base import Point, Protocol
+from drivers.session.device_session import DeviceSession
 
 log = logging.getLogger(__name__)
 _MOVING = frozenset({"move", "jog", "home", "raw", "macro", "run"})
@@ -54,12 +53,14 @@ class CliCount:
             if needs_count(name, caps):
                 raise no_count(name, self.protocol)
 
-    def begin(self, motion: Motion) -> None:
-        """Start the run's Motion from the count kept."""
+    def begin(self, session: DeviceSession) -> None:
+        """Start the run's session from the count kept."""
         if self.before is not None:
-            motion.last_position = PositionReport(*self.before, measured=False)
+            session.resume_from(self.before)
 
-    def done(self, motion: Motion, command: str, args: list[str], result: dict[str, Any]) -> None:
+    def done(
+        self, session: DeviceSession, command: str, args: list[str], result: dict[str, Any]
+    ) -> None:
         """After a command that succeeded: keep the new count, and say how it is known."""
         if not self.active:
             return
@@ -67,10 +68,10 @@ class CliCount:
         known = self.before is not None or starts_count(command, caps)
         after: Point | None = None
         if command == "raw":
-            after = self._after_raw(motion, args[0]) if known else None
+            after = self._after_raw(session, args[0]) if known else None
             known = known and after is not None
-        elif known and motion.last_position is not None:
-            here = motion.last_position
+        elif known and session.last_position is not None:
+            here = session.last_position
             after = (here.x, here.y, here.z)
         if known and after is not None:
             if after != self.before:
@@ -90,7 +91,7 @@ class CliCount:
         if self.active and moved and self.before is not None:
             write_counted_position(self.settings, self.protocol.name, self.port, None)
 
-    def _after_raw(self, motion: Motion, text: str) -> Point | None:
+    def _after_raw(self, session: DeviceSession, text: str) -> Point | None:
         """The count after raw bytes: moved as the firmware makes the move, unchanged by a
         packet that moves nothing, None where they could not be read."""
         assert self.before is not None
@@ -102,5 +103,5 @@ class CliCount:
         if not any(c is not None for c in commands):
             return self.before
         # The move was followed as the firmware makes it (Motion: the protocol's move_outcome).
-        here = motion.last_position
+        here = session.last_position
         return (here.x, here.y, here.z) if here is not None else None

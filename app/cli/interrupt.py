@@ -6,9 +6,10 @@ from __future__ import annotations
 import logging
 
 from drivers.device import commands as cmd
-from drivers.device.motion import Motion, MoveStart
+from drivers.device.motion import MoveStart
 from drivers.errors import MotionError
 from drivers.messages import Message
+from drivers.session.device_session import DeviceSession
 
 log = logging.getLogger(__name__)
 
@@ -70,24 +71,23 @@ def _device_goes_on(protocol: str, started: MoveStart | None) -> Message:
 
 
 def after_interrupt(
-    motion: Motion | None, command: str, tracker: MoveTracker | None = None
+    session: DeviceSession | None, command: str, tracker: MoveTracker | None = None
 ) -> Message:
     """After Ctrl-C: send the protocol's stop where it has one (its acknowledgement waited for
     at most a few STOP_WAIT_S tries, then the position read), and say what the device does."""
-    if motion is None:
+    if session is None:
         return Message("interrupted before the device was talked to: nothing was sent")
-    protocol = motion.client.protocol.name
+    protocol = session.protocol.name
     if command not in MOVING_COMMANDS:
         return Message("interrupted: {command} does not move the stage", command=command)
     started = tracker.last if tracker is not None else None
     if command in TRACKED_COMMANDS and tracker is not None and started is None:
         return Message("interrupted before the move was sent: the stage does not move")
-    if not motion.capabilities.stop:
+    if not session.capabilities.stop:
         return _device_goes_on(protocol, started)
-    client = motion.client
-    client.timeout = min(client.timeout, STOP_WAIT_S)
+    session.timeout = min(session.timeout, STOP_WAIT_S)
     try:
-        client.execute(cmd.Stop(), timeout=STOP_WAIT_S)
+        session.send(cmd.Stop(), timeout=STOP_WAIT_S)
     except KeyboardInterrupt:
         return Message(
             "interrupted again while stopping: the {protocol} stop may not have arrived; "
@@ -103,7 +103,7 @@ def after_interrupt(
             error=exc,
         )
     try:
-        here = motion.position()
+        here = session.position()
     except KeyboardInterrupt:
         here = None
         unread: object = Message("interrupted again")

@@ -6,9 +6,9 @@ import sys
 from typing import Any
 
 from app.common import macros
-from drivers.device.motion import Motion
 from drivers.protocols.base import Protocol
 from drivers.protocols.registry import protocol_names
+from drivers.session.device_session import DeviceSession
 
 
 def find_macro(settings: Any, protocol: Protocol, name: str) -> macros.Macro:
@@ -60,14 +60,14 @@ def every_macro(settings: Any) -> dict[str, Any]:
     }
 
 
-def run_macro(motion: Motion, macro: macros.Macro) -> dict[str, Any]:
+def run_macro(session: DeviceSession, macro: macros.Macro) -> dict[str, Any]:
     """Run a macro, telling each step on stderr; the result of each step in order."""
     count = len(macro.steps)
 
     def tell(number: int, step: str) -> None:
         print(f"motionctl: step {number}/{count}: {step}", file=sys.stderr, flush=True)
 
-    results = macros.run_macro(motion, macro, tell)
+    results = macros.run_macro(session, macro, tell)
     return {
         "macro": macro.name,
         "steps": [{"step": s, **r} for s, r in zip(macro.steps, results, strict=True)],

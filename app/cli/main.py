@@ -29,12 +29,11 @@ from app.common.settings import (
     write_parameters,
     write_protocol_settings,
 )
-from drivers.device.motion import Motion
 from drivers.device.travel import TravelLimits, parse_travel
 from drivers.errors import BadInput, CommunicationError, DeviceError, MotionError, UnknownProtocol
 from drivers.protocols.base import Protocol
 from drivers.protocols.registry import create_protocol
-from drivers.session.device_session import open_device
+from drivers.session.device_session import DeviceSession, open_device
 
 log = logging.getLogger("motionctl")
 
@@ -193,7 +192,7 @@ def _main(argv: Sequence[str] | None) -> int:
     def remember(values: dict[str, float]) -> None:
         write_parameters(settings, options.protocol, options.port, values)
 
-    motion: Motion | None = None  # (what Ctrl-C stops: see after_interrupt)
+    session: DeviceSession | None = None  # (what Ctrl-C stops: see after_interrupt)
     moves = MoveTracker()
     with ExitStack() as stack:
         try:
@@ -214,24 +213,23 @@ def _main(argv: Sequence[str] | None) -> int:
                 )
             )
             stack.callback(_keep_numbering, protocol, settings, options)  # failed or not
-            motion = session.motion
-            count.begin(motion)
-            speed.begin(motion)
-            motion.notice_listeners.append(report.notice)
-            motion.move_listeners.append(moves)
+            count.begin(session)
+            speed.begin(session)
+            session.on_notice(report.notice)
+            session.on_move_started(moves)
             if options.command != "config":
-                motion.start()  # e.g. the saved Firmata config: the board reset when opened
+                session.start()  # e.g. the saved Firmata config: the board reset when opened
             if macro is not None:
-                result = run_macro(motion, macro)
+                result = run_macro(session, macro)
             else:
                 result = run_command(
-                    motion, options.command, options.args, options.kind, remember, options.force
+                    session, options.command, options.args, options.kind, remember, options.force
                 )
             if options.command == "config":
                 saved = {s.name: protocol.values[s.name] for s in protocol.settings}
                 write_protocol_settings(settings, options.protocol, options.port, saved)
-            count.done(motion, options.command, options.args, result)
-            speed.done(motion)
+            count.done(session, options.command, options.args, result)
+            speed.done(session)
         except BadInput as exc:
             count.failed(moves.last is not None)
             return report.fail(exc, EXIT_BAD_INPUT)
@@ -246,7 +244,7 @@ def _main(argv: Sequence[str] | None) -> int:
             return report.fail(exc, EXIT_DEVICE_ERROR)
         except KeyboardInterrupt:  # the protocol's stop where it has one, else what goes on
             count.failed(moves.last is not None)
-            return report.fail(after_interrupt(motion, options.command, moves), EXIT_INTERRUPTED)
+            return report.fail(after_interrupt(session, options.command, moves), EXIT_INTERRUPTED)
     return report.done(result)
 
 

@@ -7,12 +7,12 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-from drivers.device.motion import Motion
 from drivers.device.param_profile import read_profile
 from drivers.device.parameters import Parameter, ParameterWritten
 from drivers.errors import BadInput
 from drivers.protocols.base import Protocol
 from drivers.protocols.numbers import parse_number
+from drivers.session.device_session import DeviceSession
 
 SECONDS_PER_PACKET = 1.05  # a Visiomex reply comes 1 s after the packet; used for "time left"
 Remember = Callable[[dict[str, float]], None]
@@ -106,9 +106,9 @@ def _progress(index: int, total: int, item: ParameterWritten, started: float) ->
     )
 
 
-def run_param(motion: Motion, args: list[str], remember: Remember) -> dict[str, Any]:
+def run_param(session: DeviceSession, args: list[str], remember: Remember) -> dict[str, Any]:
     """Carry out `param set` or `param write`; every confirmed value is remembered at once."""
-    protocol = motion.client.protocol
+    protocol = session.protocol
     if args[0] == "set":
         parameter = protocol.parameter(args[1])
         values = {parameter.name: _value(parameter, args[2])}
@@ -119,7 +119,7 @@ def run_param(motion: Motion, args: list[str], remember: Remember) -> dict[str, 
     written = []
     started = time.monotonic()
     for index, (name, value) in enumerate(values.items(), start=1):
-        item = motion.set_parameter(name, value)
+        item = session.set_parameter(name, value)
         remember({name: value, **item.device_values})
         written.append(_written(item))
         if args[0] == "write":

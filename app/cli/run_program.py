@@ -9,19 +9,18 @@ import time
 from dataclasses import dataclass
 from typing import Any
 
-from drivers.device.motion import Motion
+from app.common.command_words import RUN_USAGE
 from drivers.device.travel import TravelLimits
 from drivers.errors import BadInput
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
 from drivers.protocols.numbers import parse_number
+from drivers.session.device_session import DeviceSession
 from drivers.toolpath.geometry import check_fits, check_speeds, flatten
 from drivers.toolpath.loader import load_toolpath
 from drivers.toolpath.model import CHORD_TOLERANCE, Toolpath
-from drivers.toolpath.runner import ProgramRunner
 from drivers.toolpath.streaming import StreamProgress
 
-RUN_USAGE = "run FILE [--layer NAME]... [--tolerance MM] [--svg-scale MM]"
 PROGRESS_EVERY = 0.5  # s between progress lines
 
 
@@ -97,7 +96,7 @@ def check_run_offline(protocol: Protocol, args: list[str], travel: TravelLimits 
     _checked[request] = toolpath
 
 
-def run_program(motion: Motion, args: list[str]) -> dict[str, Any]:
+def run_program(session: DeviceSession, args: list[str]) -> dict[str, Any]:
     """Run the program checked offline, telling its progress on stderr; the summary."""
     request = run_request(args)
     toolpath = _checked.pop(request, None) or load_toolpath(
@@ -107,8 +106,7 @@ def run_program(motion: Motion, args: list[str]) -> dict[str, Any]:
         tolerance=request.tolerance,
     )
     for notice in toolpath.notices:
-        for listener in list(motion.notice_listeners):
-            listener(notice)
+        session.notify(notice)
     shown = [0.0]
 
     def progress(state: StreamProgress) -> None:
@@ -118,13 +116,9 @@ def run_program(motion: Motion, args: list[str]) -> dict[str, Any]:
         shown[0] = now
         print("motionctl: " + progress_text(toolpath, state), file=sys.stderr, flush=True)
 
-    runner = ProgramRunner(motion, toolpath, tolerance=request.tolerance, progress=progress)
-    try:
-        state = runner.run()
-    except KeyboardInterrupt:
-        runner.stop()  # motionctl then sends the device's stop (app/cli/interrupt.py)
-        raise
-    here = motion.position()
+    # Ctrl-C ends the run where it is; motionctl then sends the device's stop (interrupt.py).
+    state = session.run_program(toolpath, progress, tolerance=request.tolerance)
+    here = session.last_position or session.position()
     result: dict[str, Any] = {
         "program": toolpath.name,
         "instructions": state.total,

@@ -8,9 +8,9 @@ import logging
 from PySide6.QtCore import QSettings
 
 from app.common.settings import read_speed, write_speed
-from drivers.device.motion import Motion
 from drivers.errors import BadInput
 from drivers.protocols.base import Protocol
+from drivers.session.device_session import DeviceSession
 
 log = logging.getLogger(__name__)
 
@@ -23,20 +23,20 @@ class SavedSpeed:
         self.active = protocol.capabilities.speed_in_moves
         self.saved = read_speed(settings, protocol.name, port) if self.active else None
 
-    def begin(self, motion: Motion) -> None:
+    def begin(self, session: DeviceSession) -> None:
         """The run's moves go at the speed kept (one outside today's range is left unused)."""
         if self.saved is None:
             return
         try:
-            motion.set_speed(self.saved)  # nothing is sent: the speed goes with each move
+            session.speed(self.saved)  # nothing is sent: the speed goes with each move
         except BadInput as exc:
             log.info("the speed kept for this port is not used: %s", exc)
             self.saved = None
 
-    def done(self, motion: Motion) -> None:
+    def done(self, session: DeviceSession) -> None:
         """After a run that succeeded: keep the speed it set (`speed V`, a macro's step)."""
         if not self.active:
             return
-        speed = motion.speed()  # as set, else the one kept, else the default: nothing sent
-        if speed != (self.saved if self.saved is not None else motion.capabilities.default_speed):
+        speed = session.speed()  # as set, else the one kept, else the default: nothing sent
+        if speed != (self.saved if self.saved is not None else session.capabilities.default_speed):
             write_speed(self.settings, self.protocol.name, self.port, speed)

@@ -1,17 +1,23 @@
 """Macros: named sequences of motionctl commands (and waits), per protocol; checked whole before
-anything is sent, run step by step on a Motion, kept as JSON (data only, never code)."""
+anything is sent, run step by step on a DeviceSession, kept as JSON (data only, never code)."""
 
 from __future__ import annotations
 
 import json
 import logging
+import warnings
+import weakref
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from app.cli.command_line import UsageError, run_command, validate_offline
-from app.cli.devices import DEVICE_COMMANDS
+from app.common.command_words import (
+    DEVICE_COMMANDS,
+    UsageError,
+    check_word_offline,
+    run_word,
+)
 from drivers.device.motion import Motion
 from drivers.errors import BadFile, BadInput, MotionError
 from drivers.files import MACRO_MAX_BYTES, read_text
@@ -19,6 +25,7 @@ from drivers.messages import Message, message_of
 from drivers.protocols.base import Protocol
 from drivers.protocols.numbers import parse_number
 from drivers.protocols.registry import protocol_names
+from drivers.session.device_session import DeviceSession
 
 log = logging.getLogger(__name__)
 
@@ -155,7 +162,7 @@ def check_step(step: str, protocol: Protocol) -> None:
     if owner != protocol.name:
         raise BadMacro(Message("{command} is a {owner} command", command=command, owner=owner))
     try:
-        validate_offline(command, args, protocol, None, "linear")
+        check_word_offline(command, args, protocol, None, "linear")
     except UsageError as exc:
         raise BadMacro(message_of(exc) or str(exc)) from None
 
@@ -177,44 +184,65 @@ def wait_seconds(args: list[str]) -> float:
 
 
 def run_macro(
-    motion: Motion,
+    session: DeviceSession | Motion,
     macro: Macro,
     on_step: Callable[[int, str], None] = lambda number, step: None,
 ) -> list[dict[str, Any]]:
     """Run every step in order, each waiting for the device as motionctl does; returns each
-    step's result. A stop asked on `motion.stop_requested` ends it between steps (MacroStopped)."""
+    step's result. A `stop` during it ends it between steps, or a wait (MacroStopped). A Motion
+    for `session` is deprecated (removed in release 0.3.0)."""
+    if isinstance(session, Motion):
+        warnings.warn(
+            "run_macro(motion, ...) is deprecated and will be removed in release 0.3.0: "
+            "pass the DeviceSession",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        session = _session_of(session)
     results: list[dict[str, Any]] = []
-    for number, step in enumerate(macro.steps, 1):
-        if motion.stop_requested.is_set():
-            raise MacroStopped(
-                Message(
-                    "macro {name} stopped before step {number} ({step})",
-                    name=macro.name,
-                    number=number,
-                    step=step,
+    with session.operation():
+        for number, step in enumerate(macro.steps, 1):
+            if session.stop_requested:
+                raise MacroStopped(
+                    Message(
+                        "macro {name} stopped before step {number} ({step})",
+                        name=macro.name,
+                        number=number,
+                        step=step,
+                    )
                 )
-            )
-        on_step(number, step)
-        command, args = split_step(step)
-        if command == "wait":
-            stopped = Message(
-                "macro {name} stopped during step {number}", name=macro.name, number=number
-            )
-            _wait(motion, wait_seconds(args), stopped)
-            results.append({"waited": wait_seconds(args)})
-        else:
-            results.append(run_command(motion, command, args))
+            on_step(number, step)
+            command, args = split_step(step)
+            if command == "wait":
+                stopped = Message(
+                    "macro {name} stopped during step {number}", name=macro.name, number=number
+                )
+                _wait(session, wait_seconds(args), stopped)
+                results.append({"waited": wait_seconds(args)})
+            else:
+                results.append(run_word(session, command, args))
     return results
 
 
-def _wait(motion: Motion, seconds: float, stopped: str) -> None:
+_sessions: weakref.WeakKeyDictionary[Motion, DeviceSession] = weakref.WeakKeyDictionary()
+
+
+def _session_of(motion: Motion) -> DeviceSession:
+    """The session over a Motion passed the deprecated way (one per Motion)."""
+    session = _sessions.get(motion)
+    if session is None:
+        session = _sessions[motion] = DeviceSession._around(motion)
+    return session
+
+
+def _wait(session: DeviceSession, seconds: float, stopped: str) -> None:
     """Wait on the port for `seconds`, in slices, so a stop or an abort ends it soon."""
     left = seconds
     while left > 0:
-        if motion.stop_requested.is_set():
+        if session.stop_requested:
             raise MacroStopped(stopped)
         piece = min(WAIT_SLICE_S, left)
-        if motion.wait(piece):
+        if session.wait(piece):
             raise MacroStopped(stopped)
         left -= piece
 
