@@ -10,8 +10,7 @@ from __future__ import annotations
 import math
 import time
 
-from drivers.session.device_session import open_device
-from drivers.toolpath.point_program import ProgramPoint
+from drivers import ProgramPoint, open_device
 
 
 def _program(count: int) -> list[ProgramPoint]:
@@ -28,7 +27,7 @@ def _stream(url: str, points: list[ProgramPoint], group: int) -> tuple[dict[str,
         start = time.perf_counter()
         state = session.run_program(points, group=group)
         seconds = time.perf_counter() - start
-        device = session.link.port.device
+        device = session.simulator
     figures = {
         "instructions": len(points),
         "frames": state.frames,

@@ -25,10 +25,9 @@ from bench import bridge_latency, ser2net_latency, startup  # noqa: E402
 from bench.laser_stream import bench_laser_stream  # noqa: E402
 from bench.motionsim import motionsim  # noqa: E402
 from bench.visiomex_write import bench_visiomex_write  # noqa: E402
-from drivers.device import commands as cmd  # noqa: E402
+from drivers import open_device  # noqa: E402
 from drivers.framers.lines import LineFramer  # noqa: E402
 from drivers.protocols.coxiris import CoxirisProtocol  # noqa: E402
-from drivers.session.device_session import open_device  # noqa: E402
 
 log = logging.getLogger("bench")
 
@@ -62,12 +61,11 @@ def bench_line_framer(lines: int) -> dict[str, float]:
 
 def _round_trips(url: str, count: int) -> list[float]:
     with open_device(url, "coxiris", baud=115200) as session:
-        client = session.client
-        client.execute(cmd.GetId())
+        session.identify()
         times = []
         for _ in range(count):
             start = time.perf_counter()
-            client.execute(cmd.GetPosition())
+            session.position()  # a device that reports its position is always asked
             times.append(time.perf_counter() - start)
         return times
 
@@ -115,15 +113,14 @@ def bench_move_overhead(moves: int) -> dict[str, float]:
         """Commands per move over `first` (absolute X), then per small jog; milliseconds a move."""
         written: list[bytes] = []
         with open_device(url, "coxiris", baud=115200) as session:
-            session.add_listener(lambda r: written.append(r.data) if r.direction == "tx" else None)
-            motion = session.motion
+            session.on_traffic(lambda r: written.append(r.data) if r.direction == "tx" else None)
             start = time.perf_counter()
             for x in first:
-                motion.move_to(x, 0, 0)
+                session.move_to(x, 0, 0)
             seconds = time.perf_counter() - start
             before = len(written)
             for i in range(jogs):
-                motion.move_by(0.1 if i % 2 else -0.1, 0, 0)  # small jogs, one after another
+                session.move_by(0.1 if i % 2 else -0.1, 0, 0)  # small jogs, one after another
         return before / len(first), (len(written) - before) / jogs, seconds / len(first) * 1000
 
     per_move, per_jog, ms = jogs_on(
