@@ -28,7 +28,7 @@ from drivers.device import commands as cmd
 from drivers.device.capabilities import Capabilities
 from drivers.device.client import Client
 from drivers.device.events import PositionReport
-from drivers.device.guard import RawMove
+from drivers.device.guard import ARC_POINTS, RawMove, arc_points
 from drivers.device.motion import Motion
 from drivers.device.parameters import ParameterWritten
 from drivers.device.position_count import resume
@@ -279,6 +279,8 @@ class DeviceSession(SessionSubscriptions, SessionLines):
         elsewhere; every point is checked against the travel box first. The position then."""
         with self._operation():
             arc = cmd.Arc(cx, cy, radius, start, end, ccw, z)
+            if self.capabilities.arcs:  # the whole path first, before a move to its start
+                self.motion.guard.path(arc_points(arc, self._here()[2], ARC_POINTS), Message("arc"))
             return self._ended(self.motion.arc(arc))
 
     def dwell(self, seconds: float) -> None:
