@@ -11,12 +11,12 @@ from collections.abc import Sequence
 from types import FrameType
 
 from drivers.errors import UnknownProtocol
+from drivers.link.records import TrafficLogWriter
 from drivers.protocols.registry import create_protocol, entries, has_variants
 from drivers.sim.faults import FAULT_COMMANDS, FaultError, FaultyDevice
 from drivers.sim.pty_server import PtyServer
 from drivers.sim.registry import create_device, simulator_names
 from drivers.traffic.log_origin import device_side_note
-from drivers.traffic.records import TrafficLogWriter
 
 log = logging.getLogger("motionsim")
 

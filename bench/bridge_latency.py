@@ -2,7 +2,7 @@
 
 An echo device (a process of its own: the master side of a pty, writing back what it reads) is
 asked `count` round trips of a small write directly on its slave, then the same number through a
-bridge in another process (`drivers.link.bridge.Bridge` alone, or `motionctl bridge` with a log and
+bridge in another process (`drivers.bridge.snoop.Bridge` alone, or `motionctl bridge` with a log and
 its decoded output), in `rounds` alternating blocks so that drift on a noisy machine falls on
 both alike. The figures are the median and p99 of each, and of their difference in ms; a round
 trip crosses the bridge twice (to the device and back), so one crossing adds about half.
@@ -33,7 +33,7 @@ ROOT = Path(__file__).resolve().parent.parent
 if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
-from drivers.link.bridge import Bridge  # noqa: E402
+from drivers.bridge.snoop import Bridge  # noqa: E402
 
 PAYLOAD = bytes((0x00, 0x0A, 0x7E, 0x90, 0xEB, 0xFF, 0x41, 0x0D))
 WARM_UP = 50  # round trips not counted at the start of each block

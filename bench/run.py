@@ -144,7 +144,7 @@ def bench_move_overhead(moves: int) -> dict[str, float]:
 
 def bench_traffic_memory(records: int) -> dict[str, float]:
     """Memory held by a traffic tap's records (what a log keeps per byte)."""
-    from drivers.traffic.records import Traffic
+    from drivers.link.records import Traffic
 
     tracemalloc.start()
     kept = [

@@ -14,8 +14,6 @@ from typing import TYPE_CHECKING, Any
 from drivers import _moved
 
 if TYPE_CHECKING:
-    from drivers.device.capabilities import Capabilities
-    from drivers.device.events import PositionReport
     from drivers.device.position_truth import Whereabouts
     from drivers.device.travel import TravelLimits
     from drivers.errors import (
@@ -36,12 +34,14 @@ if TYPE_CHECKING:
         Retransmit,
         UnknownProtocol,
     )
+    from drivers.link.records import Traffic
+    from drivers.protocols.capabilities import Capabilities
+    from drivers.protocols.events import PositionReport
     from drivers.session.device_session import DeviceSession, open_device
     from drivers.toolpath.loader import load_toolpath
     from drivers.toolpath.model import Toolpath
     from drivers.toolpath.point_program import ProgramDwell, ProgramPoint
     from drivers.toolpath.streaming import StreamProgress
-    from drivers.traffic.records import Traffic
 
 _ERRORS = (
     "Aborted", "BadFile", "BadInput", "CommunicationError", "DeviceError", "DeviceRestarted",
@@ -51,16 +51,16 @@ _ERRORS = (
 _HOMES = {
     "DeviceSession": "drivers.session.device_session",
     "open_device": "drivers.session.device_session",
-    "PositionReport": "drivers.device.events",
+    "PositionReport": "drivers.protocols.events",
     "Whereabouts": "drivers.device.position_truth",
     "TravelLimits": "drivers.device.travel",
-    "Capabilities": "drivers.device.capabilities",
+    "Capabilities": "drivers.protocols.capabilities",
     "ProgramPoint": "drivers.toolpath.point_program",
     "ProgramDwell": "drivers.toolpath.point_program",
     "Toolpath": "drivers.toolpath.model",
     "load_toolpath": "drivers.toolpath.loader",
     "StreamProgress": "drivers.toolpath.streaming",
-    "Traffic": "drivers.traffic.records",
+    "Traffic": "drivers.link.records",
     **dict.fromkeys(_ERRORS, "drivers.errors"),
 }
 """Where each public name lives (internal: the modules may move, the names stay)."""

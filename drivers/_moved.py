@@ -15,23 +15,22 @@ from types import ModuleType
 
 REMOVAL = "0.3.0"
 MOVED = {
-    "drivers.bridge": "drivers.link.bridge",
-    "drivers.bridge_watch": "drivers.link.bridge_watch",
-    "drivers.capabilities": "drivers.device.capabilities",
+    "drivers.bridge_watch": "drivers.bridge.watch",
+    "drivers.capabilities": "drivers.protocols.capabilities",
     "drivers.client": "drivers.device.client",
-    "drivers.commands": "drivers.device.commands",
+    "drivers.commands": "drivers.protocols.commands",
     "drivers.control_lines": "drivers.link.control_lines",
     "drivers.decoding": "drivers.traffic.decoding",
-    "drivers.events": "drivers.device.events",
+    "drivers.events": "drivers.protocols.events",
     "drivers.log_origin": "drivers.traffic.log_origin",
     "drivers.log_reader": "drivers.traffic.log_reader",
     "drivers.log_records": "drivers.traffic.log_records",
     "drivers.motion": "drivers.device.motion",
     "drivers.motion_guard": "drivers.device.guard",
-    "drivers.move_outcome": "drivers.device.move_outcome",
+    "drivers.move_outcome": "drivers.protocols.move_outcome",
     "drivers.numbers": "drivers.protocols.numbers",
     "drivers.param_profile": "drivers.device.param_profile",
-    "drivers.parameters": "drivers.device.parameters",
+    "drivers.parameters": "drivers.protocols.parameters",
     "drivers.position_count": "drivers.device.position_count",
     "drivers.position_truth": "drivers.device.position_truth",
     "drivers.program": "drivers.toolpath.point_program",
@@ -56,14 +55,14 @@ MOVED = {
     "drivers.traffic_spool": "drivers.traffic.spool",
     "drivers.transport": "drivers.link.transport",
     "drivers.travel": "drivers.device.travel",
-    "drivers.urlhandler": "drivers.link.urlhandler",
-    "drivers.urlhandler.protocol_sim": "drivers.link.urlhandler.protocol_sim",
-    "drivers.urlhandler.rfc2217_port": "drivers.link.urlhandler.rfc2217_port",
+    "drivers.urlhandler": "drivers.sim.urlhandler",
+    "drivers.urlhandler.protocol_sim": "drivers.sim.urlhandler.protocol_sim",
+    "drivers.urlhandler.rfc2217_port": "drivers.link.rfc2217_port",
     "drivers.work_zero": "drivers.device.work_zero",
 }
 """Old dotted name -> the module's name now. The old modules that are packages now
-(drivers.session, drivers.traffic, drivers.protocols.laser, drivers.protocols.visiomex) are not
-here: they import as the packages."""
+(drivers.session, drivers.traffic, drivers.bridge, drivers.protocols.laser,
+drivers.protocols.visiomex) are not here: they import as the packages."""
 
 
 class _Alias(importlib.abc.Loader):

@@ -13,12 +13,12 @@ from collections.abc import Callable, Mapping
 from functools import partial
 from urllib.parse import quote
 
-from drivers.device import commands as cmd
-from drivers.device.capabilities import Capabilities
-from drivers.device.events import Event
 from drivers.errors import BadInput, FrameError, MotionError
 from drivers.framers.base import Framer
+from drivers.protocols import commands as cmd
 from drivers.protocols.base import Exchange, Protocol
+from drivers.protocols.capabilities import Capabilities
+from drivers.protocols.events import Event
 from drivers.protocols.registry import ProtocolEntry, get_protocol_class
 from drivers.sim.device import SimulatedDevice
 from drivers.sim.registry import simulator_class

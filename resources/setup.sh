@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Motion Panel set-up: `bash resources/setup.sh run` starts the panel on the simulated device;
-# `bash resources/setup.sh test` runs lint (ruff, mypy on drivers/) and the whole test suite
-# (under Xvfb with Mesa).
+# `bash resources/setup.sh test` runs lint (ruff, mypy on drivers/, import-linter) and the whole
+# test suite (under Xvfb with Mesa).
 # Both create .venv and install the project into it when needed; as root, `test` also installs
 # the Debian packages for Xvfb, Mesa and Qt's xcb platform where they are missing.
 set -euo pipefail
@@ -21,7 +21,7 @@ DEBIAN_PACKAGES=(
 )  # fonts-droid-fallback: Chinese glyphs for the zh_CN interface; desktop-file-utils: the
    # launcher file's check; openbox, xdotool, x11-utils (xprop), imagemagick (import): the
    # real-input acceptance tier (tests/acceptance); ser2net: a device served over RFC 2217
-   # (tests/test_ser2net.py, bench/ser2net_latency.py)
+   # (tests/app/cli/test_ser2net.py, bench/ser2net_latency.py)
 
 say() { printf 'setup: %s\n' "$*" >&2; }
 
@@ -63,6 +63,7 @@ run_tests() {
   "$VENV/bin/ruff" check .
   "$VENV/bin/ruff" format --check .
   "$VENV/bin/mypy" drivers
+  "$VENV/bin/lint-imports"  # the layers and no import circles (pyproject.toml)
   export LIBGL_ALWAYS_SOFTWARE=1
   # MOTIONPANEL_TEST_WORKERS=2 runs two test files at a time (pytest-xdist, each worker on an
   # X server of its own): about half the time, but the timing of the held-key and

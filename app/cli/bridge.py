@@ -3,7 +3,7 @@
     motionctl bridge --port DEVICE --protocol P [--variant V] [--baud N] [--log FILE] [--json] [-v]
 
 Opens DEVICE (a path or any pyserial URL), offers a pseudo-terminal to another program and
-forwards every byte both ways unchanged (drivers/link/bridge.py). `bridge` must be the first
+forwards every byte both ways unchanged (drivers/bridge/snoop.py). `bridge` must be the first
 argument;
 the options are motionctl's global ones, with the same meaning.
 
@@ -39,13 +39,13 @@ from types import FrameType
 from typing import TextIO
 
 from app.cli.report import log_to_stderr, plain_error, usage_exit
+from drivers.bridge.snoop import Bridge
 from drivers.errors import BadInput, CommunicationError, UnknownProtocol
-from drivers.link.bridge import Bridge
+from drivers.link.records import Traffic, TrafficLogWriter
 from drivers.protocols.base import Protocol
 from drivers.protocols.registry import create_protocol, protocol_names
 from drivers.traffic.decoding import DecodedFrame, StreamDecoder
 from drivers.traffic.log_reader import LogRecord
-from drivers.traffic.records import Traffic, TrafficLogWriter
 
 log = logging.getLogger("motionctl")
 

@@ -10,7 +10,6 @@ from typing import Any
 from PySide6.QtCore import QSettings
 
 from app.common.settings import read_counted_position, write_counted_position
-from drivers.device import commands as cmd
 from drivers.device.position_count import (
     commanded,
     keeps_count,
@@ -21,6 +20,7 @@ from drivers.device.position_count import (
     unknown_note,
 )
 from drivers.errors import BadInput, FrameError
+from drivers.protocols import commands as cmd
 from drivers.protocols.base import Point, Protocol
 from drivers.session.device_session import DeviceSession
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import logging
 
-from drivers.device import commands as cmd
 from drivers.device.motion import MoveStart
 from drivers.errors import MotionError
 from drivers.messages import Message
+from drivers.protocols import commands as cmd
 from drivers.session.device_session import DeviceSession
 
 log = logging.getLogger(__name__)

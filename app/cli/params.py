@@ -8,10 +8,10 @@ from collections.abc import Callable
 from typing import Any
 
 from drivers.device.param_profile import read_profile
-from drivers.device.parameters import Parameter, ParameterWritten
 from drivers.errors import BadInput
 from drivers.protocols.base import Protocol
 from drivers.protocols.numbers import parse_number
+from drivers.protocols.parameters import Parameter, ParameterWritten
 from drivers.session.device_session import DeviceSession
 
 SECONDS_PER_PACKET = 1.05  # a Visiomex reply comes 1 s after the packet; used for "time left"

@@ -8,19 +8,20 @@ import sys
 from collections.abc import Sequence
 from typing import Any
 
-from drivers.device import commands as cmd
 from drivers.device.guard import MotionGuard
 from drivers.device.motion import KIND_UNITS
-from drivers.device.position_count import firmware_move_mm, kind_note, no_identity
+from drivers.device.position_count import kind_note, no_identity
 from drivers.device.travel import TravelLimits, check_resolution
 from drivers.errors import BadInput
+from drivers.link.records import RX, Traffic
 from drivers.messages import Message
+from drivers.protocols import commands as cmd
 from drivers.protocols.base import Protocol
 from drivers.protocols.firmata import StepperVersion, step_parts
 from drivers.protocols.laser.protocol import GetStatus
 from drivers.protocols.numbers import parse_number
+from drivers.protocols.visiomex.move_digits import firmware_move_mm
 from drivers.session.device_session import DeviceSession
-from drivers.traffic.records import RX, Traffic
 
 ANY_PROTOCOL = "*"  # a command every protocol has
 RUN_USAGE = "run FILE [--layer NAME]... [--tolerance MM] [--svg-scale MM]"
@@ -86,7 +87,9 @@ def whole(text: str, what: str) -> int:
     """A whole number typed for `what` (DeviceUsageError otherwise)."""
     value = parse_number(text, what)
     if value != int(value):
-        raise DeviceUsageError(f"{what} {text!r} refused: a whole number is needed")
+        raise DeviceUsageError(
+            Message("{what} {text!r} refused: a whole number is needed", what=what, text=text)
+        )
     return int(value)
 
 
@@ -95,11 +98,13 @@ def arc_args(args: list[str]) -> cmd.Arc:
     directions = [a for a in args if a in ("--cw", "--ccw")]
     values = [a for a in args if a not in ("--cw", "--ccw")]
     if len(directions) != 1 or len(values) != 5:
-        raise DeviceUsageError(f"usage: {DEVICE_COMMANDS['arc'][1]}")
+        raise DeviceUsageError(Message("usage: {usage}", usage=DEVICE_COMMANDS["arc"][1]))
     names = ("centre X", "centre Y", "radius", "start angle", "end angle")
     cx, cy, radius, start, end = (parse_number(t, n) for t, n in zip(values, names, strict=True))
     if radius <= 0:
-        raise DeviceUsageError(f"radius {radius:g} mm refused: it must be above 0")
+        raise DeviceUsageError(
+            Message("radius {radius:g} mm refused: it must be above 0", radius=radius)
+        )
     return cmd.Arc(cx, cy, radius, start, end, directions[0] == "--ccw")
 
 
@@ -316,19 +321,26 @@ def _check_device_word(protocol: Protocol, command: str, args: list[str]) -> Non
     """Refuse a device word that is wrong before the port is opened (BadInput)."""
     owner, usage = DEVICE_COMMANDS[command]
     if owner not in (ANY_PROTOCOL, protocol.name):
-        raise DeviceUsageError(f"'{command}' is a {owner} command, not {protocol.name}'s")
+        raise DeviceUsageError(
+            Message(
+                "'{command}' is a {owner} command, not {protocol}'s",
+                command=command,
+                owner=owner,
+                protocol=protocol.name,
+            )
+        )
     if command == "step":
         if len(args) != 2:
-            raise DeviceUsageError(f"usage: {usage}")
+            raise DeviceUsageError(Message("usage: {usage}", usage=usage))
         for part in step_parts(whole(args[0], "speed (rpm)"), whole(args[1], "steps")):
             protocol.encode(part)
     elif command == "version" and args:
-        raise DeviceUsageError(f"usage: {usage}")
+        raise DeviceUsageError(Message("usage: {usage}", usage=usage))
     elif command == "dwell":
         if len(args) != 1:
-            raise DeviceUsageError(f"usage: {usage}")
+            raise DeviceUsageError(Message("usage: {usage}", usage=usage))
         protocol.encode(cmd.Dwell(whole(args[0], "dwell (ms)")))
     elif command == "arc":
         protocol.encode(arc_args(args))
     elif command in ("status", "stop") and args:
-        raise DeviceUsageError(f"usage: {usage}")
+        raise DeviceUsageError(Message("usage: {usage}", usage=usage))

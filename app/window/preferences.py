@@ -477,3 +477,15 @@ def session_log_folder(prefs: Preferences) -> Path:
 def console_memory_bytes(lines: int) -> int:
     """About how much memory the console takes for `lines` lines (the spool is on disk)."""
     return lines * BYTES_PER_CONSOLE_LINE
+
+
+POLL_MOVING_HZ = (5.0, 20.0)  # the preferences' range
+POLL_IDLE_S = (0.2, 10.0)
+
+
+def poll_rates(settings: QSettings) -> tuple[float, float]:
+    """The position poll rates the preferences give: Hz while moving, seconds when idle."""
+    prefs = read_preferences(settings)
+    moving = min(max(prefs.poll_moving_hz, POLL_MOVING_HZ[0]), POLL_MOVING_HZ[1])
+    idle = min(max(prefs.poll_idle_s, POLL_IDLE_S[0]), POLL_IDLE_S[1])
+    return moving, idle

@@ -7,13 +7,13 @@ import dataclasses
 import logging
 from typing import TYPE_CHECKING, Any
 
-from PySide6.QtCore import QObject, QSettings, Qt
+from PySide6.QtCore import QObject, Qt
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QApplication, QDockWidget, QMenu
 
 from app.common.settings import device_key
 from app.window.docks.work_frame import WorkFrame
-from app.window.preferences import Preferences, read_preferences, write_preferences
+from app.window.preferences import Preferences, poll_rates, read_preferences, write_preferences
 from widgets._i18n import fill
 from widgets.lazy_view import LazyPart, LazyView, built
 
@@ -28,16 +28,6 @@ ARROWS = {"Left": "←", "Right": "→", "Up": "↑", "Down": "↓"}  # others: 
 NATIVE = QKeySequence.SequenceFormat.NativeText
 MACRO_CALLS = frozenset({"set_protocol", "set_runnable"})
 MACRO_DOCK = "macroPanelDock"
-POLL_MOVING_HZ = (5.0, 20.0)  # the preferences' range (see app/window/preferences.py)
-POLL_IDLE_S = (0.2, 10.0)
-
-
-def poll_rates(settings: QSettings) -> tuple[float, float]:
-    """The position poll rates the preferences give: Hz while moving, seconds when idle."""
-    prefs = read_preferences(settings)
-    moving = min(max(prefs.poll_moving_hz, POLL_MOVING_HZ[0]), POLL_MOVING_HZ[1])
-    idle = min(max(prefs.poll_idle_s, POLL_IDLE_S[0]), POLL_IDLE_S[1])
-    return moving, idle
 
 
 def _key_code(text: str) -> int:

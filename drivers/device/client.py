@@ -7,8 +7,6 @@ import threading
 import time
 from collections.abc import Callable
 
-from drivers.device.commands import Command
-from drivers.device.events import Event, Undecodable
 from drivers.errors import (
     Aborted,
     DeviceError,
@@ -21,6 +19,8 @@ from drivers.errors import (
 from drivers.link.transport import Link
 from drivers.messages import Message, message_of
 from drivers.protocols.base import Exchange, Protocol, Reply
+from drivers.protocols.commands import Command
+from drivers.protocols.events import Event, Undecodable
 
 log = logging.getLogger(__name__)
 

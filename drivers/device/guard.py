@@ -14,12 +14,12 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from drivers.device import commands as cmd
+from drivers.device.program_steps import ProgramDwell, ProgramPoint
 from drivers.device.travel import Point, TravelLimits, check_resolution
 from drivers.errors import BadInput, FrameError
 from drivers.messages import Message, message_of
+from drivers.protocols import commands as cmd
 from drivers.protocols.base import MoveSequence, Protocol
-from drivers.toolpath.point_program import ProgramDwell, ProgramPoint
 
 log = logging.getLogger(__name__)
 

@@ -10,16 +10,16 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
-from drivers.device import commands as cmd
-from drivers.device.capabilities import Capabilities, Completion
 from drivers.device.client import ABANDONED, Client
-from drivers.device.events import ErrorReport, Event, PositionReport
 from drivers.device.guard import MotionGuard, RawMove, arc_point, arc_points
-from drivers.device.parameters import ParameterWritten
 from drivers.device.travel import Point, TravelLimits, check_resolution
 from drivers.errors import Aborted, BadInput, DeviceError, DeviceTimeout
 from drivers.messages import Message
+from drivers.protocols import commands as cmd
 from drivers.protocols.base import Protocol, Reply
+from drivers.protocols.capabilities import Capabilities, Completion
+from drivers.protocols.events import ErrorReport, Event, PositionReport
+from drivers.protocols.parameters import ParameterWritten
 
 log = logging.getLogger(__name__)
 

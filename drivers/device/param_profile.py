@@ -22,10 +22,10 @@ import re
 import tomllib
 from pathlib import Path
 
-from drivers.device.parameters import Parameter
 from drivers.errors import BadFile, BadInput
 from drivers.files import PROFILE_MAX_BYTES, read_text
 from drivers.messages import Message
+from drivers.protocols.parameters import Parameter
 
 HEADER = "# Motion Panel parameter profile"
 

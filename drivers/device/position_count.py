@@ -14,11 +14,12 @@ steps.
 
 from __future__ import annotations
 
-from drivers.device.capabilities import Capabilities
-from drivers.device.commands import MoveTo
 from drivers.errors import BadInput
 from drivers.messages import Message
 from drivers.protocols.base import Point, Protocol
+from drivers.protocols.capabilities import Capabilities
+from drivers.protocols.commands import MoveTo
+from drivers.protocols.visiomex.move_digits import firmware_move_mm as firmware_move_mm
 
 COUNTED_PROTOCOLS = frozenset({"visiomex", "firmata"})
 # The commands that start from the position kept whatever the device: a program (its first
@@ -27,9 +28,6 @@ COUNTED_PROTOCOLS = frozenset({"visiomex", "firmata"})
 # neither a home move nor absolute moves.
 _NEEDS_COUNT = frozenset({"position", "run", "arc"})
 # Packet variants whose move digits this firmware reads as µm whatever the type letter.
-_MICROMETRE_VARIANTS = frozenset({"seed", "prefixed"})
-_PACKET_LENGTH = 18
-_DIGITS = 7
 
 
 class NoCount(BadInput):
@@ -146,29 +144,6 @@ def unknown_note(protocol: Protocol) -> str:
         protocol=protocol.name,
         how=how,
     )
-
-
-def reads_micrometres(protocol: Protocol) -> bool:
-    """Whether this firmware reads a move packet's digits as µm whatever its type letter."""
-    variant = protocol.variant.name if protocol.variant is not None else ""
-    return protocol.name == "visiomex" and variant in _MICROMETRE_VARIANTS
-
-
-def firmware_move_mm(protocol: Protocol, packet: bytes) -> Point | None:
-    """The distances in mm a move packet makes the firmware go, the type letter ignored as the
-    firmware ignores it (None: not a move packet this firmware is known to read so)."""
-    if not reads_micrometres(protocol):
-        return None
-    text = packet.decode("latin-1")
-    if len(text) != _PACKET_LENGTH or not text.startswith("M"):
-        return None
-    distances = []
-    for sign_at in (2, 3 + _DIGITS):
-        sign, digits = text[sign_at], text[sign_at + 1 : sign_at + 1 + _DIGITS]
-        if sign not in "PN" or not digits.isdigit():
-            return None
-        distances.append((-1 if sign == "N" else 1) * int(digits) / 1000)
-    return (distances[0], distances[1], 0.0)
 
 
 def kind_note(kind: str, moved: Point) -> str:

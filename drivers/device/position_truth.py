@@ -13,9 +13,9 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
-from drivers.device.events import PositionReport
 from drivers.device.motion import Motion, MoveStart
 from drivers.protocols.base import Point
+from drivers.protocols.events import PositionReport
 
 LIVE = "live"  # the device's report: measured, or counted / commanded from a known place
 ESTIMATED = "estimated"  # a move under way, interpolated from its start, target and speed

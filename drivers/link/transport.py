@@ -21,14 +21,14 @@ if os.name == "posix":
 
 from drivers.errors import BadInput, NoControlLines, PortBusy, PortError
 from drivers.link.control_lines import BREAK_S, OUTPUTS, ControlLines
-from drivers.link.urlhandler.rfc2217_port import PortInUse, Rfc2217Port
+from drivers.link.records import RX, TX, Traffic
+from drivers.link.rfc2217_port import PortInUse, Rfc2217Port
 from drivers.messages import Message
-from drivers.traffic.records import RX, TX, Traffic
 
 log = logging.getLogger(__name__)
 
-if "drivers.link.urlhandler" not in serial.protocol_handler_packages:
-    serial.protocol_handler_packages.append("drivers.link.urlhandler")
+if "drivers.sim.urlhandler" not in serial.protocol_handler_packages:
+    serial.protocol_handler_packages.append("drivers.sim.urlhandler")
 
 POLL_INTERVAL = 0.02  # seconds a read waits for the first byte; bounds the reader's latency
 READ_SIZE = 4096  # bytes taken from a descriptor at once (a whole tty input buffer)

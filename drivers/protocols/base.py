@@ -6,14 +6,14 @@ from abc import ABC, abstractmethod
 from dataclasses import dataclass, field
 from typing import ClassVar
 
-from drivers.device.capabilities import Capabilities
-from drivers.device.commands import Command, MoveBy, SetParameter
-from drivers.device.events import Event
-from drivers.device.move_outcome import MoveOutcome
-from drivers.device.parameters import Parameter, ParameterWritten, find_parameter
 from drivers.errors import BadInput, FrameError, MotionError
 from drivers.framers.base import Framer
 from drivers.messages import Message, message_of
+from drivers.protocols.capabilities import Capabilities
+from drivers.protocols.commands import Command, MoveBy, SetParameter
+from drivers.protocols.events import Event
+from drivers.protocols.move_outcome import MoveOutcome
+from drivers.protocols.parameters import Parameter, ParameterWritten, find_parameter
 
 Point = tuple[float, float, float]
 

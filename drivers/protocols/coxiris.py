@@ -5,8 +5,12 @@ from __future__ import annotations
 
 import re
 
-from drivers.device.capabilities import Capabilities, Completion
-from drivers.device.commands import (
+from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
+from drivers.framers.lines import LineFramer
+from drivers.messages import Message
+from drivers.protocols.base import Exchange, Protocol
+from drivers.protocols.capabilities import Capabilities, Completion
+from drivers.protocols.commands import (
     CheckErrors,
     Command,
     GetId,
@@ -22,11 +26,7 @@ from drivers.device.commands import (
     SetHome,
     SetSpeed,
 )
-from drivers.device.events import Ack, Done, ErrorReport, Event, PositionReport, TextLine
-from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
-from drivers.framers.lines import LineFramer
-from drivers.messages import Message
-from drivers.protocols.base import Exchange, Protocol
+from drivers.protocols.events import Ack, Done, ErrorReport, Event, PositionReport, TextLine
 from drivers.protocols.numbers import format_number
 
 MAX_COMMAND_LENGTH = 63  # the firmware's 64-byte buffer keeps 63 characters and a NUL

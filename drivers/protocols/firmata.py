@@ -11,16 +11,19 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-from drivers.device.capabilities import Capabilities, Completion
-from drivers.device.client import Client
-from drivers.device.commands import Command, GetId, MoveBy, Raw
-from drivers.device.events import ErrorReport, Event, Feedback, TextLine
 from drivers.errors import BadInput, DeviceError, FrameError
 from drivers.framers.sysex import SysexFramer
 from drivers.messages import Message
 from drivers.protocols.base import Exchange, Point, Protocol, Setting
+from drivers.protocols.capabilities import Capabilities, Completion
+from drivers.protocols.commands import Command, GetId, MoveBy, Raw
+from drivers.protocols.events import ErrorReport, Event, Feedback, TextLine
 from drivers.protocols.piframe import NoReply
+
+if TYPE_CHECKING:
+    from drivers.device.client import Client
 
 START, END = 0xF0, 0xF7
 REPORT_VERSION = 0xF9

@@ -13,13 +13,13 @@ import dataclasses
 import math
 import struct
 
-from drivers.device.capabilities import Capabilities, Completion
-from drivers.device.commands import Arc, Command, Dwell, Home, MoveTo, Raw, SetHome
-from drivers.device.events import Event, Feedback
 from drivers.errors import BadInput, FrameError
 from drivers.framers.fixed import FixedFramer
 from drivers.messages import Message
 from drivers.protocols.base import Exchange, Point, Protocol, Setting
+from drivers.protocols.capabilities import Capabilities, Completion
+from drivers.protocols.commands import Arc, Command, Dwell, Home, MoveTo, Raw, SetHome
+from drivers.protocols.events import Event, Feedback
 
 HEADER = b"\x7b\x7d"
 END = b"\x2a"

@@ -5,11 +5,11 @@ from __future__ import annotations
 
 import logging
 
-from drivers.device.events import Event, TextLine, Undecodable
 from drivers.errors import MotionError
 from drivers.framers.lines import LineFramer
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
+from drivers.protocols.events import Event, TextLine, Undecodable
 from drivers.protocols.registry import create_protocol, entries
 
 log = logging.getLogger(__name__)

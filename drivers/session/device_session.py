@@ -24,20 +24,21 @@ from contextlib import AbstractContextManager, contextmanager
 from types import TracebackType
 from typing import TypeVar
 
-from drivers.device import commands as cmd
-from drivers.device.capabilities import Capabilities
 from drivers.device.client import Client
-from drivers.device.events import PositionReport
 from drivers.device.guard import ARC_POINTS, RawMove, arc_points
 from drivers.device.motion import Motion
-from drivers.device.parameters import ParameterWritten
 from drivers.device.position_count import resume
 from drivers.device.position_truth import PositionTruth, Whereabouts
 from drivers.device.travel import Point, TravelLimits
 from drivers.errors import BadInput, CommunicationError, MotionError
+from drivers.link.records import TrafficLogWriter
 from drivers.link.transport import Link, TrafficListener
 from drivers.messages import Message
+from drivers.protocols import commands as cmd
 from drivers.protocols.base import Protocol, Reply
+from drivers.protocols.capabilities import Capabilities
+from drivers.protocols.events import PositionReport
+from drivers.protocols.parameters import ParameterWritten
 from drivers.session.parameters import DeviceParameters
 from drivers.session.setup import LogTarget, make_protocol, open_device_link, travel_limits
 from drivers.session.subscriptions import SessionLines, SessionSubscriptions
@@ -48,7 +49,6 @@ from drivers.toolpath.point_program import ProgramPoint
 from drivers.toolpath.runner import ProgramRunner
 from drivers.toolpath.streaming import StreamProgress
 from drivers.traffic.log_origin import connection_note
-from drivers.traffic.records import TrafficLogWriter
 
 __all__ = [
     "DeviceSession",

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from drivers.device.motion import Motion, MoveStart
 from drivers.device.param_profile import read_profile
-from drivers.device.parameters import Parameter, ParameterWritten
+from drivers.protocols.parameters import Parameter, ParameterWritten
 
 __all__ = ["DeviceParameters", "WriteProgress"]
 

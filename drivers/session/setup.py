@@ -14,12 +14,12 @@ from typing import TextIO
 
 from drivers.device.travel import TravelLimits, parse_travel
 from drivers.errors import BadInput
+from drivers.link.records import TrafficLogWriter
 from drivers.link.transport import Link, open_link
-from drivers.link.urlhandler.protocol_sim import with_sim_variant
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
 from drivers.protocols.registry import create_protocol
-from drivers.traffic.records import TrafficLogWriter
+from drivers.sim.urlhandler.protocol_sim import with_sim_variant
 
 __all__ = ["LogTarget", "device_url", "make_protocol", "open_device_link", "travel_limits"]
 

@@ -6,11 +6,11 @@ from collections.abc import Callable
 from typing import Any, TypeVar
 
 from drivers.device.client import Client, EventListener
-from drivers.device.events import PositionReport
 from drivers.device.motion import Motion, MoveStart
-from drivers.device.parameters import ParameterWritten
 from drivers.link.control_lines import BREAK_S, ControlLines
 from drivers.link.transport import Link, NoteListener, TrafficListener
+from drivers.protocols.events import PositionReport
+from drivers.protocols.parameters import ParameterWritten
 
 __all__ = ["SessionLines", "SessionSubscriptions", "Unsubscribe"]
 

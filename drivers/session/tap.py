@@ -8,9 +8,9 @@ from __future__ import annotations
 import os
 from typing import TextIO
 
+from drivers.link.records import TrafficLogWriter
 from drivers.link.transport import Link, TrafficListener
 from drivers.session.setup import LogTarget
-from drivers.traffic.records import TrafficLogWriter
 
 __all__ = ["TrafficTap"]
 

@@ -11,9 +11,9 @@ import select
 import time
 import tty
 
+from drivers.link.records import RX, TX, Traffic
 from drivers.link.transport import TrafficListener
 from drivers.sim.device import SimulatedDevice
-from drivers.traffic.records import RX, TX, Traffic
 
 log = logging.getLogger(__name__)
 

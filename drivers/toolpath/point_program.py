@@ -13,9 +13,10 @@ import io
 import json
 import math
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from pathlib import Path
 
+from drivers.device.program_steps import ProgramDwell as ProgramDwell
+from drivers.device.program_steps import ProgramPoint as ProgramPoint
 from drivers.errors import BadFile
 from drivers.files import PROGRAM_MAX_BYTES, read_text
 from drivers.messages import Message
@@ -27,23 +28,6 @@ COLUMNS = ("x", "y", "z", "speed")
 
 class ProgramError(BadFile):
     """A program file that cannot be used (which file, which line, why)."""
-
-
-@dataclass(frozen=True)
-class ProgramPoint:
-    """One point of a program."""
-
-    x: float
-    y: float
-    z: float
-    speed: float
-
-
-@dataclass(frozen=True)
-class ProgramDwell:
-    """A pause of `ms` milliseconds in a streamed program (the device's queue waits)."""
-
-    ms: int
 
 
 def _point(values: list[str | float], place: Callable[[], Message]) -> ProgramPoint:

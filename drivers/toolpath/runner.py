@@ -21,10 +21,10 @@ import threading
 import time
 from collections.abc import Callable, Iterator
 
-from drivers.device import commands as cmd
 from drivers.device.motion import Motion
 from drivers.errors import Aborted, BadInput
 from drivers.messages import Message
+from drivers.protocols import commands as cmd
 from drivers.toolpath.geometry import FlatPath, check_fits, check_speeds, flatten
 from drivers.toolpath.model import CHORD_TOLERANCE, ArcTo, Dwell, Toolpath, arc_angles
 from drivers.toolpath.point_program import ProgramDwell, ProgramPoint

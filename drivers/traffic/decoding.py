@@ -13,12 +13,12 @@ import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
-from drivers.device.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.errors import FrameError, MotionError
 from drivers.framers.base import Framer
 from drivers.framers.lines import LineFramer
 from drivers.messages import Message, message_of
 from drivers.protocols.base import Protocol
+from drivers.protocols.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.protocols.registry import create_protocol, protocol_names
 from drivers.traffic.log_reader import LogRecord
 

@@ -11,7 +11,7 @@ from PySide6.QtCore import QObject
 if TYPE_CHECKING:
     from app.window.device.bridge_session import BridgeSession
     from app.window.device.machine_state import MachineState
-    from drivers.link.bridge_watch import Observed
+    from drivers.bridge.watch import Observed
 
 
 class BridgeReadout(QObject):
@@ -36,7 +36,7 @@ class BridgeReadout(QObject):
 
     def show(self, seen: Observed) -> None:
         """A position the traffic told: shown, drawn, and its target marked if it is one."""
-        from drivers.link.bridge_watch import COMMANDED
+        from drivers.bridge.watch import COMMANDED
 
         machine, window = self.machine, self.machine.window
         if not machine.bridging:

@@ -17,11 +17,11 @@ from pathlib import Path
 from PySide6.QtCore import QObject, QTimer, Signal, Slot
 
 from app.common.messages import localized
+from drivers.bridge.snoop import Bridge
+from drivers.bridge.watch import BridgeWatch
 from drivers.errors import MotionError
-from drivers.link.bridge import Bridge
-from drivers.link.bridge_watch import BridgeWatch
+from drivers.link.records import Traffic, TrafficLogWriter
 from drivers.protocols.base import Protocol
-from drivers.traffic.records import Traffic, TrafficLogWriter
 from widgets._i18n import fill
 
 log = logging.getLogger(__name__)
@@ -33,7 +33,7 @@ class BridgeSession(QObject):
     """One bridge between a device's port and a pty, for the life of the bridge mode."""
 
     traffic = Signal(object)  # list[Traffic], in the GUI thread
-    observed = Signal(object)  # drivers.link.bridge_watch.Observed, the last a drain found
+    observed = Signal(object)  # drivers.bridge.watch.Observed, the last a drain found
     ended = Signal(str)  # "" when stopped, else what went wrong
 
     def __init__(

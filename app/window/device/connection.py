@@ -41,9 +41,9 @@ if TYPE_CHECKING:
     from app.window.device.worker_link import WorkerLink
     from app.window.device.worker_thread import WorkerThread
     from app.window.services import WindowParts
-    from drivers.device.capabilities import Capabilities
+    from drivers.link.records import Traffic
     from drivers.protocols.base import Protocol
-    from drivers.traffic.records import Traffic
+    from drivers.protocols.capabilities import Capabilities
     from widgets._axes import Box
 
 translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, ClassVar
 
 from PySide6.QtCore import QT_TRANSLATE_NOOP, QCoreApplication
 
-from drivers.device.commands import Arc
+from drivers.protocols.commands import Arc
 from drivers.toolpath.model import CHORD_TOLERANCE, Toolpath
 from widgets._i18n import fill
 

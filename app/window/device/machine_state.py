@@ -21,10 +21,10 @@ if TYPE_CHECKING:
     from app.window.device.worker import DeviceInfo, SerialWorker
     from app.window.device.worker_link import WorkerLink
     from app.window.services import Point, WindowParts
-    from drivers.device.events import PositionReport
     from drivers.device.motion import MoveStart
     from drivers.device.position_truth import Whereabouts
     from drivers.device.travel import TravelLimits
+    from drivers.protocols.events import PositionReport
 
 translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
 

@@ -17,10 +17,7 @@ from app.common.macros import Macro, MacroStopped, run_macro
 from app.common.messages import localized
 from app.common.position_messages import Lengths, position_localized
 from app.window.device import jobs
-from drivers.device.capabilities import Capabilities
-from drivers.device.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.device.motion import KIND_UNITS, Motion, MoveStart
-from drivers.device.parameters import Parameter
 from drivers.device.position_truth import Whereabouts
 from drivers.device.travel import TravelLimits
 from drivers.errors import (
@@ -34,14 +31,17 @@ from drivers.errors import (
     PortError,
 )
 from drivers.link.control_lines import BREAK_S, ControlLines
+from drivers.link.records import RX, Traffic, TrafficLogWriter
 from drivers.link.transport import Link
 from drivers.messages import Message, message_of
 from drivers.protocols.base import Reply, Setting
+from drivers.protocols.capabilities import Capabilities
+from drivers.protocols.events import ErrorReport, Event, TextLine, Undecodable
 from drivers.protocols.firmata import StepperVersion, configure_stepper
+from drivers.protocols.parameters import Parameter
 from drivers.protocols.sniff import looks_like
 from drivers.session.device_session import DeviceSession, open_device
 from drivers.toolpath.streaming import StreamProgress
-from drivers.traffic.records import RX, Traffic, TrafficLogWriter
 
 log = logging.getLogger(__name__)
 

@@ -12,8 +12,7 @@ from typing import TYPE_CHECKING
 from PySide6.QtCore import QCoreApplication, QObject, QSettings
 
 from app.common.session_log import open_session_log
-from app.window.preferences import Preferences, session_log_folder
-from app.window.window_tools import poll_rates
+from app.window.preferences import Preferences, poll_rates, session_log_folder
 from widgets._i18n import fill
 
 if TYPE_CHECKING:

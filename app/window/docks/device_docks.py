@@ -17,8 +17,8 @@ from app.window.device import jobs
 from app.window.device.worker import DeviceInfo
 from app.window.docks.program_dock import ProgramDock
 from app.window.layout.dock_layout import DEVICE_DOCKS
-from drivers.device.capabilities import Capabilities
-from drivers.device.commands import Arc
+from drivers.protocols.capabilities import Capabilities
+from drivers.protocols.commands import Arc
 from widgets._i18n import fill
 from widgets.arc_entry import ArcEntry
 from widgets.dwell_entry import DwellEntry

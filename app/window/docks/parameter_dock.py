@@ -15,10 +15,10 @@ from app.window.device import jobs
 from app.window.device.worker import DeviceInfo
 from app.window.layout.dock_layout import empty_dock
 from drivers.device.param_profile import read_profile, write_profile
-from drivers.device.parameters import Parameter, ParameterWritten
 from drivers.errors import BadInput
 from drivers.messages import message_of
 from drivers.protocols.base import Protocol
+from drivers.protocols.parameters import Parameter, ParameterWritten
 from drivers.protocols.registry import create_protocol
 from widgets._i18n import fill
 from widgets.parameter_editor import ParameterEditor, ParameterRow

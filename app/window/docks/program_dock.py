@@ -26,8 +26,8 @@ from widgets.program_panel import ProgramPanel
 
 if TYPE_CHECKING:
     from app.window.services import WindowServices
-    from drivers.device.capabilities import Capabilities
     from drivers.device.travel import TravelLimits
+    from drivers.protocols.capabilities import Capabilities
     from drivers.toolpath.geometry import FlatPath, Summary
 
 log = logging.getLogger(__name__)

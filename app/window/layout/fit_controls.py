@@ -11,7 +11,7 @@ from widgets._i18n import fill
 
 if TYPE_CHECKING:
     from app.window.services import WindowParts
-    from drivers.device.capabilities import Capabilities
+    from drivers.protocols.capabilities import Capabilities
 
 translate = QCoreApplication.translate  # the strings keep the window's context, "MainWindow"
 # Marked here, translated at use (context "MainWindow"); %1: the device's protocol.

@@ -15,8 +15,12 @@ from __future__ import annotations
 import random
 from dataclasses import dataclass
 
-from drivers.device.capabilities import Capabilities, Completion
-from drivers.device.commands import (
+from drivers.errors import BadInput, DeviceError, FrameError, QueueFull, Retransmit
+from drivers.framers.stuffed import StuffedFramer
+from drivers.messages import Message, message_of
+from drivers.protocols.base import Exchange, MoveSequence, Protocol, Setting
+from drivers.protocols.capabilities import Capabilities, Completion
+from drivers.protocols.commands import (
     Command,
     Dwell,
     GetId,
@@ -27,11 +31,7 @@ from drivers.device.commands import (
     SetHome,
     Stop,
 )
-from drivers.device.events import Event, PositionReport, Undecodable
-from drivers.errors import BadInput, DeviceError, FrameError, QueueFull, Retransmit
-from drivers.framers.stuffed import StuffedFramer
-from drivers.messages import Message, message_of
-from drivers.protocols.base import Exchange, MoveSequence, Protocol, Setting
+from drivers.protocols.events import Event, PositionReport, Undecodable
 from drivers.protocols.laser.codec import (
     CHAR,
     FLOAT,

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from typing import TypedDict, Unpack
 
-from drivers.device.parameters import Parameter
 from drivers.messages import Message, message_template
+from drivers.protocols.parameters import Parameter
 from drivers.protocols.visiomex.model import POWER_ON
 
 DRIVING_MECHANISM_ID = 27

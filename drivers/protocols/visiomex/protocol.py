@@ -12,16 +12,15 @@ import dataclasses
 import re
 from dataclasses import dataclass
 
-from drivers.device.capabilities import Capabilities, Completion
-from drivers.device.commands import Command, Home, MoveBy, MoveTo, Raw, SetParameter, SetSpeed
-from drivers.device.events import ErrorReport, Event, Feedback, TextLine
-from drivers.device.move_outcome import MoveOutcome
-from drivers.device.parameters import ParameterWritten
-from drivers.device.position_count import firmware_move_mm
 from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
 from drivers.framers.lines import LineFramer
 from drivers.messages import Message
 from drivers.protocols.base import Exchange, Point, Protocol, Variant
+from drivers.protocols.capabilities import Capabilities, Completion
+from drivers.protocols.commands import Command, Home, MoveBy, MoveTo, Raw, SetParameter, SetSpeed
+from drivers.protocols.events import ErrorReport, Event, Feedback, TextLine
+from drivers.protocols.move_outcome import MoveOutcome
+from drivers.protocols.parameters import ParameterWritten
 from drivers.protocols.visiomex import advice as visiomex_advice
 from drivers.protocols.visiomex.estimate import move_seconds
 from drivers.protocols.visiomex.model import (
@@ -35,6 +34,7 @@ from drivers.protocols.visiomex.model import (
     FirmwareState,
     parse_atof,
 )
+from drivers.protocols.visiomex.move_digits import firmware_move_mm
 from drivers.protocols.visiomex.params import (
     BY_ID,
     DEFAULTS,

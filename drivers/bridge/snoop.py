@@ -32,11 +32,11 @@ from types import TracebackType
 import serial
 
 from drivers.errors import PortError
+from drivers.link.records import RX, TX, Traffic
 from drivers.link.transport import Link
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
 from drivers.session.setup import open_device_link
-from drivers.traffic.records import RX, TX, Traffic
 
 log = logging.getLogger(__name__)
 

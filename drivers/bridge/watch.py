@@ -15,12 +15,12 @@ import logging
 from collections import deque
 from dataclasses import dataclass
 
-from drivers.device.commands import Arc, Command, GetPosition, Home, MoveBy, MoveTo
-from drivers.device.events import PositionReport
 from drivers.errors import MotionError
+from drivers.link.records import TX, Traffic
 from drivers.protocols.base import Exchange, MoveSequence, Point, Protocol
+from drivers.protocols.commands import Arc, Command, GetPosition, Home, MoveBy, MoveTo
+from drivers.protocols.events import PositionReport
 from drivers.traffic.decoding import DecodedFrame, StreamDecoder
-from drivers.traffic.records import TX, Traffic
 
 log = logging.getLogger(__name__)
 

@@ -1,0 +1,2 @@
+"""pyserial URL handlers for simulated devices (`sim://`); drivers/link/transport.py
+registers this package."""
