@@ -29,9 +29,9 @@ from PySide6.QtCore import QCoreApplication, QTranslator
 from app.window.main_window import MainWindow
 from drivers.device.client import Client
 from drivers.device.motion import Motion
+from drivers.link.records import Traffic
 from drivers.link.transport import Link, open_link
 from drivers.protocols.coxiris import CoxirisProtocol
-from drivers.traffic.records import Traffic
 from tests.support.simproc import SimProcess
 
 

@@ -48,7 +48,7 @@ def test_a_submodule_of_a_moved_package_is_the_same_object() -> None:
         _fresh(name)
     with pytest.warns(DeprecationWarning):
         old = importlib.import_module("drivers.urlhandler.protocol_sim")
-    assert old is importlib.import_module("drivers.link.urlhandler.protocol_sim")
+    assert old is importlib.import_module("drivers.sim.urlhandler.protocol_sim")
 
 
 def test_from_drivers_session_import_is_deprecated() -> None:

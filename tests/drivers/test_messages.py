@@ -24,7 +24,7 @@ from drivers.messages import CONTEXT, Message, message_of
 
 pytestmark = pytest.mark.timeout(60)
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "resources" / "i18n"))
 import update  # noqa: E402
 

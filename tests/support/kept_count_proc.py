@@ -1,5 +1,5 @@
 """A process that writes or reads the kept counts of a settings file, as a panel or a motionctl
-run does, for the tests that run several at once (tests/test_kept_positions.py).
+run does, for the tests that run several at once (tests/app/common/test_kept_positions.py).
 
 `python -m tests.support.kept_count_proc write FILE PORT N`: counts (i, i, i) for i = 1..N on PORT;
 `panel FILE N`: N other settings written and synced (a panel's geometry, its jog step);

@@ -1,4 +1,5 @@
-"""What the model-based truth tests (tests/test_model_truth.py, tests/test_model_truth_worker.py)
+"""What the model-based truth tests (tests/drivers/session/test_model_truth.py,
+tests/app/window/device/test_model_truth_worker.py)
 stand on: each protocol's simulator in another process on a fixed path, read through its own
 `where`, and the rule that a position claimed (measured, or commanded and confirmed) is the
 device's. The operator's actions as a state machine are in tests/support/model_truth_machine.py."""
@@ -20,7 +21,7 @@ from hypothesis import HealthCheck, Phase, settings
 from hypothesis import strategies as st
 
 import drivers
-from drivers.device.events import PositionReport
+from drivers.protocols.events import PositionReport
 from drivers.session.device_session import DeviceSession
 from tests.support.e2e import Run, motionctl
 from tests.support.simproc import SimProcess

@@ -1,7 +1,9 @@
 """The operator's actions in the model-based truth tests as one state machine: a step at a
 time, the rule after each (tests/support/model_truth.py), on one rig. Its subclasses say how an
-action reaches the device: the scripting session (tests/test_model_truth.py), the window's
-worker on its thread (tests/test_model_truth_worker.py); `run_model` runs one, seeded and
+action reaches the device: the scripting session (tests/drivers/session/test_model_truth.py), the
+window's
+worker on its thread (tests/app/window/device/test_model_truth_worker.py); `run_model` runs one,
+seeded and
 bounded, and says how many steps ran clean."""
 
 from __future__ import annotations
@@ -15,9 +17,9 @@ from hypothesis import seed
 from hypothesis import strategies as st
 from hypothesis.stateful import RuleBasedStateMachine, invariant, rule, run_state_machine_as_test
 
-from drivers.device import commands as cmd
-from drivers.device.events import PositionReport
+from drivers.protocols import commands as cmd
 from drivers.protocols.base import Protocol
+from drivers.protocols.events import PositionReport
 from drivers.session.device_session import ProgressListener
 from drivers.toolpath.loader import from_points
 from drivers.toolpath.model import Toolpath

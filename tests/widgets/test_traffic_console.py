@@ -160,7 +160,7 @@ def test_a_retransmission_links_to_its_first_copy(qtbot) -> None:
     console = RawConsole()
     qtbot.addWidget(console)
     console.set_protocol(create_protocol("laser-frame"))
-    from drivers.device.commands import GetPosition
+    from drivers.protocols.commands import GetPosition
 
     frame = create_protocol("laser-frame").encode(GetPosition())
     console.append_traffic("tx", frame, 1.0)  # no answer

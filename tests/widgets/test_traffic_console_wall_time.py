@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from app.window.console.traffic_console import RawConsole
-from drivers.traffic.records import Traffic
+from drivers.link.records import Traffic
 
 pytestmark = pytest.mark.timeout(60)
 

@@ -16,14 +16,14 @@ from app.cli.report import plain_error
 from app.common import macros
 from app.common.macros import Macro
 from app.common.settings import open_settings, read_speed
-from drivers.device import commands as cmd
 from drivers.device.client import Client
 from drivers.device.motion import Motion
+from drivers.link.records import TrafficLogWriter
 from drivers.link.transport import open_link
 from drivers.messages import Message, plain_number
+from drivers.protocols import commands as cmd
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.protocols.firmata import FirmataProtocol
-from drivers.traffic.records import TrafficLogWriter
 from tests.support.simproc import ROOT
 
 pytestmark = pytest.mark.timeout(60)

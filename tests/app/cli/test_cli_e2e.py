@@ -19,7 +19,7 @@ from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.e2e, pytest.mark.timeout(60)]
 
-TRANSCRIPT = json.loads((Path(__file__).parent / "data" / "coxiris.json").read_text())
+TRANSCRIPT = json.loads((Path(__file__).resolve().parents[2] / "data" / "coxiris.json").read_text())
 
 
 def motionctl(port: str, *args: str, timeout: float = 2.0, log: Path | None = None):

@@ -17,9 +17,9 @@ from pathlib import Path
 import pytest
 
 from drivers.device.param_profile import format_profile
+from drivers.link.records import Traffic, hexdump_lines
 from drivers.protocols.visiomex.params import PARAMETERS
 from drivers.protocols.visiomex.protocol import VisiomexProtocol
-from drivers.traffic.records import Traffic, hexdump_lines
 from tests.support import e2e as e2e_support
 from tests.support.e2e import Run, device_received, sent, stream, traffic
 from tests.support.simproc import SimProcess
@@ -382,7 +382,7 @@ def test_malformed_profiles_are_refused_naming_the_file(
 @pytest.mark.e2e
 @pytest.mark.timeout(5)
 def test_the_log_reader_rebuilds_records(tmp_path: Path) -> None:
-    """The hexdump reader, on what drivers/traffic/records.py writes: records apart, long ones
+    """The hexdump reader, on what drivers/link/records.py writes: records apart, long ones
     whole."""
     records = [
         Traffic("tx", b"S03000382NNNNNNNNN", 10.0),

@@ -21,7 +21,7 @@ from widgets.about_dialog import (
 
 pytestmark = pytest.mark.timeout(30)
 
-PYPROJECT = Path(__file__).resolve().parent.parent / "pyproject.toml"
+PYPROJECT = Path(__file__).resolve().parents[3] / "pyproject.toml"
 
 
 def _project() -> dict:

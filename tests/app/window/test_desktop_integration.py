@@ -29,7 +29,7 @@ from app.window.icons import (
 
 pytestmark = pytest.mark.timeout(30)
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[3]
 DESKTOP_FILE = ROOT / "resources" / "motionpanel.desktop"
 
 

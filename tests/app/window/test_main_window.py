@@ -204,7 +204,7 @@ def test_export_from_the_menu(qtbot, window: MainWindow, tmp_path: Path) -> None
 
 def test_window_adapts_to_a_two_axis_commanded_only_protocol(qtbot, window: MainWindow) -> None:
     from app.window.device.worker import DeviceInfo
-    from drivers.device.capabilities import Capabilities, Completion
+    from drivers.protocols.capabilities import Capabilities, Completion
 
     caps = Capabilities(
         axes=("x", "y"),

@@ -26,7 +26,7 @@ from widgets.view_tabs import VIEW_2D
 
 pytestmark = pytest.mark.timeout(60)
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[3]
 FORCED = "forced by the test"
 BOX = ((0.0, 100.0), (0.0, 50.0), (0.0, 10.0))
 real_gl = pytest.mark.skipif(

@@ -17,7 +17,7 @@ from app.window.main_window import MainWindow
 from drivers.protocols.registry import get_protocol_class, has_variants, protocol_names
 from widgets.lazy_view import LazyPart, built
 
-ROOT = Path(__file__).resolve().parent.parent
+ROOT = Path(__file__).resolve().parents[3]
 
 HEAVY = (
     "numpy",
@@ -51,8 +51,8 @@ HEAVY = (
     # the protocols (the connection bar knows which have wire variants without them)
     "drivers.protocols.base",
     "drivers.protocols.coxiris",
-    "drivers.device.commands",
-    "drivers.device.events",
+    "drivers.protocols.commands",
+    "drivers.protocols.events",
 )
 
 

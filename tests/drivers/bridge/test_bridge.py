@@ -25,10 +25,10 @@ from pathlib import Path
 
 import pytest
 
+from drivers.bridge.snoop import Bridge, DeviceVanished
 from drivers.errors import PortError
-from drivers.link.bridge import Bridge, DeviceVanished
+from drivers.link.records import RX, TX, Traffic
 from drivers.traffic.log_reader import LogRecord, read_log
-from drivers.traffic.records import RX, TX, Traffic
 from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]
@@ -306,7 +306,7 @@ def test_a_failing_tap_is_logged_and_forwarding_goes_on(
         raise RuntimeError("disk full")
 
     with (
-        caplog.at_level(logging.ERROR, logger="drivers.link.bridge"),
+        caplog.at_level(logging.ERROR, logger="drivers.bridge.snoop"),
         Bridge(device.path, 115200, tap) as bridge,
     ):
         device.opened()

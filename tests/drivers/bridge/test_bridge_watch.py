@@ -9,11 +9,11 @@ from collections.abc import Iterator
 
 import pytest
 
-from drivers.link.bridge import Bridge
-from drivers.link.bridge_watch import COMMANDED, REPORTED, BridgeWatch, Observed
+from drivers.bridge.snoop import Bridge
+from drivers.bridge.watch import COMMANDED, REPORTED, BridgeWatch, Observed
+from drivers.link.records import TX, Traffic
 from drivers.protocols.registry import create_protocol
 from drivers.session.device_session import open_device
-from drivers.traffic.records import TX, Traffic
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]
 

@@ -13,13 +13,13 @@ from collections.abc import Iterator
 
 import pytest
 
-from drivers.device.capabilities import Completion
 from drivers.device.client import Client
-from drivers.device.events import PositionReport
 from drivers.device.motion import Motion
 from drivers.errors import DeviceTimeout
 from drivers.link.transport import Link, open_link
+from drivers.protocols.capabilities import Completion
 from drivers.protocols.coxiris import CoxirisProtocol
+from drivers.protocols.events import PositionReport
 from drivers.protocols.laser.protocol import LaserProtocol
 from drivers.protocols.registry import create_protocol, protocol_names
 from tests.conftest import Recorder

@@ -10,15 +10,15 @@ from dataclasses import replace
 
 import pytest
 
-from drivers.device import commands as cmd
-from drivers.device.capabilities import Capabilities, Completion
 from drivers.device.client import Client
-from drivers.device.events import Event, Feedback, PositionReport, TextLine
 from drivers.device.motion import Motion
 from drivers.errors import Aborted, BadInput
 from drivers.framers.lines import LineFramer
 from drivers.link.transport import Link
+from drivers.protocols import commands as cmd
 from drivers.protocols.base import Exchange, Protocol
+from drivers.protocols.capabilities import Capabilities, Completion
+from drivers.protocols.events import Event, Feedback, PositionReport, TextLine
 from tests.support.fakes import ScriptedPort
 
 pytestmark = pytest.mark.timeout(20)

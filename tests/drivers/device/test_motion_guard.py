@@ -7,16 +7,16 @@ import time
 
 import pytest
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
-from drivers.device.events import PositionReport
 from drivers.device.guard import MotionGuard, RawRefused, unreadable
 from drivers.device.motion import Motion
 from drivers.device.travel import TravelLimits
 from drivers.errors import BadInput, FrameError
 from drivers.link.transport import Link, open_link
+from drivers.protocols import commands as cmd
 from drivers.protocols.base import MoveSequence, Protocol
 from drivers.protocols.coxiris import CoxirisProtocol
+from drivers.protocols.events import PositionReport
 from drivers.protocols.firmata import FirmataProtocol, StepperStep, StepperVersion
 from drivers.protocols.laser.protocol import GetStatus, LaserProtocol, QueuedGroup, move_instruction
 from drivers.protocols.piframe import PiFrameProtocol

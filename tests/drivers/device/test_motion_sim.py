@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import pytest
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
-from drivers.device.events import PositionReport, TextLine
 from drivers.device.motion import Motion
 from drivers.errors import BadInput, DeviceError, DeviceTimeout
 from drivers.link.transport import Link
+from drivers.protocols import commands as cmd
 from drivers.protocols.coxiris import CoxirisProtocol
+from drivers.protocols.events import PositionReport, TextLine
 from drivers.sim.coxiris_device import HELP_LINES
 from tests.conftest import Recorder
 

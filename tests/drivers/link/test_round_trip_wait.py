@@ -13,14 +13,14 @@ from pathlib import Path
 
 import pytest
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
 from drivers.link import transport
+from drivers.link.records import Traffic
 from drivers.link.transport import Link, open_link
+from drivers.protocols import commands as cmd
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.sim.coxiris_device import CoxirisDevice
 from drivers.sim.pty_server import USB_FRAME, PtyServer
-from drivers.traffic.records import Traffic
 from tests.conftest import Recorder
 
 pytestmark = pytest.mark.timeout(20)

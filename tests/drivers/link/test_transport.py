@@ -7,13 +7,13 @@ import io
 import pytest
 import serial
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
 from drivers.errors import DeviceTimeout, PortError
+from drivers.link.records import Traffic, TrafficLogWriter, hexdump_lines
 from drivers.link.transport import open_link
-from drivers.link.urlhandler.protocol_sim import parse_sim_url
+from drivers.protocols import commands as cmd
 from drivers.protocols.coxiris import CoxirisProtocol
-from drivers.traffic.records import Traffic, TrafficLogWriter, hexdump_lines
+from drivers.sim.urlhandler.protocol_sim import parse_sim_url
 
 pytestmark = pytest.mark.timeout(20)
 

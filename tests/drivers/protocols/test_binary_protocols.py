@@ -6,12 +6,12 @@ import struct
 
 import pytest
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
-from drivers.device.events import ErrorReport, Feedback, TextLine
 from drivers.device.motion import Motion
 from drivers.errors import BadInput, DeviceError, DeviceTimeout
 from drivers.link.transport import open_link
+from drivers.protocols import commands as cmd
+from drivers.protocols.events import ErrorReport, Feedback, TextLine
 from drivers.protocols.firmata import (
     FirmataProtocol,
     StepperConfig,

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import pytest
 
-from drivers.device import commands as cmd
-from drivers.device.events import Ack, Done, ErrorReport, PositionReport, TextLine
 from drivers.errors import BadInput, DeviceError, GarbledReply
+from drivers.protocols import commands as cmd
 from drivers.protocols.coxiris import CoxirisProtocol
+from drivers.protocols.events import Ack, Done, ErrorReport, PositionReport, TextLine
 
 P = CoxirisProtocol()
 

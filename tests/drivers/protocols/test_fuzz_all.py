@@ -22,8 +22,14 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from drivers.device import commands as cmd
-from drivers.device.events import (
+from drivers.device.param_profile import ProfileError, parse_profile, read_profile
+from drivers.errors import BadInput, FrameError, MotionError
+from drivers.framers.base import Framer
+from drivers.framers.stuffed import StuffedFramer
+from drivers.link.records import Traffic, hexdump_lines
+from drivers.protocols import commands as cmd
+from drivers.protocols.base import Exchange, Reply
+from drivers.protocols.events import (
     Ack,
     Done,
     ErrorReport,
@@ -33,11 +39,6 @@ from drivers.device.events import (
     TextLine,
     Undecodable,
 )
-from drivers.device.param_profile import ProfileError, parse_profile, read_profile
-from drivers.errors import BadInput, FrameError, MotionError
-from drivers.framers.base import Framer
-from drivers.framers.stuffed import StuffedFramer
-from drivers.protocols.base import Exchange, Reply
 from drivers.protocols.firmata import StepperConfig, StepperStep, StepperVersion, seven_bit_pairs
 from drivers.protocols.laser.codec import (
     CHAR,
@@ -58,7 +59,6 @@ from drivers.traffic.decoding import DecodedFrame, StreamDecoder, decode_records
 from drivers.traffic.index import TrafficIndex
 from drivers.traffic.lines import KINDS
 from drivers.traffic.log_reader import LogError, LogRecord, parse_log, read_any_log, read_log
-from drivers.traffic.records import Traffic, hexdump_lines
 from drivers.traffic.search import FilterError, compile_filter
 from drivers.traffic.spy_log import _row, parse_spy
 

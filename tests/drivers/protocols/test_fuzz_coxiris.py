@@ -8,10 +8,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
 from drivers.errors import MotionError
 from drivers.link.transport import Link
+from drivers.protocols import commands as cmd
 from drivers.protocols.coxiris import CoxirisProtocol
 from tests.support.fakes import ScriptedPort
 

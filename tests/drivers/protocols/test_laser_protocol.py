@@ -9,10 +9,10 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from drivers.device import commands as cmd
-from drivers.device.events import PositionReport, Undecodable
 from drivers.errors import BadInput, DeviceError, FrameError, QueueFull, Retransmit
 from drivers.framers.stuffed import StuffedFramer
+from drivers.protocols import commands as cmd
+from drivers.protocols.events import PositionReport, Undecodable
 from drivers.protocols.laser.codec import (
     CHAR,
     FLOAT,

@@ -96,7 +96,12 @@ def test_the_conformance_and_fuzz_suites_pass_over_the_plugin(venv) -> None:
     command = [
         str(bin_dir / "python"),
         *("-m", "pytest", "-q", "-p", "no:randomly", "-p", "no:cacheprovider"),
-        *("tests/test_protocol_registry.py", "tests/test_fuzz_all.py", "-k", "echo and stage"),
+        *(
+            "tests/drivers/protocols/test_protocol_registry.py",
+            "tests/drivers/protocols/test_fuzz_all.py",
+            "-k",
+            "echo and stage",
+        ),
     ]
     done = subprocess.run(command, capture_output=True, text=True, env=env, cwd=ROOT, timeout=100)
     assert done.returncode == 0, done.stdout[-4000:]

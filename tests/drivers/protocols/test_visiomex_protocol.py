@@ -6,18 +6,18 @@ import math
 
 import pytest
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
-from drivers.device.events import ErrorReport, Feedback, TextLine
 from drivers.device.motion import Motion
 from drivers.device.param_profile import ProfileError, format_profile, parse_profile
 from drivers.errors import BadInput, DeviceError, DeviceRestarted, DeviceTimeout
+from drivers.link.records import TX
 from drivers.link.transport import Link, open_link
+from drivers.protocols import commands as cmd
+from drivers.protocols.events import ErrorReport, Feedback, TextLine
 from drivers.protocols.registry import create_protocol
 from drivers.protocols.visiomex.model import POWER_ON
 from drivers.protocols.visiomex.params import DEFAULTS, PARAMETERS
 from drivers.protocols.visiomex.protocol import VisiomexProtocol
-from drivers.traffic.records import TX
 from tests.support.fakes import ScriptedPort
 
 # (id, name, unit, a value, its wire digits): every parameter's scaling, as decided

@@ -25,10 +25,10 @@ import pytest
 from hypothesis import strategies as st
 from hypothesis.stateful import rule
 
-from drivers.device.events import PositionReport
 from drivers.device.position_truth import LOST, LOST_MOVING, STALE
 from drivers.errors import CommunicationError
 from drivers.protocols.base import Protocol
+from drivers.protocols.events import PositionReport
 from drivers.session.device_session import ProgressListener
 from drivers.toolpath.model import Toolpath
 from tests.support.model_truth import (

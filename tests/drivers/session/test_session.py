@@ -10,11 +10,11 @@ import pytest
 import drivers
 from drivers.device.travel import TravelLimits
 from drivers.errors import BadInput, PortError, UnknownProtocol
+from drivers.link.records import RX, TX, Traffic
 from drivers.protocols.laser.protocol import GetStatus
 from drivers.session.device_session import DeviceSession, NoPrograms, NoStop, open_device
 from drivers.toolpath.point_program import ProgramPoint
 from drivers.toolpath.streaming import StreamProgress
-from drivers.traffic.records import RX, TX, Traffic
 
 pytestmark = pytest.mark.timeout(60)
 

@@ -11,8 +11,8 @@ from pathlib import Path
 import pytest
 
 from drivers import BadInput, PositionReport, Traffic, open_device
-from drivers.device import commands as cmd
 from drivers.device.guard import RawRefused
+from drivers.protocols import commands as cmd
 from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = pytest.mark.timeout(60)
@@ -202,4 +202,4 @@ def test_the_scan_finds_calls_below_the_session() -> None:
     source = "session.motion.move_to(1, 2)\nmotion.raw(b'x')\nx = s.client.protocol\n"
     source += "motion.notice_listeners.append(print)\nclient.execute(c)\n"
     assert len(below_the_session(source)) == 5
-    assert below_the_session("from drivers.link.bridge import Bridge\n# s.motion.x\n") == []
+    assert below_the_session("from drivers.bridge.snoop import Bridge\n# s.motion.x\n") == []

@@ -11,11 +11,13 @@ import pytest
 from drivers.sim.clock import ManualClock
 from drivers.sim.coxiris_device import BUFFER_SIZE, CoxirisDevice
 from drivers.sim.device import BITS_PER_BYTE
-from tests.test_sim_coxiris_transcript import _replay, replay_transcript
+from tests.drivers.sim.test_sim_coxiris_transcript import _replay, replay_transcript
 
 pytestmark = pytest.mark.timeout(60)
 
-TRANSCRIPT = json.loads((Path(__file__).parent / "data" / "coxiris-nul.json").read_text())
+TRANSCRIPT = json.loads(
+    (Path(__file__).resolve().parents[2] / "data" / "coxiris-nul.json").read_text()
+)
 EXCHANGES: list[dict] = TRANSCRIPT["exchanges"]
 
 

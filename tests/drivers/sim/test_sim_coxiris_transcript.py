@@ -13,7 +13,7 @@ from drivers.sim.coxiris_device import BUFFER_SIZE, CoxirisDevice
 
 pytestmark = pytest.mark.timeout(60)
 
-TRANSCRIPT = json.loads((Path(__file__).parent / "data" / "coxiris.json").read_text())
+TRANSCRIPT = json.loads((Path(__file__).resolve().parents[2] / "data" / "coxiris.json").read_text())
 EXCHANGES: list[dict] = TRANSCRIPT["exchanges"]
 SETTLE = 1.0  # seconds given to every exchange; the recording's replies came within 0.03 s
 

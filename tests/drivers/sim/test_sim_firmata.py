@@ -9,7 +9,6 @@ import serial
 
 import drivers.link.transport  # noqa: F401  (registers the sim:// handler)
 from app.simcli import build_parser
-from drivers.link.urlhandler.protocol_sim import parse_sim_url
 from drivers.sim.clock import ManualClock
 from drivers.sim.firmata_device import (
     CONFIG_ERROR,
@@ -18,6 +17,7 @@ from drivers.sim.firmata_device import (
     FirmataDevice,
 )
 from drivers.sim.registry import create_device
+from drivers.sim.urlhandler.protocol_sim import parse_sim_url
 
 VERSION = bytes.fromhex("F9 02 05")
 NAME = (

@@ -11,10 +11,10 @@ import serial
 import drivers.link.transport  # noqa: F401  (registers the sim:// handler)
 from app.simcli import build_parser
 from drivers.framers.stuffed import StuffedFramer
-from drivers.link.urlhandler.protocol_sim import parse_sim_url
 from drivers.sim.clock import ManualClock
 from drivers.sim.laser_device import DEVICE_ID, FRAME_TIMEOUT, REPLY_DELAY, LaserDevice
 from drivers.sim.registry import create_device
+from drivers.sim.urlhandler.protocol_sim import parse_sim_url
 
 FRAMER = StuffedFramer()
 MOVE_LINEAR, DWELL, GO_HOME = 0x01, 0x02, 0x03

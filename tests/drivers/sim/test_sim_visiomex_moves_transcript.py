@@ -9,8 +9,8 @@ from typing import Any
 
 import pytest
 
-from drivers.device.commands import MoveBy, Raw, SetParameter
 from drivers.errors import BadInput
+from drivers.protocols.commands import MoveBy, Raw, SetParameter
 from drivers.protocols.visiomex.model import parse_atol
 from drivers.protocols.visiomex.protocol import VisiomexProtocol
 from drivers.sim.clock import ManualClock
@@ -18,7 +18,9 @@ from drivers.sim.visiomex_device import VisiomexDevice
 
 pytestmark = pytest.mark.timeout(60)
 
-TRANSCRIPT = json.loads((Path(__file__).parent / "data" / "visiomex-moves.json").read_text())
+TRANSCRIPT = json.loads(
+    (Path(__file__).resolve().parents[2] / "data" / "visiomex-moves.json").read_text()
+)
 TOLERANCE = 0.10  # of each line's recorded time after the 1 s silence
 SILENCE = 1.0
 SETTLE = 0.3  # s between exchanges, after the reply

@@ -13,7 +13,9 @@ from drivers.sim.visiomex_device import VisiomexDevice
 
 pytestmark = pytest.mark.timeout(60)
 
-TRANSCRIPT = json.loads((Path(__file__).parent / "data" / "visiomex.json").read_text())
+TRANSCRIPT = json.loads(
+    (Path(__file__).resolve().parents[2] / "data" / "visiomex.json").read_text()
+)
 CHUNK_GAP = 0.1  # output closer together than this is one chunk of the recording
 _FEEDBACK = re.compile(rb"^(?=(?:FS|FP|FA|EP|EF)\d{4}\r$)", re.MULTILINE)
 

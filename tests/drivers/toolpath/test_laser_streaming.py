@@ -6,10 +6,10 @@ import math
 
 import pytest
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
 from drivers.device.motion import Motion
 from drivers.link.transport import open_link
+from drivers.protocols import commands as cmd
 from drivers.protocols.laser.protocol import LaserProtocol
 from drivers.toolpath.point_program import ProgramPoint
 from drivers.toolpath.streaming import Streamer

@@ -9,15 +9,15 @@ from pathlib import Path
 
 import pytest
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
 from drivers.device.motion import Motion
+from drivers.link.records import TrafficLogWriter
 from drivers.link.transport import open_link
+from drivers.protocols import commands as cmd
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.protocols.laser.protocol import LaserProtocol
 from drivers.traffic.decoding import decode_records
 from drivers.traffic.log_reader import LogError, parse_log, read_log
-from drivers.traffic.records import TrafficLogWriter
 from tests.support.simproc import ROOT
 
 pytestmark = [pytest.mark.timeout(30), pytest.mark.usefixtures("settings_file")]

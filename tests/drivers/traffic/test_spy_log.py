@@ -1,6 +1,7 @@
 """pyserial spy:// captures, written by pyserial itself over a real pty, read back as traffic logs.
 
-`python -m tests.test_spy_log` rewrites the committed capture (tests/data/spy_capture.txt).
+`python -m tests.drivers.traffic.test_spy_log` rewrites the committed capture
+(tests/data/spy_capture.txt).
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ from typing import Any
 import pytest
 import serial
 
-from drivers.device import commands as cmd
+from drivers.protocols import commands as cmd
 from drivers.protocols.registry import create_protocol
 from drivers.traffic.decoding import decode_records
 from drivers.traffic.log_reader import LogError, LogRecord, parse_log, read_any_log
@@ -29,7 +30,7 @@ from tests.support.simproc import ROOT, SimProcess
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]
 
-FIXTURE = Path(__file__).parent / "data" / "spy_capture.txt"
+FIXTURE = Path(__file__).resolve().parents[2] / "data" / "spy_capture.txt"
 REPLY = b"ACK GET_ID\r\nDONE GET_ID: CX25F7TK9P\r\n"
 BINARY = b"\x00\x0a\xff" * 6 + b"\x00\x0a"  # 20 bytes: two hexdump lines
 
@@ -180,7 +181,7 @@ def test_the_committed_capture_parses_and_is_what_this_pyserial_writes(
     _capture_fixture_session(fresh, port, controller)
     assert _unstamped(fresh.read_text()) == _unstamped(fixture), (
         "pyserial's spy:// writes another format now: check drivers/traffic/spy_log.py against it, "
-        "then rewrite the capture with `python -m tests.test_spy_log`"
+        "then rewrite the capture with `python -m tests.drivers.traffic.test_spy_log`"
     )
 
 

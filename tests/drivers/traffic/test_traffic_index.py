@@ -7,15 +7,15 @@ from pathlib import Path
 
 import pytest
 
-from drivers.device import commands as cmd
 from drivers.device.client import Client
 from drivers.device.motion import Motion
 from drivers.errors import DeviceError
+from drivers.link.records import TrafficLogWriter
 from drivers.link.transport import open_link
+from drivers.protocols import commands as cmd
 from drivers.protocols.registry import create_protocol
 from drivers.traffic.index import TrafficIndex
 from drivers.traffic.log_reader import read_log
-from drivers.traffic.records import TrafficLogWriter
 from drivers.traffic.search import FilterError, compile_filter
 
 pytestmark = [pytest.mark.timeout(60), pytest.mark.usefixtures("settings_file")]

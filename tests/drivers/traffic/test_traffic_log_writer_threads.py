@@ -1,4 +1,4 @@
-"""drivers/traffic/records.py: a session log written from two threads (the window's notes from the
+"""drivers/link/records.py: a session log written from two threads (the window's notes from the
 GUI
 thread, the traffic from the worker's) keeps each record's lines together."""
 
@@ -9,8 +9,8 @@ import threading
 
 import pytest
 
+from drivers.link.records import TX, Traffic, TrafficLogWriter
 from drivers.traffic.log_reader import parse_log
-from drivers.traffic.records import TX, Traffic, TrafficLogWriter
 
 pytestmark = pytest.mark.timeout(10)
 

@@ -7,8 +7,8 @@ from pathlib import Path
 import pytest
 
 from app.window.console.log_viewer import LogViewer, detect_protocol
+from drivers.link.records import Traffic, TrafficLogWriter
 from drivers.traffic.log_reader import LogRecord
-from drivers.traffic.records import Traffic, TrafficLogWriter
 from tests.support.simproc import ROOT
 
 pytestmark = [pytest.mark.timeout(60)]

@@ -24,9 +24,9 @@ from PySide6.QtCore import QObject
 from app.window.device import jobs
 from app.window.device.worker import ConnectOptions
 from app.window.device.worker_thread import WorkerThread
-from drivers.device.events import PositionReport
 from drivers.device.travel import parse_travel
 from drivers.protocols.base import Protocol
+from drivers.protocols.events import PositionReport
 from drivers.session.device_session import ProgressListener
 from drivers.session.setup import make_protocol
 from drivers.toolpath.model import Toolpath

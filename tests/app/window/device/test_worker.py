@@ -7,7 +7,7 @@ import pytest
 from app.window.device import jobs
 from app.window.device.worker import DeviceInfo
 from app.window.device.worker_thread import WorkerThread
-from drivers.device.events import PositionReport
+from drivers.protocols.events import PositionReport
 from tests.support.relay import wait_in_gui
 
 pytestmark = pytest.mark.timeout(30)

@@ -16,8 +16,15 @@ from app.window.docks.program_dock import ProgramDock
 from app.window.keyboard_jog import arrow_key_user
 from app.window.main_window import MainWindow
 from drivers.toolpath.streaming import StreamProgress
+from tests.app.window.docks.test_program_dock import (
+    GCODE,
+    _connect,
+    _gcode,
+    _load,
+    _parts,
+    _run_to_end,
+)
 from tests.support.relay import wait_in_gui
-from tests.test_program_dock import GCODE, _connect, _gcode, _load, _parts, _run_to_end
 from widgets.program_panel import ProgramPanel
 
 pytestmark = pytest.mark.timeout(60)

@@ -13,7 +13,7 @@ from drivers.protocols.registry import create_protocol
 from drivers.traffic.decoding import StreamDecoder
 from drivers.traffic.log_reader import parse_log
 from drivers.traffic.log_records import LogRecord
-from tests.test_status_truth import pause_a_laser_zigzag
+from tests.app.window.device.test_status_truth import pause_a_laser_zigzag
 from widgets import status_line as status
 
 pytestmark = pytest.mark.timeout(60)

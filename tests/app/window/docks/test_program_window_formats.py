@@ -2,7 +2,7 @@
 illustration program and G-code from a CAM program (tests/support/program_files.py) each load in the
 Program dock, are drawn before anything is sent, and run to their last point on every simulator
 (in-process `sim://` devices; the same files through `motionctl run` and `motionsim` in another
-process: tests/test_cli_program_e2e.py)."""
+process: tests/app/cli/test_cli_program_e2e.py)."""
 
 from __future__ import annotations
 
