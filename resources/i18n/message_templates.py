@@ -6,12 +6,6 @@ QT_TRANSLATE_NOOP('messages', '{command} needs --port (the device to talk to)') 
 QT_TRANSLATE_NOOP('messages', '{command} needs --protocol ({choices})')  # app/cli/arguments.py
 QT_TRANSLATE_NOOP('messages', 'usage: {usage} (got {count} arguments)')  # app/cli/command_line.py
 QT_TRANSLATE_NOOP('messages', 'usage: {usage}')  # app/cli/command_line.py
-QT_TRANSLATE_NOOP('messages', '--kind {kind} refused: --kind is for jog only (move is in mm)')  # app/cli/command_line.py
-QT_TRANSLATE_NOOP('messages', 'usage: {command} {axes} ({protocol} has {count} axes)')  # app/cli/command_line.py
-QT_TRANSLATE_NOOP('messages', '--kind {kind} refused: {protocol} moves are {kinds}')  # app/cli/command_line.py
-QT_TRANSLATE_NOOP('messages', 'speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s')  # app/cli/command_line.py
-QT_TRANSLATE_NOOP('messages', 'speed {speed:g} mm/s refused ({error})')  # app/cli/command_line.py
-QT_TRANSLATE_NOOP('messages', 'raw move to ({x:g}, {y:g}, {z:g}) mm')  # app/cli/command_line.py
 QT_TRANSLATE_NOOP('messages', "{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor's steps per revolution and pins (or Configure in the panel's Stepper setup): it is kept and sent again at each run")  # app/cli/devices.py
 QT_TRANSLATE_NOOP('messages', 'to ({x:g}, {y:g}, {z:g}) mm')  # app/cli/interrupt.py
 QT_TRANSLATE_NOOP('messages', 'to its target')  # app/cli/interrupt.py
@@ -34,6 +28,15 @@ QT_TRANSLATE_NOOP('messages', 'its connection notes name {named}')  # app/cli/lo
 QT_TRANSLATE_NOOP('messages', 'try another --protocol')  # app/cli/log.py
 QT_TRANSLATE_NOOP('messages', 'nothing in {file} decodes as {protocol} ({count} records of traffic, none a {protocol} frame); {hint}')  # app/cli/log.py
 QT_TRANSLATE_NOOP('messages', 'SVG scale {value:g} refused: it must be above 0')  # app/cli/run_program.py
+QT_TRANSLATE_NOOP('messages', '{what} {text!r} refused: a whole number is needed')  # app/common/command_words.py
+QT_TRANSLATE_NOOP('messages', 'radius {radius:g} mm refused: it must be above 0')  # app/common/command_words.py
+QT_TRANSLATE_NOOP('messages', '--kind {kind} refused: --kind is for jog only (move is in mm)')  # app/common/command_words.py
+QT_TRANSLATE_NOOP('messages', 'usage: {command} {axes} ({protocol} has {count} axes)')  # app/common/command_words.py
+QT_TRANSLATE_NOOP('messages', '--kind {kind} refused: {protocol} moves are {kinds}')  # app/common/command_words.py
+QT_TRANSLATE_NOOP('messages', 'raw move to ({x:g}, {y:g}, {z:g}) mm')  # app/common/command_words.py
+QT_TRANSLATE_NOOP('messages', 'speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s')  # app/common/command_words.py
+QT_TRANSLATE_NOOP('messages', 'speed {speed:g} mm/s refused ({error})')  # app/common/command_words.py
+QT_TRANSLATE_NOOP('messages', "'{command}' is a {owner} command, not {protocol}'s")  # app/common/command_words.py
 QT_TRANSLATE_NOOP('messages', 'macro {name} ({count} step)')  # app/common/macros.py
 QT_TRANSLATE_NOOP('messages', 'macro {name} ({count} steps)')  # app/common/macros.py
 QT_TRANSLATE_NOOP('messages', 'a macro needs a name')  # app/common/macros.py
@@ -91,15 +94,15 @@ QT_TRANSLATE_NOOP('messages', '{error}; not sent: {jobs}')  # app/window/device/
 QT_TRANSLATE_NOOP('messages', '{error}; connecting again when {url} is back')  # app/window/device/worker.py
 QT_TRANSLATE_NOOP('messages', '{url} is back: connecting again')  # app/window/device/worker.py
 QT_TRANSLATE_NOOP('messages', 'the device says: {text}')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', 'the bridge to {device} is closed')  # drivers/link/bridge.py
-QT_TRANSLATE_NOOP('messages', 'cannot create a pseudo-terminal for {device}: {error}')  # drivers/link/bridge.py
-QT_TRANSLATE_NOOP('messages', 'the bridge is not open')  # drivers/link/bridge.py
-QT_TRANSLATE_NOOP('messages', 'the device on {device} failed: {error}')  # drivers/link/bridge.py
-QT_TRANSLATE_NOOP('messages', 'the device on {device} went away: {error}')  # drivers/link/bridge.py
-QT_TRANSLATE_NOOP('messages', 'the device on {device} went away (its port was closed)')  # drivers/link/bridge.py
-QT_TRANSLATE_NOOP('messages', 'the pseudo-terminal {path} failed: {error}')  # drivers/link/bridge.py
-QT_TRANSLATE_NOOP('messages', 'writing to the device on {device} failed: {error}')  # drivers/link/bridge.py
-QT_TRANSLATE_NOOP('messages', 'writing to the pseudo-terminal {path} failed: {error}')  # drivers/link/bridge.py
+QT_TRANSLATE_NOOP('messages', 'the bridge to {device} is closed')  # drivers/bridge/snoop.py
+QT_TRANSLATE_NOOP('messages', 'cannot create a pseudo-terminal for {device}: {error}')  # drivers/bridge/snoop.py
+QT_TRANSLATE_NOOP('messages', 'the bridge is not open')  # drivers/bridge/snoop.py
+QT_TRANSLATE_NOOP('messages', 'the device on {device} failed: {error}')  # drivers/bridge/snoop.py
+QT_TRANSLATE_NOOP('messages', 'the device on {device} went away: {error}')  # drivers/bridge/snoop.py
+QT_TRANSLATE_NOOP('messages', 'the device on {device} went away (its port was closed)')  # drivers/bridge/snoop.py
+QT_TRANSLATE_NOOP('messages', 'the pseudo-terminal {path} failed: {error}')  # drivers/bridge/snoop.py
+QT_TRANSLATE_NOOP('messages', 'writing to the device on {device} failed: {error}')  # drivers/bridge/snoop.py
+QT_TRANSLATE_NOOP('messages', 'writing to the pseudo-terminal {path} failed: {error}')  # drivers/bridge/snoop.py
 QT_TRANSLATE_NOOP('messages', 'abandoned: the connection is closing')  # drivers/device/client.py
 QT_TRANSLATE_NOOP('messages', '{error}; still full after {seconds:.0f} s')  # drivers/device/client.py
 QT_TRANSLATE_NOOP('messages', '{command} failed after {tries} tries; the last: {error}')  # drivers/device/client.py
@@ -109,23 +112,72 @@ QT_TRANSLATE_NOOP('messages', 'the device did not finish its reply to {command} 
 QT_TRANSLATE_NOOP('messages', 'the device did not answer to {command} within {seconds:.3g} s')  # drivers/device/client.py
 QT_TRANSLATE_NOOP('messages', '{message}; it sent {count} unexpected frame(s), the last: {frame}')  # drivers/device/client.py
 QT_TRANSLATE_NOOP('messages', '{message} (it may still be moving: {protocol} answers nothing until a blocking move has ended; try again once it has stopped)')  # drivers/device/client.py
-QT_TRANSLATE_NOOP('messages', 'no modem control lines')  # drivers/link/control_lines.py
-QT_TRANSLATE_NOOP('messages', '{dtr}, {rts}, {cts}, {dsr}, {cd}, {ri}')  # drivers/link/control_lines.py
-QT_TRANSLATE_NOOP('messages', '{line} ?')  # drivers/link/control_lines.py
-QT_TRANSLATE_NOOP('messages', '{line} on')  # drivers/link/control_lines.py
-QT_TRANSLATE_NOOP('messages', '{line} off')  # drivers/link/control_lines.py
-QT_TRANSLATE_NOOP('messages', 'unreadable: {error}')  # drivers/traffic/decoding.py
-QT_TRANSLATE_NOOP('messages', 'error {code}: {message}')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'error: {message}')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'position unknown (({x:g}, {y:g}, {z:g}) mm counted from where the session began; Home or Set Home to know it)')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'position ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'position ({x:g}, {y:g}, {z:g}) mm (commanded, confirmed)')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'position ({x:g}, {y:g}, {z:g}) mm (commanded)')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'feedback {code} ({meaning})')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'feedback {code} {bytes}')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'feedback {code}')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'the line {text!r}')  # drivers/device/events.py
-QT_TRANSLATE_NOOP('messages', 'an unreadable frame ({reason}): {bytes}')  # drivers/device/events.py
+QT_TRANSLATE_NOOP('messages', 'no protocol to read them with')  # drivers/device/guard.py
+QT_TRANSLATE_NOOP('messages', 'program point {number}')  # drivers/device/guard.py
+QT_TRANSLATE_NOOP('messages', 'raw bytes refused: {protocol} cannot read them as a command ({reason}), so they cannot be checked against the travel limits ({box}); send them with force to send them anyway')  # drivers/device/guard.py
+QT_TRANSLATE_NOOP('messages', 'raw bytes refused: they hold {count} commands, {moves} of them moves; send a move alone, so that it is checked and followed to its end')  # drivers/device/guard.py
+QT_TRANSLATE_NOOP('messages', 'raw move {command}')  # drivers/device/guard.py
+QT_TRANSLATE_NOOP('messages', '{what}: not a move the panel can check')  # drivers/device/guard.py
+QT_TRANSLATE_NOOP('messages', 'the device reported: {reported}')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', '{protocol} device')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'the device did not report a position (it answered {value})')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'the device is at ({x:g}, {y:g}, {z:g}) mm, not where its last move ended: its replies are no longer taken as arrival')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', '{protocol} has no speed limits to report')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'speed {speed:g} refused: the speed must be a positive number')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} written, but this firmware times its steps from its step delays (15, 16) alone: moves go at {real:.3f} {unit}')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'move to ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'jog by ({dx:g}, {dy:g}, {dz:g}) {unit}')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', '{protocol} has no way to go home')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'go home')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', '{protocol} has no set-home command')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', '{what} refused: home is outside the travel limits')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', '{protocol} has no arc moves')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'arc')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', '{protocol} has no dwell')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'stopped at ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', 'the move to {target} did not end within {seconds:.1f} s')  # drivers/device/motion.py
+QT_TRANSLATE_NOOP('messages', '{source}: not a parameter profile: {error}')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source}: not a parameter profile: a number too long')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source}: not a parameter profile: nested too deeply')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source}: protocol must be a name in quotes')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source}: a profile for {named!r}, not for {protocol!r}')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source} (line {line}): unknown key {key!r}')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source}: unknown key {key!r}')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source}: no [parameters] table with values in it')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source} line {line}')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{where}: unknown parameter {name!r} for {protocol}')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{where}: {error}')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{where}: {name}: not a number the device takes ({range})')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', '{source}: only firmware outputs ({names}), which a profile does not write')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', 'profile')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', 'cannot write the profile {path}: {error}')  # drivers/device/param_profile.py
+QT_TRANSLATE_NOOP('messages', 'its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', 'Home or Set Home (in the panel, or motionctl home / set-home) to start counting')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', 'Set Home where the stage stands (in the panel, or motionctl set-home) to start counting; with no home move of its own, Home needs a count too')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', '{command} refused: position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', '{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', 'position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', 'position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', 'this firmware reads the digits as µm whatever the type letter ({kind} is not read): the stage moves X {x:.3f} mm, Y {y:.3f} mm')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', '{protocol} has no identity query: the device cannot be asked what it is')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', 'travel limits need a range for each of x, y and z')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', 'travel limits for {axis} ({low:g} to {high:g} mm) are not a range: the minimum must be at most the maximum')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', 'the move')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', '{axis} {value:g} mm is outside {low:g}..{high:g} mm')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', 'the stage is outside its travel limits: {what} brings it closer ({details})')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', '{what} refused: {details} (travel limits)')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', '{what} clamped to the travel limits: {details}; going to ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', 'travel limits {text!r}: write three ranges in mm, X0:X1,Y0:Y1,Z0:Z1 (e.g. -100:100,-50:50,0:20), or none')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', 'travel limits for {axis}: {part!r} is not MIN:MAX in mm (e.g. -100:100)')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', '{name} {value!r} is not a finite number')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', '{name} {value:g} mm refused: the device works to {resolution:g} mm (the nearest it can do is {nearest} mm)')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', '{earlier}; {later}')  # drivers/device/travel.py
+QT_TRANSLATE_NOOP('messages', 'no axis {axis!r}: x, y or z')  # drivers/device/work_zero.py
+QT_TRANSLATE_NOOP('messages', 'work zero at home (work = machine)')  # drivers/device/work_zero.py
+QT_TRANSLATE_NOOP('messages', 'work zero at ({x:g}, {y:g}, {z:g}) mm machine')  # drivers/device/work_zero.py
+QT_TRANSLATE_NOOP('messages', 'work zero {text!r} is not three numbers x,y,z')  # drivers/device/work_zero.py
+QT_TRANSLATE_NOOP('messages', 'work zero {text!r} is not three finite numbers x,y,z')  # drivers/device/work_zero.py
 QT_TRANSLATE_NOOP('messages', 'a directory')  # drivers/files.py
 QT_TRANSLATE_NOOP('messages', 'a named pipe (FIFO)')  # drivers/files.py
 QT_TRANSLATE_NOOP('messages', 'a character device')  # drivers/files.py
@@ -146,98 +198,43 @@ QT_TRANSLATE_NOOP('messages', '0x90 followed by {byte:#04x} inside the data')  #
 QT_TRANSLATE_NOOP('messages', 'no tail within {most} bytes')  # drivers/framers/stuffed.py
 QT_TRANSLATE_NOOP('messages', 'a SysEx message needs at least a command byte')  # drivers/framers/sysex.py
 QT_TRANSLATE_NOOP('messages', 'SysEx data must be 7-bit; got {byte:#04x}')  # drivers/framers/sysex.py
-QT_TRANSLATE_NOOP('messages', '{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)')  # drivers/traffic/log_origin.py
-QT_TRANSLATE_NOOP('messages', '{source} line {number}: not a traffic log line: {line!r}')  # drivers/traffic/log_reader.py
-QT_TRANSLATE_NOOP('messages', '{source}: no traffic in it (not a Motion Panel log)')  # drivers/traffic/log_reader.py
-QT_TRANSLATE_NOOP('messages', 'traffic log')  # drivers/traffic/log_reader.py
-QT_TRANSLATE_NOOP('messages', '{file}: not a Motion Panel log nor a pyserial spy:// capture: line {number} is not a traffic log line: {line!r}; for spy://, {hint}')  # drivers/traffic/log_reader.py
-QT_TRANSLATE_NOOP('messages', "{file}: empty, not a Motion Panel log nor a pyserial spy:// capture (spy's raw format leaves its file empty); {hint}")  # drivers/traffic/log_reader.py
-QT_TRANSLATE_NOOP('messages', 'the device reported: {reported}')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', '{protocol} device')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'the device did not report a position (it answered {value})')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'the device is at ({x:g}, {y:g}, {z:g}) mm, not where its last move ended: its replies are no longer taken as arrival')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', '{protocol} has no speed limits to report')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'speed {speed:g} refused: the speed must be a positive number')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} written, but this firmware times its steps from its step delays (15, 16) alone: moves go at {real:.3f} {unit}')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'move to ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'jog by ({dx:g}, {dy:g}, {dz:g}) {unit}')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', '{protocol} has no way to go home')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'go home')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', '{protocol} has no set-home command')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', '{what} refused: home is outside the travel limits')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', '{protocol} has no arc moves')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'arc')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', '{protocol} has no dwell')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'stopped at ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'the move to {target} did not end within {seconds:.1f} s')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'no protocol to read them with')  # drivers/device/guard.py
-QT_TRANSLATE_NOOP('messages', 'program point {number}')  # drivers/device/guard.py
-QT_TRANSLATE_NOOP('messages', 'raw bytes refused: {protocol} cannot read them as a command ({reason}), so they cannot be checked against the travel limits ({box}); send them with force to send them anyway')  # drivers/device/guard.py
-QT_TRANSLATE_NOOP('messages', 'raw bytes refused: they hold {count} commands, {moves} of them moves; send a move alone, so that it is checked and followed to its end')  # drivers/device/guard.py
-QT_TRANSLATE_NOOP('messages', 'raw move {command}')  # drivers/device/guard.py
-QT_TRANSLATE_NOOP('messages', '{what}: not a move the panel can check')  # drivers/device/guard.py
-QT_TRANSLATE_NOOP('messages', '{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5')  # drivers/protocols/numbers.py
-QT_TRANSLATE_NOOP('messages', '{what} {value!r} is not a finite number')  # drivers/protocols/numbers.py
-QT_TRANSLATE_NOOP('messages', '{what} {value:g} is out of range: the device handles at most ±{limit:g}')  # drivers/protocols/numbers.py
-QT_TRANSLATE_NOOP('messages', '{source}: not a parameter profile: {error}')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{source}: not a parameter profile: a number too long')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{source}: not a parameter profile: nested too deeply')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{source}: protocol must be a name in quotes')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{source}: a profile for {named!r}, not for {protocol!r}')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{source} (line {line}): unknown key {key!r}')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{source}: unknown key {key!r}')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{source}: no [parameters] table with values in it')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{source} line {line}')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{where}: unknown parameter {name!r} for {protocol}')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{where}: {error}')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{where}: {name}: not a number the device takes ({range})')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{source}: only firmware outputs ({names}), which a profile does not write')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', 'profile')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', 'cannot write the profile {path}: {error}')  # drivers/device/param_profile.py
-QT_TRANSLATE_NOOP('messages', '{low} to {high} in steps of {step}')  # drivers/device/parameters.py
-QT_TRANSLATE_NOOP('messages', '{low} to {high} (whole numbers)')  # drivers/device/parameters.py
-QT_TRANSLATE_NOOP('messages', '{low} to {high}')  # drivers/device/parameters.py
-QT_TRANSLATE_NOOP('messages', '{name}: {value!r} is not a number ({range})')  # drivers/device/parameters.py
-QT_TRANSLATE_NOOP('messages', '{name}: {value} refused: {range}')  # drivers/device/parameters.py
-QT_TRANSLATE_NOOP('messages', '{name}: {value} refused: the device takes {range}')  # drivers/device/parameters.py
-QT_TRANSLATE_NOOP('messages', 'this protocol has no parameters')  # drivers/device/parameters.py
-QT_TRANSLATE_NOOP('messages', "unknown parameter {name!r} (did you mean {close}?): use a name or an id 1..{count}; 'motionctl ... param list' lists them")  # drivers/device/parameters.py
-QT_TRANSLATE_NOOP('messages', "unknown parameter {name!r}: use a name or an id 1..{count}; 'motionctl ... param list' lists them")  # drivers/device/parameters.py
-QT_TRANSLATE_NOOP('messages', 'its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)')  # drivers/device/position_count.py
-QT_TRANSLATE_NOOP('messages', 'Home or Set Home (in the panel, or motionctl home / set-home) to start counting')  # drivers/device/position_count.py
-QT_TRANSLATE_NOOP('messages', 'Set Home where the stage stands (in the panel, or motionctl set-home) to start counting; with no home move of its own, Home needs a count too')  # drivers/device/position_count.py
-QT_TRANSLATE_NOOP('messages', '{command} refused: position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}')  # drivers/device/position_count.py
-QT_TRANSLATE_NOOP('messages', '{command} refused: position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}')  # drivers/device/position_count.py
-QT_TRANSLATE_NOOP('messages', 'position unknown: {protocol} cannot be asked where it is and no commanded position is kept for this port; {how}')  # drivers/device/position_count.py
-QT_TRANSLATE_NOOP('messages', 'position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}')  # drivers/device/position_count.py
-QT_TRANSLATE_NOOP('messages', 'this firmware reads the digits as µm whatever the type letter ({kind} is not read): the stage moves X {x:.3f} mm, Y {y:.3f} mm')  # drivers/device/position_count.py
-QT_TRANSLATE_NOOP('messages', '{protocol} has no identity query: the device cannot be asked what it is')  # drivers/device/position_count.py
-QT_TRANSLATE_NOOP('messages', '{where}: {name} {value!r} is not a number')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{where}: {name} is not a finite float32 number')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{where}: {name} {value!r} is not a finite float32 number')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{where}: speed {speed:g} mm/s must be above 0')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source} line {line}: not CSV: {error}')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source} line {line}: the header must name x, y, z and speed (got nothing)')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source} line {line}: the header must name x, y, z and speed (got {columns})')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source} line {line}: {count} values, expected 4')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source}: no header line (x,y,z,speed)')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source}: no points')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source} line {line}: not JSON ({reason})')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source}: not JSON the panel reads (a number too long)')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source}: not JSON the panel reads (nested too deeply)')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source}: no "points" list')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{where}: expected [x, y, z, speed]')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source} point {number}')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', '{source}: more than {count} points')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', 'program')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', 'cannot write the program {path}: {error}')  # drivers/toolpath/point_program.py
-QT_TRANSLATE_NOOP('messages', 'this looks like a {found} controller, not {expected}')  # drivers/protocols/sniff.py
+QT_TRANSLATE_NOOP('messages', 'no modem control lines')  # drivers/link/control_lines.py
+QT_TRANSLATE_NOOP('messages', '{dtr}, {rts}, {cts}, {dsr}, {cd}, {ri}')  # drivers/link/control_lines.py
+QT_TRANSLATE_NOOP('messages', '{line} ?')  # drivers/link/control_lines.py
+QT_TRANSLATE_NOOP('messages', '{line} on')  # drivers/link/control_lines.py
+QT_TRANSLATE_NOOP('messages', '{line} off')  # drivers/link/control_lines.py
+QT_TRANSLATE_NOOP('messages', '{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first')  # drivers/link/rfc2217_port.py
+QT_TRANSLATE_NOOP('messages', 'the server has not reported the modem lines')  # drivers/link/rfc2217_port.py
+QT_TRANSLATE_NOOP('messages', 'nothing answers at {where} ({error}): is ser2net (or another RFC 2217 server) running there and serving that port?')  # drivers/link/rfc2217_port.py
+QT_TRANSLATE_NOOP('messages', "{where} answers, but not as an RFC 2217 server: serve the port with ser2net's `accepter: telnet(rfc2217),tcp,PORT`, or open a raw TCP server as socket://{where}")  # drivers/link/rfc2217_port.py
+QT_TRANSLATE_NOOP('messages', "timeout while waiting for option 'purge'")  # drivers/link/rfc2217_port.py
+QT_TRANSLATE_NOOP('messages', '{url} is not open')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'writing to {url} failed: {error}')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'writing to {url}: only {written} of {total} bytes sent')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'reading from {url} failed: {error}')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', '{name!r} is not a line the host drives (DTR or RTS)')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', '{line} cannot be set')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'setting {line} on {url} failed: {error}')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'the server did not confirm the control lines ({what} unanswered); they are set without confirmation (ser2net does not answer when the port it serves has no modem lines, e.g. a pseudo-terminal)')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'a break lasts more than 0 and at most {most:g} s')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'no break can be sent')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'sending a break on {url} failed: {error}')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'break {ms:.0f} ms')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'reading {line} on {url} failed: {error}')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'reading the control lines of {url} failed: {error}')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'a TCP socket')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', '{url} has no modem control lines ({why}): {what}')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'a pseudo-terminal')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'its driver has no modem-line control')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'no port given')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', '{url} is in use by another program')  # drivers/link/transport.py
+QT_TRANSLATE_NOOP('messages', 'cannot open {url}: {error}')  # drivers/link/transport.py
 QT_TRANSLATE_NOOP('messages', '{setting} {value} refused: {minimum:g} to {maximum:g} {unit}')  # drivers/protocols/base.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no setting {name!r}')  # drivers/protocols/base.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no wire variants (got {name!r})')  # drivers/protocols/base.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no variant {name!r} (variants: {known})')  # drivers/protocols/base.py
 QT_TRANSLATE_NOOP('messages', '{protocol} moves are linear only (got {kind!r})')  # drivers/protocols/base.py
+QT_TRANSLATE_NOOP('messages', 'unreadable: {error}')  # drivers/protocols/base.py
 QT_TRANSLATE_NOOP('messages', '{protocol} cannot read sent frames')  # drivers/protocols/base.py
 QT_TRANSLATE_NOOP('messages', 'the last {count} bytes are not a whole frame: the device would wait for the rest')  # drivers/protocols/base.py
 QT_TRANSLATE_NOOP('messages', 'no whole frame in {count} bytes')  # drivers/protocols/base.py
@@ -266,6 +263,17 @@ QT_TRANSLATE_NOOP('messages', '{line!r} has no line end: the device would wait f
 QT_TRANSLATE_NOOP('messages', 'an empty line: the device ignores it')  # drivers/protocols/coxiris.py
 QT_TRANSLATE_NOOP('messages', 'non-ASCII bytes: COXIRIS takes ASCII text only')  # drivers/protocols/coxiris.py
 QT_TRANSLATE_NOOP('messages', '{name} {params!r} is not three numbers as the firmware reads them')  # drivers/protocols/coxiris.py
+QT_TRANSLATE_NOOP('messages', 'error {code}: {message}')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'error: {message}')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'position unknown (({x:g}, {y:g}, {z:g}) mm counted from where the session began; Home or Set Home to know it)')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'position ({x:g}, {y:g}, {z:g}) mm')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'position ({x:g}, {y:g}, {z:g}) mm (commanded, confirmed)')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'position ({x:g}, {y:g}, {z:g}) mm (commanded)')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'feedback {code} ({meaning})')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'feedback {code} {bytes}')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'feedback {code}')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'the line {text!r}')  # drivers/protocols/events.py
+QT_TRANSLATE_NOOP('messages', 'an unreadable frame ({reason}): {bytes}')  # drivers/protocols/events.py
 QT_TRANSLATE_NOOP('messages', 'Motor steps per turn')  # drivers/protocols/firmata.py
 QT_TRANSLATE_NOOP('messages', 'Motor steps per millimetre')  # drivers/protocols/firmata.py
 QT_TRANSLATE_NOOP('messages', 'Motor control pin {pin} (-1: none)')  # drivers/protocols/firmata.py
@@ -297,6 +305,14 @@ QT_TRANSLATE_NOOP('messages', 'STEPPER_CONFIGURE {steps} steps/rev, pins {pins}'
 QT_TRANSLATE_NOOP('messages', 'STEPPER_STEP {rpm} rpm, {steps} steps forward')  # drivers/protocols/firmata.py
 QT_TRANSLATE_NOOP('messages', 'STEPPER_STEP {rpm} rpm, {steps} steps reverse')  # drivers/protocols/firmata.py
 QT_TRANSLATE_NOOP('messages', 'a STEPPER_STEP of {count} data bytes, not 6')  # drivers/protocols/firmata.py
+QT_TRANSLATE_NOOP('messages', 'a field holds 1 to 255 values, not {count}')  # drivers/protocols/laser/codec.py
+QT_TRANSLATE_NOOP('messages', '{value!r} is not one ASCII character')  # drivers/protocols/laser/codec.py
+QT_TRANSLATE_NOOP('messages', '{value} does not fit a float32')  # drivers/protocols/laser/codec.py
+QT_TRANSLATE_NOOP('messages', '{value} does not fit a {kind} ({low} to {high})')  # drivers/protocols/laser/codec.py
+QT_TRANSLATE_NOOP('messages', 'command word {word:#04x} is outside 0x01..0x7F')  # drivers/protocols/laser/codec.py
+QT_TRANSLATE_NOOP('messages', 'byte {index}: {byte:#04x} where a command word was expected')  # drivers/protocols/laser/codec.py
+QT_TRANSLATE_NOOP('messages', 'byte {index}: a {kind} field without its count')  # drivers/protocols/laser/codec.py
+QT_TRANSLATE_NOOP('messages', 'byte {index}: {count} {kind} values run past the data')  # drivers/protocols/laser/codec.py
 QT_TRANSLATE_NOOP('messages', 'framing')  # drivers/protocols/laser/protocol.py
 QT_TRANSLATE_NOOP('messages', 'checksum')  # drivers/protocols/laser/protocol.py
 QT_TRANSLATE_NOOP('messages', 'unknown command')  # drivers/protocols/laser/protocol.py
@@ -318,14 +334,18 @@ QT_TRANSLATE_NOOP('messages', 'MOVE_LINEAR with {count} float values, not x, y, 
 QT_TRANSLATE_NOOP('messages', 'word {word:#04x}')  # drivers/protocols/laser/protocol.py
 QT_TRANSLATE_NOOP('messages', 'frame {number} ({words} ×{count})')  # drivers/protocols/laser/protocol.py
 QT_TRANSLATE_NOOP('messages', 'frame {number} ({words})')  # drivers/protocols/laser/protocol.py
-QT_TRANSLATE_NOOP('messages', 'a field holds 1 to 255 values, not {count}')  # drivers/protocols/laser/codec.py
-QT_TRANSLATE_NOOP('messages', '{value!r} is not one ASCII character')  # drivers/protocols/laser/codec.py
-QT_TRANSLATE_NOOP('messages', '{value} does not fit a float32')  # drivers/protocols/laser/codec.py
-QT_TRANSLATE_NOOP('messages', '{value} does not fit a {kind} ({low} to {high})')  # drivers/protocols/laser/codec.py
-QT_TRANSLATE_NOOP('messages', 'command word {word:#04x} is outside 0x01..0x7F')  # drivers/protocols/laser/codec.py
-QT_TRANSLATE_NOOP('messages', 'byte {index}: {byte:#04x} where a command word was expected')  # drivers/protocols/laser/codec.py
-QT_TRANSLATE_NOOP('messages', 'byte {index}: a {kind} field without its count')  # drivers/protocols/laser/codec.py
-QT_TRANSLATE_NOOP('messages', 'byte {index}: {count} {kind} values run past the data')  # drivers/protocols/laser/codec.py
+QT_TRANSLATE_NOOP('messages', '{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5')  # drivers/protocols/numbers.py
+QT_TRANSLATE_NOOP('messages', '{what} {value!r} is not a finite number')  # drivers/protocols/numbers.py
+QT_TRANSLATE_NOOP('messages', '{what} {value:g} is out of range: the device handles at most ±{limit:g}')  # drivers/protocols/numbers.py
+QT_TRANSLATE_NOOP('messages', '{low} to {high} in steps of {step}')  # drivers/protocols/parameters.py
+QT_TRANSLATE_NOOP('messages', '{low} to {high} (whole numbers)')  # drivers/protocols/parameters.py
+QT_TRANSLATE_NOOP('messages', '{low} to {high}')  # drivers/protocols/parameters.py
+QT_TRANSLATE_NOOP('messages', '{name}: {value!r} is not a number ({range})')  # drivers/protocols/parameters.py
+QT_TRANSLATE_NOOP('messages', '{name}: {value} refused: {range}')  # drivers/protocols/parameters.py
+QT_TRANSLATE_NOOP('messages', '{name}: {value} refused: the device takes {range}')  # drivers/protocols/parameters.py
+QT_TRANSLATE_NOOP('messages', 'this protocol has no parameters')  # drivers/protocols/parameters.py
+QT_TRANSLATE_NOOP('messages', "unknown parameter {name!r} (did you mean {close}?): use a name or an id 1..{count}; 'motionctl ... param list' lists them")  # drivers/protocols/parameters.py
+QT_TRANSLATE_NOOP('messages', "unknown parameter {name!r}: use a name or an id 1..{count}; 'motionctl ... param list' lists them")  # drivers/protocols/parameters.py
 QT_TRANSLATE_NOOP('messages', 'Encoder ticks per millimetre')  # drivers/protocols/piframe.py
 QT_TRANSLATE_NOOP('messages', 'Moves back to (0, 0, 0) with a Linear frame: the device has no homing')  # drivers/protocols/piframe.py
 QT_TRANSLATE_NOOP('messages', 'write-only: positions are commanded, completion estimated from distance and speed')  # drivers/protocols/piframe.py
@@ -343,6 +363,51 @@ QT_TRANSLATE_NOOP('messages', 'Linear X={x} Y={y} Z={z} ticks at {sx}/{sy}/{sz} 
 QT_TRANSLATE_NOOP('messages', 'Circular centre ({x}, {y}) radius {radius} ticks, {start:g}° to {end:g}° {turn} at {speed:g}°/s, Z to {z}')  # drivers/protocols/piframe.py
 QT_TRANSLATE_NOOP('messages', 'Dwell {ms} ms')  # drivers/protocols/piframe.py
 QT_TRANSLATE_NOOP('messages', 'action {number}')  # drivers/protocols/piframe.py
+QT_TRANSLATE_NOOP('messages', 'unknown protocol {name!r} (known: {known})')  # drivers/protocols/registry.py
+QT_TRANSLATE_NOOP('messages', 'protocol {name!r} cannot be loaded: {error}')  # drivers/protocols/registry.py
+QT_TRANSLATE_NOOP('messages', 'protocol {name!r}: {target} is not a protocol class')  # drivers/protocols/registry.py
+QT_TRANSLATE_NOOP('messages', 'this looks like a {found} controller, not {expected}')  # drivers/protocols/sniff.py
+QT_TRANSLATE_NOOP('messages', 'Steps per move')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'X: 1 mm = {x1}, 10 mm = {x10} · Y: 1 mm = {y1}, 10 mm = {y10} (truncated: the firmware counts in 32-bit floats)')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', '{steps} steps, {stepping} s of stepping; FA0001 about {total} s after the packet')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', "{text}; after a move in which Y stepped, {later} s (X's low phase is Y's last delay, {delay} µs: the ramps do not restore the delays)")  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'A 10 mm X move')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', "no: the firmware's Y loop runs the ramp count (R_y = 0 with these values), not the {asked} steps a 10 mm move asks for; set 22 and 24 so that the ramp length is above 0 (e.g. 22 = 6000, 24 = 1)")  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', "{runs} of the {asked} steps of a 10 mm Y move, {seconds} s: the firmware's Y loop runs the ramp count R_y (at most the ramp length {ramp}), not the distance, and speeds up without slowing down")  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'Y moves')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'none: the ramp length is 0 on both axes (it follows 21 ÷ 23 and 13 - 11); every X step takes 15 high plus 16 low')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'X over {x} steps, Y over {y} steps, between 13/14 (slow) and 11/12 (fast)')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'Ramps')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'Not used')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', '{names}: the values in the table differ from power-on, but this firmware does not use them')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'Overwritten after every set')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', '{ids}: the firmware recomputes them; a written value does not stay')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'Overwritten at every move')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', '{ids}: the ramp counts of the last move')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'Never read')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', '{ids}: writing them changes nothing (27 is forced to 1 after every set)')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'Read only at boot')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', '{ids}: the cycle length ({cycle} mm) is taken from them at power-on, when they hold their power-on values again: writing them changes no move')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {id} after every set: this value will not stay')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {id} at every move: this value will not stay')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'the firmware forces 27 to 1 after every set: this value will not stay')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'this firmware never reads {id:02d}: writing it changes nothing')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', "a move with ramps (ramp length above 0) leaves {id} at the ramp's last delay: this value stays only until then")  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'this firmware reads {id:02d} only at boot, when it holds {value} again: writing it changes no move')  # drivers/protocols/visiomex/advice.py
+QT_TRANSLATE_NOOP('messages', 'Lead-screw pitch of the {axis} axis (mm per turn)')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Belt pulley diameter of the {axis} axis; sent as mm×10 (38.2 mm -> 000382)')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Full steps per motor turn, {axis} axis')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Microstepping factor of the {axis} driver')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Highest speed allowed on the {axis} axis')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Step delay at the steady speed, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Step delay at the lowest speed, {axis} axis')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', "Current step delay, {axis} axis (left by the firmware's ramps; this revision times an X step as 15 high plus 16 low, a Y step as 16 twice)")  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Mean step delay while accelerating, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Steps spent accelerating, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Requested steady speed of the {axis} axis')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Requested acceleration of the {axis} axis')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', 'Duration of the last move, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex/params.py
+QT_TRANSLATE_NOOP('messages', '0 belt pulley, 1 lead screw (this firmware forces 1 after every set)')  # drivers/protocols/visiomex/params.py
 QT_TRANSLATE_NOOP('messages', 'move package confirmed')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'action accomplished')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'package size mismatch')  # drivers/protocols/visiomex/protocol.py
@@ -395,65 +460,19 @@ QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {parameter} after every s
 QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {parameter} at every move: this value will not stay')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'this firmware revision reads {parameter} only at boot: moves do not change until the device restarts')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'this firmware revision never reads {parameter}: moves do not change')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'Steps per move')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'X: 1 mm = {x1}, 10 mm = {x10} · Y: 1 mm = {y1}, 10 mm = {y10} (truncated: the firmware counts in 32-bit floats)')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', '{steps} steps, {stepping} s of stepping; FA0001 about {total} s after the packet')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', "{text}; after a move in which Y stepped, {later} s (X's low phase is Y's last delay, {delay} µs: the ramps do not restore the delays)")  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'A 10 mm X move')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', "no: the firmware's Y loop runs the ramp count (R_y = 0 with these values), not the {asked} steps a 10 mm move asks for; set 22 and 24 so that the ramp length is above 0 (e.g. 22 = 6000, 24 = 1)")  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', "{runs} of the {asked} steps of a 10 mm Y move, {seconds} s: the firmware's Y loop runs the ramp count R_y (at most the ramp length {ramp}), not the distance, and speeds up without slowing down")  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'Y moves')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'none: the ramp length is 0 on both axes (it follows 21 ÷ 23 and 13 - 11); every X step takes 15 high plus 16 low')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'X over {x} steps, Y over {y} steps, between 13/14 (slow) and 11/12 (fast)')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'Ramps')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'Not used')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', '{names}: the values in the table differ from power-on, but this firmware does not use them')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'Overwritten after every set')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', '{ids}: the firmware recomputes them; a written value does not stay')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'Overwritten at every move')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', '{ids}: the ramp counts of the last move')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'Never read')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', '{ids}: writing them changes nothing (27 is forced to 1 after every set)')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'Read only at boot')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', '{ids}: the cycle length ({cycle} mm) is taken from them at power-on, when they hold their power-on values again: writing them changes no move')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {id} after every set: this value will not stay')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {id} at every move: this value will not stay')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'the firmware forces 27 to 1 after every set: this value will not stay')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'this firmware never reads {id:02d}: writing it changes nothing')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', "a move with ramps (ramp length above 0) leaves {id} at the ramp's last delay: this value stays only until then")  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'this firmware reads {id:02d} only at boot, when it holds {value} again: writing it changes no move')  # drivers/protocols/visiomex/advice.py
-QT_TRANSLATE_NOOP('messages', 'Lead-screw pitch of the {axis} axis (mm per turn)')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Belt pulley diameter of the {axis} axis; sent as mm×10 (38.2 mm -> 000382)')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Full steps per motor turn, {axis} axis')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Microstepping factor of the {axis} driver')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Highest speed allowed on the {axis} axis')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Step delay at the steady speed, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Step delay at the lowest speed, {axis} axis')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', "Current step delay, {axis} axis (left by the firmware's ramps; this revision times an X step as 15 high plus 16 low, a Y step as 16 twice)")  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Mean step delay while accelerating, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Steps spent accelerating, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Requested steady speed of the {axis} axis')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Requested acceleration of the {axis} axis')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'Duration of the last move, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', '0 belt pulley, 1 lead screw (this firmware forces 1 after every set)')  # drivers/protocols/visiomex/params.py
 QT_TRANSLATE_NOOP('messages', "Y will not move: at these parameters the firmware's Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)")  # drivers/protocols/visiomex/where.py
 QT_TRANSLATE_NOOP('messages', "Y moves {moved:.3f} mm, not {asked:.3f}: the firmware's Y loop runs the ramp count ({loops} of {steps} steps)")  # drivers/protocols/visiomex/where.py
 QT_TRANSLATE_NOOP('messages', '{axis} moves {moved:.3f} mm, not {asked:.3f}: whole steps ({steps}), truncated as the firmware counts')  # drivers/protocols/visiomex/where.py
-QT_TRANSLATE_NOOP('messages', 'protocol {name!r} is not implemented yet')  # drivers/protocols/registry.py
-QT_TRANSLATE_NOOP('messages', 'unknown protocol {name!r} (known: {known})')  # drivers/protocols/registry.py
 QT_TRANSLATE_NOOP('messages', '{protocol} reports where it is: it is asked')  # drivers/session/device_session.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no stop command: the device finishes what it was sent')  # drivers/session/device_session.py
 QT_TRANSLATE_NOOP('messages', 'timeout {timeout:g} s refused: it must be positive')  # drivers/session/device_session.py
 QT_TRANSLATE_NOOP('messages', 'variant {variant!r} asked for a protocol made as {chosen!r}')  # drivers/session/setup.py
 QT_TRANSLATE_NOOP('messages', 'baud {baud} refused: a positive number of bits per second')  # drivers/session/setup.py
-QT_TRANSLATE_NOOP('messages', "capture with spy's default hexdump format: spy://PORT?file=FILE, without raw")  # drivers/traffic/spy_log.py
-QT_TRANSLATE_NOOP('messages', 'both directions run together, nothing tells TX from RX')  # drivers/traffic/spy_log.py
-QT_TRANSLATE_NOOP('messages', "{source} line {number}: spy's raw format is refused ({why}); {hint}")  # drivers/traffic/spy_log.py
-QT_TRANSLATE_NOOP('messages', '{source} line {number}: not a pyserial spy:// hexdump line: {line!r}')  # drivers/traffic/spy_log.py
-QT_TRANSLATE_NOOP('messages', '{source} line {number}: bytes at offset {offset:#06x} of a {direction} call whose earlier lines are missing')  # drivers/traffic/spy_log.py
-QT_TRANSLATE_NOOP('messages', '{source}: no traffic in it, only control-line events')  # drivers/traffic/spy_log.py
-QT_TRANSLATE_NOOP('messages', "{source}: no traffic in it (nor spy's raw format); {hint}")  # drivers/traffic/spy_log.py
-QT_TRANSLATE_NOOP('messages', '{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)')  # drivers/toolpath/streaming.py
+QT_TRANSLATE_NOOP('messages', 'expected a sim:// URL, got {url!r}')  # drivers/sim/urlhandler/protocol_sim.py
+QT_TRANSLATE_NOOP('messages', 'unknown sim:// option {key!r}')  # drivers/sim/urlhandler/protocol_sim.py
+QT_TRANSLATE_NOOP('messages', 'port must be configured before it can be used')  # drivers/sim/urlhandler/protocol_sim.py
+QT_TRANSLATE_NOOP('messages', 'port already open')  # drivers/sim/urlhandler/protocol_sim.py
+QT_TRANSLATE_NOOP('messages', 'cannot open {port}: {error}')  # drivers/sim/urlhandler/protocol_sim.py
 QT_TRANSLATE_NOOP('messages', '{name}')  # drivers/toolpath/drawing.py
 QT_TRANSLATE_NOOP('messages', '{where}: more than {count:,} steps (lines, arcs and travel moves)')  # drivers/toolpath/drawing.py
 QT_TRANSLATE_NOOP('messages', '{where}: a coordinate that is not a finite number')  # drivers/toolpath/drawing.py
@@ -470,6 +489,7 @@ QT_TRANSLATE_NOOP('messages', '{name}: no units given ($INSUNITS 0), taken as mm
 QT_TRANSLATE_NOOP('messages', '{name}: units $INSUNITS {code} the panel cannot convert to mm')  # drivers/toolpath/dxf.py
 QT_TRANSLATE_NOOP('messages', '{name} entity {number} ({kind} on layer {layer}): not a drawing the panel reads: {why}')  # drivers/toolpath/dxf.py
 QT_TRANSLATE_NOOP('messages', "{name}: no layer {layer} with lines, arcs or curves; the drawing's layers: {layers}")  # drivers/toolpath/dxf.py
+QT_TRANSLATE_NOOP('messages', 'program')  # drivers/toolpath/gcode.py
 QT_TRANSLATE_NOOP('messages', '{name} line {number}')  # drivers/toolpath/gcode.py
 QT_TRANSLATE_NOOP('messages', '{where}: a comment opened with ( is not closed')  # drivers/toolpath/gcode.py
 QT_TRANSLATE_NOOP('messages', '{where}: {word} with R: a full circle needs I/J')  # drivers/toolpath/gcode.py
@@ -486,6 +506,7 @@ QT_TRANSLATE_NOOP('messages', '{where}: {word}: the centre is {start:g} mm from 
 QT_TRANSLATE_NOOP('messages', '{where}: {word}: an arc of radius 0')  # drivers/toolpath/gcode.py
 QT_TRANSLATE_NOOP('messages', '{where}: {word} is not used by anything on the line')  # drivers/toolpath/gcode.py
 QT_TRANSLATE_NOOP('messages', '{where}: {first} and {second} cannot be on one line')  # drivers/toolpath/gcode.py
+QT_TRANSLATE_NOOP('messages', '{where}: {name} {value!r} is not a finite float32 number')  # drivers/toolpath/gcode.py
 QT_TRANSLATE_NOOP('messages', '{name}: more than {count:,} lines, too many for a program')  # drivers/toolpath/gcode.py
 QT_TRANSLATE_NOOP('messages', '{where}: {word!r} is not a G-code word (a letter and a number)')  # drivers/toolpath/gcode.py
 QT_TRANSLATE_NOOP('messages', '{where}: {word} is not understood')  # drivers/toolpath/gcode.py
@@ -498,9 +519,27 @@ QT_TRANSLATE_NOOP('messages', '{file}: layers are chosen in DXF files only')  # 
 QT_TRANSLATE_NOOP('messages', '{name} entity {number} ({text})')  # drivers/toolpath/model.py
 QT_TRANSLATE_NOOP('messages', '{name} element {number} ({text})')  # drivers/toolpath/model.py
 QT_TRANSLATE_NOOP('messages', '{name} point {number}')  # drivers/toolpath/model.py
+QT_TRANSLATE_NOOP('messages', '{where}: {name} {value!r} is not a number')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{where}: {name} is not a finite float32 number')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{where}: speed {speed:g} mm/s must be above 0')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source} line {line}: not CSV: {error}')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source} line {line}: the header must name x, y, z and speed (got nothing)')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source} line {line}: the header must name x, y, z and speed (got {columns})')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source} line {line}: {count} values, expected 4')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source}: no header line (x,y,z,speed)')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source}: no points')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source} line {line}: not JSON ({reason})')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source}: not JSON the panel reads (a number too long)')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source}: not JSON the panel reads (nested too deeply)')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source}: no "points" list')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{where}: expected [x, y, z, speed]')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source} point {number}')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', '{source}: more than {count} points')  # drivers/toolpath/point_program.py
+QT_TRANSLATE_NOOP('messages', 'cannot write the program {path}: {error}')  # drivers/toolpath/point_program.py
 QT_TRANSLATE_NOOP('messages', "the program's moves without a speed would go at the device's speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent")  # drivers/toolpath/runner.py
 QT_TRANSLATE_NOOP('messages', '{where}: {error}; nothing was sent')  # drivers/toolpath/runner.py
 QT_TRANSLATE_NOOP('messages', 'the program was abandoned during a dwell')  # drivers/toolpath/runner.py
+QT_TRANSLATE_NOOP('messages', '{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)')  # drivers/toolpath/streaming.py
 QT_TRANSLATE_NOOP('messages', 'SVG scale {scale:g} mm per unit must be above 0')  # drivers/toolpath/svg.py
 QT_TRANSLATE_NOOP('messages', 'SVG drawing')  # drivers/toolpath/svg.py
 QT_TRANSLATE_NOOP('messages', '{where}: not a shape the panel reads: {why}')  # drivers/toolpath/svg.py
@@ -510,54 +549,19 @@ QT_TRANSLATE_NOOP('messages', '{name} line {line}: not SVG: {why}')  # drivers/t
 QT_TRANSLATE_NOOP('messages', '{name}: not an SVG drawing the panel reads: {why}')  # drivers/toolpath/svg.py
 QT_TRANSLATE_NOOP('messages', '{name}: not an SVG drawing (no svg element)')  # drivers/toolpath/svg.py
 QT_TRANSLATE_NOOP('messages', '{name}: no width and height in mm, cm, in, pt, pc or px; 1 unit taken as {scale:g} mm')  # drivers/toolpath/svg.py
+QT_TRANSLATE_NOOP('messages', '{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)')  # drivers/traffic/log_origin.py
+QT_TRANSLATE_NOOP('messages', '{source} line {number}: not a traffic log line: {line!r}')  # drivers/traffic/log_reader.py
+QT_TRANSLATE_NOOP('messages', '{source}: no traffic in it (not a Motion Panel log)')  # drivers/traffic/log_reader.py
+QT_TRANSLATE_NOOP('messages', 'traffic log')  # drivers/traffic/log_reader.py
+QT_TRANSLATE_NOOP('messages', '{file}: not a Motion Panel log nor a pyserial spy:// capture: line {number} is not a traffic log line: {line!r}; for spy://, {hint}')  # drivers/traffic/log_reader.py
+QT_TRANSLATE_NOOP('messages', "{file}: empty, not a Motion Panel log nor a pyserial spy:// capture (spy's raw format leaves its file empty); {hint}")  # drivers/traffic/log_reader.py
 QT_TRANSLATE_NOOP('messages', '{pattern!r} is not a regular expression: {error}')  # drivers/traffic/search.py
 QT_TRANSLATE_NOOP('messages', '{pattern!r} is not valid text')  # drivers/traffic/search.py
 QT_TRANSLATE_NOOP('messages', '{pattern!r}… is too large a regular expression: {error}')  # drivers/traffic/search.py
-QT_TRANSLATE_NOOP('messages', '{url} is not open')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'writing to {url} failed: {error}')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'writing to {url}: only {written} of {total} bytes sent')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'reading from {url} failed: {error}')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', '{name!r} is not a line the host drives (DTR or RTS)')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', '{line} cannot be set')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'setting {line} on {url} failed: {error}')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'the server did not confirm the control lines ({what} unanswered); they are set without confirmation (ser2net does not answer when the port it serves has no modem lines, e.g. a pseudo-terminal)')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'a break lasts more than 0 and at most {most:g} s')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'no break can be sent')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'sending a break on {url} failed: {error}')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'break {ms:.0f} ms')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'reading {line} on {url} failed: {error}')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'reading the control lines of {url} failed: {error}')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'a TCP socket')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', '{url} has no modem control lines ({why}): {what}')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'a pseudo-terminal')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'its driver has no modem-line control')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'no port given')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', '{url} is in use by another program')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'cannot open {url}: {error}')  # drivers/link/transport.py
-QT_TRANSLATE_NOOP('messages', 'travel limits need a range for each of x, y and z')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', 'travel limits for {axis} ({low:g} to {high:g} mm) are not a range: the minimum must be at most the maximum')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', 'the move')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', '{axis} {value:g} mm is outside {low:g}..{high:g} mm')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', 'the stage is outside its travel limits: {what} brings it closer ({details})')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', '{what} refused: {details} (travel limits)')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', '{what} clamped to the travel limits: {details}; going to ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', 'travel limits {text!r}: write three ranges in mm, X0:X1,Y0:Y1,Z0:Z1 (e.g. -100:100,-50:50,0:20), or none')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', 'travel limits for {axis}: {part!r} is not MIN:MAX in mm (e.g. -100:100)')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', '{name} {value!r} is not a finite number')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', '{name} {value:g} mm refused: the device works to {resolution:g} mm (the nearest it can do is {nearest} mm)')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', '{earlier}; {later}')  # drivers/device/travel.py
-QT_TRANSLATE_NOOP('messages', 'expected a sim:// URL, got {url!r}')  # drivers/link/urlhandler/protocol_sim.py
-QT_TRANSLATE_NOOP('messages', 'unknown sim:// option {key!r}')  # drivers/link/urlhandler/protocol_sim.py
-QT_TRANSLATE_NOOP('messages', 'port must be configured before it can be used')  # drivers/link/urlhandler/protocol_sim.py
-QT_TRANSLATE_NOOP('messages', 'port already open')  # drivers/link/urlhandler/protocol_sim.py
-QT_TRANSLATE_NOOP('messages', 'cannot open {port}: {error}')  # drivers/link/urlhandler/protocol_sim.py
-QT_TRANSLATE_NOOP('messages', '{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first')  # drivers/link/urlhandler/rfc2217_port.py
-QT_TRANSLATE_NOOP('messages', 'the server has not reported the modem lines')  # drivers/link/urlhandler/rfc2217_port.py
-QT_TRANSLATE_NOOP('messages', 'nothing answers at {where} ({error}): is ser2net (or another RFC 2217 server) running there and serving that port?')  # drivers/link/urlhandler/rfc2217_port.py
-QT_TRANSLATE_NOOP('messages', "{where} answers, but not as an RFC 2217 server: serve the port with ser2net's `accepter: telnet(rfc2217),tcp,PORT`, or open a raw TCP server as socket://{where}")  # drivers/link/urlhandler/rfc2217_port.py
-QT_TRANSLATE_NOOP('messages', "timeout while waiting for option 'purge'")  # drivers/link/urlhandler/rfc2217_port.py
-QT_TRANSLATE_NOOP('messages', 'no axis {axis!r}: x, y or z')  # drivers/device/work_zero.py
-QT_TRANSLATE_NOOP('messages', 'work zero at home (work = machine)')  # drivers/device/work_zero.py
-QT_TRANSLATE_NOOP('messages', 'work zero at ({x:g}, {y:g}, {z:g}) mm machine')  # drivers/device/work_zero.py
-QT_TRANSLATE_NOOP('messages', 'work zero {text!r} is not three numbers x,y,z')  # drivers/device/work_zero.py
-QT_TRANSLATE_NOOP('messages', 'work zero {text!r} is not three finite numbers x,y,z')  # drivers/device/work_zero.py
+QT_TRANSLATE_NOOP('messages', "capture with spy's default hexdump format: spy://PORT?file=FILE, without raw")  # drivers/traffic/spy_log.py
+QT_TRANSLATE_NOOP('messages', 'both directions run together, nothing tells TX from RX')  # drivers/traffic/spy_log.py
+QT_TRANSLATE_NOOP('messages', "{source} line {number}: spy's raw format is refused ({why}); {hint}")  # drivers/traffic/spy_log.py
+QT_TRANSLATE_NOOP('messages', '{source} line {number}: not a pyserial spy:// hexdump line: {line!r}')  # drivers/traffic/spy_log.py
+QT_TRANSLATE_NOOP('messages', '{source} line {number}: bytes at offset {offset:#06x} of a {direction} call whose earlier lines are missing')  # drivers/traffic/spy_log.py
+QT_TRANSLATE_NOOP('messages', '{source}: no traffic in it, only control-line events')  # drivers/traffic/spy_log.py
+QT_TRANSLATE_NOOP('messages', "{source}: no traffic in it (nor spy's raw format); {hint}")  # drivers/traffic/spy_log.py

@@ -237,7 +237,7 @@ igual al ángulo inicial: una circunferencia completa</translation>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/window/bridge_session.py" line="+93"/>
+        <location filename="../../app/window/device/bridge_session.py" line="+93"/>
         <source>the bridge failed: %1</source>
         <translation>el puente falló: %1</translation>
     </message>
@@ -729,7 +729,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+92"/>
+        <location filename="../../app/window/docks/device_docks.py" line="+93"/>
         <source>Not now: %1</source>
         <translation>Ahora no: %1</translation>
     </message>
@@ -767,7 +767,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>DockLayout</name>
     <message>
-        <location filename="../../app/window/dock_layout.py" line="+16"/>
+        <location filename="../../app/window/layout/dock_layout.py" line="+16"/>
         <source>Stepper setup</source>
         <translation>Configuración del motor</translation>
     </message>
@@ -942,7 +942,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>Jobs</name>
     <message>
-        <location filename="../../app/window/jobs.py" line="+25"/>
+        <location filename="../../app/window/device/jobs.py" line="+25"/>
         <source>move to (%1, %2, %3) mm</source>
         <translation>mover a (%1, %2, %3) mm</translation>
     </message>
@@ -1040,7 +1040,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+33"/>
+        <location filename="../../widgets/jog_panel.py" line="+35"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>Teclas: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</translation>
     </message>
@@ -1052,7 +1052,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
 %1 (la indicación de abajo dice dónde funcionan las teclas).</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
         <source>Step:</source>
         <translation>Paso:</translation>
     </message>
@@ -1078,7 +1078,7 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>%1 in</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+131"/>
         <source>Any step size (%1 to %2 in)</source>
         <translation>Cualquier tamaño de paso (de %1 a %2 in)</translation>
     </message>
@@ -1088,12 +1088,12 @@ A partir de ahora, todas las coordenadas se medirán desde aquí.</translation>
         <translation>Cualquier tamaño de paso (de 0.001 a 1000 mm)</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+174"/>
         <source>%1; no jog</source>
         <translation>%1; sin desplazamiento</translation>
     </message>
     <message>
-        <location line="-215"/>
+        <location line="-256"/>
         <source>keys active</source>
         <translation>teclas activas</translation>
     </message>
@@ -1202,7 +1202,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/window/log_viewer.py" line="+48"/>
+        <location filename="../../app/window/console/log_viewer.py" line="+48"/>
         <source>(undecoded)</source>
         <translation>(sin decodificar)</translation>
     </message>
@@ -1285,7 +1285,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>MacroDock</name>
     <message>
-        <location filename="../../app/window/macro_dock.py" line="+30"/>
+        <location filename="../../app/window/docks/macro_dock.py" line="+30"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
         <translation>Macros de Motion Panel (*.json);;Todos los archivos (*)</translation>
     </message>
@@ -1482,7 +1482,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/window/fit_controls.py" line="+18"/>
+        <location filename="../../app/window/layout/fit_controls.py" line="+18"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 no tiene comando de parada: esto descarta los comandos aún no enviados; un movimiento ya en curso en el dispositivo termina (Esc)</translation>
     </message>
@@ -1492,7 +1492,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Detener la platina ahora: interrumpe el movimiento en curso y descarta lo que está en cola (Esc)</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+51"/>
+        <location filename="../../app/window/device/connection.py" line="+56"/>
         <source>simulated %1 device</source>
         <translation>dispositivo %1 simulado</translation>
     </message>
@@ -1502,7 +1502,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location filename="../../app/window/worker_link.py" line="+114"/>
+        <location filename="../../app/window/device/worker_link.py" line="+113"/>
         <source>no session log: %1</source>
         <translation>sin registro de sesión: %1</translation>
     </message>
@@ -1602,7 +1602,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Movimiento</translation>
     </message>
     <message>
-        <location filename="../../app/window/fit_controls.py" line="+49"/>
+        <location filename="../../app/window/layout/fit_controls.py" line="+49"/>
         <location filename="../../app/window/menus.py" line="+1"/>
         <source>&amp;Stop</source>
         <translation>&amp;Detener</translation>
@@ -1633,7 +1633,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Borrar trayectoria</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+71"/>
+        <location filename="../../app/window/device/connection.py" line="+71"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 indica su protocolo: conectando como %2</translation>
     </message>
@@ -1643,7 +1643,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>conectando con %1 (%2, %3 baudios)</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>bridge refused: %1</source>
         <translation>puente rechazado: %1</translation>
     </message>
@@ -1694,7 +1694,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>conectado a %1 en %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+36"/>
+        <location filename="../../app/window/device/machine_state.py" line="+37"/>
         <source>home set: the position is counted from here</source>
         <translation>origen fijado: la posición se cuenta desde aquí</translation>
     </message>
@@ -1704,7 +1704,8 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>punto absoluto alcanzado: la posición se cuenta desde aquí</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+52"/>
+        <location line="+114"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la posición es desconocida: este dispositivo no puede informar de ella; buscar el origen o fijar el origen</translation>
     </message>
@@ -1714,17 +1715,17 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>reconectado a %1: se ha vuelto a leer la posición</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>the device cannot be asked where it is: it goes on from (%1, %2, %3) mm, where it was left on this port (kept, not measured)</source>
         <translation>no se puede preguntar al dispositivo dónde está: continúa desde (%1, %2, %3) mm, donde se dejó en este puerto (guardada, no medida)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>posición desconocida: no se puede consultar al dispositivo; pulsar Origen o Fijar origen para empezar a contar</translation>
     </message>
     <message>
-        <location filename="../../app/window/fit_controls.py" line="-41"/>
+        <location filename="../../app/window/layout/fit_controls.py" line="-41"/>
         <source>the device</source>
         <translation>el dispositivo</translation>
     </message>
@@ -1749,7 +1750,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Descartar comandos en cola</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+56"/>
+        <location filename="../../app/window/device/connection.py" line="+57"/>
         <source>port %1 appeared</source>
         <translation>apareció el puerto %1</translation>
     </message>
@@ -1759,12 +1760,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>reconectando con %1</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-281"/>
         <source>port %1 disappeared</source>
         <translation>desapareció el puerto %1</translation>
     </message>
     <message>
-        <location line="+292"/>
+        <location line="+294"/>
         <source>%1 on %2</source>
         <translation>%1 en %2</translation>
     </message>
@@ -1779,7 +1780,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>límites de recorrido: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+113"/>
+        <location filename="../../app/window/device/job_desk.py" line="+115"/>
         <source>not connected: %1 not sent</source>
         <translation>no conectado: %1 sin enviar</translation>
     </message>
@@ -1858,44 +1859,43 @@ Send them anyway?</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+64"/>
+        <location filename="../../app/window/device/machine_state.py" line="+65"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nuevo origen: la trayectoria se desplaza (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-147"/>
         <source>the device reported an error: %1</source>
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="-107"/>
-        <location filename="../../app/window/machine_state.py" line="+5"/>
+        <location filename="../../app/window/device/connection.py" line="-108"/>
+        <location filename="../../app/window/device/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>dispositivo: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="-11"/>
+        <location filename="../../app/window/device/job_desk.py" line="-11"/>
         <source>%1 failed: %2</source>
         <translation>%1 falló: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="-90"/>
-        <location line="+375"/>
+        <location filename="../../app/window/device/machine_state.py" line="-115"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origen confirmado: la posición se cuenta desde aquí</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="+201"/>
         <source>position unknown: the device cannot be asked and its frames carry absolute targets, so a jog is refused; Set Home where the stage stands, Home, or Go to an absolute point first</source>
         <translation>posición desconocida: no se puede consultar al dispositivo y sus tramas llevan destinos absolutos, así que se rechaza el desplazamiento; pulsar primero Fijar origen donde está la platina, Origen, o Ir a un punto absoluto</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+204"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>la velocidad %1 mm/s se relee como %2 mm/s (el dispositivo redondea)</translation>
     </message>
     <message>
-        <location filename="../../app/window/layouts.py" line="+127"/>
+        <location filename="../../app/window/layout/layouts.py" line="+127"/>
         <source>&amp;Operate</source>
         <translation>&amp;Operar</translation>
     </message>
@@ -1945,22 +1945,22 @@ Send them anyway?</source>
         <translation>este dispositivo tiene un panel de configuración: %1 para Configurar</translation>
     </message>
     <message>
-        <location filename="../../app/window/program_pause.py" line="+58"/>
+        <location filename="../../app/window/device/program_pause.py" line="+22"/>
         <source>paused: nothing more is sent; the move under way finishes (this device has no feed hold)</source>
         <translation>en pausa: no se envía nada más; el movimiento en curso termina (este dispositivo no tiene retención de avance)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+4"/>
         <source>resumed: sending the program again</source>
         <translation>reanudado: se vuelve a enviar el programa</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+1"/>
         <source>paused: nothing more is sent; the device still holds %1 move(s) and runs them (its protocol has no feed hold): it stands still in about %2 s; Stop flushes them now</source>
         <translation>en pausa: no se envía nada más; el dispositivo aún tiene %1 movimiento(s) y los ejecuta (su protocolo no tiene retención de avance): se detendrá en unos %2 s; Detener los descarta ahora</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+5"/>
         <source>paused: the device has run what it held; the stage stands still</source>
         <translation>en pausa: el dispositivo ha ejecutado lo que tenía; la platina está detenida</translation>
     </message>
@@ -2006,7 +2006,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/window/parameter_dock.py" line="+34"/>
+        <location filename="../../app/window/docks/parameter_dock.py" line="+34"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>el dispositivo tiene ahora %1: el firmware lo impone tras cada escritura</translation>
     </message>
@@ -2557,7 +2557,7 @@ Send them anyway?</source>
 <context>
     <name>PortWatcher</name>
     <message>
-        <location filename="../../app/window/ports.py" line="+22"/>
+        <location filename="../../app/window/device/ports.py" line="+22"/>
         <source>serial port</source>
         <translation>puerto serie</translation>
     </message>
@@ -3144,7 +3144,7 @@ La vista 2D muestra las mismas posiciones.</translation>
 <context>
     <name>ProgramDock</name>
     <message>
-        <location filename="../../app/window/program_dock.py" line="+181"/>
+        <location filename="../../app/window/docks/program_dock.py" line="+181"/>
         <source>program %1 refused: %2</source>
         <translation>programa %1 rechazado: %2</translation>
     </message>
@@ -3214,7 +3214,7 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">Cargar un programa: CSV con x,y,z,speed (mm, mm/s) o JSON</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Save…</source>
         <translation>Guardar…</translation>
     </message>
@@ -3255,12 +3255,12 @@ La vista 2D muestra las mismas posiciones.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+359"/>
+        <location line="+366"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;usa</translation>
     </message>
     <message>
-        <location line="-356"/>
+        <location line="-363"/>
         <source>&amp;Stop</source>
         <translation>&amp;Detener</translation>
     </message>
@@ -3269,12 +3269,12 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation type="vanished">No enviar nada más y vaciar la cola del dispositivo (STOP)</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-55"/>
         <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
         <translation>Programas (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;Dibujos DXF (*.dxf);;Dibujos SVG (*.svg);;Puntos (*.csv *.json);;Todos los archivos (*)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
         <translation>Cargar un programa: G-code, DXF o SVG, o puntos (CSV con x,y,z,speed en mm y mm/s, o JSON)</translation>
     </message>
@@ -3284,12 +3284,12 @@ La vista 2D muestra las mismas posiciones.</translation>
         <translation>Ejecutar el programa en el dispositivo (comprobado antes con la caja)</translation>
     </message>
     <message>
-        <location line="+344"/>
+        <location line="+351"/>
         <source>Send nothing more until Resume (a device&apos;s queued moves go on)</source>
         <translation>No enviar nada más hasta Reanudar (los movimientos en cola del dispositivo continúan)</translation>
     </message>
     <message>
-        <location line="-337"/>
+        <location line="-344"/>
         <source>Send nothing more and stop the device (its queue flushed)</source>
         <translation>No enviar nada más y detener el dispositivo (se vacía su cola)</translation>
     </message>
@@ -3427,12 +3427,12 @@ No apto para este programa: %2</translation>
         <translation>no conectado a un dispositivo</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+20"/>
         <source>motion is off</source>
         <translation>el movimiento está desactivado</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1
 Refused: %2</source>
         <translation>%1
@@ -3479,7 +3479,7 @@ Ahora no: %2</translation>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/window/traffic_display.py" line="+16"/>
+        <location filename="../../app/window/console/display.py" line="+16"/>
         <source>text</source>
         <translation>texto</translation>
     </message>
@@ -3509,7 +3509,7 @@ Ahora no: %2</translation>
         <translation>delta</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_export.py" line="+18"/>
+        <location filename="../../app/window/console/export.py" line="+18"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
@@ -3534,7 +3534,7 @@ Ahora no: %2</translation>
         <translation>%1 línea exportada a %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_display.py" line="+26"/>
+        <location filename="../../app/window/console/display.py" line="+26"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
         <translation>Bytes como texto (escapes \r \n \xNN), hex (47 45 54) o mixto (texto, &lt;0A&gt; para el resto)</translation>
     </message>
@@ -3554,7 +3554,7 @@ Ahora no: %2</translation>
         <translation>Mostrar la columna de tiempo</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_filter_bar.py" line="+57"/>
+        <location filename="../../app/window/console/filter_bar.py" line="+57"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
@@ -3604,7 +3604,7 @@ Ahora no: %2</translation>
         <translation>Mostrar solo las líneas que coinciden con esta expresión regular (sin distinguir mayúsculas) en su dirección, tipo, hex, texto o significado, p. ej. error|FA00</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+121"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+121"/>
         <source>paused</source>
         <translation>en pausa</translation>
     </message>
@@ -3614,7 +3614,7 @@ Ahora no: %2</translation>
         <translation>Las líneas nuevas no desplazan la vista: bajar hasta el final para seguirlas</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_filter_bar.py" line="+12"/>
+        <location filename="../../app/window/console/filter_bar.py" line="+12"/>
         <source>search (regex)</source>
         <translation>buscar (regex)</translation>
     </message>
@@ -3634,12 +3634,12 @@ Ahora no: %2</translation>
         <translation>Coincidencia siguiente (F3)</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_status.py" line="+45"/>
+        <location filename="../../app/window/console/status.py" line="+45"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
         <translation>Líneas de la sesión, mostradas, consultas ocultas, errores, coincidencias</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+18"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+18"/>
         <source>Export…</source>
         <translation>Exportar…</translation>
     </message>
@@ -3678,7 +3678,7 @@ Ahora no: %2</translation>
         <translation type="vanished">%1 líneas alcanzaron el límite de la consola y se borraron; el registro de sesión las conserva</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_status.py" line="+16"/>
+        <location filename="../../app/window/console/status.py" line="+16"/>
         <source>%1 line</source>
         <translation>%1 línea</translation>
     </message>
@@ -3733,17 +3733,17 @@ Ahora no: %2</translation>
         <translation>La consola conserva las %1 líneas más recientes (Ajustes): las más antiguas se descartan; el registro de sesión en disco conserva todas las líneas</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+114"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+114"/>
         <source>export failed: %1</source>
         <translation>exportación fallida: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_export.py" line="+2"/>
+        <location filename="../../app/window/console/export.py" line="+2"/>
         <source>exported %1 lines to %2</source>
         <translation>%1 líneas exportadas a %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+60"/>
+        <location filename="../../app/window/console/table.py" line="+60"/>
         <source>motion</source>
         <translation>movimiento</translation>
     </message>
@@ -4287,7 +4287,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+41"/>
+        <location filename="../../widgets/speed_control.py" line="+53"/>
         <source>Speed:</source>
         <translation>Velocidad:</translation>
     </message>
@@ -4303,17 +4303,17 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+34"/>
+        <location line="+45"/>
         <source>Send the speed in the field to the device</source>
         <translation>Enviar al dispositivo la velocidad del campo</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-40"/>
         <source>The speed the device reports (it may round)</source>
         <translation>La velocidad que indica el dispositivo (puede redondearla)</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+122"/>
         <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
         <translation>Velocidad, de %1 a %2 in/s; pulsar Enter o Aplicar para enviar</translation>
     </message>
@@ -4477,7 +4477,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>TrafficModel</name>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="-21"/>
+        <location filename="../../app/window/console/table.py" line="-21"/>
         <source>Line</source>
         <translation>Línea</translation>
     </message>
@@ -4794,7 +4794,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>WindowTools</name>
     <message>
-        <location filename="../../app/window/window_tools.py" line="+58"/>
+        <location filename="../../app/window/window_tools.py" line="+48"/>
         <source>Macros</source>
         <translation>Macros</translation>
     </message>
@@ -4894,7 +4894,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>WorkFrame</name>
     <message>
-        <location filename="../../app/window/work_frame.py" line="+59"/>
+        <location filename="../../app/window/docks/work_frame.py" line="+59"/>
         <source>work coordinates: %1</source>
         <translation>coordenadas de trabajo: %1</translation>
     </message>
@@ -4926,7 +4926,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+16"/>
+        <location filename="message_templates.py" line="+10"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>hacia ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5001,7 +5001,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>interrumpido: detenido en ({x:g}, {y:g}, {z:g}) mm (la parada de {protocol} se confirmó; su cola está vaciada)</translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location line="-17"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>uso: {usage} (se recibieron {count} argumentos)</translation>
     </message>
@@ -5026,7 +5026,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>uso: {usage}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+25"/>
         <source>--kind {kind} refused: --kind is for jog only (move is in mm)</source>
         <translation>--kind {kind} rechazado: --kind solo sirve para jog (move va en mm)</translation>
     </message>
@@ -5041,7 +5041,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>--kind {kind} rechazado: los movimientos de {protocol} son {kinds}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s</source>
         <translation>velocidad de {speed:g} mm/s rechazada: el dispositivo admite de {low:g} a {high:g} mm/s</translation>
     </message>
@@ -5051,7 +5051,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>velocidad de {speed:g} mm/s rechazada ({error})</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>raw move to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>movimiento en bruto hacia ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5060,7 +5060,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation type="vanished">{file} no indica ningún protocolo (sin nota de conexión: un archivo de motionctl --log o una captura spy:// no la tienen): indicar --protocol</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-10"/>
         <source>{file}: its connection note: {error}</source>
         <translation>{file}: su nota de conexión: {error}</translation>
     </message>
@@ -5085,7 +5085,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>se rechaza la escala SVG {value:g}: debe ser mayor que 0</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+10"/>
         <source>macro {name} ({count} step)</source>
         <translation>macro {name} ({count} paso)</translation>
     </message>
@@ -5464,7 +5464,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{message} (puede que aún se esté moviendo: {protocol} no responde nada hasta que termina un movimiento bloqueante; volver a intentarlo cuando se haya detenido)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+87"/>
         <source>no modem control lines</source>
         <translation>sin líneas de control de módem</translation>
     </message>
@@ -5489,12 +5489,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{line} inactiva</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+32"/>
         <source>unreadable: {error}</source>
         <translation>ilegible: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+29"/>
         <source>error {code}: {message}</source>
         <translation>error {code}: {message}</translation>
     </message>
@@ -5549,7 +5549,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>una trama ilegible ({reason}): {bytes}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-95"/>
         <source>a directory</source>
         <translation>un directorio</translation>
     </message>
@@ -5649,7 +5649,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>los datos SysEx deben ser de 7 bits; se recibió {byte:#04x}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+352"/>
         <source>{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)</source>
         <translation>{source} no indica ningún protocolo: decodificado como {protocol}, el protocolo que revela su tráfico ({frames} tramas reconocidas)</translation>
     </message>
@@ -5679,7 +5679,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{file}: vacío, no es un registro de Motion Panel ni una captura spy:// de pyserial (el formato raw de spy deja su archivo vacío); {hint}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-436"/>
         <source>the device reported: {reported}</source>
         <translation>el dispositivo informó: {reported}</translation>
     </message>
@@ -5774,7 +5774,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>el movimiento a {target} no terminó en {seconds:.1f} s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-24"/>
         <source>no protocol to read them with</source>
         <translation>no hay ningún protocolo con el que interpretarlos</translation>
     </message>
@@ -5804,7 +5804,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{what}: no es un movimiento que el panel pueda comprobar</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+217"/>
         <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
         <translation>{what} {text!r} no es un número que acepte el dispositivo: usar dígitos con un signo opcional y un punto decimal, p. ej. -12.5</translation>
     </message>
@@ -5819,7 +5819,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{what} {value:g} está fuera de rango: el dispositivo admite como máximo ±{limit:g}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-199"/>
         <source>{source}: not a parameter profile: {error}</source>
         <translation>{source}: no es un perfil de parámetros: {error}</translation>
     </message>
@@ -5894,7 +5894,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>no se puede escribir el perfil {path}: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+186"/>
         <source>{low} to {high} in steps of {step}</source>
         <translation>de {low} a {high} en pasos de {step}</translation>
     </message>
@@ -5939,7 +5939,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>parámetro desconocido {name!r}: usar un nombre o un id 1..{count}; &apos;motionctl ... param list&apos; los enumera</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-193"/>
         <source>its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)</source>
         <translation>sus tramas llevan destinos absolutos, así que un movimiento relativo necesita la posición: usar primero Fijar origen donde está la platina, Origen, o mover a un punto absoluto (en el panel, o motionctl set-home, home o move X Y Z)</translation>
     </message>
@@ -5984,7 +5984,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{protocol} no tiene consulta de identidad: no se puede preguntar al dispositivo qué es</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+359"/>
         <source>{where}: {name} {value!r} is not a number</source>
         <translation>{where}: {name} {value!r} no es un número</translation>
     </message>
@@ -5994,12 +5994,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{where}: {name} no es un número float32 finito</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-14"/>
         <source>{where}: {name} {value!r} is not a finite float32 number</source>
         <translation>{where}: {name} {value!r} no es un número float32 finito</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+15"/>
         <source>{where}: speed {speed:g} mm/s must be above 0</source>
         <translation>{where}: la velocidad {speed:g} mm/s debe ser mayor que 0</translation>
     </message>
@@ -6069,22 +6069,37 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{source}: más de {count} puntos</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-45"/>
         <source>program</source>
         <translation>programa</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+46"/>
         <source>cannot write the program {path}: {error}</source>
         <translation>no se puede escribir el programa {path}: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-169"/>
         <source>this looks like a {found} controller, not {expected}</source>
         <translation>parece un controlador {found}, no {expected}</translation>
     </message>
     <message>
+        <location line="-338"/>
+        <source>{what} {text!r} refused: a whole number is needed</source>
+        <translation>{what} {text!r} rechazado: se necesita un número entero</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>radius {radius:g} mm refused: it must be above 0</source>
+        <translation>radio de {radius:g} mm rechazado: debe ser mayor que 0</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;{command}&apos; is a {owner} command, not {protocol}&apos;s</source>
+        <translation>«{command}» es una orden de {owner}, no de {protocol}</translation>
+    </message>
+    <message>
+        <location line="+193"/>
         <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
         <translation>{setting} {value} rechazado: de {minimum:g} a {maximum:g} {unit}</translation>
     </message>
@@ -6109,7 +6124,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{protocol} solo admite movimientos lineales (se recibió {kind!r})</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{protocol} cannot read sent frames</source>
         <translation>{protocol} no puede interpretar las tramas enviadas</translation>
     </message>
@@ -6249,7 +6264,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{name} {params!r} no son tres números tal como los lee el firmware</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+12"/>
         <source>Motor steps per turn</source>
         <translation>Pasos del motor por vuelta</translation>
     </message>
@@ -6404,7 +6419,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>un STEPPER_STEP de {count} bytes de datos, no 6</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>framing</source>
         <translation>trama incorrecta</translation>
     </message>
@@ -6509,7 +6524,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>trama {number} ({words})</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-28"/>
         <source>a field holds 1 to 255 values, not {count}</source>
         <translation>un campo contiene de 1 a 255 valores, no {count}</translation>
     </message>
@@ -6549,7 +6564,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>byte {index}: {count} valores {kind} sobrepasan el final de los datos</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+34"/>
         <source>Encoder ticks per millimetre</source>
         <translation>Cuentas del encoder por milímetro</translation>
     </message>
@@ -6634,7 +6649,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>acción {number}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+46"/>
         <source>move package confirmed</source>
         <translation>paquete de movimiento confirmado</translation>
     </message>
@@ -6893,7 +6908,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>esta revisión del firmware nunca lee {parameter}: los movimientos no cambian</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-92"/>
         <source>Steps per move</source>
         <translation>Pasos por movimiento</translation>
     </message>
@@ -7138,17 +7153,16 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>0 polea de correa, 1 husillo (este firmware impone 1 tras cada escritura)</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>protocol {name!r} is not implemented yet</source>
-        <translation>el protocolo {name!r} aún no está implementado</translation>
+        <translation type="vanished">el protocolo {name!r} aún no está implementado</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-44"/>
         <source>unknown protocol {name!r} (known: {known})</source>
         <translation>protocolo desconocido {name!r} (conocidos: {known})</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+101"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
         <translation>{protocol} no tiene comando de parada: el dispositivo termina lo que se le envió</translation>
     </message>
@@ -7168,7 +7182,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{baud} baudios rechazado: debe ser un número positivo de bits por segundo</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+91"/>
         <source>capture with spy&apos;s default hexdump format: spy://PORT?file=FILE, without raw</source>
         <translation>capturar con el formato hexdump predeterminado de spy: spy://PORT?file=FILE, sin raw</translation>
     </message>
@@ -7203,12 +7217,22 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{source}: no contiene tráfico (ni está en el formato raw de spy); {hint}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-25"/>
         <source>{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)</source>
         <translation>{error} (tras {rounds} rondas; antes se confirmaron {acknowledged} de {total} instrucciones)</translation>
     </message>
     <message>
+        <location line="-175"/>
+        <source>protocol {name!r} cannot be loaded: {error}</source>
+        <translation>el protocolo {name!r} no se puede cargar: {error}</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>protocol {name!r}: {target} is not a protocol class</source>
+        <translation>protocolo {name!r}: {target} no es una clase de protocolo</translation>
+    </message>
+    <message>
+        <location line="+108"/>
         <source>{name}</source>
         <translation>{name}</translation>
     </message>
@@ -7288,7 +7312,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{name}: no hay ninguna capa {layer} con líneas, arcos o curvas; capas del dibujo: {layers}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{name} line {number}</source>
         <translation>{name} línea {number}</translation>
     </message>
@@ -7368,7 +7392,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{where}: {first} y {second} no pueden estar en una misma línea</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{name}: more than {count:,} lines, too many for a program</source>
         <translation>{name}: más de {count:,} líneas, demasiadas para un programa</translation>
     </message>
@@ -7428,7 +7452,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{where}: se rechaza la velocidad {speed:g} mm/s: el dispositivo admite de {low:g} a {high:g} mm/s; no se ha enviado nada</translation>
     </message>
     <message>
-        <location line="-480"/>
+        <location line="-507"/>
         <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
         <translation>{command} rechazado: el motor paso a paso no está configurado para {port} (la placa lo olvida en cada reinicio y no hay ninguna configuración guardada para este puerto); ejecutar motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 con los pasos por revolución y los pines de su motor (o Configurar en la Configuración del motor del panel): se guarda y se vuelve a enviar en cada ejecución</translation>
     </message>
@@ -7438,12 +7462,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{file} no indica ningún protocolo (sin nota de conexión) y ningún protocolo reconoce su tráfico: indicar --protocol</translation>
     </message>
     <message>
-        <location line="+327"/>
+        <location line="+398"/>
         <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
         <translation>La velocidad no se puede fijar aquí: esta revisión del firmware temporiza sus pasos solo a partir de step_delay_instantaneous (15, 16), no de input_speed_steady (21, 22). &quot;dispositivo:&quot; es la velocidad a la que avanza X (15 en alto más 16 en bajo por paso); cambiar 15 y 16 en la tabla de parámetros para modificarla.</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+40"/>
         <source>Y will not move: at these parameters the firmware&apos;s Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)</source>
         <translation>Y no se moverá: con estos parámetros el bucle Y del firmware no da ningún paso (ejecuta el recuento de rampa, 0; fijar 22 y 24 de modo que la longitud de rampa sea mayor que 0)</translation>
     </message>
@@ -7458,12 +7482,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{axis} se mueve {moved:.3f} mm, no {asked:.3f}: pasos enteros ({steps}), truncados como cuenta el firmware</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>{protocol} reports where it is: it is asked</source>
         <translation>{protocol} informa de dónde está: se le consulta</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+73"/>
         <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
         <translation>los movimientos del programa sin velocidad irían a la velocidad del dispositivo, {speed:g} mm/s, fuera de los {low:g} a {high:g} mm/s que admite: fijar antes la velocidad; no se ha enviado nada</translation>
     </message>
@@ -7478,7 +7502,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>el programa se abandonó durante una espera</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>SVG scale {scale:g} mm per unit must be above 0</source>
         <translation>la escala SVG {scale:g} mm por unidad debe ser mayor que 0</translation>
     </message>
@@ -7523,7 +7547,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{name}: sin ancho ni alto en mm, cm, in, pt, pc o px; 1 unidad se toma como {scale:g} mm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>{pattern!r} is not a regular expression: {error}</source>
         <translation>{pattern!r} no es una expresión regular: {error}</translation>
     </message>
@@ -7538,7 +7562,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{pattern!r}… es una expresión regular demasiado grande: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-349"/>
         <source>{url} is not open</source>
         <translation>{url} no está abierto</translation>
     </message>
@@ -7643,7 +7667,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>no se puede abrir {url}: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-67"/>
         <source>travel limits need a range for each of x, y and z</source>
         <translation>los límites de recorrido necesitan un rango para cada uno de x, y y z</translation>
     </message>
@@ -7703,7 +7727,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{earlier}; {later}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+296"/>
         <source>expected a sim:// URL, got {url!r}</source>
         <translation>se esperaba una URL sim://, se recibió {url!r}</translation>
     </message>
@@ -7728,7 +7752,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>no se puede abrir {port}: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-269"/>
         <source>{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first</source>
         <translation>{where} aceptó esta conexión y la cerró de inmediato{said}: probablemente otro cliente tiene el puerto (ser2net atiende a uno cada vez con max-connections: 1); cerrar primero ese cliente</translation>
     </message>
@@ -7753,7 +7777,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>tiempo de espera agotado al esperar la opción &apos;purge&apos;</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-34"/>
         <source>no axis {axis!r}: x, y or z</source>
         <translation>no existe el eje {axis!r}: x, y o z</translation>
     </message>

@@ -237,7 +237,7 @@ identique à l&apos;angle de départ&#xa0;: un cercle complet</translation>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/window/bridge_session.py" line="+93"/>
+        <location filename="../../app/window/device/bridge_session.py" line="+93"/>
         <source>the bridge failed: %1</source>
         <translation>la passerelle a échoué&#xa0;: %1</translation>
     </message>
@@ -729,7 +729,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+92"/>
+        <location filename="../../app/window/docks/device_docks.py" line="+93"/>
         <source>Not now: %1</source>
         <translation>Indisponible pour le moment&#xa0;: %1</translation>
     </message>
@@ -767,7 +767,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>DockLayout</name>
     <message>
-        <location filename="../../app/window/dock_layout.py" line="+16"/>
+        <location filename="../../app/window/layout/dock_layout.py" line="+16"/>
         <source>Stepper setup</source>
         <translation>Configuration du moteur</translation>
     </message>
@@ -942,7 +942,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>Jobs</name>
     <message>
-        <location filename="../../app/window/jobs.py" line="+25"/>
+        <location filename="../../app/window/device/jobs.py" line="+25"/>
         <source>move to (%1, %2, %3) mm</source>
         <translation>déplacement vers (%1, %2, %3) mm</translation>
     </message>
@@ -1040,7 +1040,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+33"/>
+        <location filename="../../widgets/jog_panel.py" line="+35"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>Touches&#xa0;: ←/→ X, ↑/↓ Y, Page préc/Page suiv Z, Maj ×10</translation>
     </message>
@@ -1052,7 +1052,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
 %1 (voir l&apos;indication ci-dessous pour savoir où les touches fonctionnent).</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
         <source>Step:</source>
         <translation>Pas&#xa0;:</translation>
     </message>
@@ -1078,7 +1078,7 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>%1 in</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+131"/>
         <source>Any step size (%1 to %2 in)</source>
         <translation>Pas quelconque (de %1 à %2 in)</translation>
     </message>
@@ -1088,12 +1088,12 @@ Toutes les coordonnées seront désormais mesurées à partir d&apos;ici.</trans
         <translation>Pas quelconque (de 0,001 à 1000 mm)</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+174"/>
         <source>%1; no jog</source>
         <translation>%1&#xa0;; aucun déplacement</translation>
     </message>
     <message>
-        <location line="-215"/>
+        <location line="-256"/>
         <source>keys active</source>
         <translation>touches actives</translation>
     </message>
@@ -1202,7 +1202,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/window/log_viewer.py" line="+48"/>
+        <location filename="../../app/window/console/log_viewer.py" line="+48"/>
         <source>(undecoded)</source>
         <translation>(non décodé)</translation>
     </message>
@@ -1285,7 +1285,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>MacroDock</name>
     <message>
-        <location filename="../../app/window/macro_dock.py" line="+30"/>
+        <location filename="../../app/window/docks/macro_dock.py" line="+30"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
         <translation>Macros Motion Panel (*.json);;Tous les fichiers (*)</translation>
     </message>
@@ -1482,7 +1482,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/window/fit_controls.py" line="+18"/>
+        <location filename="../../app/window/layout/fit_controls.py" line="+18"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>Aucune commande d&apos;arrêt sur %1&#xa0;: ceci vide les commandes pas encore envoyées&#xa0;; un mouvement déjà en cours sur l&apos;appareil se termine (Échap)</translation>
     </message>
@@ -1492,7 +1492,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Arrêter la platine immédiatement&#xa0;: interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+51"/>
+        <location filename="../../app/window/device/connection.py" line="+56"/>
         <source>simulated %1 device</source>
         <translation>appareil %1 simulé</translation>
     </message>
@@ -1502,7 +1502,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location filename="../../app/window/worker_link.py" line="+114"/>
+        <location filename="../../app/window/device/worker_link.py" line="+113"/>
         <source>no session log: %1</source>
         <translation>pas de journal de session&#xa0;: %1</translation>
     </message>
@@ -1602,7 +1602,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Mouvement</translation>
     </message>
     <message>
-        <location filename="../../app/window/fit_controls.py" line="+49"/>
+        <location filename="../../app/window/layout/fit_controls.py" line="+49"/>
         <location filename="../../app/window/menus.py" line="+1"/>
         <source>&amp;Stop</source>
         <translation>&amp;Arrêt</translation>
@@ -1633,7 +1633,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Effacer la trace</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+71"/>
+        <location filename="../../app/window/device/connection.py" line="+71"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 indique son protocole&#xa0;: connexion en tant que %2</translation>
     </message>
@@ -1643,7 +1643,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>connexion à %1 (%2, %3 bauds)</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>bridge refused: %1</source>
         <translation>passerelle refusée&#xa0;: %1</translation>
     </message>
@@ -1694,7 +1694,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>connecté à %1 sur %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+36"/>
+        <location filename="../../app/window/device/machine_state.py" line="+37"/>
         <source>home set: the position is counted from here</source>
         <translation>origine définie&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
@@ -1704,7 +1704,8 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>point absolu atteint&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+52"/>
+        <location line="+114"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la position est inconnue&#xa0;: cet appareil ne peut pas l&apos;indiquer&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
@@ -1714,17 +1715,17 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>reconnecté à %1&#xa0;: la position a été relue</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>the device cannot be asked where it is: it goes on from (%1, %2, %3) mm, where it was left on this port (kept, not measured)</source>
         <translation>l&apos;appareil ne peut pas être interrogé sur sa position&#xa0;: il repart de (%1, %2, %3) mm, là où il a été laissé sur ce port (conservée, non mesurée)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé&#xa0;; «&#xa0;Origine&#xa0;» ou «&#xa0;Définir l&apos;origine&#xa0;» pour commencer le décompte</translation>
     </message>
     <message>
-        <location filename="../../app/window/fit_controls.py" line="-41"/>
+        <location filename="../../app/window/layout/fit_controls.py" line="-41"/>
         <source>the device</source>
         <translation>l&apos;appareil</translation>
     </message>
@@ -1749,7 +1750,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Vider la file d&apos;attente</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+56"/>
+        <location filename="../../app/window/device/connection.py" line="+57"/>
         <source>port %1 appeared</source>
         <translation>port %1 apparu</translation>
     </message>
@@ -1759,12 +1760,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>reconnexion à %1</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-281"/>
         <source>port %1 disappeared</source>
         <translation>port %1 disparu</translation>
     </message>
     <message>
-        <location line="+292"/>
+        <location line="+294"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -1779,7 +1780,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>limites de course&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+113"/>
+        <location filename="../../app/window/device/job_desk.py" line="+115"/>
         <source>not connected: %1 not sent</source>
         <translation>non connecté&#xa0;: %1 non envoyé</translation>
     </message>
@@ -1858,44 +1859,43 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>%1&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+64"/>
+        <location filename="../../app/window/device/machine_state.py" line="+65"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>nouvelle origine&#xa0;: la trace est décalée de (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-147"/>
         <source>the device reported an error: %1</source>
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="-107"/>
-        <location filename="../../app/window/machine_state.py" line="+5"/>
+        <location filename="../../app/window/device/connection.py" line="-108"/>
+        <location filename="../../app/window/device/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>appareil&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="-11"/>
+        <location filename="../../app/window/device/job_desk.py" line="-11"/>
         <source>%1 failed: %2</source>
         <translation>échec de %1&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="-90"/>
-        <location line="+375"/>
+        <location filename="../../app/window/device/machine_state.py" line="-115"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origine confirmée&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="+201"/>
         <source>position unknown: the device cannot be asked and its frames carry absolute targets, so a jog is refused; Set Home where the stage stands, Home, or Go to an absolute point first</source>
         <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé et ses trames portent des cibles absolues, un déplacement est donc refusé&#xa0;; d&apos;abord «&#xa0;Définir l&apos;origine&#xa0;» là où se trouve la platine, «&#xa0;Origine&#xa0;», ou «&#xa0;Aller à&#xa0;» vers un point absolu</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+204"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>vitesse %1 mm/s relue comme %2 mm/s (l&apos;appareil arrondit)</translation>
     </message>
     <message>
-        <location filename="../../app/window/layouts.py" line="+127"/>
+        <location filename="../../app/window/layout/layouts.py" line="+127"/>
         <source>&amp;Operate</source>
         <translation>&amp;Pilotage</translation>
     </message>
@@ -1945,22 +1945,22 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>cet appareil a un panneau de configuration&#xa0;: %1 pour «&#xa0;Configuration&#xa0;»</translation>
     </message>
     <message>
-        <location filename="../../app/window/program_pause.py" line="+58"/>
+        <location filename="../../app/window/device/program_pause.py" line="+22"/>
         <source>paused: nothing more is sent; the move under way finishes (this device has no feed hold)</source>
         <translation>en pause&#xa0;: plus rien n&apos;est envoyé&#xa0;; le mouvement en cours se termine (cet appareil n&apos;a pas de suspension d&apos;avance)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+4"/>
         <source>resumed: sending the program again</source>
         <translation>repris&#xa0;: le programme est de nouveau envoyé</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+1"/>
         <source>paused: nothing more is sent; the device still holds %1 move(s) and runs them (its protocol has no feed hold): it stands still in about %2 s; Stop flushes them now</source>
         <translation>en pause&#xa0;: plus rien n&apos;est envoyé&#xa0;; l&apos;appareil contient encore %1 mouvement(s) et les exécute (son protocole n&apos;a pas de suspension d&apos;avance)&#xa0;: il sera immobile dans %2 s environ&#xa0;; «&#xa0;Arrêt&#xa0;» les annule tout de suite</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+5"/>
         <source>paused: the device has run what it held; the stage stands still</source>
         <translation>en pause&#xa0;: l&apos;appareil a exécuté ce qu&apos;il contenait&#xa0;; la platine est immobile</translation>
     </message>
@@ -2006,7 +2006,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/window/parameter_dock.py" line="+34"/>
+        <location filename="../../app/window/docks/parameter_dock.py" line="+34"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>l&apos;appareil contient maintenant %1&#xa0;: le firmware l&apos;impose après chaque écriture</translation>
     </message>
@@ -2557,7 +2557,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PortWatcher</name>
     <message>
-        <location filename="../../app/window/ports.py" line="+22"/>
+        <location filename="../../app/window/device/ports.py" line="+22"/>
         <source>serial port</source>
         <translation>port série</translation>
     </message>
@@ -3144,7 +3144,7 @@ La vue 2D montre les mêmes positions.</translation>
 <context>
     <name>ProgramDock</name>
     <message>
-        <location filename="../../app/window/program_dock.py" line="+181"/>
+        <location filename="../../app/window/docks/program_dock.py" line="+181"/>
         <source>program %1 refused: %2</source>
         <translation>programme %1 refusé&#xa0;: %2</translation>
     </message>
@@ -3214,7 +3214,7 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Charger un programme&#xa0;: CSV avec x,y,z,speed (mm, mm/s) ou JSON</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Save…</source>
         <translation>Enregistrer…</translation>
     </message>
@@ -3255,12 +3255,12 @@ La vue 2D montre les mêmes positions.</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+359"/>
+        <location line="+366"/>
         <source>P&amp;ause</source>
         <translation>Pa&amp;use</translation>
     </message>
     <message>
-        <location line="-356"/>
+        <location line="-363"/>
         <source>&amp;Stop</source>
         <translation>Arrê&amp;t</translation>
     </message>
@@ -3269,12 +3269,12 @@ La vue 2D montre les mêmes positions.</translation>
         <translation type="vanished">Ne plus rien envoyer et vider la file de l&apos;appareil (STOP)</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-55"/>
         <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
         <translation>Programmes (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;Dessins DXF (*.dxf);;Dessins SVG (*.svg);;Points (*.csv *.json);;Tous les fichiers (*)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
         <translation>Charger un programme&#xa0;: G-code, DXF ou SVG, ou des points (CSV avec x,y,z,vitesse en mm et mm/s, ou JSON)</translation>
     </message>
@@ -3284,12 +3284,12 @@ La vue 2D montre les mêmes positions.</translation>
         <translation>Exécuter le programme sur l&apos;appareil (vérifié d&apos;abord par rapport à la zone)</translation>
     </message>
     <message>
-        <location line="+344"/>
+        <location line="+351"/>
         <source>Send nothing more until Resume (a device&apos;s queued moves go on)</source>
         <translation>Ne plus rien envoyer jusqu&apos;à Reprendre (les mouvements en file de l&apos;appareil se poursuivent)</translation>
     </message>
     <message>
-        <location line="-337"/>
+        <location line="-344"/>
         <source>Send nothing more and stop the device (its queue flushed)</source>
         <translation>Ne plus rien envoyer et arrêter l&apos;appareil (sa file est vidée)</translation>
     </message>
@@ -3427,12 +3427,12 @@ Non applicable à ce programme&#xa0;: %2</translation>
         <translation>non connecté à un appareil</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+20"/>
         <source>motion is off</source>
         <translation>les mouvements sont désactivés</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1
 Refused: %2</source>
         <translation>%1
@@ -3479,7 +3479,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/window/traffic_display.py" line="+16"/>
+        <location filename="../../app/window/console/display.py" line="+16"/>
         <source>text</source>
         <translation>texte</translation>
     </message>
@@ -3509,7 +3509,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>delta</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_export.py" line="+18"/>
+        <location filename="../../app/window/console/export.py" line="+18"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
@@ -3534,7 +3534,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>%1 ligne exportée vers %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_display.py" line="+26"/>
+        <location filename="../../app/window/console/display.py" line="+26"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
         <translation>Octets en texte (échappements \r \n \xNN), en hex (47 45 54) ou en mixte (texte, &lt;0A&gt; pour le reste)</translation>
     </message>
@@ -3554,7 +3554,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Afficher la colonne du temps</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_filter_bar.py" line="+57"/>
+        <location filename="../../app/window/console/filter_bar.py" line="+57"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
@@ -3604,7 +3604,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>N&apos;afficher que les lignes dont le sens, le type, l&apos;hex, le texte ou la signification correspondent à cette expression régulière (sans tenir compte de la casse), par ex. error|FA00</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+121"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+121"/>
         <source>paused</source>
         <translation>en pause</translation>
     </message>
@@ -3614,7 +3614,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Les nouvelles lignes ne font pas défiler la vue&#xa0;: faire défiler jusqu&apos;en bas pour suivre</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_filter_bar.py" line="+12"/>
+        <location filename="../../app/window/console/filter_bar.py" line="+12"/>
         <source>search (regex)</source>
         <translation>rechercher (regex)</translation>
     </message>
@@ -3634,12 +3634,12 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>Correspondance suivante (F3)</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_status.py" line="+45"/>
+        <location filename="../../app/window/console/status.py" line="+45"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
         <translation>Lignes de la session, affichées, interrogations masquées, erreurs, correspondances</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+18"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+18"/>
         <source>Export…</source>
         <translation>Exporter…</translation>
     </message>
@@ -3678,7 +3678,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation type="vanished">%1 lignes ont atteint la limite de la console et ont été effacées&#xa0;; le journal de session les conserve</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_status.py" line="+16"/>
+        <location filename="../../app/window/console/status.py" line="+16"/>
         <source>%1 line</source>
         <translation>%1 ligne</translation>
     </message>
@@ -3733,17 +3733,17 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>La console conserve les %1 lignes les plus récentes (Réglages)&#xa0;: les plus anciennes en sont retirées, le journal de session sur disque conserve toutes les lignes</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+114"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+114"/>
         <source>export failed: %1</source>
         <translation>échec de l&apos;export&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_export.py" line="+2"/>
+        <location filename="../../app/window/console/export.py" line="+2"/>
         <source>exported %1 lines to %2</source>
         <translation>%1 lignes exportées vers %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+60"/>
+        <location filename="../../app/window/console/table.py" line="+60"/>
         <source>motion</source>
         <translation>mouvement</translation>
     </message>
@@ -4287,7 +4287,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+41"/>
+        <location filename="../../widgets/speed_control.py" line="+53"/>
         <source>Speed:</source>
         <translation>Vitesse&#xa0;:</translation>
     </message>
@@ -4303,17 +4303,17 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+34"/>
+        <location line="+45"/>
         <source>Send the speed in the field to the device</source>
         <translation>Envoyer à l&apos;appareil la vitesse saisie</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-40"/>
         <source>The speed the device reports (it may round)</source>
         <translation>La vitesse indiquée par l&apos;appareil (il peut l&apos;arrondir)</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+122"/>
         <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
         <translation>Vitesse, de %1 à %2 in/s&#xa0;; appuyer sur Entrée ou Appliquer pour envoyer</translation>
     </message>
@@ -4477,7 +4477,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>TrafficModel</name>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="-21"/>
+        <location filename="../../app/window/console/table.py" line="-21"/>
         <source>Line</source>
         <translation>Ligne</translation>
     </message>
@@ -4794,7 +4794,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>WindowTools</name>
     <message>
-        <location filename="../../app/window/window_tools.py" line="+58"/>
+        <location filename="../../app/window/window_tools.py" line="+48"/>
         <source>Macros</source>
         <translation>Macros</translation>
     </message>
@@ -4894,7 +4894,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>WorkFrame</name>
     <message>
-        <location filename="../../app/window/work_frame.py" line="+59"/>
+        <location filename="../../app/window/docks/work_frame.py" line="+59"/>
         <source>work coordinates: %1</source>
         <translation>coordonnées pièce&#xa0;: %1</translation>
     </message>
@@ -4926,7 +4926,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+16"/>
+        <location filename="message_templates.py" line="+10"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5001,7 +5001,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>interrompu&#xa0;: arrêté à ({x:g}, {y:g}, {z:g}) mm (l&apos;arrêt {protocol} a été acquitté&#xa0;; sa file est vidée)</translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location line="-17"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>usage&#xa0;: {usage} ({count} arguments reçus)</translation>
     </message>
@@ -5026,7 +5026,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>usage&#xa0;: {usage}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+25"/>
         <source>--kind {kind} refused: --kind is for jog only (move is in mm)</source>
         <translation>--kind {kind} refusé&#xa0;: --kind ne s&apos;applique qu&apos;à jog (move s&apos;exprime en mm)</translation>
     </message>
@@ -5041,7 +5041,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>--kind {kind} refusé&#xa0;: les mouvements {protocol} sont de type {kinds}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s</source>
         <translation>vitesse {speed:g} mm/s refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} mm/s</translation>
     </message>
@@ -5051,7 +5051,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>vitesse {speed:g} mm/s refusée ({error})</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>raw move to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>déplacement brut vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5060,7 +5060,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation type="vanished">{file} n&apos;indique aucun protocole (pas de note de connexion&#xa0;: un fichier motionctl --log ou une capture spy:// n&apos;en a pas)&#xa0;: indiquer --protocol</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-10"/>
         <source>{file}: its connection note: {error}</source>
         <translation>{file}&#xa0;: sa note de connexion&#xa0;: {error}</translation>
     </message>
@@ -5085,7 +5085,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>échelle SVG {value:g} refusée&#xa0;: elle doit être supérieure à 0</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+10"/>
         <source>macro {name} ({count} step)</source>
         <translation>macro {name} ({count} étape)</translation>
     </message>
@@ -5464,7 +5464,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{message} (il est peut-être encore en mouvement&#xa0;: {protocol} ne répond rien tant qu&apos;un mouvement bloquant n&apos;est pas terminé&#xa0;; réessayer une fois l&apos;appareil arrêté)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+87"/>
         <source>no modem control lines</source>
         <translation>aucune ligne de contrôle modem</translation>
     </message>
@@ -5489,12 +5489,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{line} inactif</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+32"/>
         <source>unreadable: {error}</source>
         <translation>illisible&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+29"/>
         <source>error {code}: {message}</source>
         <translation>erreur {code}&#xa0;: {message}</translation>
     </message>
@@ -5549,7 +5549,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>une trame illisible ({reason})&#xa0;: {bytes}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-95"/>
         <source>a directory</source>
         <translation>un répertoire</translation>
     </message>
@@ -5649,7 +5649,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>les données SysEx doivent être sur 7 bits&#xa0;; reçu {byte:#04x}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+352"/>
         <source>{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)</source>
         <translation>{source} n&apos;indique aucun protocole&#xa0;: décodé en {protocol}, le protocole que révèle son trafic ({frames} trames reconnues)</translation>
     </message>
@@ -5679,7 +5679,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{file}&#xa0;: vide, ni un journal Motion Panel ni une capture pyserial spy:// (le format raw de spy laisse son fichier vide)&#xa0;; {hint}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-436"/>
         <source>the device reported: {reported}</source>
         <translation>l&apos;appareil a signalé&#xa0;: {reported}</translation>
     </message>
@@ -5774,7 +5774,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>le déplacement vers {target} ne s&apos;est pas terminé en {seconds:.1f} s</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-24"/>
         <source>no protocol to read them with</source>
         <translation>aucun protocole pour les lire</translation>
     </message>
@@ -5804,7 +5804,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{what}&#xa0;: pas un déplacement que le panneau sait vérifier</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+217"/>
         <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
         <translation>{what} {text!r} n&apos;est pas un nombre accepté par l&apos;appareil&#xa0;: utiliser des chiffres, avec un signe facultatif et un seul point décimal, par ex. -12.5</translation>
     </message>
@@ -5819,7 +5819,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{what} {value:g} est hors plage&#xa0;: l&apos;appareil accepte au plus ±{limit:g}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-199"/>
         <source>{source}: not a parameter profile: {error}</source>
         <translation>{source}&#xa0;: pas un profil de paramètres&#xa0;: {error}</translation>
     </message>
@@ -5894,7 +5894,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>impossible d&apos;écrire le profil {path}&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+186"/>
         <source>{low} to {high} in steps of {step}</source>
         <translation>de {low} à {high} par pas de {step}</translation>
     </message>
@@ -5939,7 +5939,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>paramètre inconnu {name!r}&#xa0;: utiliser un nom ou un id 1..{count}&#xa0;; &apos;motionctl ... param list&apos; les liste</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-193"/>
         <source>its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)</source>
         <translation>ses trames portent des cibles absolues, un mouvement relatif a donc besoin de la position&#xa0;: d&apos;abord «&#xa0;Définir l&apos;origine&#xa0;» là où se trouve la platine, «&#xa0;Origine&#xa0;», ou un mouvement vers un point absolu (dans le panneau, ou motionctl set-home, home ou move X Y Z)</translation>
     </message>
@@ -5984,7 +5984,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{protocol} n&apos;a pas de requête d&apos;identification&#xa0;: l&apos;appareil ne peut pas être interrogé sur ce qu&apos;il est</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+359"/>
         <source>{where}: {name} {value!r} is not a number</source>
         <translation>{where}&#xa0;: {name} {value!r} n&apos;est pas un nombre</translation>
     </message>
@@ -5994,12 +5994,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{where}&#xa0;: {name} n&apos;est pas un nombre float32 fini</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-14"/>
         <source>{where}: {name} {value!r} is not a finite float32 number</source>
         <translation>{where}&#xa0;: {name} {value!r} n&apos;est pas un nombre float32 fini</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+15"/>
         <source>{where}: speed {speed:g} mm/s must be above 0</source>
         <translation>{where}&#xa0;: la vitesse {speed:g} mm/s doit être supérieure à 0</translation>
     </message>
@@ -6069,22 +6069,37 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{source}&#xa0;: plus de {count} points</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-45"/>
         <source>program</source>
         <translation>programme</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+46"/>
         <source>cannot write the program {path}: {error}</source>
         <translation>impossible d&apos;écrire le programme {path}&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-169"/>
         <source>this looks like a {found} controller, not {expected}</source>
         <translation>cela ressemble à un contrôleur {found}, pas {expected}</translation>
     </message>
     <message>
+        <location line="-338"/>
+        <source>{what} {text!r} refused: a whole number is needed</source>
+        <translation>{what} {text!r} refusé : un nombre entier est nécessaire</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>radius {radius:g} mm refused: it must be above 0</source>
+        <translation>rayon de {radius:g} mm refusé : il doit être supérieur à 0</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;{command}&apos; is a {owner} command, not {protocol}&apos;s</source>
+        <translation>« {command} » est une commande de {owner}, pas de {protocol}</translation>
+    </message>
+    <message>
+        <location line="+193"/>
         <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
         <translation>{setting} {value} refusé&#xa0;: de {minimum:g} à {maximum:g} {unit}</translation>
     </message>
@@ -6109,7 +6124,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>les mouvements {protocol} sont uniquement linéaires (reçu {kind!r})</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{protocol} cannot read sent frames</source>
         <translation>{protocol} ne sait pas lire les trames envoyées</translation>
     </message>
@@ -6249,7 +6264,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{name} {params!r} ne donne pas trois nombres tels que le firmware les lit</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+12"/>
         <source>Motor steps per turn</source>
         <translation>Pas moteur par tour</translation>
     </message>
@@ -6404,7 +6419,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>un STEPPER_STEP de {count} octets de données, au lieu de 6</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>framing</source>
         <translation>trame</translation>
     </message>
@@ -6509,7 +6524,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>trame {number} ({words})</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-28"/>
         <source>a field holds 1 to 255 values, not {count}</source>
         <translation>un champ contient de 1 à 255 valeurs, et non {count}</translation>
     </message>
@@ -6549,7 +6564,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>octet {index}&#xa0;: {count} valeurs {kind} dépassent la fin des données</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+34"/>
         <source>Encoder ticks per millimetre</source>
         <translation>Impulsions codeur par millimètre</translation>
     </message>
@@ -6634,7 +6649,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>action {number}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+46"/>
         <source>move package confirmed</source>
         <translation>paquet de mouvement confirmé</translation>
     </message>
@@ -6893,7 +6908,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>cette révision du firmware ne lit jamais {parameter}&#xa0;: les mouvements ne changent pas</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-92"/>
         <source>Steps per move</source>
         <translation>Pas par mouvement</translation>
     </message>
@@ -7138,17 +7153,16 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>0 poulie et courroie, 1 vis (ce firmware impose 1 après chaque écriture)</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>protocol {name!r} is not implemented yet</source>
-        <translation>le protocole {name!r} n&apos;est pas encore implémenté</translation>
+        <translation type="vanished">le protocole {name!r} n&apos;est pas encore implémenté</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-44"/>
         <source>unknown protocol {name!r} (known: {known})</source>
         <translation>protocole inconnu {name!r} (connus&#xa0;: {known})</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+101"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
         <translation>{protocol} n&apos;a pas de commande d&apos;arrêt&#xa0;: l&apos;appareil termine ce qui lui a été envoyé</translation>
     </message>
@@ -7168,7 +7182,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>débit de {baud} bauds refusé&#xa0;: un nombre positif de bits par seconde est attendu</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+91"/>
         <source>capture with spy&apos;s default hexdump format: spy://PORT?file=FILE, without raw</source>
         <translation>capturer au format hexdump par défaut de spy&#xa0;: spy://PORT?file=FILE, sans raw</translation>
     </message>
@@ -7203,12 +7217,22 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{source}&#xa0;: aucun trafic (ni format raw de spy)&#xa0;; {hint}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-25"/>
         <source>{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)</source>
         <translation>{error} (après {rounds} séries de tentatives&#xa0;; {acknowledged} instructions sur {total} avaient été acquittées auparavant)</translation>
     </message>
     <message>
+        <location line="-175"/>
+        <source>protocol {name!r} cannot be loaded: {error}</source>
+        <translation>le protocole {name!r} ne peut pas être chargé : {error}</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>protocol {name!r}: {target} is not a protocol class</source>
+        <translation>protocole {name!r} : {target} n’est pas une classe de protocole</translation>
+    </message>
+    <message>
+        <location line="+108"/>
         <source>{name}</source>
         <translation>{name}</translation>
     </message>
@@ -7288,7 +7312,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{name}&#xa0;: aucun calque {layer} avec des lignes, arcs ou courbes&#xa0;; calques du dessin&#xa0;: {layers}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{name} line {number}</source>
         <translation>{name} ligne {number}</translation>
     </message>
@@ -7368,7 +7392,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{where}&#xa0;: {first} et {second} ne peuvent pas figurer sur une même ligne</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{name}: more than {count:,} lines, too many for a program</source>
         <translation>{name}&#xa0;: plus de {count:,} lignes, trop pour un programme</translation>
     </message>
@@ -7428,7 +7452,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{where}&#xa0;: vitesse {speed:g} mm/s refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} mm/s&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
     <message>
-        <location line="-480"/>
+        <location line="-507"/>
         <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
         <translation>{command} refusé&#xa0;: le moteur pas à pas n&apos;est pas configuré pour {port} (la carte l&apos;oublie à chaque réinitialisation, et aucune configuration n&apos;est conservée pour ce port)&#xa0;; lancer motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 avec le nombre de pas par tour et les broches de votre moteur (ou «&#xa0;Configurer&#xa0;» dans la Configuration du moteur du panneau)&#xa0;: elle est conservée et renvoyée à chaque exécution</translation>
     </message>
@@ -7438,12 +7462,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{file} n&apos;indique aucun protocole (pas de note de connexion) et aucun protocole ne reconnaît son trafic&#xa0;: indiquer --protocol</translation>
     </message>
     <message>
-        <location line="+327"/>
+        <location line="+398"/>
         <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
         <translation>La vitesse ne peut pas être réglée ici&#xa0;: cette révision du firmware cadence ses pas uniquement sur step_delay_instantaneous (15, 16), et non sur input_speed_steady (21, 22). «&#xa0;appareil&#xa0;:&#xa0;» est la vitesse à laquelle X fait ses pas (15 à l&apos;état haut plus 16 à l&apos;état bas par pas)&#xa0;; modifier 15 et 16 dans le tableau des paramètres pour la changer.</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+40"/>
         <source>Y will not move: at these parameters the firmware&apos;s Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)</source>
         <translation>Y ne bougera pas&#xa0;: avec ces paramètres, la boucle Y du firmware ne fait aucun pas (elle exécute le compte de rampe, 0&#xa0;; régler 22 et 24 pour que la longueur de rampe soit supérieure à 0)</translation>
     </message>
@@ -7458,12 +7482,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{axis} se déplace de {moved:.3f} mm, et non de {asked:.3f}&#xa0;: pas entiers ({steps}), tronqués comme les compte le firmware</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>{protocol} reports where it is: it is asked</source>
         <translation>{protocol} indique où il se trouve&#xa0;: il est interrogé</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+73"/>
         <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
         <translation>les mouvements du programme sans vitesse se feraient à la vitesse de l&apos;appareil, {speed:g} mm/s, hors de la plage de {low:g} à {high:g} mm/s qu&apos;il accepte&#xa0;: régler d&apos;abord la vitesse&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
@@ -7478,7 +7502,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>le programme a été abandonné pendant une temporisation</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>SVG scale {scale:g} mm per unit must be above 0</source>
         <translation>l&apos;échelle SVG {scale:g} mm par unité doit être supérieure à 0</translation>
     </message>
@@ -7523,7 +7547,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{name}&#xa0;: pas de largeur ni de hauteur en mm, cm, in, pt, pc ou px&#xa0;; 1 unité comptée pour {scale:g} mm</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>{pattern!r} is not a regular expression: {error}</source>
         <translation>{pattern!r} n&apos;est pas une expression régulière&#xa0;: {error}</translation>
     </message>
@@ -7538,7 +7562,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{pattern!r}… est une expression régulière trop grande&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-349"/>
         <source>{url} is not open</source>
         <translation>{url} n&apos;est pas ouvert</translation>
     </message>
@@ -7643,7 +7667,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>impossible d&apos;ouvrir {url}&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-67"/>
         <source>travel limits need a range for each of x, y and z</source>
         <translation>les limites de course exigent une plage pour chacun de x, y et z</translation>
     </message>
@@ -7703,7 +7727,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{earlier}&#xa0;; {later}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+296"/>
         <source>expected a sim:// URL, got {url!r}</source>
         <translation>URL sim:// attendue, reçu {url!r}</translation>
     </message>
@@ -7728,7 +7752,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>impossible d&apos;ouvrir {port}&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-269"/>
         <source>{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first</source>
         <translation>{where} a accepté cette connexion et l&apos;a fermée aussitôt{said}&#xa0;: un autre client occupe probablement le port (ser2net n&apos;en sert qu&apos;un à la fois avec max-connections: 1)&#xa0;; fermer d&apos;abord ce client</translation>
     </message>
@@ -7753,7 +7777,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>délai dépassé en attendant l&apos;option &apos;purge&apos;</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-34"/>
         <source>no axis {axis!r}: x, y or z</source>
         <translation>pas d&apos;axe {axis!r}&#xa0;: x, y ou z</translation>
     </message>

@@ -237,7 +237,7 @@ the same as the start angle: a full circle</source>
 <context>
     <name>BridgeSession</name>
     <message>
-        <location filename="../../app/window/bridge_session.py" line="+93"/>
+        <location filename="../../app/window/device/bridge_session.py" line="+93"/>
         <source>the bridge failed: %1</source>
         <translation>桥接失败：%1</translation>
     </message>
@@ -729,7 +729,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DeviceDocks</name>
     <message>
-        <location filename="../../app/window/device_docks.py" line="+92"/>
+        <location filename="../../app/window/docks/device_docks.py" line="+93"/>
         <source>Not now: %1</source>
         <translation>暂不可用：%1</translation>
     </message>
@@ -767,7 +767,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>DockLayout</name>
     <message>
-        <location filename="../../app/window/dock_layout.py" line="+16"/>
+        <location filename="../../app/window/layout/dock_layout.py" line="+16"/>
         <source>Stepper setup</source>
         <translation>步进电机设置</translation>
     </message>
@@ -942,7 +942,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>Jobs</name>
     <message>
-        <location filename="../../app/window/jobs.py" line="+25"/>
+        <location filename="../../app/window/device/jobs.py" line="+25"/>
         <source>move to (%1, %2, %3) mm</source>
         <translation>移动到 (%1, %2, %3) mm</translation>
     </message>
@@ -1040,7 +1040,7 @@ All coordinates will be measured from here from now on.</source>
 <context>
     <name>JogPanel</name>
     <message>
-        <location filename="../../widgets/jog_panel.py" line="+33"/>
+        <location filename="../../widgets/jog_panel.py" line="+35"/>
         <source>Keys: ←/→ X, ↑/↓ Y, PgUp/PgDn Z, Shift ×10</source>
         <translation>按键：←/→ X，↑/↓ Y，PgUp/PgDn Z，Shift ×10</translation>
     </message>
@@ -1052,7 +1052,7 @@ All coordinates will be measured from here from now on.</source>
 %1（按键在何处有效，见下方提示）。</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+38"/>
         <source>Step:</source>
         <translation>步长：</translation>
     </message>
@@ -1078,7 +1078,7 @@ All coordinates will be measured from here from now on.</source>
         <translation>%1 in</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+131"/>
         <source>Any step size (%1 to %2 in)</source>
         <translation>任意步长（%1 至 %2 in）</translation>
     </message>
@@ -1088,12 +1088,12 @@ All coordinates will be measured from here from now on.</source>
         <translation>任意步长（0.001 至 1000 mm）</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+174"/>
         <source>%1; no jog</source>
         <translation>%1；无法点动</translation>
     </message>
     <message>
-        <location line="-215"/>
+        <location line="-256"/>
         <source>keys active</source>
         <translation>按键已启用</translation>
     </message>
@@ -1202,7 +1202,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>LogViewer</name>
     <message>
-        <location filename="../../app/window/log_viewer.py" line="+48"/>
+        <location filename="../../app/window/console/log_viewer.py" line="+48"/>
         <source>(undecoded)</source>
         <translation>（未解码）</translation>
     </message>
@@ -1285,7 +1285,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>MacroDock</name>
     <message>
-        <location filename="../../app/window/macro_dock.py" line="+30"/>
+        <location filename="../../app/window/docks/macro_dock.py" line="+30"/>
         <source>Motion Panel macros (*.json);;All files (*)</source>
         <translation>Motion Panel 宏 (*.json);;所有文件 (*)</translation>
     </message>
@@ -1482,7 +1482,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
 <context>
     <name>MainWindow</name>
     <message>
-        <location filename="../../app/window/fit_controls.py" line="+18"/>
+        <location filename="../../app/window/layout/fit_controls.py" line="+18"/>
         <source>%1 has no stop command: this drops the commands not yet sent; a move already under way on the device finishes (Esc)</source>
         <translation>%1 没有停止命令：此操作会丢弃尚未发送的命令；设备上已在进行的移动会继续完成（Esc）</translation>
     </message>
@@ -1492,7 +1492,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>立即停止平台：中止正在进行的移动，并清空队列（Esc）</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+51"/>
+        <location filename="../../app/window/device/connection.py" line="+56"/>
         <source>simulated %1 device</source>
         <translation>模拟的 %1 设备</translation>
     </message>
@@ -1502,7 +1502,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>Motion Panel</translation>
     </message>
     <message>
-        <location filename="../../app/window/worker_link.py" line="+114"/>
+        <location filename="../../app/window/device/worker_link.py" line="+113"/>
         <source>no session log: %1</source>
         <translation>无会话日志：%1</translation>
     </message>
@@ -1602,7 +1602,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>运动(&amp;M)</translation>
     </message>
     <message>
-        <location filename="../../app/window/fit_controls.py" line="+49"/>
+        <location filename="../../app/window/layout/fit_controls.py" line="+49"/>
         <location filename="../../app/window/menus.py" line="+1"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
@@ -1633,7 +1633,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>清除轨迹(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+71"/>
+        <location filename="../../app/window/device/connection.py" line="+71"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 已指明其协议：按 %2 连接</translation>
     </message>
@@ -1643,7 +1643,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在连接 %1（%2，%3 波特）</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+88"/>
         <source>bridge refused: %1</source>
         <translation>桥接被拒绝：%1</translation>
     </message>
@@ -1694,7 +1694,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+36"/>
+        <location filename="../../app/window/device/machine_state.py" line="+37"/>
         <source>home set: the position is counted from here</source>
         <translation>已设为原点：位置从此处开始计数</translation>
     </message>
@@ -1704,7 +1704,8 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已到达绝对点：位置从此处开始计数</translation>
     </message>
     <message>
-        <location line="+132"/>
+        <location line="+52"/>
+        <location line="+114"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>位置未知：此设备无法报告其位置；请回原点或设为原点</translation>
     </message>
@@ -1714,17 +1715,17 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已重新连接到 %1：已重新读取位置</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>the device cannot be asked where it is: it goes on from (%1, %2, %3) mm, where it was left on this port (kept, not measured)</source>
         <translation>无法查询设备的位置：从 (%1, %2, %3) mm 继续，即上次在此端口停留的位置（已保存，非实测）</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>position unknown: the device cannot be asked; Home or Set Home to start counting</source>
         <translation>位置未知：无法查询设备；请“回原点”或“设为原点”以开始计数</translation>
     </message>
     <message>
-        <location filename="../../app/window/fit_controls.py" line="-41"/>
+        <location filename="../../app/window/layout/fit_controls.py" line="-41"/>
         <source>the device</source>
         <translation>该设备</translation>
     </message>
@@ -1749,7 +1750,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>清空命令队列(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="+56"/>
+        <location filename="../../app/window/device/connection.py" line="+57"/>
         <source>port %1 appeared</source>
         <translation>端口 %1 已出现</translation>
     </message>
@@ -1759,12 +1760,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在重新连接到 %1</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-281"/>
         <source>port %1 disappeared</source>
         <translation>端口 %1 已消失</translation>
     </message>
     <message>
-        <location line="+292"/>
+        <location line="+294"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -1779,7 +1780,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>行程限位：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="+113"/>
+        <location filename="../../app/window/device/job_desk.py" line="+115"/>
         <source>not connected: %1 not sent</source>
         <translation>未连接：%1 未发送</translation>
     </message>
@@ -1858,44 +1859,43 @@ Send them anyway?</source>
         <translation>%1：%2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="+64"/>
+        <location filename="../../app/window/device/machine_state.py" line="+65"/>
         <source>new home: the trail is shifted by (%1, %2, %3) mm</source>
         <translation>新原点：轨迹已平移 (%1, %2, %3) mm</translation>
     </message>
     <message>
-        <location line="-139"/>
+        <location line="-147"/>
         <source>the device reported an error: %1</source>
         <translation>设备报告错误：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/connection.py" line="-107"/>
-        <location filename="../../app/window/machine_state.py" line="+5"/>
+        <location filename="../../app/window/device/connection.py" line="-108"/>
+        <location filename="../../app/window/device/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>设备：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/job_desk.py" line="-11"/>
+        <location filename="../../app/window/device/job_desk.py" line="-11"/>
         <source>%1 failed: %2</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../../app/window/machine_state.py" line="-90"/>
-        <location line="+375"/>
+        <location filename="../../app/window/device/machine_state.py" line="-115"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>原点已确认：位置从此处开始计数</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="+201"/>
         <source>position unknown: the device cannot be asked and its frames carry absolute targets, so a jog is refused; Set Home where the stage stands, Home, or Go to an absolute point first</source>
         <translation>位置未知：无法查询设备，且其帧携带的是绝对目标，因此点动被拒绝；请先在平台当前所在处“设为原点”、“回原点”，或“定位”到一个绝对点</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+204"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>速度 %1 mm/s 回读为 %2 mm/s（设备会取整）</translation>
     </message>
     <message>
-        <location filename="../../app/window/layouts.py" line="+127"/>
+        <location filename="../../app/window/layout/layouts.py" line="+127"/>
         <source>&amp;Operate</source>
         <translation>操作(&amp;P)</translation>
     </message>
@@ -1945,22 +1945,22 @@ Send them anyway?</source>
         <translation>此设备有设置面板：按 %1 切换到“配置”</translation>
     </message>
     <message>
-        <location filename="../../app/window/program_pause.py" line="+58"/>
+        <location filename="../../app/window/device/program_pause.py" line="+22"/>
         <source>paused: nothing more is sent; the move under way finishes (this device has no feed hold)</source>
         <translation>已暂停：不再发送任何内容；进行中的移动会继续完成（此设备没有进给保持功能）</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+4"/>
         <source>resumed: sending the program again</source>
         <translation>已继续：重新开始发送程序</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+1"/>
         <source>paused: nothing more is sent; the device still holds %1 move(s) and runs them (its protocol has no feed hold): it stands still in about %2 s; Stop flushes them now</source>
         <translation>已暂停：不再发送任何内容；设备仍保有 %1 个移动并会执行完（其协议没有进给保持功能）：约 %2 s 后静止；按“停止”可立即清除这些移动</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+5"/>
         <source>paused: the device has run what it held; the stage stands still</source>
         <translation>已暂停：设备已执行完其保有的移动；平台已静止</translation>
     </message>
@@ -2006,7 +2006,7 @@ Send them anyway?</source>
 <context>
     <name>ParameterDock</name>
     <message>
-        <location filename="../../app/window/parameter_dock.py" line="+34"/>
+        <location filename="../../app/window/docks/parameter_dock.py" line="+34"/>
         <source>the device now holds %1: the firmware forces it after every set</source>
         <translation>设备当前值为 %1：每次设置后固件都会强制使用该值</translation>
     </message>
@@ -2557,7 +2557,7 @@ Send them anyway?</source>
 <context>
     <name>PortWatcher</name>
     <message>
-        <location filename="../../app/window/ports.py" line="+22"/>
+        <location filename="../../app/window/device/ports.py" line="+22"/>
         <source>serial port</source>
         <translation>串口</translation>
     </message>
@@ -3144,7 +3144,7 @@ The 2D view shows the same positions.</source>
 <context>
     <name>ProgramDock</name>
     <message>
-        <location filename="../../app/window/program_dock.py" line="+181"/>
+        <location filename="../../app/window/docks/program_dock.py" line="+181"/>
         <source>program %1 refused: %2</source>
         <translation>程序 %1 被拒绝：%2</translation>
     </message>
@@ -3214,7 +3214,7 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">加载程序：含 x,y,z,speed 列的 CSV（mm、mm/s）或 JSON</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Save…</source>
         <translation>保存…</translation>
     </message>
@@ -3255,12 +3255,12 @@ The 2D view shows the same positions.</source>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+359"/>
+        <location line="+366"/>
         <source>P&amp;ause</source>
         <translation>暂停(&amp;A)</translation>
     </message>
     <message>
-        <location line="-356"/>
+        <location line="-363"/>
         <source>&amp;Stop</source>
         <translation>停止(&amp;S)</translation>
     </message>
@@ -3269,12 +3269,12 @@ The 2D view shows the same positions.</source>
         <translation type="vanished">不再发送，并清空设备队列（STOP）</translation>
     </message>
     <message>
-        <location line="-54"/>
+        <location line="-55"/>
         <source>Programs (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF drawings (*.dxf);;SVG drawings (*.svg);;Points (*.csv *.json);;All files (*)</source>
         <translation>程序 (*.gcode *.nc *.ngc *.tap *.dxf *.svg *.csv *.json);;G-code (*.gcode *.nc *.ngc *.tap);;DXF 图纸 (*.dxf);;SVG 图纸 (*.svg);;点 (*.csv *.json);;所有文件 (*)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Load a program: G-code, DXF or SVG, or points (CSV with x,y,z,speed in mm and mm/s, or JSON)</source>
         <translation>加载程序：G-code、DXF 或 SVG，或点（含 x,y,z,speed 列的 CSV，单位 mm 和 mm/s，或 JSON）</translation>
     </message>
@@ -3284,12 +3284,12 @@ The 2D view shows the same positions.</source>
         <translation>在设备上运行程序（先对照行程范围进行检查）</translation>
     </message>
     <message>
-        <location line="+344"/>
+        <location line="+351"/>
         <source>Send nothing more until Resume (a device&apos;s queued moves go on)</source>
         <translation>在“继续”之前不再发送（设备已排队的移动照常执行）</translation>
     </message>
     <message>
-        <location line="-337"/>
+        <location line="-344"/>
         <source>Send nothing more and stop the device (its queue flushed)</source>
         <translation>不再发送，并停止设备（清空其队列）</translation>
     </message>
@@ -3427,12 +3427,12 @@ Not for this program: %2</source>
         <translation>未连接到设备</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+20"/>
         <source>motion is off</source>
         <translation>运动控制不可用</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1
 Refused: %2</source>
         <translation>%1
@@ -3479,7 +3479,7 @@ Not now: %2</source>
 <context>
     <name>RawConsole</name>
     <message>
-        <location filename="../../app/window/traffic_display.py" line="+16"/>
+        <location filename="../../app/window/console/display.py" line="+16"/>
         <source>text</source>
         <translation>文本</translation>
     </message>
@@ -3509,7 +3509,7 @@ Not now: %2</source>
         <translation>间隔</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_export.py" line="+18"/>
+        <location filename="../../app/window/console/export.py" line="+18"/>
         <source>CSV (*.csv)</source>
         <translation>CSV (*.csv)</translation>
     </message>
@@ -3534,7 +3534,7 @@ Not now: %2</source>
         <translation>已将 %1 行导出到 %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_display.py" line="+26"/>
+        <location filename="../../app/window/console/display.py" line="+26"/>
         <source>Bytes as text (\r \n \xNN escapes), hex (47 45 54), or mixed (text, &lt;0A&gt; for the rest)</source>
         <translation>字节显示方式：文本（\r \n \xNN 转义）、十六进制（47 45 54）或混合（文本，其余字节显示为 &lt;0A&gt;）</translation>
     </message>
@@ -3554,7 +3554,7 @@ Not now: %2</source>
         <translation>显示时间列</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_filter_bar.py" line="+57"/>
+        <location filename="../../app/window/console/filter_bar.py" line="+57"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
@@ -3604,7 +3604,7 @@ Not now: %2</source>
         <translation>仅显示方向、类型、十六进制、文本或含义与此正则表达式匹配（不区分大小写）的行，例如 error|FA00</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+121"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+121"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
@@ -3614,7 +3614,7 @@ Not now: %2</source>
         <translation>新行不会滚动视图：滚动到底部即可继续跟随</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_filter_bar.py" line="+12"/>
+        <location filename="../../app/window/console/filter_bar.py" line="+12"/>
         <source>search (regex)</source>
         <translation>搜索（正则表达式）</translation>
     </message>
@@ -3634,12 +3634,12 @@ Not now: %2</source>
         <translation>下一个匹配项（F3）</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_status.py" line="+45"/>
+        <location filename="../../app/window/console/status.py" line="+45"/>
         <source>Lines in the session, shown, hidden polls, errors, matches</source>
         <translation>会话中的行数、已显示、已隐藏的轮询、错误、匹配项</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+18"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+18"/>
         <source>Export…</source>
         <translation>导出…</translation>
     </message>
@@ -3678,7 +3678,7 @@ Not now: %2</source>
         <translation type="vanished">%1 行因达到控制台上限而被清除；会话日志中仍保留这些行</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_status.py" line="+16"/>
+        <location filename="../../app/window/console/status.py" line="+16"/>
         <source>%1 line</source>
         <translation>%1 行</translation>
     </message>
@@ -3733,17 +3733,17 @@ Not now: %2</source>
         <translation>控制台只保留最新的 %1 行（见“设置”）：较旧的行会从中移除，磁盘上的会话日志保留所有行</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_console.py" line="+114"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+114"/>
         <source>export failed: %1</source>
         <translation>导出失败：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_export.py" line="+2"/>
+        <location filename="../../app/window/console/export.py" line="+2"/>
         <source>exported %1 lines to %2</source>
         <translation>已将 %1 行导出到 %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="+60"/>
+        <location filename="../../app/window/console/table.py" line="+60"/>
         <source>motion</source>
         <translation>运动</translation>
     </message>
@@ -4287,7 +4287,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>SpeedControl</name>
     <message>
-        <location filename="../../widgets/speed_control.py" line="+41"/>
+        <location filename="../../widgets/speed_control.py" line="+53"/>
         <source>Speed:</source>
         <translation>速度：</translation>
     </message>
@@ -4303,17 +4303,17 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
     </message>
     <message>
         <location line="+2"/>
-        <location line="+34"/>
+        <location line="+45"/>
         <source>Send the speed in the field to the device</source>
         <translation>将输入框中的速度发送到设备</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-40"/>
         <source>The speed the device reports (it may round)</source>
         <translation>设备报告的速度（可能经过取整）</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+122"/>
         <source>Speed, %1 to %2 in/s; press Enter or Apply to send</source>
         <translation>速度，%1 至 %2 in/s；按 Enter 或“应用”发送</translation>
     </message>
@@ -4477,7 +4477,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>TrafficModel</name>
     <message>
-        <location filename="../../app/window/traffic_table.py" line="-21"/>
+        <location filename="../../app/window/console/table.py" line="-21"/>
         <source>Line</source>
         <translation>行号</translation>
     </message>
@@ -4794,7 +4794,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>WindowTools</name>
     <message>
-        <location filename="../../app/window/window_tools.py" line="+58"/>
+        <location filename="../../app/window/window_tools.py" line="+48"/>
         <source>Macros</source>
         <translation>宏</translation>
     </message>
@@ -4894,7 +4894,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>WorkFrame</name>
     <message>
-        <location filename="../../app/window/work_frame.py" line="+59"/>
+        <location filename="../../app/window/docks/work_frame.py" line="+59"/>
         <source>work coordinates: %1</source>
         <translation>工件坐标：%1</translation>
     </message>
@@ -4926,7 +4926,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+16"/>
+        <location filename="message_templates.py" line="+10"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>前往 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5001,7 +5001,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>已中断：已停止于 ({x:g}, {y:g}, {z:g}) mm（{protocol} 停止命令已确认；其队列已清空）</translation>
     </message>
     <message>
-        <location line="-23"/>
+        <location line="-17"/>
         <source>usage: {usage} (got {count} arguments)</source>
         <translation>用法：{usage}（收到 {count} 个参数）</translation>
     </message>
@@ -5026,7 +5026,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>用法：{usage}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+25"/>
         <source>--kind {kind} refused: --kind is for jog only (move is in mm)</source>
         <translation>--kind {kind} 被拒绝：--kind 仅适用于 jog（move 的单位为 mm）</translation>
     </message>
@@ -5041,7 +5041,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>--kind {kind} 被拒绝：{protocol} 的移动类型为 {kinds}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>speed {speed:g} mm/s refused: the device allows {low:g} to {high:g} mm/s</source>
         <translation>速度 {speed:g} mm/s 被拒绝：设备允许 {low:g} 至 {high:g} mm/s</translation>
     </message>
@@ -5051,7 +5051,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>速度 {speed:g} mm/s 被拒绝（{error}）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>raw move to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>原始命令移动到 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5060,7 +5060,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation type="vanished">{file} 未指明协议（没有连接说明：motionctl --log 文件或 spy:// 捕获文件都不含连接说明）：请指定 --protocol</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="-10"/>
         <source>{file}: its connection note: {error}</source>
         <translation>{file}：其连接说明：{error}</translation>
     </message>
@@ -5085,7 +5085,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>SVG 缩放比例 {value:g} 被拒绝：必须大于 0</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+10"/>
         <source>macro {name} ({count} step)</source>
         <translation>宏 {name}（{count} 步）</translation>
     </message>
@@ -5464,7 +5464,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{message}（设备可能仍在移动：{protocol} 在阻塞式移动结束前不作任何应答；请在其停止后重试）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+87"/>
         <source>no modem control lines</source>
         <translation>没有调制解调器控制信号线</translation>
     </message>
@@ -5489,12 +5489,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{line} 关</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+32"/>
         <source>unreadable: {error}</source>
         <translation>无法解读：{error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+29"/>
         <source>error {code}: {message}</source>
         <translation>错误 {code}：{message}</translation>
     </message>
@@ -5549,7 +5549,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>无法解读的帧（{reason}）：{bytes}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-95"/>
         <source>a directory</source>
         <translation>目录</translation>
     </message>
@@ -5649,7 +5649,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>SysEx 数据必须为 7 位；收到 {byte:#04x}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+352"/>
         <source>{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)</source>
         <translation>{source} 未指明协议：按 {protocol} 解码，其通信内容符合该协议（识别出 {frames} 帧）</translation>
     </message>
@@ -5679,7 +5679,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{file}：文件为空，既不是 Motion Panel 日志，也不是 pyserial spy:// 捕获文件（spy 的 raw 格式会使其文件为空）；{hint}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-436"/>
         <source>the device reported: {reported}</source>
         <translation>设备报告：{reported}</translation>
     </message>
@@ -5774,7 +5774,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>前往 {target} 的移动未在 {seconds:.1f} s 内结束</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-24"/>
         <source>no protocol to read them with</source>
         <translation>没有可用于解读它们的协议</translation>
     </message>
@@ -5804,7 +5804,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{what}：不是面板能够检查的移动</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+217"/>
         <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
         <translation>{what} {text!r} 不是设备接受的数字：请使用数字，可带正负号和一个小数点，例如 -12.5</translation>
     </message>
@@ -5819,7 +5819,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{what} {value:g} 超出范围：设备最多支持 ±{limit:g}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-199"/>
         <source>{source}: not a parameter profile: {error}</source>
         <translation>{source}：不是参数配置文件：{error}</translation>
     </message>
@@ -5894,7 +5894,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>无法写入参数配置文件 {path}：{error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+186"/>
         <source>{low} to {high} in steps of {step}</source>
         <translation>{low} 至 {high}，步进 {step}</translation>
     </message>
@@ -5939,7 +5939,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>未知参数 {name!r}：请使用名称或 ID 1..{count}；&apos;motionctl ... param list&apos; 可列出全部参数</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-193"/>
         <source>its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)</source>
         <translation>其帧携带的是绝对目标，因此相对移动需要知道位置：请先在平台当前所在处设为原点、回原点，或移动到一个绝对点（在面板中，或用 motionctl set-home、home 或 move X Y Z）</translation>
     </message>
@@ -5984,7 +5984,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{protocol} 没有身份查询命令：无法查询设备的身份</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+359"/>
         <source>{where}: {name} {value!r} is not a number</source>
         <translation>{where}：{name} {value!r} 不是数字</translation>
     </message>
@@ -5994,12 +5994,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{where}：{name} 不是有限的 float32 数</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-14"/>
         <source>{where}: {name} {value!r} is not a finite float32 number</source>
         <translation>{where}：{name} {value!r} 不是有限的 float32 数</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+15"/>
         <source>{where}: speed {speed:g} mm/s must be above 0</source>
         <translation>{where}：速度 {speed:g} mm/s 必须大于 0</translation>
     </message>
@@ -6069,22 +6069,37 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{source}：点数超过 {count} 个</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-45"/>
         <source>program</source>
         <translation>程序文件</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+46"/>
         <source>cannot write the program {path}: {error}</source>
         <translation>无法写入程序 {path}：{error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-169"/>
         <source>this looks like a {found} controller, not {expected}</source>
         <translation>这看起来是 {found} 控制器，而不是 {expected}</translation>
     </message>
     <message>
+        <location line="-338"/>
+        <source>{what} {text!r} refused: a whole number is needed</source>
+        <translation>{what} {text!r} 被拒绝：需要整数</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>radius {radius:g} mm refused: it must be above 0</source>
+        <translation>半径 {radius:g} mm 被拒绝：必须大于 0</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&apos;{command}&apos; is a {owner} command, not {protocol}&apos;s</source>
+        <translation>“{command}”是 {owner} 的命令，不是 {protocol} 的</translation>
+    </message>
+    <message>
+        <location line="+193"/>
         <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
         <translation>{setting} {value} 被拒绝：允许 {minimum:g} 至 {maximum:g} {unit}</translation>
     </message>
@@ -6109,7 +6124,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{protocol} 只支持直线移动（收到 {kind!r}）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{protocol} cannot read sent frames</source>
         <translation>{protocol} 无法解读发送的帧</translation>
     </message>
@@ -6249,7 +6264,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>按固件的解析方式，{name} {params!r} 不是三个数字</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+12"/>
         <source>Motor steps per turn</source>
         <translation>电机每转步数</translation>
     </message>
@@ -6404,7 +6419,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>STEPPER_STEP 有 {count} 个数据字节，而不是 6 个</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>framing</source>
         <translation>帧格式错误</translation>
     </message>
@@ -6509,7 +6524,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>帧 {number}（{words}）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-28"/>
         <source>a field holds 1 to 255 values, not {count}</source>
         <translation>一个字段包含 1 至 255 个值，而不是 {count} 个</translation>
     </message>
@@ -6549,7 +6564,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>字节 {index}：{count} 个 {kind} 值超出了数据末尾</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+34"/>
         <source>Encoder ticks per millimetre</source>
         <translation>每毫米编码器计数</translation>
     </message>
@@ -6634,7 +6649,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>动作 {number}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+46"/>
         <source>move package confirmed</source>
         <translation>移动数据包已确认</translation>
     </message>
@@ -6893,7 +6908,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>此固件版本从不读取 {parameter}：移动不会改变</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-92"/>
         <source>Steps per move</source>
         <translation>每次移动的步数</translation>
     </message>
@@ -7138,17 +7153,16 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>0 皮带轮，1 丝杠（每次设置后此固件都会强制设为 1）</translation>
     </message>
     <message>
-        <location line="+4"/>
         <source>protocol {name!r} is not implemented yet</source>
-        <translation>协议 {name!r} 尚未实现</translation>
+        <translation type="vanished">协议 {name!r} 尚未实现</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-44"/>
         <source>unknown protocol {name!r} (known: {known})</source>
         <translation>未知协议 {name!r}（已知：{known}）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+101"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
         <translation>{protocol} 没有停止命令：设备会完成已发给它的内容</translation>
     </message>
@@ -7168,7 +7182,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>波特率 {baud} 被拒绝：应为正数（单位 bit/s）</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+91"/>
         <source>capture with spy&apos;s default hexdump format: spy://PORT?file=FILE, without raw</source>
         <translation>请用 spy 的默认 hexdump 格式捕获：spy://PORT?file=FILE，不加 raw</translation>
     </message>
@@ -7203,12 +7217,22 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{source}：其中没有通信数据（也不是 spy 的 raw 格式）；{hint}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-25"/>
         <source>{error} (after {rounds} rounds; {acknowledged} of {total} instructions were acknowledged before it)</source>
         <translation>{error}（经过 {rounds} 轮重试；此前 {total} 条指令中已有 {acknowledged} 条得到确认）</translation>
     </message>
     <message>
+        <location line="-175"/>
+        <source>protocol {name!r} cannot be loaded: {error}</source>
+        <translation>无法加载协议 {name!r}：{error}</translation>
+    </message>
+    <message>
         <location line="+1"/>
+        <source>protocol {name!r}: {target} is not a protocol class</source>
+        <translation>协议 {name!r}：{target} 不是协议类</translation>
+    </message>
+    <message>
+        <location line="+108"/>
         <source>{name}</source>
         <translation>{name}</translation>
     </message>
@@ -7288,7 +7312,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{name}：没有包含直线、圆弧或曲线的图层 {layer}；图纸的图层：{layers}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{name} line {number}</source>
         <translation>{name} 第 {number} 行</translation>
     </message>
@@ -7368,7 +7392,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{where}：{first} 和 {second} 不能在同一行</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>{name}: more than {count:,} lines, too many for a program</source>
         <translation>{name}：超过 {count:,} 行，程序过长</translation>
     </message>
@@ -7428,7 +7452,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{where}：速度 {speed:g} mm/s 被拒绝：设备允许 {low:g} 至 {high:g} mm/s；未发送任何内容</translation>
     </message>
     <message>
-        <location line="-480"/>
+        <location line="-507"/>
         <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
         <translation>{command} 被拒绝：{port} 的步进电机尚未配置（控制板每次复位都会丢失该配置，且此端口没有保存的配置）；请运行 motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9，并换成您电机的每转步数和引脚（或在面板的“步进电机设置”中点击“配置”）：该配置会被保存，并在每次运行时重新发送</translation>
     </message>
@@ -7438,12 +7462,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{file} 未指明协议（没有连接说明），且没有任何协议能识别其通信内容：请指定 --protocol</translation>
     </message>
     <message>
-        <location line="+327"/>
+        <location line="+398"/>
         <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
         <translation>此处无法设置速度：此固件版本仅根据 step_delay_instantaneous（15、16）确定步进时序，而不是 input_speed_steady（21、22）。“设备：”是 X 的步进速度（每步 15 高电平加 16 低电平）；要改变它，请在参数表中修改 15 和 16。</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+40"/>
         <source>Y will not move: at these parameters the firmware&apos;s Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)</source>
         <translation>Y 轴不会移动：按这些参数，固件的 Y 循环一步也不走（它执行的是斜坡计数，即 0；请设置 22 和 24，使斜坡长度大于 0）</translation>
     </message>
@@ -7458,12 +7482,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{axis} 轴移动 {moved:.3f} mm，而不是 {asked:.3f}：按整步计（{steps} 步），按固件的计数方式截断</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>{protocol} reports where it is: it is asked</source>
         <translation>{protocol} 会报告其位置：直接向其查询</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+73"/>
         <source>the program&apos;s moves without a speed would go at the device&apos;s speed, {speed:g} mm/s, outside the {low:g} to {high:g} mm/s it allows: set the speed first; nothing was sent</source>
         <translation>程序中未指定速度的移动将以设备的速度 {speed:g} mm/s 运行，超出其允许的 {low:g} 至 {high:g} mm/s：请先设置速度；未发送任何内容</translation>
     </message>
@@ -7478,7 +7502,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>程序在停留期间被放弃</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>SVG scale {scale:g} mm per unit must be above 0</source>
         <translation>SVG 缩放比例（每单位 {scale:g} mm）必须大于 0</translation>
     </message>
@@ -7523,7 +7547,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{name}：没有以 mm、cm、in、pt、pc 或 px 表示的宽度和高度；1 个单位按 {scale:g} mm 计</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>{pattern!r} is not a regular expression: {error}</source>
         <translation>{pattern!r} 不是正则表达式：{error}</translation>
     </message>
@@ -7538,7 +7562,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{pattern!r}… 正则表达式过大：{error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-349"/>
         <source>{url} is not open</source>
         <translation>{url} 未打开</translation>
     </message>
@@ -7643,7 +7667,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>无法打开 {url}：{error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-67"/>
         <source>travel limits need a range for each of x, y and z</source>
         <translation>行程限位需要为 x、y 和 z 各指定一个范围</translation>
     </message>
@@ -7703,7 +7727,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{earlier}；{later}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+296"/>
         <source>expected a sim:// URL, got {url!r}</source>
         <translation>应为 sim:// URL，收到 {url!r}</translation>
     </message>
@@ -7728,7 +7752,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>无法打开 {port}：{error}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-269"/>
         <source>{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first</source>
         <translation>{where} 接受了此连接后立即将其关闭{said}：可能有其他客户端占用该端口（设置 max-connections: 1 时，ser2net 一次只服务一个客户端）；请先关闭那个客户端</translation>
     </message>
@@ -7753,7 +7777,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>等待选项 &apos;purge&apos; 时超时</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-34"/>
         <source>no axis {axis!r}: x, y or z</source>
         <translation>没有轴 {axis!r}：应为 x、y 或 z</translation>
     </message>
