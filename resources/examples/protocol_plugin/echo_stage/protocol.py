@@ -5,12 +5,12 @@ from __future__ import annotations
 
 import re
 
-from drivers.device.capabilities import Capabilities, Completion
-from drivers.device.commands import Command, GetPosition, MoveTo
-from drivers.device.events import Done, ErrorReport, Event, PositionReport, TextLine
 from drivers.errors import BadInput, DeviceError, FrameError
 from drivers.framers.lines import LineFramer
 from drivers.protocols.base import Exchange, Protocol
+from drivers.protocols.capabilities import Capabilities, Completion
+from drivers.protocols.commands import Command, GetPosition, MoveTo
+from drivers.protocols.events import Done, ErrorReport, Event, PositionReport, TextLine
 
 NUMBER = r"[+-]?(?:\d+\.?\d*|\.\d+)"
 MOVE = re.compile(rf"MOVE ({NUMBER}) ({NUMBER})\Z")
