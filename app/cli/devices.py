@@ -14,11 +14,12 @@ from app.common.command_words import (
     run_word,
     whole,
 )
+from app.common.stepper_config import configure_stepper
 from drivers.device.travel import TravelLimits
 from drivers.errors import BadInput
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
-from drivers.protocols.firmata import FirmataProtocol, StepperConfig, StepperVersion
+from drivers.protocols.firmata import FirmataProtocol, StepperConfig
 from drivers.session.device_session import DeviceSession
 
 __all__ = ["ANY_PROTOCOL", "DEVICE_COMMANDS", "DeviceUsageError", "NotConfigured", "check_stepper"]
@@ -96,14 +97,3 @@ def run_device(session: DeviceSession, command: str, args: list[str]) -> dict[st
     if command == "run":
         return run_program(session, args)
     return run_word(session, command, args)
-
-
-def configure_stepper(session: DeviceSession, steps_per_rev: int, pins: tuple[int, ...]) -> int:
-    """Configure the motor, then ask the library version (the board answers it once the config
-    is taken; a wrong config's error comes before, failing it); the settings keep the config."""
-    session.send(StepperConfig(steps_per_rev, pins))
-    reply = session.send(StepperVersion())
-    version = int(str(reply.value if reply is not None else None))
-    saved = {f"pin{i}": float(pins[i - 1]) if i <= len(pins) else -1.0 for i in range(1, 5)}
-    session.protocol.configure({"steps_per_rev": steps_per_rev, **saved})
-    return version

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
 
 from drivers.errors import BadInput, DeviceError, FrameError
 from drivers.framers.sysex import SysexFramer
@@ -21,9 +20,6 @@ from drivers.protocols.capabilities import Capabilities, Completion
 from drivers.protocols.commands import Command, GetId, MoveBy, Raw
 from drivers.protocols.events import ErrorReport, Event, Feedback, TextLine
 from drivers.protocols.piframe import NoReply
-
-if TYPE_CHECKING:
-    from drivers.device.client import Client
 
 START, END = 0xF0, 0xF7
 REPORT_VERSION = 0xF9
@@ -404,14 +400,3 @@ class FirmataProtocol(Protocol):
             return None
         spr = self.values["steps_per_rev"]
         return 0.0, sum(abs(p.steps) * 60 / (p.rpm * spr) for p in steps)
-
-
-def configure_stepper(client: Client, steps_per_rev: int, pins: tuple[int, ...]) -> int:
-    """Configure the motor, then ask the library version: the board answers it once the config
-    is taken, and a wrong config's STRING_DATA error comes before, failing it. Returns the
-    version."""
-    client.execute(StepperConfig(steps_per_rev, pins))
-    version = int(str(client.execute(StepperVersion()).value))
-    saved = {f"pin{i}": float(pins[i - 1]) if i <= len(pins) else -1.0 for i in range(1, 5)}
-    client.protocol.configure({"steps_per_rev": steps_per_rev, **saved})
-    return version

@@ -30,7 +30,7 @@ from drivers.device.motion import Motion
 from drivers.device.position_count import resume
 from drivers.device.position_truth import PositionTruth, Whereabouts
 from drivers.device.travel import Point, TravelLimits
-from drivers.errors import BadInput, CommunicationError, MotionError
+from drivers.errors import Aborted, BadInput, CommunicationError, MotionError
 from drivers.link.records import TrafficLogWriter
 from drivers.link.transport import Link, TrafficListener
 from drivers.messages import Message
@@ -213,11 +213,18 @@ class DeviceSession(SessionSubscriptions, SessionLines):
             return self._ended(self.motion.move_to(x, y, z))
 
     def move_by(
-        self, dx: float, dy: float, dz: float = 0.0, kind: str = "linear"
+        self,
+        dx: float,
+        dy: float,
+        dz: float = 0.0,
+        kind: str = "linear",
+        *,
+        what: str | None = None,
     ) -> PositionReport:
-        """Move by (dx, dy, dz): mm, or the protocol's `kind` (rotational, steps); the position."""
+        """Move by (dx, dy, dz): mm, or the protocol's `kind` (rotational, steps); the position.
+        `what`: how an error names the move (default: a jog by the amounts)."""
         with self._operation():
-            return self._ended(self.motion.move_by(dx, dy, dz, kind))
+            return self._ended(self.motion.move_by(dx, dy, dz, kind, what=what))
 
     def home(self) -> PositionReport:
         """Go to (0, 0, 0) and wait until there; the position then."""
@@ -262,6 +269,13 @@ class DeviceSession(SessionSubscriptions, SessionLines):
             return
         with self._operation():
             self.client.execute(cmd.Stop())
+
+    def request_stop(self) -> None:
+        """Ask the operation under way to stop (any thread; nothing is sent from the calling
+        one): the move being waited on is stopped by the thread that runs it, where the
+        protocol has a stop; a program ends; a macro or a wait ends at its next step."""
+        self.motion.stop_requested.set()
+        self.stop_program()
 
     def arc(
         self,
@@ -353,6 +367,12 @@ class DeviceSession(SessionSubscriptions, SessionLines):
         """Write one device parameter (by name or id) once the device has confirmed it."""
         with self._operation():
             return self.motion.set_parameter(key, value)
+
+    def configure(self, values: Mapping[str, float]) -> Capabilities:
+        """Change the protocol's settings (ticks per mm, steps per revolution...) from now on;
+        the capabilities as they are then (BadInput for a value out of range)."""
+        self.protocol.configure(dict(values))
+        return self.capabilities
 
     def poll(self) -> None:
         """Read what the device said unasked (the subscribers hear it), waiting for nothing."""
@@ -500,7 +520,7 @@ class DeviceSession(SessionSubscriptions, SessionLines):
             self._running_in = threading.get_ident()
         try:
             yield
-        except CommunicationError:
+        except (CommunicationError, Aborted):
             self.truth.link_lost()  # a move under way is known only as its estimate now
             raise
         except MotionError:

@@ -48,6 +48,13 @@ class TrafficTap:
         self.link.listeners.append(writer)
         return writer
 
+    def stop_log(self, writer: TrafficLogWriter) -> None:
+        """Stop writing to `writer` (a log added by `log_to`; nothing if it was not)."""
+        if writer in self.logs:
+            self.logs.remove(writer)
+        if writer in self.link.listeners:
+            self.link.listeners.remove(writer)
+
     def note(self, text: str) -> None:
         """A `#` line with its time in each log (a connection, a change of settings)."""
         for writer in self.logs:

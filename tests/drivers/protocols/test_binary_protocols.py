@@ -6,6 +6,7 @@ import struct
 
 import pytest
 
+from app.common.stepper_config import configure_stepper
 from drivers.device.client import Client
 from drivers.device.motion import Motion
 from drivers.errors import BadInput, DeviceError, DeviceTimeout
@@ -17,11 +18,11 @@ from drivers.protocols.firmata import (
     StepperConfig,
     StepperStep,
     StepperVersion,
-    configure_stepper,
     seven_bit_pairs,
     step_parts,
 )
 from drivers.protocols.piframe import PiFrameProtocol
+from drivers.session.device_session import DeviceSession
 
 FIRMATA_REFERENCE = [  # drivers/protocols/README.md §5: PyMata 2.20 / pymata4 1.15, byte for byte
     (StepperConfig(200, (8, 9)), "F0 72 00 48 01 08 09 F7"),
@@ -165,9 +166,10 @@ def test_firmata_handshake_config_and_split_move_on_the_simulator() -> None:
     link = open_link("sim://firmata?reset_delay=0.2&instant=1", 57600)
     try:
         protocol = FirmataProtocol()
-        motion = Motion(Client(link, protocol))
+        session = DeviceSession(link, protocol)
+        motion = session.motion
         assert motion.identify() == "FirmataPlus.ino 2.5"
-        assert configure_stepper(motion.client, 200, (8, 9)) == 5
+        assert configure_stepper(session, 200, (8, 9)) == 5
         protocol.configure({"steps_per_mm": 1})
         motion.set_speed(protocol.capabilities.speed_range[1])  # type: ignore[index]
         assert motion.move_by(20000, 0, 0).x == 20000
