@@ -34,10 +34,11 @@ from widgets.connection_bar import sim_protocol
 
 if TYPE_CHECKING:
     from app.window.device.bridge_session import BridgeSession
+    from app.window.device.connect_options import DeviceInfo
     from app.window.device.job_desk import JobDesk
     from app.window.device.machine_state import MachineState
     from app.window.device.ports import PortWatcher
-    from app.window.device.worker import DeviceInfo, SerialWorker
+    from app.window.device.worker import SerialWorker
     from app.window.device.worker_link import WorkerLink
     from app.window.device.worker_thread import WorkerThread
     from app.window.services import WindowParts
@@ -72,7 +73,7 @@ class Connection(QObject):
     ) -> None:
         super().__init__(window)  # type: ignore[arg-type]
         self.window = window
-        self.link = link
+        self.workers = link
         self.machine = machine
         self.desk = desk
         self.settings = window.settings
@@ -152,7 +153,7 @@ class Connection(QObject):
         def open_port(thread: WorkerThread) -> None:
             """What needs the protocol's module and the worker: done once the worker is (just
             after the first paint when asked for before it)."""
-            from app.window.device.worker import ConnectOptions
+            from app.window.device.connect_options import ConnectOptions
 
             try:
                 window.console.set_protocol(create_protocol(protocol, variant or None))
@@ -179,14 +180,14 @@ class Connection(QObject):
             )
             thread.open(port, protocol, baud, options)  # a sim:// device speaks the variant
 
-        self.link.to_worker(open_port)
+        self.workers.to_worker(open_port)
 
     def disconnect_device(self) -> None:
         """Ask the worker to close the port (and do not reconnect by itself)."""
         self.last = None
-        if self.link.thread is not None:  # (before the worker is built, nothing is queued)
-            self.desk.report_dropped(self.link.thread.worker.cancel_pending())
-        self.link.to_worker(lambda thread: thread.close())
+        if self.workers.thread is not None:  # (before the worker is built, nothing is queued)
+            self.desk.report_dropped(self.workers.thread.worker.cancel_pending())
+        self.workers.to_worker(lambda thread: thread.close())
 
     def _connect_from_bar(self, port: str, protocol: str, baud: int) -> None:
         if self.bar.bridge_mode():
@@ -221,8 +222,8 @@ class Connection(QObject):
         session = BridgeSession(
             port,
             baud,
-            self.link.session_log_path,
-            self.link.log_start,
+            self.workers.session_log_path,
+            self.workers.log_start,
             self,
             protocol=speaks,  # a sim:// device speaks its variant, DTR as the device needs
         )
@@ -266,9 +267,7 @@ class Connection(QObject):
 
     # -- the worker's reports ----------------------------------------------------------------
     def _on_traffic(self, records: list[Traffic]) -> None:
-        console = self.window.console
-        for record in records:
-            console.append_traffic(record.direction, record.data, record.time, record.wall)
+        self.window.console.append_records(records)  # unchanged, as the tap made them
 
     def _on_control_note(self, text: str) -> None:
         """A control line changed, or a break was sent: in the console, among the traffic."""

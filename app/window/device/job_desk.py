@@ -65,7 +65,7 @@ class JobDesk(QObject):
     def __init__(self, window: WindowParts, link: WorkerLink, machine: MachineState) -> None:
         super().__init__(window)  # type: ignore[arg-type]
         self.window = window
-        self.link = link
+        self.workers = link
         self.machine = machine
         self.running_alone: list[jobs.Job] = []  # programs, macros, parameter writes queued
         self.controls_on = False  # connected to a device (not a bridge)
@@ -171,7 +171,7 @@ class JobDesk(QObject):
                     job.describe(),
                 )
                 self._tell(self.off_text, note=False)
-        self.link.get().worker.submit(job)
+        self.workers.get().worker.submit(job)
         self.machine.show_status()
         return True
 
@@ -278,7 +278,7 @@ class JobDesk(QObject):
         """A jog key or button was let go: where the device has a stop, the step under way
         halts now if the jog was held (a repeated step, or a press longer than a tap); a tap
         moves its whole step."""
-        info, serial = self.machine.info, self.link.thread
+        info, serial = self.machine.info, self.workers.thread
         if self.jog_job is None or serial is None:
             return
         if not self.jog_repeat and time.monotonic() - self.jog_pressed_at < JOG_TAP_S:
@@ -355,7 +355,7 @@ class JobDesk(QObject):
         """Cancel what is queued and say what was not sent; where the device can stop, stop
         the move (or program) under way too."""
         self.window.jog_panel.release()
-        serial = self.link.thread  # (before the worker is built, nothing is queued or moving)
+        serial = self.workers.thread  # (before the worker is built, nothing is queued or moving)
         dropped = serial.worker.cancel_pending() if serial is not None else []
         self.report_dropped(dropped)
         machine = self.machine

@@ -16,9 +16,10 @@ from widgets.lazy_view import built
 
 if TYPE_CHECKING:
     from app.window.device import jobs
+    from app.window.device.connect_options import DeviceInfo
     from app.window.device.move_estimate import MoveEstimate
     from app.window.device.program_pause import ProgramPause
-    from app.window.device.worker import DeviceInfo, SerialWorker
+    from app.window.device.worker import SerialWorker
     from app.window.device.worker_link import WorkerLink
     from app.window.services import Point, WindowParts
     from drivers.device.motion import MoveStart

@@ -14,7 +14,7 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow, QWidget
 
 from app.common.settings import write_protocol_settings
 from app.window.device import jobs
-from app.window.device.worker import DeviceInfo
+from app.window.device.connect_options import DeviceInfo
 from app.window.docks.program_dock import ProgramDock
 from app.window.layout.dock_layout import DEVICE_DOCKS
 from drivers.protocols.capabilities import Capabilities

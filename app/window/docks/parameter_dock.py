@@ -12,7 +12,7 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow
 from app.common.messages import localized
 from app.common.settings import read_parameters, write_parameters
 from app.window.device import jobs
-from app.window.device.worker import DeviceInfo
+from app.window.device.connect_options import DeviceInfo
 from app.window.layout.dock_layout import empty_dock
 from drivers.device.param_profile import read_profile, write_profile
 from drivers.errors import BadInput

@@ -160,7 +160,7 @@ def test_a_held_jog_on_a_device_with_a_stop_halts_at_the_release(qtbot, window: 
     qtbot.waitUntil(lambda: _idle(window), timeout=5000)
     window.jog_panel.set_step(10)  # 1 s a step
     view = _keys_active(qtbot, window)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     _send(view, QEvent.Type.KeyPress, Qt.Key.Key_Right)
     # The first step (the press's own) is whole; the next one, sent because the key is held,
     # is halted by the release.

@@ -121,7 +121,7 @@ def test_a_split_pair_after_the_stop_moves_the_laser_no_more_handler_only(
     view = window.view2d
     view.setFocus()
     qtbot.waitUntil(lambda: "keys active" in window.jog_panel.hint_label.text(), timeout=3000)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     _send(view, PRESS, RIGHT, 50_000)
     qtbot.waitUntil(lambda: device.position()[0] > 4.0, timeout=5000)  # held, not a tap
     _send(view, RELEASE, RIGHT, 50_660)  # the stop goes now
@@ -159,7 +159,7 @@ def test_a_split_pair_taken_for_a_tap_still_stops_at_the_real_release_handler_on
     view = window.view2d
     view.setFocus()
     qtbot.waitUntil(lambda: "keys active" in window.jog_panel.hint_label.text(), timeout=3000)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     _send(view, PRESS, RIGHT, 60_000)
     _send(view, RELEASE, RIGHT, 60_040)  # split at once: within a tap, no stop
     _send(view, PRESS, RIGHT, 60_040)

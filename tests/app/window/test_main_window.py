@@ -203,7 +203,7 @@ def test_export_from_the_menu(qtbot, window: MainWindow, tmp_path: Path) -> None
 
 
 def test_window_adapts_to_a_two_axis_commanded_only_protocol(qtbot, window: MainWindow) -> None:
-    from app.window.device.worker import DeviceInfo
+    from app.window.device.connect_options import DeviceInfo
     from drivers.protocols.capabilities import Capabilities, Completion
 
     caps = Capabilities(

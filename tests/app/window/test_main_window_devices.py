@@ -42,7 +42,7 @@ def test_piframe_arc_is_previewed_then_run(qtbot, window: MainWindow) -> None:
         lambda: window.readout.position() == pytest.approx((-5.0, 0.0, 0.0), abs=1e-9),
         timeout=15000,
     )
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     assert [action for action, _ in device.history] == [1, 2]  # to the start, then the arc
     qtbot.waitUntil(lambda: window.status_line.state() == status.IDLE, timeout=5000)
 
@@ -76,7 +76,7 @@ def test_firmata_one_axis_configure_and_jog(qtbot, window: MainWindow) -> None:
     window.jog_panel.set_step(1)
     qtbot.mouseClick(window.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: window.readout.position() == (1.0, 0.0, 0.0), timeout=8000)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     assert device.steps() == 80  # 1 mm at 80 steps/mm
 
 

@@ -48,7 +48,7 @@ def test_a_program_streams_under_corruption_with_progress(
     qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: panel.progress.value() == 100, timeout=40000)
     qtbot.waitUntil(lambda: panel.run_button.isEnabled(), timeout=5000)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     moves = [values[:2] for word, values, *_ in device.executed if word == 0x01]
     assert moves == [(float(i % 10), float(i // 10)) for i in range(100)]  # once each, in order
     assert "executed 100" in panel.figures.text()
@@ -86,7 +86,7 @@ def test_stop_flushes_the_queue(qtbot, window: MainWindow, tmp_path: Path) -> No
     qtbot.waitUntil(lambda: _acknowledged(panel.figures.text()) >= 14, timeout=5000)
     qtbot.mouseClick(panel.stop_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: panel.run_button.isEnabled(), timeout=10000)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     assert device.queue_length() == 0
     assert len([w for w, *_ in device.executed if w == 0x01]) < 40
 
@@ -101,7 +101,7 @@ def test_stop_halts_a_move_under_way(qtbot, window: MainWindow) -> None:
     assert window.stop_action.text() == "&Stop"
     window.stop_action.trigger()
     qtbot.waitUntil(lambda: window.status_line.state() == status.IDLE, timeout=5000)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     x = device.position()[0]
     assert 2 < x < 50
     assert window.readout.position()[0] == pytest.approx(x, abs=0.5)  # type: ignore[index]

@@ -177,5 +177,5 @@ def test_the_built_in_device_speaks_the_variant_chosen(qtbot, window: MainWindow
     variant in the bar (board12: 12-character packets at 115200 baud)."""
     with qtbot.waitSignal(window.settled, timeout=8000):
         window.connect_device("sim://visiomex?instant=1", "visiomex", 115200, "board12")
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     assert device.variant.name == "board12"

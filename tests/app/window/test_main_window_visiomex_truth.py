@@ -25,7 +25,7 @@ def _connect(qtbot, win: MainWindow) -> None:
 
 
 def _device(win: MainWindow):
-    return win.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    return win.worker.session.simulator  # type: ignore[union-attr]
 
 
 def _jog(qtbot, win: MainWindow, button: str) -> None:

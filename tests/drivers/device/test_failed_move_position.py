@@ -55,7 +55,7 @@ def test_an_unconfigured_firmata_jog_leaves_the_position_where_it_was(
     failures = _jog_x_plus_fails(qtbot, window)
     assert "not configured" in failures[0]
     _assert_at_origin(window)
-    motion = window.worker._motion
+    motion = window.worker.session
     assert motion is not None and motion.last_position is not None
     assert (motion.last_position.x, motion.last_position.y) == (0.0, 0.0)  # count not advanced
 

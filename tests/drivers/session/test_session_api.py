@@ -158,10 +158,8 @@ def test_a_stop_from_another_thread_ends_an_operation_of_many_steps() -> None:
 
 
 # -- the front ends drive the session only ------------------------------------------------------
-FRONT_ENDS = ("app/cli", "app/common", "bench", "app/window/device/worker.py")
-EXCLUDED = {
-    "app/window/device/worker.py": "being split; it moves onto the session's methods then",
-}
+FRONT_ENDS = ("app/cli", "app/common", "bench", "app/window/device")
+EXCLUDED: dict[str, str] = {}
 LAYERS = ("motion", "client", "link")
 
 

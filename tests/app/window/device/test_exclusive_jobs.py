@@ -32,7 +32,7 @@ def _program(path: Path, count: int, speed: float) -> Path:
 
 
 def _moves_executed(win: MainWindow) -> list[tuple[float, float]]:
-    device = win.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = win.worker.session.simulator  # type: ignore[union-attr]
     return [values[:2] for word, values, *_ in device.executed if word == MOVE_LINEAR]
 
 

@@ -22,7 +22,7 @@ import pytest
 from PySide6.QtCore import QObject
 
 from app.window.device import jobs
-from app.window.device.worker import ConnectOptions
+from app.window.device.connect_options import ConnectOptions
 from app.window.device.worker_thread import WorkerThread
 from drivers.device.travel import parse_travel
 from drivers.protocols.base import Protocol

@@ -33,7 +33,7 @@ def pause_a_laser_zigzag(qtbot, window: MainWindow, tmp_path: Path) -> LaserDevi
     qtbot.mouseClick(panel.load_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: not window.devices.programs.reading, timeout=5000)
     qtbot.mouseClick(panel.run_button, Qt.MouseButton.LeftButton)
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     qtbot.waitUntil(lambda: device.queue_length() >= 6, timeout=10000)
     qtbot.mouseClick(panel.pause_button, Qt.MouseButton.LeftButton)
     qtbot.waitUntil(lambda: window.status_line.state() == status.PAUSED, timeout=5000)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from app.window.device import jobs
-from app.window.device.worker import DeviceInfo
+from app.window.device.connect_options import DeviceInfo
 from app.window.device.worker_thread import WorkerThread
 from drivers.protocols.events import PositionReport
 from tests.support.relay import wait_in_gui
@@ -72,7 +72,7 @@ def test_device_vanishing_mid_move_is_an_error_not_a_hang(
     with wait_in_gui(qtbot, worker.busy_changed):
         worker.submit(jobs.MoveToJob(100, 0, 0))
     worker.submit(jobs.HomeJob())
-    worker._link.port.close()  # the device goes away under the worker
+    worker.session.link.port.close()  # the device goes away under the worker
     qtbot.waitUntil(lambda: any(s == "error" for s, _ in states), timeout=5000)
     detail = next(d for s, d in states if s == "error")
     assert "not sent: go home" in detail
@@ -131,6 +131,6 @@ def test_a_move_queued_before_a_stop_is_not_sent(qtbot, worker_thread: WorkerThr
     assert dict((id(j), w) for j, w in stopped)[id(queued)] == "stopped before it was sent"
     with wait_in_gui(qtbot, worker.job_finished):
         worker.submit(jobs.RefreshJob())  # the worker went on to the next job
-    protocol = worker._motion.client.protocol
+    protocol = worker.session.protocol
     moves = [r.data for r in traffic if r.direction == "tx" and protocol.sent_commands(r.data)[0]]
     assert len(moves) == 1, moves  # the first move only

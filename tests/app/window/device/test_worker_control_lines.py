@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 from PySide6.QtCore import QObject, Signal
 
-from app.window.device.worker import ConnectOptions
+from app.window.device.connect_options import ConnectOptions
 from app.window.device.worker_thread import WorkerThread
 from drivers.link.control_lines import ControlLines
 from tests.support.relay import GuiRelay, wait_in_gui
@@ -95,7 +95,7 @@ def test_a_toggle_reaches_the_device_and_is_noted(
         window.toggle.emit("dtr", False)
     assert changed.args[0] == ControlLines(False, True, True, True, False, False)
     qtbot.waitUntil(lambda: notes == ["DTR off"])
-    assert worker._link is not None and worker._link.port.device.dtr is False
+    assert worker.session is not None and worker.session.link.port.device.dtr is False
     text = log.getvalue()
     assert "# control lines: DTR on, RTS on, CTS on, DSR on, CD off, RI off" in text
     assert "# DTR off" in text
@@ -107,7 +107,7 @@ def test_a_polled_input_change_is_reported_and_noted(
     _connect(qtbot, record, worker_thread)
     worker = worker_thread.worker
     notes = record(worker.control_note)
-    device = worker._link.port.device  # type: ignore[union-attr]
+    device = worker.session.link.port.device  # type: ignore[union-attr]
     dropped = ControlLines(True, True, False, True, False, False)
     with wait_in_gui(qtbot, worker.control_lines_changed, timeout=3000) as changed:
         device.modem_inputs = lambda: dropped  # the device drops CTS
@@ -122,7 +122,7 @@ def test_a_break(qtbot, record, worker_thread: WorkerThread, window: Window) -> 
     with wait_in_gui(qtbot, worker.control_lines_changed):
         window.brk.emit()
     qtbot.waitUntil(lambda: notes == ["break 250 ms"])
-    assert worker._link.port.device.breaks == 1  # type: ignore[union-attr]
+    assert worker.session.link.port.device.breaks == 1  # type: ignore[union-attr]
 
 
 def test_connect_options_choose_dtr_and_rts(qtbot, record, worker_thread: WorkerThread) -> None:

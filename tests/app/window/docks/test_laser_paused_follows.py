@@ -48,7 +48,7 @@ def test_while_paused_the_count_and_position_follow_the_device(
     qtbot.mouseClick(panel.pause_button, Qt.MouseButton.LeftButton)
     assert "paused" in panel.figures.text() and "s left" not in panel.figures.text()
     at_pause = panel.progress.value()
-    device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+    device = window.worker.session.simulator  # type: ignore[union-attr]
     # The device empties its queue: the count and the readout follow it, still paused.
     qtbot.waitUntil(lambda: device.queue_length() == 0 and not device.is_running(), timeout=20000)
     acknowledged = _figure(panel.figures.text(), "acknowledged")

@@ -177,7 +177,7 @@ def test_a_program_runs_to_its_last_point_with_its_last_line_highlighted(
     assert seen_lines and seen_lines[-1] == len(GCODE.splitlines()) - 1
     assert len(window.view2d.program()) == len(dock.flat)  # type: ignore[arg-type]
     if protocol == "pi-frame":  # the arc went as the device's own arc, the dwell too
-        device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+        device = window.worker.session.simulator  # type: ignore[union-attr]
         assert device.position() == pytest.approx((100.0, 100.0, 0.0))  # ticks: 100 a mm
         actions = [action for action, _ in device.history]
         assert actions.count(CIRCULAR) == 1 and actions.count(DWELL) == 1

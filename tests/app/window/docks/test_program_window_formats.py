@@ -99,7 +99,7 @@ def test_each_kind_of_file_runs_to_its_last_point_from_the_window(
         position = window.readout.position()
         assert position is not None
         if protocol == "visiomex":  # its firmware's Y loop makes no step at power-on (issue 28)
-            device = window.worker._motion.client.link.port.device  # type: ignore[union-attr]
+            device = window.worker.session.simulator  # type: ignore[union-attr]
             assert position[:2] == pytest.approx(device.position(), abs=0.006), name
             assert position[0] == pytest.approx(x, abs=0.026), name
             continue
