@@ -16,6 +16,7 @@ from drivers.errors import (
     QueueFull,
     Retransmit,
 )
+from drivers.framers.splitter import FrameSplitter
 from drivers.link.transport import Link
 from drivers.messages import Message, message_of
 from drivers.protocols.base import Exchange, Protocol, Reply
@@ -48,10 +49,9 @@ class Client:
         self.protocol = protocol
         self.timeout = timeout
         self.clock = clock
-        self.framer = protocol.new_framer()
+        self.splitter = FrameSplitter(protocol.new_framer(), clock())
+        """The received bytes cut into frames (drivers/framers/splitter.py)."""
         self.listeners: list[EventListener] = []
-        self._buffer = bytearray()
-        self._last_rx = clock()
         self._last_reply = 0.0
         self._last_write = -1e9
         self._opened = clock()
@@ -68,6 +68,11 @@ class Client:
         """Waits for room in the device's queue (queue-full replies)."""
         self.abort = threading.Event()
         """Set from any thread to make a waiting `execute` raise Aborted."""
+
+    @property
+    def _last_rx(self) -> float:
+        """When bytes last came from the device."""
+        return self.splitter.last_data
 
     def execute(self, command: Command, timeout: float | None = None, extra: float = 0.0) -> Reply:
         """Send `command` and wait for its reply.
@@ -295,17 +300,8 @@ class Client:
         for hook in self.wait_hooks:
             hook()
         now = self.clock()
-        if data:
-            self._buffer += data
-            self._last_rx = now
-        frames, rest = self.framer.split(bytes(self._buffer))
-        idle = self.framer.idle_timeout
-        if rest and idle is not None and now - self._last_rx >= idle:
-            used, frame = self.framer.flush(rest)
-            rest = rest[used:]
-            if frame is not None:
-                frames.append(frame)
-        self._buffer = bytearray(rest)
+        frames = self.splitter.feed(data, now)
+        frames += self.splitter.idle(now)
         events: list[Event] = []
         for frame in frames:
             try:

@@ -8,6 +8,7 @@ from typing import ClassVar
 
 from drivers.errors import BadInput, FrameError, MotionError
 from drivers.framers.base import Framer
+from drivers.framers.splitter import FrameSplitter
 from drivers.messages import Message, message_of
 from drivers.protocols.capabilities import Capabilities
 from drivers.protocols.commands import Command, MoveBy, SetParameter
@@ -338,8 +339,7 @@ class Protocol(ABC):
     def sent_commands(self, data: bytes) -> list[Command | None]:
         """Every frame in bytes the host sends, each as `sent_command` reads it; FrameError for
         bytes that are not whole frames (the device would wait for the rest)."""
-        framer = self.new_tx_framer()
-        frames, rest = ([data], b"") if framer is None else framer.split(data)
+        frames, rest = FrameSplitter(self.new_tx_framer()).whole(data)
         if rest:
             raise FrameError(
                 Message(

@@ -6,7 +6,7 @@ from __future__ import annotations
 import logging
 
 from drivers.errors import MotionError
-from drivers.framers.lines import LineFramer
+from drivers.framers.splitter import FrameSplitter
 from drivers.messages import Message
 from drivers.protocols.base import Protocol
 from drivers.protocols.events import Event, TextLine, Undecodable
@@ -26,12 +26,10 @@ def recognised(protocol: Protocol, data: bytes) -> int:
     """How many frames in `data` the protocol reads as something of its own: a reply, a report,
     its boot banner; plain text lines and undecodable frames do not count."""
     try:
-        framer = protocol.new_framer()
-        frames, rest = framer.split(data)
-        if rest and isinstance(framer, LineFramer):
-            # A line the device was still printing when the wait gave up counts too: a
-            # Visiomex banner's `Checkpoint 2` can come a few ms before its CR LF.
-            frames += framer.split(rest + framer.terminator)[0]
+        splitter = FrameSplitter(protocol.new_framer())
+        # A line the device was still printing when the wait gave up counts too: a Visiomex
+        # banner's `Checkpoint 2` can come a few ms before its CR LF.
+        frames = splitter.feed(data) + splitter.end()
     except MotionError:
         return 0
     count = 0
@@ -49,9 +47,8 @@ def recognised(protocol: Protocol, data: bytes) -> int:
 def recognised_sent(protocol: Protocol, data: bytes) -> int:
     """How many frames in bytes a host sent the protocol reads as moves its device makes (a
     device that never answers, such as pi-frame's, is known by what it is sent)."""
-    framer = protocol.new_tx_framer()
     try:
-        frames = [data] if framer is None else framer.split(data)[0]
+        frames = FrameSplitter(protocol.new_tx_framer()).whole(data)[0]
     except MotionError:
         return 0
     count = 0

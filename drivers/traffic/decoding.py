@@ -14,8 +14,8 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 
 from drivers.errors import FrameError, MotionError
-from drivers.framers.base import Framer
 from drivers.framers.lines import LineFramer
+from drivers.framers.splitter import FrameSplitter
 from drivers.messages import Message, message_of
 from drivers.protocols.base import Protocol
 from drivers.protocols.events import ErrorReport, Event, TextLine, Undecodable
@@ -113,27 +113,6 @@ class Frame:
         return f"Frame({self.raw!r}, {self.kind}, {self.meaning!r})"
 
 
-def _wire_spans(consumed: bytes, frames: list[bytes]) -> list[bytes]:
-    """Each frame's bytes as they crossed (terminators, skipped noise before it); where a frame
-    is not found verbatim in them (escaped or stuffed), its decoded bytes stand for it."""
-    spans: list[bytes] = []
-    position = 0
-    starts = []
-    for frame in frames:
-        start = consumed.find(frame, position) if frame else -1
-        if start < 0:
-            return [b""] * len(frames)
-        starts.append(start)
-        position = start + len(frame)
-    for index in range(len(frames)):
-        end = starts[index + 1] if index + 1 < len(frames) else len(consumed)
-        begin = starts[index]
-        if index == 0 and consumed[:begin].strip(b"\r\n"):
-            begin = 0  # noise before the frame crossed with it; a bare line end is the last one's
-        spans.append(consumed[begin:end])
-    return spans
-
-
 class StreamDecoder:
     """Decodes traffic as it comes, record by record, keeping each direction's partial frame.
 
@@ -144,11 +123,10 @@ class StreamDecoder:
 
     def __init__(self, protocol: Protocol) -> None:
         self.protocol = protocol
-        self._framers: dict[str, Framer | None] = {
-            "rx": protocol.new_framer(),
-            "tx": protocol.new_tx_framer(),
+        self._splitters = {
+            "rx": FrameSplitter(protocol.new_framer()),
+            "tx": FrameSplitter(protocol.new_tx_framer()),
         }
-        self._pending = {"rx": b"", "tx": b""}
         self._cache: dict[str, dict[bytes, Frame]] = {"rx": {}, "tx": {}}
         # Frames seen once, as bytes: a frame is kept (with its events) when it crosses again,
         # so a flood of lines that never repeat leaves no objects for the garbage collector.
@@ -173,25 +151,16 @@ class StreamDecoder:
 
     def frames(self, direction: str, data: bytes) -> Sequence[Frame]:
         """As `feed_bytes`, as shared Frame objects (no time): the traffic index's fast path."""
-        pending = self._pending[direction]
+        splitter = self._splitters[direction]
+        pending = splitter.pending
         records = self._records[direction]
         if not pending:
             recorded = records.get(data)
             if recorded is not None:
-                frames, self._pending[direction] = recorded
+                frames, splitter.pending = recorded
                 return frames
-        framer = self._framers[direction]
-        split: tuple[list[bytes], list[bytes], bytes] | None
-        if framer is None:  # the record is the frame (packets ended by silence)
-            split = ([data], [data], b"")
-        else:
-            buffer = pending + data if pending else data
-            split = framer.split_wired(buffer) if isinstance(framer, LineFramer) else None
-            if split is None:
-                found, rest = framer.split(buffer)
-                split = found, _wire_spans(buffer[: len(buffer) - len(rest)], found), rest
-        found, wires, rest = split
-        self._pending[direction] = rest
+        found, wires = splitter.feed_wired(data)
+        rest = splitter.pending
         cache, seen = self._cache[direction], self._seen[direction]
         out = []
         repeated = True  # every frame of the record crossed before
@@ -216,6 +185,7 @@ class StreamDecoder:
                         seen.clear()
                     seen[frame] = None
             out.append(known)
+        framer = splitter.framer
         stateless = framer is None or isinstance(framer, LineFramer)  # the same split again
         if stateless and repeated and not pending and len(out) <= RECORD_FRAMES:
             if len(records) >= CACHE_SIZE:
@@ -225,7 +195,7 @@ class StreamDecoder:
 
     def pending(self, direction: str) -> bytes:
         """Bytes of `direction` not yet a whole frame."""
-        return self._pending[direction]
+        return self._splitters[direction].pending
 
 
 def connection_protocol(note: str) -> tuple[str, str] | None:

@@ -16,6 +16,7 @@ import random
 from dataclasses import dataclass
 
 from drivers.errors import BadInput, DeviceError, FrameError, QueueFull, Retransmit
+from drivers.framers.splitter import FrameSplitter
 from drivers.framers.stuffed import StuffedFramer
 from drivers.messages import Message, message_of
 from drivers.protocols.base import Exchange, MoveSequence, Protocol, Setting
@@ -337,7 +338,7 @@ class LaserProtocol(Protocol):
 
     def raw_exchange(self, data: bytes) -> LaserExchange | None:
         """A whole frame is followed by its first instruction's word (and frame number)."""
-        frames, rest = self.new_framer().split(data)
+        frames, rest = FrameSplitter(self.new_framer()).whole(data)
         if len(frames) != 1 or rest:
             return None
         try:

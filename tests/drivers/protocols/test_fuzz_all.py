@@ -1022,7 +1022,7 @@ def test_line_framer_split_wired_is_split_with_its_wire_spans(buffer: bytes, lim
     """The line framer's fast path (bytes.splitlines) gives what `split` and the decoder's wire
     spans give, or None where a line is too long for it."""
     from drivers.framers.lines import LineFramer
-    from drivers.traffic.decoding import _wire_spans
+    from drivers.framers.splitter import wire_spans as _wire_spans
 
     framer = LineFramer(b"\n", max_length=limit)
     fast = framer.split_wired(buffer)
