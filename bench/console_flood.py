@@ -11,6 +11,10 @@ Modes (each prints one JSON object; run each in its own process so memory figure
   spool's hole punched), the table's part (rows removed) and the whole, with the view following
   the tail and with it scrolled up.
 - `memory --lines N`: resident memory the process gained for N lines, and the spool's size.
+- `backlog --lines N --rate R --seconds S`: the console alone (offscreen) with N lines waiting
+  (a burst, or a moment when the GUI was busy) and R lines/s more coming in worker batches for
+  S seconds: the event loop's gaps (99th percentile and worst), the lines/s it took meanwhile,
+  and the seconds after the flood's end until every line is in the table.
 - `flood --seconds S`: the main window on `sim://coxiris?chatter=5000` (5,000 debug lines/s,
   a USB device with no baud limit), jogging so the 3D/2D views update; a 5 ms timer records
   the longest event-loop gap from one second after connecting on, and the GUI thread's CPU
@@ -69,19 +73,26 @@ def _console() -> object:
 
 
 def _feed(lines: int, console: object | None = None) -> tuple[object, float, float]:
-    """A console fed `lines` lines in worker-sized batches; (console, seconds, CPU seconds)."""
+    """A console fed `lines` lines as the window feeds it: the records made beforehand (the
+    link makes them in the worker's thread), handed over a worker batch at a time, a flush per
+    batch; (console, seconds, CPU seconds) of the console's part."""
+    from drivers.link.records import Traffic
+
     console = console or _console()
-    rounds = lines // 8
-    cpu = time.process_time()
-    start = time.perf_counter()
-    t = 0.0
-    for i in range(rounds):
+    batches, batch, t = [], [], 0.0
+    for _ in range(lines // 8):
         for direction, data in EXCHANGE:
             t += 0.0002
-            console.append_traffic(direction, data, t, 1.7e9 + t)  # type: ignore[attr-defined]
-        if i % (BATCH // 8) == 0:
-            console.flush()  # type: ignore[attr-defined]
-    console.flush()  # type: ignore[attr-defined]
+            batch.append(Traffic(direction, data, t, 1.7e9 + t))
+        if len(batch) >= BATCH * 6 // 8:
+            batches.append(batch)
+            batch = []
+    batches.append(batch)
+    cpu = time.process_time()
+    start = time.perf_counter()
+    for records in batches:
+        console.append_records(records)  # type: ignore[attr-defined]
+        console.flush()  # type: ignore[attr-defined]
     return console, time.perf_counter() - start, time.process_time() - cpu
 
 
@@ -425,6 +436,80 @@ def _below_loop(stack: tuple[str, ...]) -> list[str]:
     return list(stack)
 
 
+def backlog(lines: int, rate: float, seconds: float) -> dict[str, float]:
+    """A console with `lines` lines waiting and `rate` lines/s more for `seconds`: its gaps."""
+    from PySide6.QtCore import QElapsedTimer, Qt, QTimer
+    from PySide6.QtWidgets import QApplication
+
+    console = _console()
+    app = QApplication.instance()
+    t = [0.0]
+    fed = [0]
+
+    def add(count: int) -> None:
+        for _ in range(count):
+            direction, data = EXCHANGE[fed[0] % len(EXCHANGE)]
+            t[0] += 1e-5
+            console.append_traffic(direction, data, t[0], 1.7e9 + t[0])  # type: ignore[attr-defined]
+            fed[0] += 1
+
+    add(lines)  # the burst, waiting (lines here are records: a record is one console line)
+    per_batch = max(1, round(rate * 0.05))  # the worker hands over a batch every 50 ms
+    clock = QElapsedTimer()
+    clock.start()
+    gaps: list[float] = []
+    last = [clock.nsecsElapsed()]
+    ended = [0.0, 0.0]  # perf_counter when the flood ended, when the table had every line
+    start = time.perf_counter()
+    taken_in_flood = [0]
+
+    def tick() -> None:
+        now = clock.nsecsElapsed()
+        gaps.append((now - last[0]) / 1e6)
+        last[0] = now
+        waiting = console.backlog()  # type: ignore[attr-defined]
+        in_table = console._shown_until == len(console.index)  # type: ignore[attr-defined]
+        if ended[0] and not ended[1] and not waiting and in_table:
+            ended[1] = time.perf_counter()
+            app.quit()
+
+    def batch() -> None:
+        if time.perf_counter() - start >= seconds:
+            if not ended[0]:
+                ended[0] = time.perf_counter()
+                taken_in_flood[0] = len(console.index)  # type: ignore[attr-defined]
+                feeder.stop()
+            return
+        add(per_batch)
+
+    timer = QTimer()
+    timer.setTimerType(Qt.TimerType.PreciseTimer)
+    timer.setInterval(5)
+    timer.timeout.connect(tick)
+    timer.start()
+    feeder = QTimer()
+    feeder.setTimerType(Qt.TimerType.PreciseTimer)
+    feeder.setInterval(50)
+    feeder.timeout.connect(batch)
+    feeder.start()
+    QTimer.singleShot(int((seconds + 60) * 1000), app.quit)  # never hang
+    app.exec()
+    timer.stop()
+    gaps.sort()
+    drained = ended[1] - ended[0] if ended[1] else float("nan")
+    return {
+        "backlog_lines": lines,
+        "flood_lines_per_s": rate,
+        "seconds": seconds,
+        "p99_gap_ms": gaps[int(0.99 * (len(gaps) - 1))] if gaps else float("nan"),
+        "max_gap_ms": gaps[-1] if gaps else float("nan"),
+        "taken_lines_per_s": taken_in_flood[0] / seconds,
+        "drained_s_after_flood": drained,
+        "lines": len(console.index),  # type: ignore[attr-defined]
+        "fed": fed[0],
+    }
+
+
 def flood(
     seconds: float, profile_gaps_ms: float | None = None, trace_gaps_ms: float | None = None
 ) -> dict[str, float]:
@@ -527,12 +612,13 @@ def flood(
 def main() -> int:
     """Run one mode and print one JSON object."""
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("mode", choices=["ingest", "trim", "memory", "flood"])
+    parser.add_argument("mode", choices=["ingest", "trim", "memory", "backlog", "flood"])
     parser.add_argument("--lines", type=int, default=200_000)
     parser.add_argument(
         "--max-lines", type=int, default=0, help="ingest: the console's line limit (0: none)"
     )
     parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--rate", type=float, default=20_000, help="backlog: lines/s coming")
     parser.add_argument("--display", action="store_true", help="use $DISPLAY instead of offscreen")
     parser.add_argument(
         "--profile-gaps",
@@ -570,6 +656,8 @@ def main() -> int:
         result = trim(options.lines)
     elif options.mode == "memory":
         result = memory(options.lines)
+    elif options.mode == "backlog":
+        result = backlog(options.lines, options.rate, options.seconds)
     else:
         result = flood(options.seconds, options.profile_gaps, options.trace_gaps)
     print(json.dumps(result))

@@ -61,6 +61,7 @@ PREFERRED_SIZE = QSize(1400, 900)  # a first start's window, where the screen ha
 CONSOLE_CALLS = frozenset(
     {
         "append_note",
+        "append_records",
         "append_traffic",
         "set_protocol",
         "set_line_ending",

@@ -5,21 +5,45 @@ from __future__ import annotations
 import threading
 import time
 from dataclasses import dataclass, field
-from typing import TextIO
+from typing import ClassVar, TextIO
 
 TX = "tx"
 RX = "rx"
+NOTE = ""  # a note's direction: it crossed no wire
+DIRECTIONS = (TX, RX, NOTE)
+"""Every direction a record has, in the order the traffic index numbers them."""
 _wall_clock = time.time  # `time` is also a field name below, which hides the module in the class
 
 
 @dataclass(frozen=True)
 class Traffic:
-    """Bytes that crossed the port: direction (`tx`/`rx`), data, and monotonic + wall-clock time."""
+    """Bytes that crossed the port: direction (`tx`/`rx`), data, and monotonic + wall-clock time
+    (None: not known, as in a log read back)."""
 
     direction: str
     data: bytes
     time: float
-    wall: float = field(default_factory=_wall_clock)
+    wall: float | None = field(default_factory=_wall_clock)
+
+
+@dataclass(frozen=True)
+class Note:
+    """A line among the traffic that crossed no wire (connected, a line changed, a program
+    loaded): its text, and monotonic + wall-clock time (None: not known)."""
+
+    text: str
+    time: float
+    wall: float | None = field(default_factory=_wall_clock)
+    direction: ClassVar[str] = NOTE
+
+    @property
+    def data(self) -> bytes:
+        """The text as UTF-8 (for code that treats every record as bytes)."""
+        return self.text.encode("utf-8")
+
+
+Record = Traffic | Note
+"""What travels from the tap to the console's index, unchanged."""
 
 
 def hexdump_lines(record: Traffic, start: float, width: int = 16) -> list[str]:

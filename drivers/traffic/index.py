@@ -25,14 +25,15 @@ from __future__ import annotations
 import re
 import time as time_module
 from array import array
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 
 import numpy as np
 
+from drivers.link.records import DIRECTIONS, Note, Record, Traffic
 from drivers.protocols.base import Protocol
 from drivers.traffic.decoding import Frame, StreamDecoder
-from drivers.traffic.lines import DIRECTION_CODE, DIRECTIONS, KIND_CODE, KINDS, TrafficLine
+from drivers.traffic.lines import DIRECTION_CODE, KIND_CODE, KINDS, TrafficLine
 from drivers.traffic.log_reader import LogRecord
 from drivers.traffic.pairing import Pairing
 from drivers.traffic.search import matching_rows, wanted_codes
@@ -42,12 +43,11 @@ _CACHE_SIZE = 4096
 _TX, _RX = DIRECTION_CODE["tx"] << 4, DIRECTION_CODE["rx"] << 4
 
 
-def _record_direction(record: LogRecord) -> str:
-    return "" if record.note else record.direction
-
-
-def _record_data(record: LogRecord) -> bytes:
-    return record.note.encode("utf-8") if record.note else record.data
+def _record(record: LogRecord) -> Record:
+    """A log's record as the tap makes one (its wall-clock time not known)."""
+    if record.note:
+        return Note(record.note, record.time, None)
+    return Traffic(record.direction, record.data, record.time, None)
 
 
 class TrafficIndex:
@@ -145,7 +145,7 @@ class TrafficIndex:
     def add(self, direction: str, data: bytes, time: float, wall: float | None = None) -> int:
         """Take bytes that crossed; returns how many lines they completed."""
         before = len(self)
-        self.add_many([(time, direction, bytes(data), wall)])
+        self.add_many([Traffic(direction, bytes(data), time, wall)])
         return len(self) - before
 
     def typed(self, data: bytes, time: float) -> None:
@@ -160,28 +160,25 @@ class TrafficIndex:
         self._append(time, "", "note", b"", text)
         self._spool.unwritten += self._columns.take_new()
 
-    def add_many(
-        self,
-        items: Sequence[tuple[float, str, bytes, float | None]],
-        deadline: float | None = None,
-    ) -> int:
-        """Take records in order: (time, direction, data, wall clock or None), a direction of ""
-        a note (data its UTF-8 text). With a `deadline` (perf_counter), stops once it has passed
-        and returns how many were taken (all, else)."""
+    def add_many(self, items: Iterable[Record], deadline: float | None = None) -> int:
+        """Take records in order, as the tap made them (Traffic, Note). With a `deadline`
+        (perf_counter), stops once it has passed and returns how many were taken (all, else)."""
         decoder = self._decoder
         frames_of = decoder.frames if decoder is not None else None
         sent, received = self._add_sent, self._add_received
         clock = time_module.perf_counter
         no_wall = self.wall_offset is None
         taken = 0
-        for when, direction, data, wall in items:
+        for item in items:
             taken += 1
-            if no_wall and wall is not None:
-                self.wall_offset = wall - when
+            when, direction = item.time, item.direction
+            if no_wall and item.wall is not None:
+                self.wall_offset = item.wall - when
                 no_wall = False
-            if not direction:
-                self._append(when, "", "note", b"", data.decode("utf-8"))
+            if isinstance(item, Note):
+                self._append(when, "", "note", b"", item.text)
                 continue
+            data = item.data
             if frames_of is None:
                 frames: Sequence[Frame] = (Frame(bytes(data), b"", "", "frame", ()),)
             else:
@@ -206,9 +203,7 @@ class TrafficIndex:
                     self._append(r.time, "" if r.note else r.direction, kind, r.data, r.note)
                 self._spool.unwritten += self._columns.take_new()
             else:
-                self.add_many(
-                    [(r.time, _record_direction(r), _record_data(r), None) for r in chunk]
-                )
+                self.add_many([_record(r) for r in chunk])
             self._write()
 
     # The two below append a frame's line inline (its spool line kept on the frame for the next

@@ -10,8 +10,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from drivers.link.records import DIRECTIONS
+
 KINDS = ("motion", "query", "poll", "setting", "error", "debug", "note")
-DIRECTIONS = ("tx", "rx", "")  # "" for notes
 KIND_CODE = {kind: code for code, kind in enumerate(KINDS)}
 DIRECTION_CODE = {direction: code for code, direction in enumerate(DIRECTIONS)}
 _ESCAPES = {0x0D: "\\r", 0x0A: "\\n", 0x09: "\\t", 0x5C: "\\\\"}

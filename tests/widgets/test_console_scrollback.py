@@ -13,6 +13,7 @@ from PySide6.QtWidgets import QAbstractItemView
 
 from app.window.console.table import BYTES, REPLY
 from app.window.console.traffic_console import TRIM_MARGIN, RawConsole
+from drivers.link.records import Traffic
 from drivers.protocols.registry import create_protocol
 from drivers.traffic.index import TrafficIndex
 from drivers.traffic.search import compile_filter
@@ -60,7 +61,7 @@ def _index_with(lines: int) -> TrafficIndex:
     while len(items) < lines:
         for direction, data in EXCHANGE:
             t += 0.001
-            items.append((t, direction, data, None))
+            items.append(Traffic(direction, data, t, None))
     index.add_many(items)
     index.commit()
     return index

@@ -6,7 +6,7 @@ import numpy as np
 from PySide6.QtCore import QObject, Slot
 
 from app.window.console.traffic_console import RawConsole
-from drivers.traffic.lines import DIRECTIONS
+from drivers.link.records import DIRECTIONS
 from widgets.traffic_timeline import TrafficTimeline
 
 

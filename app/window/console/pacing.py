@@ -9,17 +9,18 @@ from collections.abc import Callable
 
 from PySide6.QtCore import QObject, QTimer
 
+from drivers.link.records import Record
 from widgets._pacer import run_paced
 
 FLUSH_INTERVAL_MS = 100  # 10 Hz: a flood costs a repaint of the table per flush
 FLUSH_BUDGET = 0.002  # s of decoding per turn of the event loop; the rest waits its turn
 RECENT_RECORDS = 20_000  # raw records kept for `records()`; the index keeps every line
 
-Incoming = tuple[float, str, bytes, float | None]  # (timestamp, direction or "", data, wall)
+Incoming = Record  # as the tap (or the panel, for a note) made it
 
 
 def _when(item: Incoming) -> float:
-    return item[0]
+    return item.time
 
 
 class FeedPacer(QObject):
@@ -29,7 +30,7 @@ class FeedPacer(QObject):
     def __init__(
         self,
         parent: QObject,
-        take: Callable[[list[Incoming], float | None], int],
+        take: Callable[[deque[Incoming], float | None], int],
         show: Callable[[], None],
     ) -> None:
         super().__init__(parent)
@@ -38,7 +39,7 @@ class FeedPacer(QObject):
         # arrived and not yet looked at; taken and waiting for their turn (in time order);
         # the latest taken
         self.incoming: list[Incoming] = []
-        self.pending: list[Incoming] = []
+        self.pending: deque[Incoming] = deque()
         self.recent: deque[Incoming] = deque(maxlen=RECENT_RECORDS)
         self.shown_at = 0.0  # perf_counter of the last update of the table
         self.show_due = False  # the table's update waits for the next turn (see timed_flush)
@@ -54,23 +55,48 @@ class FeedPacer(QObject):
             self._schedule()
         self.incoming.append(item)
 
+    def extend(self, items: list[Incoming]) -> None:
+        """Take records (a worker's batch); decoded and shown in the turns to come."""
+        if items:
+            if not self.incoming:
+                self._schedule()
+            self.incoming.extend(items)
+
     def _schedule(self) -> None:
         if not self.timer.isActive():
             self.timer.start(FLUSH_INTERVAL_MS)
 
-    def take_pending(self, deadline: float | None = None) -> None:
+    def take_pending(self, budget: float | None = None) -> None:
         """Into the index, in time order (a note is stamped when added, traffic comes batched);
-        with a `deadline` (perf_counter), what is left when it passes waits for the next turn."""
+        with a `budget` (s of decoding, counted once the new records are in order), what is
+        left when it is spent waits for the next turn. Linear in what arrived, whatever waits."""
         if self.incoming:
             incoming, self.incoming = self.incoming, []
             self.recent.extend(incoming)
-            self.pending.extend(incoming)
-            self.pending.sort(key=_when)  # stable: ties keep their order
+            self._merge(incoming)
         if not self.pending:
             return
+        deadline = None if budget is None else time.perf_counter() + budget
         pending = self.pending
         taken = self._take(pending, deadline)
-        self.pending = pending[taken:] if taken < len(pending) else []
+        if taken >= len(pending):
+            pending.clear()
+        else:
+            for _ in range(taken):
+                pending.popleft()
+
+    def _merge(self, incoming: list[Incoming]) -> None:
+        """Put what arrived among what waits, in time order; ties keep their order (what waited
+        first). Only the waiting records later than the earliest new one are moved."""
+        incoming.sort(key=_when)  # stable; a worker's batch is in order already
+        pending, first = self.pending, incoming[0].time
+        displaced: list[Incoming] = []
+        while pending and pending[-1].time > first:
+            displaced.append(pending.pop())
+        if displaced:
+            displaced.reverse()
+            incoming = sorted(displaced + incoming, key=_when)
+        pending.extend(incoming)
 
     def backlog(self) -> int:
         """Records received but not yet decoded and shown (a flood beyond the budget)."""
@@ -112,7 +138,7 @@ class FeedPacer(QObject):
             self._show()
         else:
             now = time.perf_counter()
-            self.take_pending(now + FLUSH_BUDGET)
+            self.take_pending(FLUSH_BUDGET)
             if not self.pending or now - self.shown_at >= FLUSH_INTERVAL_MS / 1000:
                 self.show_due = True
         if self.pending or self.show_due:

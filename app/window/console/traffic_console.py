@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import logging
 import time
+from collections import deque
 from collections.abc import Callable
 from pathlib import Path
 
@@ -53,6 +54,8 @@ from app.window.console.table import (
     TrafficView,
     stamp,
 )
+from drivers.link.records import RX, TX, Note, Traffic
+from drivers.link.records import Record as TrafficRecord
 from drivers.protocols.base import Protocol
 from drivers.traffic.index import TrafficIndex
 from widgets._i18n import fill
@@ -60,7 +63,7 @@ from widgets.send_line import SendLine
 
 log = logging.getLogger(__name__)
 
-TX, RX, NOTE = "tx", "rx", "note"
+NOTE_KIND = "note"  # what `records()` calls a note's direction
 TRIM_MARGIN = 0.1  # past its line limit by this fraction, the console drops its oldest lines
 
 Record = tuple[str, bytes, float]  # (direction or "note", data, timestamp in seconds)
@@ -212,22 +215,31 @@ class RawConsole(QWidget):
         """Take bytes sent ("tx") or received ("rx") at `timestamp` (s); shown at the next flush."""
         if direction not in (TX, RX):
             raise ValueError(f"direction must be 'tx' or 'rx', not {direction!r}")
-        self.feed.add((timestamp, direction, bytes(data), wall))
+        if wall is None:
+            self.feed.add(Traffic(direction, bytes(data), timestamp))  # (wall: now's)
+        else:
+            self.feed.add(Traffic(direction, bytes(data), timestamp, wall))
+
+    def append_records(self, records: list[TrafficRecord]) -> None:
+        """Take records as the tap made them (a worker's batch), unchanged; shown at the next
+        flush."""
+        self.feed.extend(records)
 
     def append_note(self, text: str, timestamp: float | None = None) -> None:
         """Log an information line such as "connected" (timestamp: the clock's now by default)."""
         when = self.clock() if timestamp is None else timestamp
-        self.feed.add((when, "", text.encode("utf-8"), time.time() - (self.clock() - when)))
+        self.feed.add(Note(text, when, time.time() - (self.clock() - when)))
 
-    def _take_into_index(self, pending: list[Incoming], deadline: float | None) -> int:
+    def _take_into_index(self, pending: deque[Incoming], deadline: float | None) -> int:
         """Records into the index, in order, until `deadline` (perf_counter; None: all);
         returns how many it took."""
         index = self.index
         if not self._origin_set and not len(index):
-            self._model.origin = pending[0][0]
+            self._model.origin = pending[0].time
         if index.wall_offset is None:  # (traffic fed without a wall-clock time: now's)
-            when, _, _, wall = pending[0]
-            index.wall_offset = (time.time() if wall is None else wall) - when
+            first = pending[0]
+            wall = first.wall
+            index.wall_offset = (time.time() if wall is None else wall) - first.time
         taken = index.add_many(pending, deadline)
         index.commit()
         return taken
@@ -248,7 +260,7 @@ class RawConsole(QWidget):
 
     def records(self) -> list[Record]:
         """The latest raw records (bounded), as they came: (direction or "note", data, time)."""
-        return [(direction or NOTE, data, when) for when, direction, data, _ in self.feed.records()]
+        return [(r.direction or NOTE_KIND, r.data, r.time) for r in self.feed.records()]
 
     def flush(self) -> None:
         """Show every line added since the last flush (and a filter still being typed)."""

@@ -10,7 +10,7 @@ import pytest
 from drivers.device.client import Client
 from drivers.device.motion import Motion
 from drivers.errors import DeviceError
-from drivers.link.records import TrafficLogWriter
+from drivers.link.records import Note, Traffic, TrafficLogWriter
 from drivers.link.transport import open_link
 from drivers.protocols import commands as cmd
 from drivers.protocols.registry import create_protocol
@@ -151,8 +151,8 @@ def test_batches_keep_the_order_and_stop_at_the_deadline() -> None:
     """add_many takes records (and notes) in order, a batch joining the columns and the spool
     at once, and stops after the record during which its deadline passed."""
     index = TrafficIndex(create_protocol("coxiris"))
-    records = [(0.1, "tx", b"GET_ID\n", 1000.1), (0.2, "", b"a note", None)]
-    records += [(0.3, "rx", b"ACK GET_ID\r\nDONE GET_ID: X\r\n", None)]
+    records: list[Traffic | Note] = [Traffic("tx", b"GET_ID\n", 0.1, 1000.1), Note("a note", 0.2)]
+    records += [Traffic("rx", b"ACK GET_ID\r\nDONE GET_ID: X\r\n", 0.3, None)]
     assert index.add_many(records) == 3
     assert [index.line(n).meaning for n in range(len(index))] == [
         "GET_ID",
@@ -162,6 +162,6 @@ def test_batches_keep_the_order_and_stop_at_the_deadline() -> None:
     ]
     assert index.line(0).pair == 2 and index.wall_offset == pytest.approx(1000.0)
     assert index.counts["query"] == 3 and index.counts["note"] == 1
-    assert index.add_many([(1.0, "tx", b"GET_ID\n", None)] * 5, deadline=0.0) == 1  # passed
+    assert index.add_many([Traffic("tx", b"GET_ID\n", 1.0)] * 5, deadline=0.0) == 1  # passed
     assert len(index) == 5
     index.close()
