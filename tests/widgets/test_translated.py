@@ -100,6 +100,8 @@ WRAPPED = [
     "widgets/position_view_2d.py",
     "widgets/position_view_3d.py",
     "widgets/_gl_scene.py",
+    "widgets/view3d/navigation.py",
+    "widgets/view3d/notice.py",
     "widgets/_view_common.py",
     "widgets/traffic_timeline.py",
     "widgets/traffic_format.py",

@@ -1,0 +1,1 @@
+"""The parts of the 3D position view (widgets.position_view_3d), one concept a module."""
