@@ -74,26 +74,26 @@ QT_TRANSLATE_NOOP('messages', 'it cannot be read')  # app/common/settings.py
 QT_TRANSLATE_NOOP('messages', 'it is not an INI file Qt can read')  # app/common/settings.py
 QT_TRANSLATE_NOOP('messages', 'settings file')  # app/common/settings.py
 QT_TRANSLATE_NOOP('messages', 'cannot read the settings file {file}: {why}')  # app/common/settings.py
-QT_TRANSLATE_NOOP('messages', '{url} ({protocol}, {baud} baud)')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', '{error}; waiting for {url}')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', 'the saved setup was refused: {error}')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', '{identity} on {url}')  # app/window/device/worker.py
+QT_TRANSLATE_NOOP('messages', 'relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}')  # app/window/device/job_dispatch.py
+QT_TRANSLATE_NOOP('messages', 'unknown job {job!r}')  # app/window/device/job_dispatch.py
+QT_TRANSLATE_NOOP('messages', 'the position went from ({position}) to (0, 0, 0) mm while nothing was sent: the device restarted')  # app/window/device/restart_watch.py
 QT_TRANSLATE_NOOP('messages', '{line} not changed: not connected')  # app/window/device/worker.py
 QT_TRANSLATE_NOOP('messages', 'no break sent: not connected')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', 'the position went from ({position}) to (0, 0, 0) mm while nothing was sent: the device restarted')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', '{error}; not sent: {jobs}; talking to it again')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', '{error}; talking to it again')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', 'not sent: the device is being reconnected')  # app/window/device/worker.py
 QT_TRANSLATE_NOOP('messages', 'stopped before it was sent')  # app/window/device/worker.py
 QT_TRANSLATE_NOOP('messages', 'the connection was lost')  # app/window/device/worker.py
 QT_TRANSLATE_NOOP('messages', 'abandoned: disconnected while it was under way')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', 'relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', 'unknown job {job!r}')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', '{hint} ({error})')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', '{error}; not sent: {jobs}')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', '{error}; connecting again when {url} is back')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', '{url} is back: connecting again')  # app/window/device/worker.py
-QT_TRANSLATE_NOOP('messages', 'the device says: {text}')  # app/window/device/worker.py
+QT_TRANSLATE_NOOP('messages', '{url} ({protocol}, {baud} baud)')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', '{error}; waiting for {url}')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', 'the saved setup was refused: {error}')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', '{identity} on {url}')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', '{error}; talking to it again')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', '{error}; not sent: {jobs}; talking to it again')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', 'not sent: the device is being reconnected')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', '{hint} ({error})')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', '{error}; not sent: {jobs}')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', '{error}; connecting again when {url} is back')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', '{url} is back: connecting again')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', 'the device says: {text}')  # app/window/device/worker_connection.py
 QT_TRANSLATE_NOOP('messages', 'the bridge to {device} is closed')  # drivers/bridge/snoop.py
 QT_TRANSLATE_NOOP('messages', 'cannot create a pseudo-terminal for {device}: {error}')  # drivers/bridge/snoop.py
 QT_TRANSLATE_NOOP('messages', 'the bridge is not open')  # drivers/bridge/snoop.py
@@ -112,20 +112,18 @@ QT_TRANSLATE_NOOP('messages', 'the device did not finish its reply to {command} 
 QT_TRANSLATE_NOOP('messages', 'the device did not answer to {command} within {seconds:.3g} s')  # drivers/device/client.py
 QT_TRANSLATE_NOOP('messages', '{message}; it sent {count} unexpected frame(s), the last: {frame}')  # drivers/device/client.py
 QT_TRANSLATE_NOOP('messages', '{message} (it may still be moving: {protocol} answers nothing until a blocking move has ended; try again once it has stopped)')  # drivers/device/client.py
+QT_TRANSLATE_NOOP('messages', 'the device reported: {reported}')  # drivers/device/completion.py
+QT_TRANSLATE_NOOP('messages', 'stopped at ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/completion.py
+QT_TRANSLATE_NOOP('messages', 'the move to {target} did not end within {seconds:.1f} s')  # drivers/device/completion.py
 QT_TRANSLATE_NOOP('messages', 'no protocol to read them with')  # drivers/device/guard.py
 QT_TRANSLATE_NOOP('messages', 'program point {number}')  # drivers/device/guard.py
 QT_TRANSLATE_NOOP('messages', 'raw bytes refused: {protocol} cannot read them as a command ({reason}), so they cannot be checked against the travel limits ({box}); send them with force to send them anyway')  # drivers/device/guard.py
 QT_TRANSLATE_NOOP('messages', 'raw bytes refused: they hold {count} commands, {moves} of them moves; send a move alone, so that it is checked and followed to its end')  # drivers/device/guard.py
 QT_TRANSLATE_NOOP('messages', 'raw move {command}')  # drivers/device/guard.py
 QT_TRANSLATE_NOOP('messages', '{what}: not a move the panel can check')  # drivers/device/guard.py
-QT_TRANSLATE_NOOP('messages', 'the device reported: {reported}')  # drivers/device/motion.py
 QT_TRANSLATE_NOOP('messages', '{protocol} device')  # drivers/device/motion.py
 QT_TRANSLATE_NOOP('messages', 'the device did not report a position (it answered {value})')  # drivers/device/motion.py
 QT_TRANSLATE_NOOP('messages', 'the device is at ({x:g}, {y:g}, {z:g}) mm, not where its last move ended: its replies are no longer taken as arrival')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', '{protocol} has no speed limits to report')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'speed {speed:g} refused: the speed must be a positive number')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} written, but this firmware times its steps from its step delays (15, 16) alone: moves go at {real:.3f} {unit}')  # drivers/device/motion.py
 QT_TRANSLATE_NOOP('messages', 'move to ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/motion.py
 QT_TRANSLATE_NOOP('messages', 'jog by ({dx:g}, {dy:g}, {dz:g}) {unit}')  # drivers/device/motion.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no way to go home')  # drivers/device/motion.py
@@ -135,8 +133,6 @@ QT_TRANSLATE_NOOP('messages', '{what} refused: home is outside the travel limits
 QT_TRANSLATE_NOOP('messages', '{protocol} has no arc moves')  # drivers/device/motion.py
 QT_TRANSLATE_NOOP('messages', 'arc')  # drivers/device/motion.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no dwell')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'stopped at ({x:g}, {y:g}, {z:g}) mm')  # drivers/device/motion.py
-QT_TRANSLATE_NOOP('messages', 'the move to {target} did not end within {seconds:.1f} s')  # drivers/device/motion.py
 QT_TRANSLATE_NOOP('messages', '{source}: not a parameter profile: {error}')  # drivers/device/param_profile.py
 QT_TRANSLATE_NOOP('messages', '{source}: not a parameter profile: a number too long')  # drivers/device/param_profile.py
 QT_TRANSLATE_NOOP('messages', '{source}: not a parameter profile: nested too deeply')  # drivers/device/param_profile.py
@@ -161,6 +157,10 @@ QT_TRANSLATE_NOOP('messages', 'position unknown: {protocol} cannot be asked wher
 QT_TRANSLATE_NOOP('messages', 'position unknown: {protocol} cannot be asked where it is and no position is counted for this port; {how}')  # drivers/device/position_count.py
 QT_TRANSLATE_NOOP('messages', 'this firmware reads the digits as µm whatever the type letter ({kind} is not read): the stage moves X {x:.3f} mm, Y {y:.3f} mm')  # drivers/device/position_count.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no identity query: the device cannot be asked what it is')  # drivers/device/position_count.py
+QT_TRANSLATE_NOOP('messages', '{protocol} has no speed limits to report')  # drivers/device/speed.py
+QT_TRANSLATE_NOOP('messages', 'speed {speed:g} refused: the speed must be a positive number')  # drivers/device/speed.py
+QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} refused: the device allows {low:g} to {high:g} {unit}')  # drivers/device/speed.py
+QT_TRANSLATE_NOOP('messages', 'speed {speed:g} {unit} written, but this firmware times its steps from its step delays (15, 16) alone: moves go at {real:.3f} {unit}')  # drivers/device/speed.py
 QT_TRANSLATE_NOOP('messages', 'travel limits need a range for each of x, y and z')  # drivers/device/travel.py
 QT_TRANSLATE_NOOP('messages', 'travel limits for {axis} ({low:g} to {high:g} mm) are not a range: the minimum must be at most the maximum')  # drivers/device/travel.py
 QT_TRANSLATE_NOOP('messages', 'the move')  # drivers/device/travel.py

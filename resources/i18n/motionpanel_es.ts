@@ -1492,12 +1492,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>Detener la platina ahora: interrumpe el movimiento en curso y descarta lo que está en cola (Esc)</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+56"/>
+        <location filename="../../app/window/device/connection.py" line="+57"/>
         <source>simulated %1 device</source>
         <translation>dispositivo %1 simulado</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+99"/>
+        <location filename="../../app/window/main_window.py" line="+100"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1673,7 +1673,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>puente cerrado</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
         <source>connection error: %1</source>
         <translation>error de conexión: %1</translation>
     </message>
@@ -1694,7 +1694,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>conectado a %1 en %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/machine_state.py" line="+37"/>
+        <location filename="../../app/window/device/machine_state.py" line="+38"/>
         <source>home set: the position is counted from here</source>
         <translation>origen fijado: la posición se cuenta desde aquí</translation>
     </message>
@@ -1760,12 +1760,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>reconectando con %1</translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-279"/>
         <source>port %1 disappeared</source>
         <translation>desapareció el puerto %1</translation>
     </message>
     <message>
-        <location line="+294"/>
+        <location line="+292"/>
         <source>%1 on %2</source>
         <translation>%1 en %2</translation>
     </message>
@@ -2862,7 +2862,7 @@ Send them anyway?</source>
 <context>
     <name>PositionView3D</name>
     <message>
-        <location filename="../../widgets/_gl_scene.py" line="+49"/>
+        <location filename="../../widgets/view3d/navigation.py" line="+19"/>
         <source>Top</source>
         <translation>Superior</translation>
     </message>
@@ -2922,7 +2922,7 @@ Send them anyway?</source>
         <translation>Mantener la cámara sobre la posición actual</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+81"/>
+        <location filename="../../widgets/view3d/notice.py" line="+15"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Requiere OpenGL 2.1 o posterior (p. ej. Mesa) en una pantalla; ver el README.</translation>
     </message>
@@ -2936,12 +2936,12 @@ The 2D view shows the same positions.</source>
 La vista 2D muestra las mismas posiciones.</translation>
     </message>
     <message>
-        <location line="+172"/>
+        <location filename="../../widgets/position_view_3d.py" line="+109"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
         <translation>Arrastrar para girar, rueda para hacer zoom, arrastrar con el botón central para mover la vista</translation>
     </message>
     <message>
-        <location line="+233"/>
+        <location line="+100"/>
         <source>grid %1 in</source>
         <translation>cuadrícula %1 in</translation>
     </message>
@@ -3604,7 +3604,7 @@ Ahora no: %2</translation>
         <translation>Mostrar solo las líneas que coinciden con esta expresión regular (sin distinguir mayúsculas) en su dirección, tipo, hex, texto o significado, p. ej. error|FA00</translation>
     </message>
     <message>
-        <location filename="../../app/window/console/traffic_console.py" line="+121"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+124"/>
         <source>paused</source>
         <translation>en pausa</translation>
     </message>
@@ -3664,7 +3664,7 @@ Ahora no: %2</translation>
         <translation>TX (azul): enviado al dispositivo; RX (verde): recibido; gris: notas y texto propio del dispositivo; rojo: errores. Doble clic en una línea para ir a su petición, su respuesta o su primera copia.</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+98"/>
         <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
         <translation>la consola conserva las %1 líneas más recientes: las más antiguas se descartan a medida que llegan otras nuevas; el registro de sesión conserva todas las líneas</translation>
     </message>
@@ -5274,7 +5274,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>no se puede leer el archivo de ajustes {file}: {why}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>{url} ({protocol}, {baud} baud)</source>
         <translation>{url} ({protocol}, {baud} baudios)</translation>
     </message>
@@ -5294,7 +5294,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{identity} en {url}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-8"/>
         <source>{line} not changed: not connected</source>
         <translation>{line} sin cambiar: no conectado</translation>
     </message>
@@ -5304,27 +5304,27 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>break no enviado: no conectado</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>the position went from ({position}) to (0, 0, 0) mm while nothing was sent: the device restarted</source>
         <translation>la posición pasó de ({position}) a (0, 0, 0) mm sin que se enviara nada: el dispositivo se reinició</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+11"/>
         <source>{error}; not sent: {jobs}; talking to it again</source>
         <translation>{error}; sin enviar: {jobs}; reconectando</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-1"/>
         <source>{error}; talking to it again</source>
         <translation>{error}; reconectando</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>not sent: the device is being reconnected</source>
         <translation>sin enviar: el dispositivo se está reconectando</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-9"/>
         <source>stopped before it was sent</source>
         <translation>detenido antes de enviarse</translation>
     </message>
@@ -5339,7 +5339,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>abandonado: se desconectó mientras estaba en curso</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}</source>
         <translation>movimiento relativo de ({dx:g}, {dy:g}, {dz:g}) {unit}</translation>
     </message>
@@ -5349,7 +5349,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>tarea desconocida {job!r}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+14"/>
         <source>{hint} ({error})</source>
         <translation>{hint} ({error})</translation>
     </message>
@@ -5679,12 +5679,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{file}: vacío, no es un registro de Motion Panel ni una captura spy:// de pyserial (el formato raw de spy deja su archivo vacío); {hint}</translation>
     </message>
     <message>
-        <location line="-436"/>
+        <location line="-442"/>
         <source>the device reported: {reported}</source>
         <translation>el dispositivo informó: {reported}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>{protocol} device</source>
         <translation>dispositivo {protocol}</translation>
     </message>
@@ -5699,7 +5699,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>el dispositivo está en ({x:g}, {y:g}, {z:g}) mm, no donde terminó su último movimiento: sus respuestas ya no se toman como llegada</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+34"/>
         <source>{protocol} has no speed limits to report</source>
         <translation>{protocol} no tiene límites de velocidad que indicar</translation>
     </message>
@@ -5719,7 +5719,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>velocidad de {speed:g} {unit} escrita, pero este firmware temporiza sus pasos solo a partir de sus retardos entre pasos (15, 16): los movimientos van a {real:.3f} {unit}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-36"/>
         <source>move to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>movimiento a ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5764,7 +5764,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{protocol} no admite esperas</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-19"/>
         <source>stopped at ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>detenido en ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5774,7 +5774,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>el movimiento a {target} no terminó en {seconds:.1f} s</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="+1"/>
         <source>no protocol to read them with</source>
         <translation>no hay ningún protocolo con el que interpretarlos</translation>
     </message>
@@ -5804,7 +5804,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{what}: no es un movimiento que el panel pueda comprobar</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+214"/>
         <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
         <translation>{what} {text!r} no es un número que acepte el dispositivo: usar dígitos con un signo opcional y un punto decimal, p. ej. -12.5</translation>
     </message>
@@ -5819,7 +5819,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{what} {value:g} está fuera de rango: el dispositivo admite como máximo ±{limit:g}</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-203"/>
         <source>{source}: not a parameter profile: {error}</source>
         <translation>{source}: no es un perfil de parámetros: {error}</translation>
     </message>
@@ -5894,7 +5894,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>no se puede escribir el perfil {path}: {error}</translation>
     </message>
     <message>
-        <location line="+186"/>
+        <location line="+190"/>
         <source>{low} to {high} in steps of {step}</source>
         <translation>de {low} a {high} en pasos de {step}</translation>
     </message>
@@ -5939,7 +5939,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>parámetro desconocido {name!r}: usar un nombre o un id 1..{count}; &apos;motionctl ... param list&apos; los enumera</translation>
     </message>
     <message>
-        <location line="-193"/>
+        <location line="-197"/>
         <source>its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)</source>
         <translation>sus tramas llevan destinos absolutos, así que un movimiento relativo necesita la posición: usar primero Fijar origen donde está la platina, Origen, o mover a un punto absoluto (en el panel, o motionctl set-home, home o move X Y Z)</translation>
     </message>
@@ -5984,7 +5984,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{protocol} no tiene consulta de identidad: no se puede preguntar al dispositivo qué es</translation>
     </message>
     <message>
-        <location line="+359"/>
+        <location line="+363"/>
         <source>{where}: {name} {value!r} is not a number</source>
         <translation>{where}: {name} {value!r} no es un número</translation>
     </message>

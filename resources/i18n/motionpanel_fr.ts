@@ -1492,12 +1492,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>Arrêter la platine immédiatement&#xa0;: interrompt le mouvement en cours et vide la file d&apos;attente (Échap)</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+56"/>
+        <location filename="../../app/window/device/connection.py" line="+57"/>
         <source>simulated %1 device</source>
         <translation>appareil %1 simulé</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+99"/>
+        <location filename="../../app/window/main_window.py" line="+100"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1673,7 +1673,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>passerelle fermée</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
         <source>connection error: %1</source>
         <translation>erreur de connexion&#xa0;: %1</translation>
     </message>
@@ -1694,7 +1694,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>connecté à %1 sur %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/machine_state.py" line="+37"/>
+        <location filename="../../app/window/device/machine_state.py" line="+38"/>
         <source>home set: the position is counted from here</source>
         <translation>origine définie&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
@@ -1760,12 +1760,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>reconnexion à %1</translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-279"/>
         <source>port %1 disappeared</source>
         <translation>port %1 disparu</translation>
     </message>
     <message>
-        <location line="+294"/>
+        <location line="+292"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -2862,7 +2862,7 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PositionView3D</name>
     <message>
-        <location filename="../../widgets/_gl_scene.py" line="+49"/>
+        <location filename="../../widgets/view3d/navigation.py" line="+19"/>
         <source>Top</source>
         <translation>Dessus</translation>
     </message>
@@ -2922,7 +2922,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Garder la caméra sur la position actuelle</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+81"/>
+        <location filename="../../widgets/view3d/notice.py" line="+15"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>Nécessite OpenGL 2.1 ou plus récent (par ex. Mesa) sur un affichage&#xa0;; voir le README.</translation>
     </message>
@@ -2936,12 +2936,12 @@ The 2D view shows the same positions.</source>
 La vue 2D montre les mêmes positions.</translation>
     </message>
     <message>
-        <location line="+172"/>
+        <location filename="../../widgets/position_view_3d.py" line="+109"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
         <translation>Glisser pour pivoter, molette pour zoomer, glisser avec le bouton du milieu pour déplacer la vue</translation>
     </message>
     <message>
-        <location line="+233"/>
+        <location line="+100"/>
         <source>grid %1 in</source>
         <translation>grille %1 in</translation>
     </message>
@@ -3604,7 +3604,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>N&apos;afficher que les lignes dont le sens, le type, l&apos;hex, le texte ou la signification correspondent à cette expression régulière (sans tenir compte de la casse), par ex. error|FA00</translation>
     </message>
     <message>
-        <location filename="../../app/window/console/traffic_console.py" line="+121"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+124"/>
         <source>paused</source>
         <translation>en pause</translation>
     </message>
@@ -3664,7 +3664,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>TX (bleu)&#xa0;: envoyé à l&apos;appareil&#xa0;; RX (vert)&#xa0;: reçu&#xa0;; gris&#xa0;: notes et texte propre à l&apos;appareil&#xa0;; rouge&#xa0;: erreurs. Double-cliquer sur une ligne pour aller à sa requête, à sa réponse ou à sa première copie.</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+98"/>
         <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
         <translation>la console conserve les %1 lignes les plus récentes&#xa0;: les plus anciennes en sont retirées à mesure que de nouvelles arrivent&#xa0;; le journal de session conserve toutes les lignes</translation>
     </message>
@@ -5274,7 +5274,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>impossible de lire le fichier de réglages {file}&#xa0;: {why}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>{url} ({protocol}, {baud} baud)</source>
         <translation>{url} ({protocol}, {baud} bauds)</translation>
     </message>
@@ -5294,7 +5294,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{identity} sur {url}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-8"/>
         <source>{line} not changed: not connected</source>
         <translation>{line} inchangé&#xa0;: non connecté</translation>
     </message>
@@ -5304,27 +5304,27 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>aucun break envoyé&#xa0;: non connecté</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>the position went from ({position}) to (0, 0, 0) mm while nothing was sent: the device restarted</source>
         <translation>la position est passée de ({position}) à (0, 0, 0) mm sans que rien n&apos;ait été envoyé&#xa0;: l&apos;appareil a redémarré</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+11"/>
         <source>{error}; not sent: {jobs}; talking to it again</source>
         <translation>{error}&#xa0;; non envoyé&#xa0;: {jobs}&#xa0;; reprise du dialogue avec l&apos;appareil</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-1"/>
         <source>{error}; talking to it again</source>
         <translation>{error}&#xa0;; reprise du dialogue avec l&apos;appareil</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>not sent: the device is being reconnected</source>
         <translation>non envoyé&#xa0;: reconnexion de l&apos;appareil en cours</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-9"/>
         <source>stopped before it was sent</source>
         <translation>arrêté avant son envoi</translation>
     </message>
@@ -5339,7 +5339,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>abandonné&#xa0;: déconnexion en cours d&apos;exécution</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}</source>
         <translation>mouvement relatif de ({dx:g}, {dy:g}, {dz:g}) {unit}</translation>
     </message>
@@ -5349,7 +5349,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>tâche inconnue {job!r}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+14"/>
         <source>{hint} ({error})</source>
         <translation>{hint} ({error})</translation>
     </message>
@@ -5679,12 +5679,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{file}&#xa0;: vide, ni un journal Motion Panel ni une capture pyserial spy:// (le format raw de spy laisse son fichier vide)&#xa0;; {hint}</translation>
     </message>
     <message>
-        <location line="-436"/>
+        <location line="-442"/>
         <source>the device reported: {reported}</source>
         <translation>l&apos;appareil a signalé&#xa0;: {reported}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>{protocol} device</source>
         <translation>appareil {protocol}</translation>
     </message>
@@ -5699,7 +5699,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>l&apos;appareil est à ({x:g}, {y:g}, {z:g}) mm, et non là où son dernier mouvement s&apos;est terminé&#xa0;: ses réponses ne valent plus confirmation d&apos;arrivée</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+34"/>
         <source>{protocol} has no speed limits to report</source>
         <translation>{protocol} n&apos;a pas de limites de vitesse à indiquer</translation>
     </message>
@@ -5719,7 +5719,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>vitesse {speed:g} {unit} écrite, mais ce firmware cadence ses pas uniquement sur ses délais entre pas (15, 16)&#xa0;: les mouvements se font à {real:.3f} {unit}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-36"/>
         <source>move to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>déplacement vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5764,7 +5764,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{protocol} n&apos;a pas de temporisation</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-19"/>
         <source>stopped at ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>arrêté à ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5774,7 +5774,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>le déplacement vers {target} ne s&apos;est pas terminé en {seconds:.1f} s</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="+1"/>
         <source>no protocol to read them with</source>
         <translation>aucun protocole pour les lire</translation>
     </message>
@@ -5804,7 +5804,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{what}&#xa0;: pas un déplacement que le panneau sait vérifier</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+214"/>
         <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
         <translation>{what} {text!r} n&apos;est pas un nombre accepté par l&apos;appareil&#xa0;: utiliser des chiffres, avec un signe facultatif et un seul point décimal, par ex. -12.5</translation>
     </message>
@@ -5819,7 +5819,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{what} {value:g} est hors plage&#xa0;: l&apos;appareil accepte au plus ±{limit:g}</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-203"/>
         <source>{source}: not a parameter profile: {error}</source>
         <translation>{source}&#xa0;: pas un profil de paramètres&#xa0;: {error}</translation>
     </message>
@@ -5894,7 +5894,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>impossible d&apos;écrire le profil {path}&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="+186"/>
+        <location line="+190"/>
         <source>{low} to {high} in steps of {step}</source>
         <translation>de {low} à {high} par pas de {step}</translation>
     </message>
@@ -5939,7 +5939,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>paramètre inconnu {name!r}&#xa0;: utiliser un nom ou un id 1..{count}&#xa0;; &apos;motionctl ... param list&apos; les liste</translation>
     </message>
     <message>
-        <location line="-193"/>
+        <location line="-197"/>
         <source>its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)</source>
         <translation>ses trames portent des cibles absolues, un mouvement relatif a donc besoin de la position&#xa0;: d&apos;abord «&#xa0;Définir l&apos;origine&#xa0;» là où se trouve la platine, «&#xa0;Origine&#xa0;», ou un mouvement vers un point absolu (dans le panneau, ou motionctl set-home, home ou move X Y Z)</translation>
     </message>
@@ -5984,7 +5984,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{protocol} n&apos;a pas de requête d&apos;identification&#xa0;: l&apos;appareil ne peut pas être interrogé sur ce qu&apos;il est</translation>
     </message>
     <message>
-        <location line="+359"/>
+        <location line="+363"/>
         <source>{where}: {name} {value!r} is not a number</source>
         <translation>{where}&#xa0;: {name} {value!r} n&apos;est pas un nombre</translation>
     </message>

@@ -1492,12 +1492,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>立即停止平台：中止正在进行的移动，并清空队列（Esc）</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+56"/>
+        <location filename="../../app/window/device/connection.py" line="+57"/>
         <source>simulated %1 device</source>
         <translation>模拟的 %1 设备</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+99"/>
+        <location filename="../../app/window/main_window.py" line="+100"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1673,7 +1673,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>桥接已关闭</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
         <source>connection error: %1</source>
         <translation>连接错误：%1</translation>
     </message>
@@ -1694,7 +1694,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/machine_state.py" line="+37"/>
+        <location filename="../../app/window/device/machine_state.py" line="+38"/>
         <source>home set: the position is counted from here</source>
         <translation>已设为原点：位置从此处开始计数</translation>
     </message>
@@ -1760,12 +1760,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在重新连接到 %1</translation>
     </message>
     <message>
-        <location line="-281"/>
+        <location line="-279"/>
         <source>port %1 disappeared</source>
         <translation>端口 %1 已消失</translation>
     </message>
     <message>
-        <location line="+294"/>
+        <location line="+292"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -2862,7 +2862,7 @@ Send them anyway?</source>
 <context>
     <name>PositionView3D</name>
     <message>
-        <location filename="../../widgets/_gl_scene.py" line="+49"/>
+        <location filename="../../widgets/view3d/navigation.py" line="+19"/>
         <source>Top</source>
         <translation>俯视</translation>
     </message>
@@ -2922,7 +2922,7 @@ Send them anyway?</source>
         <translation>使视角始终对准当前位置</translation>
     </message>
     <message>
-        <location filename="../../widgets/position_view_3d.py" line="+81"/>
+        <location filename="../../widgets/view3d/notice.py" line="+15"/>
         <source>Needs OpenGL 2.1 or newer (e.g. Mesa) on a display; see the README.</source>
         <translation>需要在有显示器的环境中提供 OpenGL 2.1 或更高版本（例如 Mesa）；请参阅 README。</translation>
     </message>
@@ -2936,12 +2936,12 @@ The 2D view shows the same positions.</source>
 2D 视图显示相同的位置。</translation>
     </message>
     <message>
-        <location line="+172"/>
+        <location filename="../../widgets/position_view_3d.py" line="+109"/>
         <source>Drag to rotate, wheel to zoom, middle-drag to pan</source>
         <translation>拖动旋转，滚轮缩放，中键拖动平移</translation>
     </message>
     <message>
-        <location line="+233"/>
+        <location line="+100"/>
         <source>grid %1 in</source>
         <translation>网格 %1 in</translation>
     </message>
@@ -3604,7 +3604,7 @@ Not now: %2</source>
         <translation>仅显示方向、类型、十六进制、文本或含义与此正则表达式匹配（不区分大小写）的行，例如 error|FA00</translation>
     </message>
     <message>
-        <location filename="../../app/window/console/traffic_console.py" line="+121"/>
+        <location filename="../../app/window/console/traffic_console.py" line="+124"/>
         <source>paused</source>
         <translation>已暂停</translation>
     </message>
@@ -3664,7 +3664,7 @@ Not now: %2</source>
         <translation>TX（蓝色）：发送到设备；RX（绿色）：已接收；灰色：说明及设备自身输出的文本；红色：错误。双击某行可跳转到其请求、应答或首次出现处。</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+98"/>
         <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
         <translation>控制台只保留最新的 %1 行：新行到来时，较旧的行会从控制台中移除；会话日志保留所有行</translation>
     </message>
@@ -5274,7 +5274,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>无法读取设置文件 {file}：{why}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>{url} ({protocol}, {baud} baud)</source>
         <translation>{url}（{protocol}，{baud} 波特）</translation>
     </message>
@@ -5294,7 +5294,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{url} 上的 {identity}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-8"/>
         <source>{line} not changed: not connected</source>
         <translation>{line} 未更改：未连接</translation>
     </message>
@@ -5304,27 +5304,27 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>未发送中断信号：未连接</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-2"/>
         <source>the position went from ({position}) to (0, 0, 0) mm while nothing was sent: the device restarted</source>
         <translation>未发送任何内容时，位置从 ({position}) 变为 (0, 0, 0) mm：设备已重启</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+11"/>
         <source>{error}; not sent: {jobs}; talking to it again</source>
         <translation>{error}；未发送：{jobs}；正在重新与设备通信</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-1"/>
         <source>{error}; talking to it again</source>
         <translation>{error}；正在重新与设备通信</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>not sent: the device is being reconnected</source>
         <translation>未发送：正在重新连接设备</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-9"/>
         <source>stopped before it was sent</source>
         <translation>发送前已停止</translation>
     </message>
@@ -5339,7 +5339,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>已放弃：执行期间连接已断开</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>relative move by ({dx:g}, {dy:g}, {dz:g}) {unit}</source>
         <translation>相对移动 ({dx:g}, {dy:g}, {dz:g}) {unit}</translation>
     </message>
@@ -5349,7 +5349,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>未知任务 {job!r}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+14"/>
         <source>{hint} ({error})</source>
         <translation>{hint}（{error}）</translation>
     </message>
@@ -5679,12 +5679,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{file}：文件为空，既不是 Motion Panel 日志，也不是 pyserial spy:// 捕获文件（spy 的 raw 格式会使其文件为空）；{hint}</translation>
     </message>
     <message>
-        <location line="-436"/>
+        <location line="-442"/>
         <source>the device reported: {reported}</source>
         <translation>设备报告：{reported}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+9"/>
         <source>{protocol} device</source>
         <translation>{protocol} 设备</translation>
     </message>
@@ -5699,7 +5699,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>设备位于 ({x:g}, {y:g}, {z:g}) mm，并非上次移动结束的位置：不再将其应答视为已到位</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+34"/>
         <source>{protocol} has no speed limits to report</source>
         <translation>{protocol} 没有可报告的速度限值</translation>
     </message>
@@ -5719,7 +5719,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>速度 {speed:g} {unit} 已写入，但此固件仅根据其步进延时（15、16）确定步进时序：实际移动速度为 {real:.3f} {unit}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-36"/>
         <source>move to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>移动到 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5764,7 +5764,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{protocol} 不支持延时</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-19"/>
         <source>stopped at ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>已停止于 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5774,7 +5774,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>前往 {target} 的移动未在 {seconds:.1f} s 内结束</translation>
     </message>
     <message>
-        <location line="-24"/>
+        <location line="+1"/>
         <source>no protocol to read them with</source>
         <translation>没有可用于解读它们的协议</translation>
     </message>
@@ -5804,7 +5804,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{what}：不是面板能够检查的移动</translation>
     </message>
     <message>
-        <location line="+217"/>
+        <location line="+214"/>
         <source>{what} {text!r} is not a number the device accepts: use digits with an optional sign and one decimal point, e.g. -12.5</source>
         <translation>{what} {text!r} 不是设备接受的数字：请使用数字，可带正负号和一个小数点，例如 -12.5</translation>
     </message>
@@ -5819,7 +5819,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{what} {value:g} 超出范围：设备最多支持 ±{limit:g}</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-203"/>
         <source>{source}: not a parameter profile: {error}</source>
         <translation>{source}：不是参数配置文件：{error}</translation>
     </message>
@@ -5894,7 +5894,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>无法写入参数配置文件 {path}：{error}</translation>
     </message>
     <message>
-        <location line="+186"/>
+        <location line="+190"/>
         <source>{low} to {high} in steps of {step}</source>
         <translation>{low} 至 {high}，步进 {step}</translation>
     </message>
@@ -5939,7 +5939,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>未知参数 {name!r}：请使用名称或 ID 1..{count}；&apos;motionctl ... param list&apos; 可列出全部参数</translation>
     </message>
     <message>
-        <location line="-193"/>
+        <location line="-197"/>
         <source>its frames carry absolute targets, so a relative move needs the position: Set Home where the stage stands, Home, or move to an absolute point first (in the panel, or motionctl set-home, home or move X Y Z)</source>
         <translation>其帧携带的是绝对目标，因此相对移动需要知道位置：请先在平台当前所在处设为原点、回原点，或移动到一个绝对点（在面板中，或用 motionctl set-home、home 或 move X Y Z）</translation>
     </message>
@@ -5984,7 +5984,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{protocol} 没有身份查询命令：无法查询设备的身份</translation>
     </message>
     <message>
-        <location line="+359"/>
+        <location line="+363"/>
         <source>{where}: {name} {value!r} is not a number</source>
         <translation>{where}：{name} {value!r} 不是数字</translation>
     </message>
