@@ -1,11 +1,13 @@
 """Start-up time: the panel's first painted window against a bare QApplication's empty window.
 
 Each is a fresh process (the interpreter's start included, as a user sees it), timed from the
-launch until the window has painted once (the child notes the time of its first paint on the
-system's monotonic clock, the one the launcher reads); the ratio of their medians is
-`startup_ratio`. The panel's 3D and 2D views, traffic console and device and parameter docks
-are built just after its first paint: the time until they are (`panel_views_ready_s`) and
-until each process has exited (`*_exit_s`) are given too.
+launch until the window has painted once, on the system's monotonic clock, the one the launcher
+reads; the ratio of their medians is `startup_ratio`. The panel is the real `motionpanel` entry
+point on `sim://coxiris`, which notes its marks where MOTIONPANEL_STARTUP_MARKS says
+(app/startup_marks.py) and quits once it has shown the device connected: the time until its
+views, console and docks are built (`panel_views_ready_s`, just after the first paint), until it
+shows the device connected (`panel_connected_s`) and until each process has exited (`*_exit_s`)
+are given too.
 Run: .venv/bin/python bench/startup.py [--runs N] [--display]   (offscreen unless --display)
 """
 
@@ -32,14 +34,8 @@ from PySide6.QtCore import QEvent, QObject, QTimer
 from PySide6.QtWidgets import QApplication, QWidget
 
 app = QApplication([])
-views = None
-if {panel}:
-    from app.window.main_window import MainWindow
-    window = MainWindow()
-    views = getattr(window, "views", None)  # built after the first paint
-else:
-    window = QWidget()
-    window.resize(1400, 900)
+window = QWidget()
+window.resize(1400, 900)
 marks = {{}}
 
 
@@ -48,41 +44,50 @@ def done():
     app.quit()
 
 
-def ready():
-    marks["ready"] = time.monotonic()
-    QTimer.singleShot(0, done)
-
-
 class Painted(QObject):
     def eventFilter(self, watched, event):
         if event.type() == QEvent.Type.Paint and "painted" not in marks:
             marks["painted"] = time.monotonic()
-            if views is None:
-                QTimer.singleShot(0, done)
+            QTimer.singleShot(0, done)
         return False
 
 
 watcher = Painted()
 window.installEventFilter(watcher)
-if views is not None:
-    views.ready.connect(ready)
 window.show()
 QTimer.singleShot(30_000, app.quit)
 app.exec()
 """
 
 
+def _entry_point() -> list[str]:
+    """The `motionpanel` command installed beside this interpreter (else its module)."""
+    script = Path(sys.executable).with_name("motionpanel")
+    return [str(script)] if script.exists() else [sys.executable, "-m", "app.main"]
+
+
 def _launch(panel: bool, env: dict[str, str]) -> dict[str, float]:
     """Seconds from launching a process to its window's first paint, to its views being built
-    (the panel), and to its exit."""
-    code = _CHILD.format(root=str(ROOT), panel=panel)
+    and the device shown connected (the panel), and to its exit."""
+    if panel:
+        marks_file = os.path.join(env["MOTIONPANEL_LOG_DIR"], "marks.json")
+        env = {**env, "MOTIONPANEL_STARTUP_MARKS": marks_file}
+        command = [*_entry_point(), "--port", "sim://coxiris", "--protocol", "coxiris"]
+    else:
+        command = [sys.executable, "-c", _CHILD.format(root=str(ROOT))]
     start = time.monotonic()
-    out = subprocess.run([sys.executable, "-c", code], env=env, check=True, capture_output=True)
+    out = subprocess.run(command, env=env, check=True, capture_output=True, timeout=60)
     exited = time.monotonic() - start
-    marks = json.loads(out.stdout.decode().strip().splitlines()[-1])
+    if panel:
+        with open(marks_file, encoding="utf-8") as written:
+            marks = json.load(written)
+        os.remove(marks_file)
+    else:
+        marks = json.loads(out.stdout.decode().strip().splitlines()[-1])
     figures = {"painted": marks["painted"] - start, "exit": exited}
-    if "ready" in marks:
-        figures["ready"] = marks["ready"] - start
+    for name in ("ready", "connected"):
+        if name in marks:
+            figures[name] = marks[name] - start
     return figures
 
 
@@ -120,6 +125,8 @@ def measure(runs: int = 5, display: bool = False) -> dict[str, float]:
     }
     if any("ready" in f for f in panel):
         result["panel_views_ready_s"] = median(panel, "ready")
+    if any("connected" in f for f in panel):
+        result["panel_connected_s"] = median(panel, "connected")
     return result
 
 

@@ -22,7 +22,7 @@ import threading
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import AbstractContextManager, contextmanager
 from types import TracebackType
-from typing import TypeVar
+from typing import TYPE_CHECKING, TypeVar
 
 from drivers.device.client import Client
 from drivers.device.guard import ARC_POINTS, RawMove, arc_points
@@ -46,9 +46,11 @@ from drivers.session.tap import TrafficTap
 from drivers.toolpath.loader import from_points
 from drivers.toolpath.model import CHORD_TOLERANCE, Toolpath
 from drivers.toolpath.point_program import ProgramPoint
-from drivers.toolpath.runner import ProgramRunner
 from drivers.toolpath.streaming import StreamProgress
 from drivers.traffic.log_origin import connection_note
+
+if TYPE_CHECKING:
+    from drivers.toolpath.runner import ProgramRunner
 
 __all__ = [
     "DeviceSession",
@@ -434,6 +436,8 @@ class DeviceSession(SessionSubscriptions, SessionLines):
         travel box, or asks a speed the device does not allow, is refused whole before
         anything is sent; `stop` ends it early. Laser-frame streams it to its queue (`group`
         instructions a frame at most), pi-frame gets arcs as arcs, other devices move by move."""
+        from drivers.toolpath.runner import ProgramRunner  # numpy: only when a program runs
+
         toolpath = program if isinstance(program, Toolpath) else from_points(list(program))
         runner = ProgramRunner(
             self.motion, toolpath, tolerance=tolerance, progress=progress, group=group

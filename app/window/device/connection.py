@@ -62,6 +62,8 @@ class Connection(QObject):
     """Opens and closes one device for the window (through its worker, or as a bridge)."""
 
     settled = Signal()  # connected, state read, first position drawn
+    device_shown = Signal()  # the window shows the device connected, its controls enabled
+    attempt_ended = Signal()  # a connection asked for is shown connected, or failed
 
     def __init__(
         self,
@@ -282,6 +284,7 @@ class Connection(QObject):
             machine.failed = machine.link_failed = True
             text = translate("MainWindow", "connection error: %1")
             self._tell(fill(text, detail), status.FAILURE)
+            self.attempt_ended.emit()
         elif state == "disconnected":
             window.console.append_note(translate("MainWindow", "disconnected"))
             info = machine.info  # the status line no longer says "connected to ..."
@@ -326,6 +329,8 @@ class Connection(QObject):
         self.desk.set_controls_enabled(True)
         window.travel_action.setEnabled(True)
         self.machine.show_status()
+        self.device_shown.emit()
+        self.attempt_ended.emit()
         QTimer.singleShot(100, self, self.settled.emit)  # cancelled if the window goes first
 
     def _on_capabilities_changed(self, caps: Capabilities) -> None:
