@@ -187,6 +187,7 @@ def bench_console(lines: int, memory_lines: int, flood_s: float) -> dict[str, fl
     script = str(ROOT / "bench" / "console_flood.py")
     ingest = _script(script, "ingest", "--lines", str(lines))
     memory = _script(script, "memory", "--lines", str(memory_lines))
+    burst = _script(script, "backlog", "--lines", str(lines * 5 // 2), "--seconds", str(flood_s))
     flood = _script(script, "flood", "--seconds", str(flood_s), gui=True)
     return {
         "console_lines_per_s": ingest["console_lines_per_s"],
@@ -201,6 +202,11 @@ def bench_console(lines: int, memory_lines: int, flood_s: float) -> dict[str, fl
         "flood_max_stall_ms": flood["gui_max_stall_ms"],
         "flood_p99_gap_ms": flood["p99_gap_ms"],
         "flood_backlog_lines": flood["backlog_lines"],
+        "backlog_lines": burst["backlog_lines"],
+        "backlog_max_gap_ms": burst["max_gap_ms"],
+        "backlog_p99_gap_ms": burst["p99_gap_ms"],
+        "backlog_taken_lines_per_s": burst["taken_lines_per_s"],
+        "backlog_drained_s_after_flood": burst["drained_s_after_flood"],
     }
 
 

@@ -1,11 +1,14 @@
 """The traffic console's feed: records arriving in a flood are decoded in turns of at most
-FLUSH_BUDGET and shown at most every FLUSH_INTERVAL_MS, each in a turn of its own."""
+FLUSH_BUDGET (BACKLOG_BUDGET while a backlog waits) and shown at most every FLUSH_INTERVAL_MS,
+each in a turn of its own; what arrives joins what waits in time order, in time linear in what
+arrived, however long the backlog."""
 
 from __future__ import annotations
 
 import time
 from collections import deque
 from collections.abc import Callable
+from itertools import islice
 
 from PySide6.QtCore import QObject, QTimer
 
@@ -14,6 +17,9 @@ from widgets._pacer import run_paced
 
 FLUSH_INTERVAL_MS = 100  # 10 Hz: a flood costs a repaint of the table per flush
 FLUSH_BUDGET = 0.002  # s of decoding per turn of the event loop; the rest waits its turn
+BACKLOG_BUDGET = 0.005  # s a turn while a backlog waits (a burst, a busy moment): drained fast
+BACKLOG = 20_000  # records waiting from which a turn takes BACKLOG_BUDGET
+ARRIVALS_A_TURN = 5_000  # records a turn puts in order among those waiting (bounded work)
 RECENT_RECORDS = 20_000  # raw records kept for `records()`; the index keeps every line
 
 Incoming = Record  # as the tap (or the panel, for a note) made it
@@ -38,7 +44,7 @@ class FeedPacer(QObject):
         self._show = show
         # arrived and not yet looked at; taken and waiting for their turn (in time order);
         # the latest taken
-        self.incoming: list[Incoming] = []
+        self.incoming: deque[Incoming] = deque()
         self.pending: deque[Incoming] = deque()
         self.recent: deque[Incoming] = deque(maxlen=RECENT_RECORDS)
         self.shown_at = 0.0  # perf_counter of the last update of the table
@@ -68,12 +74,11 @@ class FeedPacer(QObject):
 
     def take_pending(self, budget: float | None = None) -> None:
         """Into the index, in time order (a note is stamped when added, traffic comes batched);
-        with a `budget` (s of decoding, counted once the new records are in order), what is
-        left when it is spent waits for the next turn. Linear in what arrived, whatever waits."""
+        with a `budget` (s of decoding, counted once the new records are in order), at most
+        ARRIVALS_A_TURN of what arrived is put in order and what is left when the budget is
+        spent waits for the next turn: a turn's work is bounded, however long the backlog."""
         if self.incoming:
-            incoming, self.incoming = self.incoming, []
-            self.recent.extend(incoming)
-            self._merge(incoming)
+            self._arrive(None if budget is None else ARRIVALS_A_TURN)
         if not self.pending:
             return
         deadline = None if budget is None else time.perf_counter() + budget
@@ -85,8 +90,19 @@ class FeedPacer(QObject):
             for _ in range(taken):
                 pending.popleft()
 
+    def _arrive(self, limit: int | None) -> None:
+        """Put what arrived (at most `limit` records: None, all) among what waits."""
+        incoming = self.incoming
+        if limit is None or len(incoming) <= limit:
+            arrived = list(incoming)
+            incoming.clear()
+        else:
+            arrived = [incoming.popleft() for _ in range(limit)]
+        self.recent.extend(arrived)
+        self._merge(arrived)
+
     def _merge(self, incoming: list[Incoming]) -> None:
-        """Put what arrived among what waits, in time order; ties keep their order (what waited
+        """Put records among what waits, in time order; ties keep their order (what waited
         first). Only the waiting records later than the earliest new one are moved."""
         incoming.sort(key=_when)  # stable; a worker's batch is in order already
         pending, first = self.pending, incoming[0].time
@@ -104,7 +120,10 @@ class FeedPacer(QObject):
 
     def records(self) -> list[Incoming]:
         """The latest records (at most RECENT_RECORDS), those not yet looked at included."""
-        return [*self.recent, *self.incoming][-RECENT_RECORDS:]
+        waiting = self.incoming
+        if len(waiting) >= RECENT_RECORDS:
+            return list(islice(waiting, len(waiting) - RECENT_RECORDS, None))
+        return [*self.recent, *waiting][-RECENT_RECORDS:]
 
     def clear(self) -> None:
         """Forget every record (another index is shown)."""
@@ -138,7 +157,8 @@ class FeedPacer(QObject):
             self._show()
         else:
             now = time.perf_counter()
-            self.take_pending(FLUSH_BUDGET)
+            behind = len(self.pending) + len(self.incoming) > BACKLOG
+            self.take_pending(BACKLOG_BUDGET if behind else FLUSH_BUDGET)
             if not self.pending or now - self.shown_at >= FLUSH_INTERVAL_MS / 1000:
                 self.show_due = True
         if self.pending or self.show_due:
