@@ -20,7 +20,6 @@ from app.window.preferences import read_preferences
 from drivers.protocols.registry import get_protocol_class, protocol_names
 from widgets.gl_share import share_opengl_contexts  # imports no OpenGL, no numpy
 
-CONNECT_FIRST_MS = 1000  # the longest the views' building waits for the device after the paint
 log = logging.getLogger("motionpanel")
 
 SCREENSHOT_TIMEOUT_MS = 15000
@@ -108,9 +107,6 @@ def main(argv: Sequence[str] | None = None) -> int:
     if options.screenshot:
         take_screenshot(window, options.screenshot, app)
     _marks = watch_startup(window)  # bench/startup.py's (None: not asked for)
-    # The device first: the views, console and docks are built once it is shown connected
-    # (or failed), else CONNECT_FIRST_MS after the first paint.
-    window.views.hold(window.connection.attempt_ended, CONNECT_FIRST_MS)
     window.show()
     window.connect_device(port, protocol, baud, options.variant)
     status = app.exec()

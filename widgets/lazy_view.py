@@ -14,7 +14,7 @@ from collections.abc import Callable
 from functools import partial
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QEvent, QObject, QTimer, Signal, SignalInstance
+from PySide6.QtCore import QEvent, QObject, QTimer, Signal
 from PySide6.QtGui import QColor, QPainter, QPaintEvent
 from PySide6.QtWidgets import QSplitter, QWidget
 
@@ -227,12 +227,9 @@ class DeferredViews(QObject):
         self.view2d = LazyView("positionView2d", partial(position_view_2d, buffer), BACKGROUND_2D)
         self.view3d.built_view = partial(self._built, "view3d")
         self.view2d.built_view = partial(self._built, "view2d")
-        self._first: list[Callable[[], object]] = []
         self._steps: list[Callable[[], object]] = [self.view3d.build, self.view2d.build]
         self._ready = False
         self._scheduled = False
-        self._held = False  # the steps wait for a release (see hold)
-        self._hold_timer: QTimer | None = None
         window.installEventFilter(self)
 
     def _built(self, name: str, view: QWidget) -> None:
@@ -241,31 +238,11 @@ class DeferredViews(QObject):
 
     def add(self, step: Callable[[], object], first: bool = False) -> None:
         """Run `step` too when building (it must be harmless to run twice); `first`: before
-        the other steps, the views included, at once after the first paint (what the
-        operator waits for)."""
+        the steps added so far, the views included (what the operator waits for)."""
         if first:
-            self._first.insert(0, step)
+            self._steps.insert(0, step)
         else:
             self._steps.append(step)
-
-    def hold(self, released: SignalInstance, timeout_ms: int) -> None:
-        """After the first steps, build the rest only once `released` is emitted (a device
-        shown connected), or `timeout_ms` after the first paint: what is waited for comes
-        first, without the views' building in its way."""
-        self._held = True
-        released.connect(self._release)
-        timer = self._hold_timer = QTimer(self)
-        timer.setSingleShot(True)
-        timer.setInterval(timeout_ms)
-        timer.timeout.connect(self._release)
-
-    def _release(self) -> None:
-        if self._held:
-            self._held = False
-            if self._hold_timer is not None:
-                self._hold_timer.stop()
-            if self._scheduled and not self._ready:
-                QTimer.singleShot(0, self, self._build_next)
 
     def is_ready(self) -> bool:
         """Whether everything has been built."""
@@ -276,42 +253,15 @@ class DeferredViews(QObject):
         if self._ready:
             return
         self.parent().removeEventFilter(self)
-        self._held = False
-        steps, self._first, self._steps = [*self._first, *self._steps], [], []
-        for step in steps:  # (cleared first: they may hold the window, no cycle to it is kept)
+        for step in self._steps:
             step()
-        self._finish()
-
-    def _finish(self) -> None:
+        self._steps.clear()  # they may hold the window: no reference cycle to it is kept
         self._ready = True
         self.ready.emit()
-
-    def _build_first(self) -> None:
-        """Just after the first paint: the first steps at once, then the rest one a turn."""
-        if self._ready:
-            return
-        self.parent().removeEventFilter(self)
-        first, self._first = self._first, []
-        for step in first:
-            step()
-        if self._held and self._hold_timer is not None:
-            self._hold_timer.start()
-        else:
-            self._build_next()
-
-    def _build_next(self) -> None:
-        """One step, then the next in a turn of its own (what came meanwhile is handled)."""
-        if self._ready or self._held:
-            return
-        if not self._steps:
-            self._finish()
-            return
-        self._steps.pop(0)()
-        QTimer.singleShot(0, self, self._build_next)
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """At the window's first paint, build just after it (once the event loop is back)."""
         if event.type() == QEvent.Type.Paint and not self._scheduled:
             self._scheduled = True
-            QTimer.singleShot(0, self, self._build_first)
+            QTimer.singleShot(0, self, self.build_now)
         return False

@@ -9,7 +9,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from PySide6.QtCore import QObject, Qt, Signal
+from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QMainWindow, QSplitter, QWidget
 
 from widgets.lazy_view import DeferredViews, LazyView
@@ -148,46 +148,3 @@ window.close()
     assert out.returncode == 0, out.stderr
     result = json.loads(out.stdout.strip().splitlines()[-1])
     assert result == {"before": [], "view2d": "PositionView2D"}
-
-
-class _Release(QObject):
-    released = Signal()
-
-
-def _held_views(qtbot, timeout_ms: int) -> tuple[QMainWindow, DeferredViews, _Release, list[str]]:
-    window = QMainWindow()
-    qtbot.addWidget(window)
-    views = DeferredViews(window, PositionBuffer(capacity=None))
-    window.setCentralWidget(views.view3d)
-    order: list[str] = []
-    views.add(lambda: order.append("worker"), first=True)
-    views.add(lambda: order.append("console"))
-    release = _Release()
-    views.hold(release.released, timeout_ms)
-    return window, views, release, order
-
-
-def test_held_views_wait_for_their_release_after_the_first_steps(qtbot) -> None:
-    """What is waited for first (the device) comes before the views' building: the first
-    steps run just after the paint, the rest only once released."""
-    window, views, release, order = _held_views(qtbot, 60_000)
-    window.show()
-    qtbot.waitUntil(lambda: order == ["worker"], timeout=5000)
-    qtbot.wait(100)  # (the release is what starts the rest, not time: see the timeout test)
-    assert not views.is_ready() and order == ["worker"]
-    with qtbot.waitSignal(views.ready, timeout=10_000):
-        release.released.emit()
-    assert order == ["worker", "console"]
-
-
-def test_held_views_are_built_after_the_timeout_without_a_release(qtbot) -> None:
-    window, views, _, order = _held_views(qtbot, 200)
-    with qtbot.waitSignal(views.ready, timeout=10_000):
-        window.show()
-    assert order == ["worker", "console"]
-
-
-def test_build_now_builds_held_views_at_once(qtbot) -> None:
-    _window, views, _, order = _held_views(qtbot, 60_000)
-    views.build_now()
-    assert views.is_ready() and order == ["worker", "console"]

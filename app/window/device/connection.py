@@ -63,7 +63,6 @@ class Connection(QObject):
 
     settled = Signal()  # connected, state read, first position drawn
     device_shown = Signal()  # the window shows the device connected, its controls enabled
-    attempt_ended = Signal()  # a connection asked for is shown connected, or failed
 
     def __init__(
         self,
@@ -284,7 +283,6 @@ class Connection(QObject):
             machine.failed = machine.link_failed = True
             text = translate("MainWindow", "connection error: %1")
             self._tell(fill(text, detail), status.FAILURE)
-            self.attempt_ended.emit()
         elif state == "disconnected":
             window.console.append_note(translate("MainWindow", "disconnected"))
             info = machine.info  # the status line no longer says "connected to ..."
@@ -330,7 +328,6 @@ class Connection(QObject):
         window.travel_action.setEnabled(True)
         self.machine.show_status()
         self.device_shown.emit()
-        self.attempt_ended.emit()
         QTimer.singleShot(100, self, self.settled.emit)  # cancelled if the window goes first
 
     def _on_capabilities_changed(self, caps: Capabilities) -> None:
