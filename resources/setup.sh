@@ -65,11 +65,10 @@ run_tests() {
   "$VENV/bin/mypy" drivers
   "$VENV/bin/lint-imports"  # the layers and no import circles (pyproject.toml)
   export LIBGL_ALWAYS_SOFTWARE=1
-  # MOTIONPANEL_TEST_WORKERS=2 runs two test files at a time (pytest-xdist, each worker on an
-  # X server of its own): about half the time, but the timing of the held-key and
-  # lost-device scenarios is not yet reliable beside another worker, so CI runs one process.
-  if [ "${MOTIONPANEL_TEST_WORKERS:-0}" != "0" ]; then
-    set -- -n "$MOTIONPANEL_TEST_WORKERS" --dist loadfile "$@"
+  # Two test files at a time (pytest-xdist, each worker on an X server of its own): about half
+  # the time of one process on two cores. MOTIONPANEL_TEST_WORKERS=N runs N, 0 one process.
+  if [ "${MOTIONPANEL_TEST_WORKERS:-2}" != "0" ]; then
+    set -- -n "${MOTIONPANEL_TEST_WORKERS:-2}" --dist loadfile "$@"
   fi
   if command -v xvfb-run >/dev/null 2>&1; then
     exec xvfb-run -a -s "-screen 0 1600x1000x24 +extension GLX" "$VENV/bin/python" -m pytest "$@"
