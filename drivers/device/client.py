@@ -74,16 +74,24 @@ class Client:
         """When bytes last came from the device."""
         return self.splitter.last_data
 
-    def execute(self, command: Command, timeout: float | None = None, extra: float = 0.0) -> Reply:
+    def execute(
+        self,
+        command: Command,
+        timeout: float | None = None,
+        extra: float = 0.0,
+        *,
+        encoded: bytes | None = None,
+    ) -> Reply:
         """Send `command` and wait for its reply.
 
         `timeout` is the silence allowed before the reply is complete (the exchange's or the
         client's default); `extra` adds the time the device is expected to be busy (a blocking
         move). Where the protocol retransmits, the kept copy is sent again on a damaged-frame
         reply or a timeout (`protocol.attempts` in all), and again after a queue-full reply.
+        `encoded`: the command's bytes where the caller has made them (not encoded again).
         Raises BadInput before writing, DeviceError, DeviceTimeout or PortError.
         """
-        data = self.protocol.encode(command)
+        data = self.protocol.encode(command) if encoded is None else encoded
         self.poll()
         attempt = 0
         full_since: float | None = None

@@ -85,9 +85,11 @@ def send_move(
     span: tuple[Point, Point],
     timing: tuple[float, float],
     wait: Callable[[float], bool],
+    encoded: bytes | None = None,
 ) -> None:
     """Send a move (`raw`: as these console bytes), waiting out its time where the device
-    never says it is done (ESTIMATE), else for its reply; `timing`: its delay and duration."""
+    never says it is done (ESTIMATE), else for its reply; `timing`: its delay and duration;
+    `encoded`: the command's bytes, made once already."""
     protocol = client.protocol
     delay, duration = timing
     if raw is not None:
@@ -105,7 +107,7 @@ def send_move(
             if wait(sum(part_timing) if part_timing else delay + duration):
                 raise Aborted(ABANDONED)
     else:
-        client.execute(command, extra=(delay + duration) * ESTIMATE_MARGIN)
+        client.execute(command, extra=(delay + duration) * ESTIMATE_MARGIN, encoded=encoded)
 
 
 def lands_known(

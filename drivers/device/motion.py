@@ -330,7 +330,6 @@ class Motion:
         here = self._current()
         target = target_of(here)
         command = command_of(here, target) if command_of is not None else check
-        protocol.encode(command)
         start = (here.x, here.y, here.z)
         limited, note = self.guard.target(target, what, start)
         if limited != target:
@@ -339,7 +338,6 @@ class Motion:
                     Message("{what} refused: home is outside the travel limits", what=what)
                 )
             target, command = limited, command_of(here, limited)
-            protocol.encode(command)
         if note is not None:
             self._notify(note)
         return self._run_move(command, start, target)
@@ -356,9 +354,10 @@ class Motion:
 
         `raw`: the move is console bytes (sent as they are) the guard read as `command`."""
         protocol = self.client.protocol
+        encoded = None
         if raw is None:
             command = self.speeds.filled_in(command)
-            protocol.encode(command)
+            encoded = protocol.encode(command)  # refused before sending; these bytes are sent
             timing = protocol.move_timing(command, start, target)
         else:
             timing = raw[1].timing or raw_timing(protocol, command, start, target)
@@ -391,6 +390,7 @@ class Motion:
                 (start, target),
                 (delay, duration),
                 self.wait,
+                encoded,
             )
         if not self.capabilities.position_feedback:
             confirmed = completion is Completion.FEEDBACK  # the device said the move ended
@@ -439,8 +439,8 @@ class Motion:
         if not self.capabilities.dwell:
             raise BadInput(Message("{protocol} has no dwell", protocol=self.client.protocol.name))
         command = cmd.Dwell(ms)
-        self.client.protocol.encode(command)
-        self.client.execute(command)  # acknowledged where the protocol acknowledges (laser)
+        encoded = self.client.protocol.encode(command)
+        self.client.execute(command, encoded=encoded)  # acknowledged where the protocol does
         if self.wait(ms / 1000):
             raise Aborted(ABANDONED)
 
