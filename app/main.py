@@ -92,7 +92,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     app.setApplicationName("Motion Panel")
     install_translations(app, options.lang, saved=saved_language())  # before any widget
     window = MainWindow()
-    collect_for(app, window.views.ready)  # collections from the event loop only
+    # Collections from the event loop only; a full one waits while the console catches up.
+    collect_for(app, window.views.ready, lambda: window.console.behind())
     signal.signal(signal.SIGINT, lambda *_: window.close())
     explicit = options.port or options.protocol or options.baud
     port = options.port or (DEFAULT_PORT if explicit or options.screenshot else None)

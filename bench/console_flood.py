@@ -441,8 +441,13 @@ def backlog(lines: int, rate: float, seconds: float) -> dict[str, float]:
     from PySide6.QtCore import QElapsedTimer, Qt, QTimer
     from PySide6.QtWidgets import QApplication
 
+    from app.window.gc_main_thread import MainThreadCollector
+
     console = _console()
     app = QApplication.instance()
+    collector = MainThreadCollector(app)  # garbage collected as the application does
+    collector.settle()
+    collector.behind = console.behind  # type: ignore[attr-defined]
     t = [0.0]
     fed = [0]
 
@@ -526,7 +531,8 @@ def flood(
     if tracer is not None:
         _trace_functions(tracer)
     window = MainWindow()
-    collect_for(app, window.views.ready)  # garbage collected as the application does
+    # garbage collected as the application does (app/main.py)
+    collect_for(app, window.views.ready, lambda: window.console.behind())
     window.resize(1600, 1000)
     window.show()
     # Operate hides the console; these figures are for the console on screen beside the views.

@@ -13,10 +13,13 @@ is held, a generation at a time, as Python itself would.
 from __future__ import annotations
 
 import gc
+import time
+from collections.abc import Callable
 
 from PySide6.QtCore import QObject, QTimer, SignalInstance, Slot
 
 INTERVAL_MS = 500
+FULL_DEFERRED_S = 10.0  # the longest a full collection waits while the window is behind
 
 
 class MainThreadCollector(QObject):
@@ -24,6 +27,10 @@ class MainThreadCollector(QObject):
 
     def __init__(self, parent: QObject | None = None, interval_ms: int = INTERVAL_MS) -> None:
         super().__init__(parent)
+        self.behind: Callable[[], bool] = lambda: False
+        """Whether the window is catching up (a traffic backlog): a full collection, which
+        walks every live object (tens of ms with the backlog's), waits meanwhile."""
+        self._deferred_since: float | None = None
         gc.disable()
         self._timer = QTimer(self)
         self._timer.setInterval(interval_ms)
@@ -45,12 +52,24 @@ class MainThreadCollector(QObject):
         for level in range(3):
             if counts[level] > thresholds[level]:
                 generation = level
+        if generation == 2:
+            now = time.monotonic()
+            if self._deferred_since is None:
+                self._deferred_since = now
+            if self.behind() and now - self._deferred_since < FULL_DEFERRED_S:
+                generation = 1  # the young objects only, until the window has caught up
+            else:
+                self._deferred_since = None
         return gc.collect(generation) if generation >= 0 else 0
 
 
-def collect_for(app: QObject, ready: SignalInstance) -> MainThreadCollector:
+def collect_for(
+    app: QObject, ready: SignalInstance, behind: Callable[[], bool] | None = None
+) -> MainThreadCollector:
     """The application's collector (kept by `app`), settled when `ready` (the window's views
-    are built) is emitted."""
+    are built) is emitted; `behind` (asked from then on): whether the window is catching up."""
     collector = MainThreadCollector(app)
     ready.connect(collector.settle)
+    if behind is not None:
+        ready.connect(lambda: setattr(collector, "behind", behind))
     return collector

@@ -39,7 +39,7 @@ from app.window.console.export import (
 )
 from app.window.console.filter_bar import TrafficFilterBar
 from app.window.console.navigation import TrafficNavigator
-from app.window.console.pacing import FeedPacer, Incoming
+from app.window.console.pacing import BACKLOG, FeedPacer, Incoming
 from app.window.console.status import ConsoleStatus, StatusFigures
 from app.window.console.table import (
     BYTES,
@@ -257,6 +257,10 @@ class RawConsole(QWidget):
     def backlog(self) -> int:
         """Records received but not yet decoded and shown (a flood beyond the budget)."""
         return self.feed.backlog()
+
+    def behind(self) -> bool:
+        """Whether a backlog is being drained (more than the feed's BACKLOG records wait)."""
+        return self.feed.backlog() > BACKLOG
 
     def records(self) -> list[Record]:
         """The latest raw records (bounded), as they came: (direction or "note", data, time)."""

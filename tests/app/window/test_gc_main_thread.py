@@ -43,3 +43,30 @@ def test_settling_sets_the_start_up_objects_aside(qtbot) -> None:
     finally:
         gc.unfreeze()
         collector.deleteLater()
+
+
+def test_a_full_collection_waits_while_the_window_is_behind(qtbot, monkeypatch) -> None:
+    """A full collection walks every live object (a traffic backlog's too): while the window
+    catches up it waits, the young generations still collected, for FULL_DEFERRED_S at most."""
+    from app.window import gc_main_thread
+
+    collector = MainThreadCollector(interval_ms=60_000)  # called by hand here
+    behind = [True]
+    collector.behind = lambda: behind[0]
+    full: list[int] = []
+    monkeypatch.setattr(gc_main_thread.gc, "get_count", lambda: (800, 20, 20))
+    monkeypatch.setattr(
+        gc_main_thread.gc, "collect", lambda generation=2: full.append(generation) or 0
+    )
+    now = [100.0]
+    monkeypatch.setattr(gc_main_thread.time, "monotonic", lambda: now[0])
+    collector.collect()
+    now[0] += gc_main_thread.FULL_DEFERRED_S - 1
+    collector.collect()
+    assert full == [1, 1]  # deferred
+    now[0] += 2  # waited long enough: the full collection runs, behind or not
+    collector.collect()
+    behind[0] = False
+    collector.collect()
+    assert full == [1, 1, 2, 2]
+    collector.deleteLater()
