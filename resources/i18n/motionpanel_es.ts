@@ -1633,7 +1633,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Borrar trayectoria</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+71"/>
+        <location filename="../../app/window/device/connection.py" line="+72"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 indica su protocolo: conectando como %2</translation>
     </message>
@@ -1750,7 +1750,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Descartar comandos en cola</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+57"/>
+        <location filename="../../app/window/device/connection.py" line="+58"/>
         <source>port %1 appeared</source>
         <translation>apareció el puerto %1</translation>
     </message>
@@ -1760,12 +1760,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>reconectando con %1</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-280"/>
         <source>port %1 disappeared</source>
         <translation>desapareció el puerto %1</translation>
     </message>
     <message>
-        <location line="+292"/>
+        <location line="+293"/>
         <source>%1 on %2</source>
         <translation>%1 en %2</translation>
     </message>
@@ -1869,7 +1869,7 @@ Send them anyway?</source>
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="-108"/>
+        <location filename="../../app/window/device/connection.py" line="-109"/>
         <location filename="../../app/window/device/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>dispositivo: %1</translation>
@@ -2757,17 +2757,17 @@ Send them anyway?</source>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+101"/>
+        <location filename="../../widgets/view2d/xy_plot.py" line="+27"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>Platina vista desde arriba: trayectoria, posición actual (punto; hueco si es estimada), destino (+), límites de recorrido (discontinuos)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>XY (from above)</source>
         <translation>XY (desde arriba)</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location filename="../../widgets/position_view_2d.py" line="+150"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -2789,17 +2789,17 @@ Send them anyway?</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location line="-107"/>
+        <location filename="../../widgets/view2d/time_plot.py" line="+37"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y y Z en función del tiempo; líneas discontinuas: destino</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>Position against time</source>
         <translation>Posición en función del tiempo</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location filename="../../widgets/position_view_2d.py" line="-5"/>
         <source>X (in)</source>
         <translation>X (in)</translation>
     </message>
@@ -2839,7 +2839,7 @@ Send them anyway?</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location line="-80"/>
+        <location line="-68"/>
         <source>Clear trail</source>
         <translation>Borrar trayectoria</translation>
     </message>
@@ -3664,7 +3664,7 @@ Ahora no: %2</translation>
         <translation>TX (azul): enviado al dispositivo; RX (verde): recibido; gris: notas y texto propio del dispositivo; rojo: errores. Doble clic en una línea para ir a su petición, su respuesta o su primera copia.</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+102"/>
         <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
         <translation>la consola conserva las %1 líneas más recientes: las más antiguas se descartan a medida que llegan otras nuevas; el registro de sesión conserva todas las líneas</translation>
     </message>
@@ -4530,7 +4530,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>TrafficTimeline</name>
     <message>
-        <location filename="../../widgets/traffic_timeline.py" line="+38"/>
+        <location filename="../../widgets/timeline/plots.py" line="+20"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
@@ -4540,7 +4540,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>RX</translation>
     </message>
     <message>
-        <location line="+206"/>
+        <location filename="../../widgets/traffic_timeline.py" line="+85"/>
         <source>Follow</source>
         <translation>Seguir</translation>
     </message>
@@ -4550,37 +4550,37 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Mantener a la vista los últimos %1 s; hacer zoom o mover la vista lo desactiva</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location filename="../../widgets/timeline/plots.py" line="+32"/>
         <source>Bytes per second each way, in one-second bins: TX (blue) sent to the device, RX (green) received. Click a bin to show its first line in the console.</source>
         <translation>Bytes por segundo en cada sentido, en intervalos de un segundo: TX (azul) enviado al dispositivo, RX (verde) recibido. Hacer clic en un intervalo para mostrar su primera línea en la consola.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>rate</source>
         <translation>tasa</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Bytes per second</source>
         <translation>Bytes por segundo</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Command latency</source>
         <translation>Latencia de comandos</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Time from a request to its reply, in ms: one point per answered request (drawn as dots when few are in view). Click a point to show its line in the console.</source>
         <translation>Tiempo entre una petición y su respuesta, en ms: un punto por petición respondida (dibujados como marcadores cuando hay pocos a la vista). Hacer clic en un punto para mostrar su línea en la consola.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>latency</source>
         <translation>latencia</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>time since the session started</source>
         <translation>tiempo desde el inicio de la sesión</translation>
     </message>

@@ -1633,7 +1633,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Effacer la trace</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+71"/>
+        <location filename="../../app/window/device/connection.py" line="+72"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 indique son protocole&#xa0;: connexion en tant que %2</translation>
     </message>
@@ -1750,7 +1750,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Vider la file d&apos;attente</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+57"/>
+        <location filename="../../app/window/device/connection.py" line="+58"/>
         <source>port %1 appeared</source>
         <translation>port %1 apparu</translation>
     </message>
@@ -1760,12 +1760,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>reconnexion à %1</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-280"/>
         <source>port %1 disappeared</source>
         <translation>port %1 disparu</translation>
     </message>
     <message>
-        <location line="+292"/>
+        <location line="+293"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -1869,7 +1869,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="-108"/>
+        <location filename="../../app/window/device/connection.py" line="-109"/>
         <location filename="../../app/window/device/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>appareil&#xa0;: %1</translation>
@@ -2757,17 +2757,17 @@ Les envoyer quand même&#xa0;?</translation>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+101"/>
+        <location filename="../../widgets/view2d/xy_plot.py" line="+27"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>Platine vue de dessus&#xa0;: trace, position actuelle (point&#xa0;; creux si estimée), cible (+), limites de course (pointillés)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>XY (from above)</source>
         <translation>XY (vue de dessus)</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location filename="../../widgets/position_view_2d.py" line="+150"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -2789,17 +2789,17 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>Y</translation>
     </message>
     <message>
-        <location line="-107"/>
+        <location filename="../../widgets/view2d/time_plot.py" line="+37"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X, Y et Z en fonction du temps&#xa0;; pointillés&#xa0;: cible</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>Position against time</source>
         <translation>Position en fonction du temps</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location filename="../../widgets/position_view_2d.py" line="-5"/>
         <source>X (in)</source>
         <translation>X (in)</translation>
     </message>
@@ -2839,7 +2839,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>mm</translation>
     </message>
     <message>
-        <location line="-80"/>
+        <location line="-68"/>
         <source>Clear trail</source>
         <translation>Effacer la trace</translation>
     </message>
@@ -3664,7 +3664,7 @@ Indisponible pour le moment&#xa0;: %2</translation>
         <translation>TX (bleu)&#xa0;: envoyé à l&apos;appareil&#xa0;; RX (vert)&#xa0;: reçu&#xa0;; gris&#xa0;: notes et texte propre à l&apos;appareil&#xa0;; rouge&#xa0;: erreurs. Double-cliquer sur une ligne pour aller à sa requête, à sa réponse ou à sa première copie.</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+102"/>
         <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
         <translation>la console conserve les %1 lignes les plus récentes&#xa0;: les plus anciennes en sont retirées à mesure que de nouvelles arrivent&#xa0;; le journal de session conserve toutes les lignes</translation>
     </message>
@@ -4530,7 +4530,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>TrafficTimeline</name>
     <message>
-        <location filename="../../widgets/traffic_timeline.py" line="+38"/>
+        <location filename="../../widgets/timeline/plots.py" line="+20"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
@@ -4540,7 +4540,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>RX</translation>
     </message>
     <message>
-        <location line="+206"/>
+        <location filename="../../widgets/traffic_timeline.py" line="+85"/>
         <source>Follow</source>
         <translation>Suivre</translation>
     </message>
@@ -4550,37 +4550,37 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Garder à l&apos;écran les %1 s les plus récentes&#xa0;; zoomer ou déplacer la vue l&apos;interrompt</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location filename="../../widgets/timeline/plots.py" line="+32"/>
         <source>Bytes per second each way, in one-second bins: TX (blue) sent to the device, RX (green) received. Click a bin to show its first line in the console.</source>
         <translation>Octets par seconde dans chaque sens, par tranches d&apos;une seconde&#xa0;: TX (bleu) envoyés à l&apos;appareil, RX (vert) reçus. Cliquer sur une tranche pour afficher sa première ligne dans la console.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>rate</source>
         <translation>débit</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Bytes per second</source>
         <translation>Octets par seconde</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Command latency</source>
         <translation>Latence des commandes</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Time from a request to its reply, in ms: one point per answered request (drawn as dots when few are in view). Click a point to show its line in the console.</source>
         <translation>Temps entre une requête et sa réponse, en ms&#xa0;: un point par requête ayant reçu une réponse (dessinés isolément quand peu sont visibles). Cliquer sur un point pour afficher sa ligne dans la console.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>latency</source>
         <translation>latence</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>time since the session started</source>
         <translation>temps écoulé depuis le début de la session</translation>
     </message>

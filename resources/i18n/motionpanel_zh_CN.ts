@@ -1633,7 +1633,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>清除轨迹(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+71"/>
+        <location filename="../../app/window/device/connection.py" line="+72"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 已指明其协议：按 %2 连接</translation>
     </message>
@@ -1750,7 +1750,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>清空命令队列(&amp;D)</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+57"/>
+        <location filename="../../app/window/device/connection.py" line="+58"/>
         <source>port %1 appeared</source>
         <translation>端口 %1 已出现</translation>
     </message>
@@ -1760,12 +1760,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在重新连接到 %1</translation>
     </message>
     <message>
-        <location line="-279"/>
+        <location line="-280"/>
         <source>port %1 disappeared</source>
         <translation>端口 %1 已消失</translation>
     </message>
     <message>
-        <location line="+292"/>
+        <location line="+293"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -1869,7 +1869,7 @@ Send them anyway?</source>
         <translation>设备报告错误：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="-108"/>
+        <location filename="../../app/window/device/connection.py" line="-109"/>
         <location filename="../../app/window/device/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>设备：%1</translation>
@@ -2757,17 +2757,17 @@ Send them anyway?</source>
 <context>
     <name>PositionView2D</name>
     <message>
-        <location filename="../../widgets/position_view_2d.py" line="+101"/>
+        <location filename="../../widgets/view2d/xy_plot.py" line="+27"/>
         <source>Stage seen from above: trail, current position (dot; hollow when estimated), target (+), travel limits (dashed)</source>
         <translation>俯视平台：轨迹、当前位置（圆点；估算时为空心）、目标（+）、行程限位（虚线）</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>XY (from above)</source>
         <translation>XY（俯视）</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location filename="../../widgets/position_view_2d.py" line="+150"/>
         <source>X (mm)</source>
         <translation>X (mm)</translation>
     </message>
@@ -2789,17 +2789,17 @@ Send them anyway?</source>
         <translation>Y</translation>
     </message>
     <message>
-        <location line="-107"/>
+        <location filename="../../widgets/view2d/time_plot.py" line="+37"/>
         <source>X, Y and Z against time; dashed lines: target</source>
         <translation>X、Y、Z 随时间的变化；虚线：目标</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>Position against time</source>
         <translation>位置随时间的变化</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location filename="../../widgets/position_view_2d.py" line="-5"/>
         <source>X (in)</source>
         <translation>X (in)</translation>
     </message>
@@ -2839,7 +2839,7 @@ Send them anyway?</source>
         <translation>mm</translation>
     </message>
     <message>
-        <location line="-80"/>
+        <location line="-68"/>
         <source>Clear trail</source>
         <translation>清除轨迹</translation>
     </message>
@@ -3664,7 +3664,7 @@ Not now: %2</source>
         <translation>TX（蓝色）：发送到设备；RX（绿色）：已接收；灰色：说明及设备自身输出的文本；红色：错误。双击某行可跳转到其请求、应答或首次出现处。</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+102"/>
         <source>the console keeps the newest %1 lines: older lines are dropped from it as new ones come; the session log keeps every line</source>
         <translation>控制台只保留最新的 %1 行：新行到来时，较旧的行会从控制台中移除；会话日志保留所有行</translation>
     </message>
@@ -4530,7 +4530,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>TrafficTimeline</name>
     <message>
-        <location filename="../../widgets/traffic_timeline.py" line="+38"/>
+        <location filename="../../widgets/timeline/plots.py" line="+20"/>
         <source>TX</source>
         <translation>TX</translation>
     </message>
@@ -4540,7 +4540,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>RX</translation>
     </message>
     <message>
-        <location line="+206"/>
+        <location filename="../../widgets/traffic_timeline.py" line="+85"/>
         <source>Follow</source>
         <translation>跟随</translation>
     </message>
@@ -4550,37 +4550,37 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>始终显示最近 %1 s；缩放或平移会停止跟随</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location filename="../../widgets/timeline/plots.py" line="+32"/>
         <source>Bytes per second each way, in one-second bins: TX (blue) sent to the device, RX (green) received. Click a bin to show its first line in the console.</source>
         <translation>每个方向每秒的字节数，按一秒分段统计：TX（蓝色）为发送到设备的数据，RX（绿色）为接收的数据。点击某一分段可在控制台中显示其第一行。</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>rate</source>
         <translation>速率</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>Bytes per second</source>
         <translation>每秒字节数</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Command latency</source>
         <translation>命令延迟</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Time from a request to its reply, in ms: one point per answered request (drawn as dots when few are in view). Click a point to show its line in the console.</source>
         <translation>从请求到应答的时间，单位 ms：每个已应答的请求对应一个点（视图中点较少时绘制为圆点）。点击某个点可在控制台中显示其对应行。</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>latency</source>
         <translation>延迟</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>time since the session started</source>
         <translation>自会话开始起的时间</translation>
     </message>

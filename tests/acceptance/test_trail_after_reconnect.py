@@ -21,7 +21,7 @@ from tests.acceptance.xsession import (
     write_settings,
 )
 
-TRAIL = 0x5C6BC0  # the XY view's trail (widgets/position_view_2d.py)
+TRAIL = 0x5C6BC0  # the XY view's trail (widgets/view2d/style.py)
 TOLERANCE = 40  # the trail is drawn antialiased, 1.5 px wide
 MIN_SIDE = 40  # px: a 15 mm side of the XY view at 1600x1000 is about 100 px
 MARGIN = 6  # px kept from the square's sides (the line's width, the markers)

@@ -1,0 +1,1 @@
+"""The parts of the 2D position view (widgets.position_view_2d), one concept a module."""
