@@ -103,6 +103,7 @@ class XServer:
                     "GLX",
                     "-nolisten",
                     "tcp",
+                    "-noreset",  # no reset when its last client (a window manager ended) goes
                 ],
                 pass_fds=(write,),
                 stdout=subprocess.DEVNULL,

@@ -25,7 +25,7 @@ def own_display_per_worker() -> None:
     if shutil.which("Xvfb") is None:
         return
     read, write = os.pipe()
-    screen = ("-screen", "0", "1600x1000x24", "+extension", "GLX", "-nolisten", "tcp")
+    screen = ("-screen", "0", "1600x1000x24", "+extension", "GLX", "-nolisten", "tcp", "-noreset")
     try:
         server = subprocess.Popen(
             ["Xvfb", "-displayfd", str(write), *screen],
