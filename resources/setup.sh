@@ -65,6 +65,10 @@ run_tests() {
   "$VENV/bin/mypy" drivers
   "$VENV/bin/lint-imports"  # the layers and no import circles (pyproject.toml)
   export LIBGL_ALWAYS_SOFTWARE=1
+  # The hundreds of motionctl, motionsim and motionpanel processes the tests start each compile
+  # the project's modules again unless their bytecode is kept: kept in .venv, not the tree.
+  unset PYTHONDONTWRITEBYTECODE
+  export PYTHONPYCACHEPREFIX="$VENV/pycache"
   # Two test files at a time (pytest-xdist, each worker on an X server of its own): about half
   # the time of one process on two cores. MOTIONPANEL_TEST_WORKERS=N runs N, 0 one process.
   if [ "${MOTIONPANEL_TEST_WORKERS:-2}" != "0" ]; then

@@ -9,7 +9,6 @@ from app.cli.devices import DEVICE_COMMANDS, check_device_offline, run_device
 from app.cli.log import USAGE as LOG_USAGE
 from app.cli.log import check_log_offline
 from app.cli.params import check_param_offline, run_param
-from app.cli.run_program import check_run_offline
 from app.common.command_words import (
     WORD_ARITY,
     WORD_USAGE,
@@ -112,7 +111,9 @@ def validate_offline(
         check_param_offline(protocol, args)
     elif command == "log":
         check_log_offline(args)
-    elif command == "run":
+    elif command == "run":  # the program readers (and numpy) only for a program
+        from app.cli.run_program import check_run_offline
+
         check_run_offline(protocol, args, travel)
     elif command in DEVICE_COMMANDS:
         check_device_offline(protocol, command, args)

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 from typing import Any
 
-from app.cli.run_program import run_program
 from app.common.command_words import (
     ANY_PROTOCOL,
     DEVICE_COMMANDS,
@@ -94,6 +93,8 @@ def run_device(session: DeviceSession, command: str, args: list[str]) -> dict[st
             "configured": {"steps_per_rev": steps_per_rev, "pins": list(pins)},
             "version": version,
         }
-    if command == "run":
+    if command == "run":  # the program readers (and numpy) only for a program
+        from app.cli.run_program import run_program
+
         return run_program(session, args)
     return run_word(session, command, args)
