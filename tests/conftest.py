@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import gc
+import itertools
 import os
 from collections.abc import Iterator
 
@@ -66,20 +67,18 @@ def sim_link(request: pytest.FixtureRequest) -> Iterator[tuple[Link, Recorder]]:
 
 
 FULL_COLLECTION_EVERY = 25  # tests; a full collection scans every object of the session
+_tests_ended = itertools.count(1)
 
 
 @pytest.fixture(autouse=True)
-def _garbage_collected_outside_qt(request: pytest.FixtureRequest) -> Iterator[None]:
+def _garbage_collected_outside_qt() -> Iterator[None]:
     """As the application does (app/window/gc_main_thread.py): no automatic collection, which could
     run inside a Qt call holding a lock and deadlock on it; collected here after each test: what
     the test made (the young generations) every time, all of it every FULL_COLLECTION_EVERY tests
     (a full collection took about 0.2 s a test, a fifth of the suite's time)."""
     gc.disable()
     yield
-    session = request.session
-    done = getattr(session, "_tests_collected_after", 0) + 1
-    session._tests_collected_after = done  # type: ignore[attr-defined]
-    gc.collect(2 if done % FULL_COLLECTION_EVERY == 0 else 1)
+    gc.collect(2 if next(_tests_ended) % FULL_COLLECTION_EVERY == 0 else 1)
 
 
 @pytest.fixture(autouse=True)
