@@ -69,7 +69,11 @@ def test_keyboard_jog(qtbot, window: MainWindow) -> None:
     window.jog_panel.set_step(1)
     window.view2d.setFocus()
     qtbot.keyClick(window.view2d, Qt.Key.Key_Up)
-    qtbot.waitUntil(lambda: _position(window) == (0.0, 1.0, 0.0), timeout=5000)
+    # The step's end, not only its position: a press while a step is under way is not queued.
+    qtbot.waitUntil(
+        lambda: _position(window) == (0.0, 1.0, 0.0) and window.job_desk.jog_job is None,
+        timeout=5000,
+    )
     qtbot.keyClick(window.view2d, Qt.Key.Key_PageDown, Qt.KeyboardModifier.ShiftModifier)
     qtbot.waitUntil(lambda: _position(window) == (0.0, 1.0, -10.0), timeout=5000)
 
