@@ -20,8 +20,6 @@ class FrameSplitter:
         """Bytes not yet a whole frame."""
         self.last_data = now
         """When bytes last came (the clock the caller passes)."""
-        self.crlf = False
-        """Whether a line ended by CR LF has crossed (`feed_wired`)."""
 
     def feed(self, data: bytes, now: float = 0.0) -> list[bytes]:
         """The frames that `data`, after what was pending, completes."""
@@ -45,15 +43,7 @@ class FrameSplitter:
         if split is None:
             found, rest = framer.split(buffer)
             split = found, wire_spans(buffer[: len(buffer) - len(rest)], found), rest
-        found, wires, rest = split
-        if not self.crlf:
-            self.crlf = any(wire.endswith(b"\r\n") for wire in wires)
-        if self.crlf and rest == b"\r" and found and wires[-1]:
-            # A line's CR ended this read and its LF will come with the next: the line waits
-            # for it, so that its bytes are shown whole (a CR-only device's are not held).
-            found.pop()
-            rest = wires.pop() + rest
-        self.pending = rest
+        found, wires, self.pending = split
         return found, wires
 
     def idle(self, now: float) -> list[bytes]:

@@ -11,7 +11,6 @@ from drivers.framers.base import Framer
 from drivers.framers.fixed import FixedFramer
 from drivers.framers.lines import LineFramer
 from drivers.framers.silence import SilenceFramer
-from drivers.framers.splitter import FrameSplitter
 from drivers.framers.stuffed import StuffedFramer, checksum
 from drivers.framers.sysex import SysexFramer
 
@@ -187,19 +186,3 @@ def test_round_trip_split_anywhere_and_behind_garbage(make, payloads, data) -> N
     frames = feed(make(), [junk + wire[:cut], wire[cut:]])
     expected = wire if make in (SysexFramer, FixedFramer) else payload
     assert frames == [expected]
-
-
-def test_a_crlf_split_between_reads_is_shown_whole_with_its_line() -> None:
-    splitter = FrameSplitter(LineFramer(b"\n"))
-    assert splitter.feed_wired(b"ACK HOME\r\n") == ([b"ACK HOME"], [b"ACK HOME\r\n"])
-    assert splitter.feed_wired(b"ACK MOVE\r") == ([], [])
-    assert splitter.feed_wired(b"\nDONE MOVE\r\n") == (
-        [b"ACK MOVE", b"DONE MOVE"],
-        [b"ACK MOVE\r\n", b"DONE MOVE\r\n"],
-    )
-
-
-def test_a_cr_only_device_s_line_is_not_held() -> None:
-    splitter = FrameSplitter(LineFramer(b"\n"))
-    assert splitter.feed_wired(b"OK\r") == ([b"OK"], [b"OK"])
-    assert splitter.feed_wired(b"READY\r") == ([b"READY"], [b"READY"])
