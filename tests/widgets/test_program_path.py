@@ -210,18 +210,19 @@ def test_2d_program_follows_the_theme(view2d) -> None:
 
 
 def test_2d_big_program_is_drawn_fast(view2d, qtbot) -> None:
+    # Budgets in this thread's CPU time: in wall time they failed beside other test workers.
     points, rapid = big_program()
-    start = time.perf_counter()
+    start = time.thread_time()
     view2d.set_program(points, rapid)
-    elapsed = time.perf_counter() - start
+    elapsed = time.thread_time() - start
     assert elapsed < 1.0, elapsed
     assert len(view2d.program_rapid.getData()[0]) == 2 * np.count_nonzero(rapid)
     view2d.xy_plot.grab()  # drawn once
     steps = []
     for row in range(1000, 100_000, 9000):
-        start = time.perf_counter()
+        start = time.thread_time()
         view2d.set_program_done(row)
-        steps.append(time.perf_counter() - start)
+        steps.append(time.thread_time() - start)
         assert len(view2d.program()) == len(points) - row
     assert max(steps) < 0.05, steps
 
@@ -296,17 +297,18 @@ def test_3d_program_follows_the_theme(gl_view) -> None:
 @pytest.mark.gl
 @needs_display
 def test_3d_big_program_is_drawn_fast(gl_view) -> None:
+    # Budgets in this thread's CPU time, as in the 2D test.
     points, rapid = big_program()
-    start = time.perf_counter()
+    start = time.thread_time()
     gl_view.set_program(points, rapid)
-    elapsed = time.perf_counter() - start
+    elapsed = time.thread_time() - start
     assert elapsed < 1.0, elapsed
     assert not gl_view.render_scene().isNull()
     steps = []
     for row in range(1000, 100_000, 9000):
-        start = time.perf_counter()
+        start = time.thread_time()
         gl_view.set_program_done(row)
-        steps.append(time.perf_counter() - start)
+        steps.append(time.thread_time() - start)
         assert len(gl_view.program()) == len(points) - row
     assert max(steps) < 0.05, steps
     assert not gl_view.render_scene().isNull()

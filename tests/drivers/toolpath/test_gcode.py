@@ -393,10 +393,11 @@ def test_a_hundred_thousand_lines_parse_within_the_time_budget() -> None:
         lines.append(f"G1 X{2 * n + 2:.4f} Y0 Z{-(n % 5) * 0.1:.4f}")
     text = "\n".join(lines)
     assert len(lines) == 100_001
-    began = time.perf_counter()
+    # The parser's own CPU time: a wall-clock budget failed beside other test workers.
+    began = time.process_time()
     toolpath = parse_gcode(text)
-    took = time.perf_counter() - began
-    print(f"100,001 lines of G-code parsed in {took:.3f} s")
+    took = time.process_time() - began
+    print(f"100,001 lines of G-code parsed in {took:.3f} s of CPU")
     assert len(toolpath.steps) == 100_000 and len(toolpath.sources) == 100_001
     last = toolpath.steps[-1]
     assert isinstance(last, Line) and last.end == pytest.approx((99_998.0, 0.0, -0.3))
