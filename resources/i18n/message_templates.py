@@ -408,28 +408,11 @@ QT_TRANSLATE_NOOP('messages', 'Requested steady speed of the {axis} axis')  # dr
 QT_TRANSLATE_NOOP('messages', 'Requested acceleration of the {axis} axis')  # drivers/protocols/visiomex/params.py
 QT_TRANSLATE_NOOP('messages', 'Duration of the last move, {axis} axis (computed by the firmware)')  # drivers/protocols/visiomex/params.py
 QT_TRANSLATE_NOOP('messages', '0 belt pulley, 1 lead screw (this firmware forces 1 after every set)')  # drivers/protocols/visiomex/params.py
-QT_TRANSLATE_NOOP('messages', 'move package confirmed')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'action accomplished')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'package size mismatch')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'invalid command type')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'invalid motion type')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'invalid direction for the X axis')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'invalid direction for the Y axis')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'invalid set parameter ID')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'parse function error in the firmware')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'invalid driving mechanism')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'an error code the documentation does not list')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', '{parameter} set')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). "device:" is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'no read-back: the panel keeps what was last written')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'positions are commanded, and confirmed by FA0001 when the move ends')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'a reply comes 1 s after a packet: the firmware waits for 1 s of silence')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'parameter {number} set')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', 'feedback code {code} is not documented')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', '{command}: the device answered {code} ({meaning}); this firmware revision runs the move anyway')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', '{command}: the device answered {code} ({meaning})')  # drivers/protocols/visiomex/protocol.py
-QT_TRANSLATE_NOOP('messages', '{command}: expected {wanted}, got {code}')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', '18-character packets at 9600 baud, as the seed documents')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', "the seed's packets; feedback lines start with '>'")  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', '12-character packets at 115200 baud, moves in mm, D goes home')  # drivers/protocols/visiomex/protocol.py
@@ -460,6 +443,23 @@ QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {parameter} after every s
 QT_TRANSLATE_NOOP('messages', 'the firmware recomputes {parameter} at every move: this value will not stay')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'this firmware revision reads {parameter} only at boot: moves do not change until the device restarts')  # drivers/protocols/visiomex/protocol.py
 QT_TRANSLATE_NOOP('messages', 'this firmware revision never reads {parameter}: moves do not change')  # drivers/protocols/visiomex/protocol.py
+QT_TRANSLATE_NOOP('messages', 'move package confirmed')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'action accomplished')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'package size mismatch')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'invalid command type')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'invalid motion type')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'invalid direction for the X axis')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'invalid direction for the Y axis')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'invalid set parameter ID')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'parse function error in the firmware')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'invalid driving mechanism')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'an error code the documentation does not list')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', '{parameter} set')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'parameter {number} set')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', 'feedback code {code} is not documented')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', '{command}: the device answered {code} ({meaning}); this firmware revision runs the move anyway')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', '{command}: the device answered {code} ({meaning})')  # drivers/protocols/visiomex/replies.py
+QT_TRANSLATE_NOOP('messages', '{command}: expected {wanted}, got {code}')  # drivers/protocols/visiomex/replies.py
 QT_TRANSLATE_NOOP('messages', "Y will not move: at these parameters the firmware's Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)")  # drivers/protocols/visiomex/where.py
 QT_TRANSLATE_NOOP('messages', "Y moves {moved:.3f} mm, not {asked:.3f}: the firmware's Y loop runs the ramp count ({loops} of {steps} steps)")  # drivers/protocols/visiomex/where.py
 QT_TRANSLATE_NOOP('messages', '{axis} moves {moved:.3f} mm, not {asked:.3f}: whole steps ({steps}), truncated as the firmware counts')  # drivers/protocols/visiomex/where.py

@@ -6649,7 +6649,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>acción {number}</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+81"/>
         <source>move package confirmed</source>
         <translation>paquete de movimiento confirmado</translation>
     </message>
@@ -6713,7 +6713,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation type="vanished">Fija input_speed_steady_x e _y (parámetros 21 y 22). Esta revisión del firmware temporiza sus pasos solo a partir de step_delay_instantaneous (15, 16), así que los movimientos mantienen su ritmo.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-45"/>
         <source>Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted</source>
         <translation>Visiomex no tiene búsqueda de origen en esta revisión: Origen vuelve a (0, 0) con un movimiento relativo desde la posición que ha contado el panel</translation>
     </message>
@@ -6733,7 +6733,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>la respuesta llega 1 s después de un paquete: el firmware espera 1 s de silencio</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+43"/>
         <source>parameter {number} set</source>
         <translation>parámetro {number} fijado</translation>
     </message>
@@ -6758,7 +6758,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{command}: se esperaba {wanted}, se recibió {code}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-46"/>
         <source>18-character packets at 9600 baud, as the seed documents</source>
         <translation>paquetes de 18 caracteres a 9600 baudios, según la documentación original (seed)</translation>
     </message>
@@ -6908,7 +6908,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>esta revisión del firmware nunca lee {parameter}: los movimientos no cambian</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-75"/>
         <source>Steps per move</source>
         <translation>Pasos por movimiento</translation>
     </message>
@@ -7462,12 +7462,12 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{file} no indica ningún protocolo (sin nota de conexión) y ningún protocolo reconoce su tráfico: indicar --protocol</translation>
     </message>
     <message>
-        <location line="+398"/>
+        <location line="+386"/>
         <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
         <translation>La velocidad no se puede fijar aquí: esta revisión del firmware temporiza sus pasos solo a partir de step_delay_instantaneous (15, 16), no de input_speed_steady (21, 22). &quot;dispositivo:&quot; es la velocidad a la que avanza X (15 en alto más 16 en bajo por paso); cambiar 15 y 16 en la tabla de parámetros para modificarla.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+52"/>
         <source>Y will not move: at these parameters the firmware&apos;s Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)</source>
         <translation>Y no se moverá: con estos parámetros el bucle Y del firmware no da ningún paso (ejecuta el recuento de rampa, 0; fijar 22 y 24 de modo que la longitud de rampa sea mayor que 0)</translation>
     </message>

@@ -6649,7 +6649,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>action {number}</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+81"/>
         <source>move package confirmed</source>
         <translation>paquet de mouvement confirmé</translation>
     </message>
@@ -6713,7 +6713,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation type="vanished">Écrit input_speed_steady_x et _y (paramètres 21 et 22). Cette révision du firmware cadence ses pas uniquement sur step_delay_instantaneous (15, 16)&#xa0;: les mouvements gardent donc leur allure.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-45"/>
         <source>Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted</source>
         <translation>Visiomex n&apos;a pas de prise d&apos;origine dans cette révision&#xa0;: «&#xa0;Origine&#xa0;» revient à (0, 0) par un mouvement relatif depuis la position comptée par le panneau</translation>
     </message>
@@ -6733,7 +6733,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>une réponse arrive 1 s après un paquet&#xa0;: le firmware attend 1 s de silence</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+43"/>
         <source>parameter {number} set</source>
         <translation>paramètre {number} écrit</translation>
     </message>
@@ -6758,7 +6758,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{command}&#xa0;: {wanted} attendu, reçu {code}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-46"/>
         <source>18-character packets at 9600 baud, as the seed documents</source>
         <translation>paquets de 18 caractères à 9600 bauds, comme documenté dans le seed</translation>
     </message>
@@ -6908,7 +6908,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>cette révision du firmware ne lit jamais {parameter}&#xa0;: les mouvements ne changent pas</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-75"/>
         <source>Steps per move</source>
         <translation>Pas par mouvement</translation>
     </message>
@@ -7462,12 +7462,12 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{file} n&apos;indique aucun protocole (pas de note de connexion) et aucun protocole ne reconnaît son trafic&#xa0;: indiquer --protocol</translation>
     </message>
     <message>
-        <location line="+398"/>
+        <location line="+386"/>
         <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
         <translation>La vitesse ne peut pas être réglée ici&#xa0;: cette révision du firmware cadence ses pas uniquement sur step_delay_instantaneous (15, 16), et non sur input_speed_steady (21, 22). «&#xa0;appareil&#xa0;:&#xa0;» est la vitesse à laquelle X fait ses pas (15 à l&apos;état haut plus 16 à l&apos;état bas par pas)&#xa0;; modifier 15 et 16 dans le tableau des paramètres pour la changer.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+52"/>
         <source>Y will not move: at these parameters the firmware&apos;s Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)</source>
         <translation>Y ne bougera pas&#xa0;: avec ces paramètres, la boucle Y du firmware ne fait aucun pas (elle exécute le compte de rampe, 0&#xa0;; régler 22 et 24 pour que la longueur de rampe soit supérieure à 0)</translation>
     </message>

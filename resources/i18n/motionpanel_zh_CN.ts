@@ -6649,7 +6649,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>动作 {number}</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+81"/>
         <source>move package confirmed</source>
         <translation>移动数据包已确认</translation>
     </message>
@@ -6713,7 +6713,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation type="vanished">设置 input_speed_steady_x 和 _y（参数 21 和 22）。此固件版本仅根据 step_delay_instantaneous（15、16）确定步进时序，因此移动速度保持不变。</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-45"/>
         <source>Visiomex has no homing at this revision: Home moves back to (0, 0) by a relative move from the position the panel counted</source>
         <translation>此版本的 Visiomex 没有回原点功能：回原点时从面板累计的位置通过相对移动回到 (0, 0)</translation>
     </message>
@@ -6733,7 +6733,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>应答在数据包发出 1 s 后到达：固件要等待 1 s 的静默</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+43"/>
         <source>parameter {number} set</source>
         <translation>参数 {number} 已设置</translation>
     </message>
@@ -6758,7 +6758,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{command}：应为 {wanted}，收到 {code}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-46"/>
         <source>18-character packets at 9600 baud, as the seed documents</source>
         <translation>18 字符数据包，9600 波特，与原始资料所述一致</translation>
     </message>
@@ -6908,7 +6908,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>此固件版本从不读取 {parameter}：移动不会改变</translation>
     </message>
     <message>
-        <location line="-92"/>
+        <location line="-75"/>
         <source>Steps per move</source>
         <translation>每次移动的步数</translation>
     </message>
@@ -7462,12 +7462,12 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{file} 未指明协议（没有连接说明），且没有任何协议能识别其通信内容：请指定 --protocol</translation>
     </message>
     <message>
-        <location line="+398"/>
+        <location line="+386"/>
         <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
         <translation>此处无法设置速度：此固件版本仅根据 step_delay_instantaneous（15、16）确定步进时序，而不是 input_speed_steady（21、22）。“设备：”是 X 的步进速度（每步 15 高电平加 16 低电平）；要改变它，请在参数表中修改 15 和 16。</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+52"/>
         <source>Y will not move: at these parameters the firmware&apos;s Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)</source>
         <translation>Y 轴不会移动：按这些参数，固件的 Y 循环一步也不走（它执行的是斜坡计数，即 0；请设置 22 和 24，使斜坡长度大于 0）</translation>
     </message>

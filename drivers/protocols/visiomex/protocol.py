@@ -9,13 +9,12 @@ one packet in flight and never writes within `write_gap` of the last one unless 
 from __future__ import annotations
 
 import dataclasses
-import re
 from dataclasses import dataclass
 
-from drivers.errors import BadInput, DeviceError, FrameError, GarbledReply
+from drivers.errors import BadInput, FrameError
 from drivers.framers.lines import LineFramer
 from drivers.messages import Message
-from drivers.protocols.base import Exchange, Point, Protocol, Variant
+from drivers.protocols.base import Point, Protocol, Variant
 from drivers.protocols.capabilities import Capabilities, Completion
 from drivers.protocols.commands import Command, Home, MoveBy, MoveTo, Raw, SetParameter, SetSpeed
 from drivers.protocols.events import ErrorReport, Event, Feedback, TextLine
@@ -42,32 +41,17 @@ from drivers.protocols.visiomex.params import (
     PARAMETERS,
     SPEED_IDS,
 )
+from drivers.protocols.visiomex.replies import (
+    CODE,
+    ERRORS,
+    UNLISTED_ERROR,
+    VisiomexExchange,
+    code_meaning,
+)
 from drivers.protocols.visiomex.where import firmware_move, move_warning, stepping_speeds
 
-REPLY_MARGIN = 0.5  # s beyond the silence window before a reply counts as missing
 PAD = "N"
 MOVE_TYPES = {"linear": "L", "rotational": "R", "steps": "S"}
-# What the codes mean (the protocol's documents), made once: decoding a line builds no text.
-FEEDBACK = {
-    "FP0001": Message("move package confirmed"),
-    "FA0001": Message("action accomplished"),
-}
-ERRORS = {
-    "EP0001": Message("package size mismatch"),
-    "EP0002": Message("invalid command type"),
-    "EP0003": Message("invalid motion type"),
-    "EP0004": Message("invalid direction for the X axis"),
-    "EP0005": Message("invalid direction for the Y axis"),
-    "EP0006": Message("invalid set parameter ID"),
-    "EF0001": Message("parse function error in the firmware"),
-    "EF0002": Message("invalid driving mechanism"),
-}
-UNLISTED_ERROR = Message("an error code the documentation does not list")
-_SET = {
-    number: Message("{parameter} set", parameter=parameter.name)
-    for number, parameter in BY_ID.items()
-} | {28: Message("{parameter} set", parameter="driving_mechanism_y")}  # the firmware's FS0028
-_CODE = re.compile(r"(?:FS|FP|FA|EP|EF)\d{4}")
 _UNITS = {"linear": "mm", "rotational": "°", "steps": Message("steps")}
 _GO_HOME = Message("go home")
 BOOT_BANNER = "Checkpoint 2"  # setup() prints it at every boot
@@ -123,79 +107,6 @@ CAPABILITIES = Capabilities(
         Message("a reply comes 1 s after a packet: the firmware waits for 1 s of silence"),
     ),
 )
-
-
-def _code_meaning(code: str) -> str:
-    if code in FEEDBACK:
-        return FEEDBACK[code]
-    if code.startswith("FS"):
-        number = int(code[2:])
-        return _SET.get(number) or Message("parameter {number} set", number=number)
-    return Message("feedback code {code} is not documented", code=code)
-
-
-class VisiomexExchange(Exchange):
-    """A set waits for its `FSnnnn`; a move takes the debug lines and `FP0001`, ends at `FA0001`.
-
-    Any `EP`/`EF` code fails the exchange at once with the firmware's message.
-    """
-
-    timeout = SILENCE + REPLY_MARGIN
-
-    def __init__(self, command: Command, what: str, expect: str | None, extra: float = 0.0):
-        super().__init__(command)
-        self.what = what
-        self.expect = expect  # None: a move (FP0001, then FA0001); "": any FS code
-        self.extra = extra
-        self.confirmed = False
-
-    def handle(self, event: Event) -> bool:
-        """Track one event of the reply."""
-        if isinstance(event, ErrorReport) and event.code:
-            if self.expect is None and event.code == "EP0003":
-                message = Message(
-                    "{command}: the device answered {code} ({meaning}); this firmware revision "
-                    "runs the move anyway",
-                    command=self.what,
-                    code=event.code,
-                    meaning=event.message,
-                )
-            else:
-                message = Message(
-                    "{command}: the device answered {code} ({meaning})",
-                    command=self.what,
-                    code=event.code,
-                    meaning=event.message,
-                )
-            self.fail(DeviceError(message))
-            return True
-        if isinstance(event, Feedback):
-            if self.expect is None and event.code == "FP0001":
-                self.confirmed = True
-            elif self._ends(event.code):
-                self.finish(event)
-            else:
-                wanted = self.expect or "FP0001/FA0001"
-                self.fail(
-                    GarbledReply(
-                        Message(
-                            "{command}: expected {wanted}, got {code}",
-                            command=self.what,
-                            wanted=wanted,
-                            code=event.code,
-                        )
-                    )
-                )
-            return True
-        if isinstance(event, TextLine) and self.expect is None:
-            self.notes.append(event.text)  # the firmware's debug lines before FP0001
-            return True
-        return False
-
-    def _ends(self, code: str) -> bool:
-        if self.expect is None:
-            return code == "FA0001"
-        return code == self.expect or (not self.expect and code.startswith("FS"))
 
 
 class VisiomexProtocol(Protocol):
@@ -362,12 +273,12 @@ class VisiomexProtocol(Protocol):
         if prefix and not text.startswith(prefix):
             return [TextLine(text)]
         code = text[len(prefix) :]
-        if not _CODE.fullmatch(code):
+        if not CODE.fullmatch(code):
             return [TextLine(text)]
         if code.startswith("E"):
             meaning = ERRORS.get(code, UNLISTED_ERROR)
             return [ErrorReport(meaning, code)]
-        return [Feedback(code, meaning=_code_meaning(code))]
+        return [Feedback(code, meaning=code_meaning(code))]
 
     def is_restart(self, event: Event, waiting: Command | None = None) -> bool:
         """The sketch's `setup()` prints `Checkpoint 2` at every boot."""
