@@ -19,7 +19,7 @@ subscriptions, drivers/session/subscriptions.py).
 from __future__ import annotations
 
 import threading
-from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import AbstractContextManager, contextmanager
 from types import TracebackType
 from typing import TYPE_CHECKING, TypeVar
@@ -40,13 +40,10 @@ from drivers.protocols.capabilities import Capabilities
 from drivers.protocols.events import PositionReport
 from drivers.protocols.parameters import ParameterWritten
 from drivers.session.parameters import DeviceParameters
+from drivers.session.programs import ProgressListener, SessionPrograms
 from drivers.session.setup import LogTarget, make_protocol, open_device_link, travel_limits
 from drivers.session.subscriptions import SessionLines, SessionSubscriptions
 from drivers.session.tap import TrafficTap
-from drivers.toolpath.loader import from_points
-from drivers.toolpath.model import CHORD_TOLERANCE, Toolpath
-from drivers.toolpath.point_program import ProgramPoint
-from drivers.toolpath.streaming import StreamProgress
 from drivers.traffic.log_origin import connection_note
 
 if TYPE_CHECKING:
@@ -62,8 +59,6 @@ __all__ = [
 ]
 
 _R = TypeVar("_R")
-ProgressListener = Callable[[StreamProgress], None]
-"""Told how far a program has got (a StreamProgress) after each frame or move."""
 
 
 class NoStop(BadInput):
@@ -74,7 +69,7 @@ class NoPrograms(BadInput):
     """Kept for scripts that catch it: every protocol runs programs now (none raises it)."""
 
 
-class DeviceSession(SessionSubscriptions, SessionLines):
+class DeviceSession(SessionSubscriptions, SessionLines, SessionPrograms):
     """One open device: typed operations, the travel guard, the traffic tap and its log.
 
     Not thread-safe, like the client under it: one thread drives it; only `stop` may be called
@@ -419,58 +414,6 @@ class DeviceSession(SessionSubscriptions, SessionLines):
     def simulator(self) -> object | None:
         """The simulated device behind a `sim://` port (None: a real one)."""
         return getattr(self.link.port, "device", None)
-
-    # -- programs ------------------------------------------------------------------------------
-    def run_program(
-        self,
-        program: Toolpath | Iterable[ProgramPoint],
-        progress: ProgressListener | None = None,
-        group: int | None = None,
-        *,
-        tolerance: float = CHORD_TOLERANCE,
-    ) -> StreamProgress:
-        """Run a program and wait until the device has run it: a Toolpath (drivers.toolpath,
-        `load_toolpath` reads G-code, DXF, SVG, CSV and JSON) or points. `progress` is told how
-        far it got (its `source` names the line under way); arcs are cut into chords within
-        `tolerance` mm where the device has no arcs of its own. A program that would leave the
-        travel box, or asks a speed the device does not allow, is refused whole before
-        anything is sent; `stop` ends it early. Laser-frame streams it to its queue (`group`
-        instructions a frame at most), pi-frame gets arcs as arcs, other devices move by move."""
-        from drivers.toolpath.runner import ProgramRunner  # numpy: only when a program runs
-
-        toolpath = program if isinstance(program, Toolpath) else from_points(list(program))
-        runner = ProgramRunner(
-            self.motion, toolpath, tolerance=tolerance, progress=progress, group=group
-        )
-        with self._operation():
-            self._runner = runner
-            try:
-                state = runner.run()
-            finally:
-                self._runner = None
-            if runner.stopped and self.capabilities.stop:
-                self.client.execute(cmd.Stop())  # flushes what the device has queued
-            self.motion.position()
-        return state
-
-    def pause_program(self, paused: bool = True) -> None:
-        """Send nothing more of the program under way until resumed (`paused` False); a
-        queue on the device goes on with what it has. Any thread; nothing happens without one."""
-        runner = self._runner
-        if runner is not None:
-            if paused:
-                runner.pause()
-            else:
-                runner.resume()
-
-    def stop_program(self) -> bool:
-        """End the program under way early (any thread): `run_program` then stops the device
-        where it has a stop (flushing its queue); whether a program was under way."""
-        runner = self._runner
-        if runner is None:
-            return False
-        runner.stop()
-        return True
 
     # -- the traffic tap -----------------------------------------------------------------------
     def add_listener(self, listener: TrafficListener) -> None:
