@@ -57,8 +57,14 @@ class LayoutReading:
         report = read(self.path)
         return int(report["sequence"]) if report else 0  # type: ignore[call-overload]
 
-    def after(self, before: int, accept: Callable[[Report], bool], what: str) -> Report:
-        """The first report numbered above `before` that `accept`s, within REPORT_TIMEOUT."""
+    def after(
+        self,
+        before: int,
+        accept: Callable[[Report], bool],
+        what: str,
+        timeout: float = REPORT_TIMEOUT,
+    ) -> Report:
+        """The first report numbered above `before` that `accept`s, within `timeout` s."""
 
         def settled() -> Report | None:
             self.panel.alive()
@@ -66,7 +72,7 @@ class LayoutReading:
             newer = report is not None and int(report["sequence"]) > before  # type: ignore[call-overload]
             return report if newer and accept(report) else None  # type: ignore[arg-type]
 
-        return wait_for(settled, REPORT_TIMEOUT, what, 0.1)
+        return wait_for(settled, timeout, what, 0.1)
 
     def shows(self, report: Report, layout: str) -> bool:
         """Whether `report` is of `layout` settled: the window's size now, its views made."""
