@@ -59,8 +59,11 @@ def test_a_program_drives_the_device_through_the_bridge(qtbot, window: MainWindo
     qtbot.mouseClick(bar.connect_button, Qt.MouseButton.LeftButton)  # Disconnect
     qtbot.waitUntil(lambda: window.connection.bridge is None, timeout=5000)
     assert bar.state() == "disconnected"
-    sent = b"".join(r.data for r in read_log(window.link.session_log_path) if r.direction == "tx")
+    records = read_log(window.link.session_log_path)
+    sent = b"".join(r.data for r in records if r.direction == "tx")
     assert b"ABSOLUTE_MOVE 1 2 3\n" in sent  # the session log has every byte
+    received = b"".join(r.data for r in records if r.direction == "rx")
+    assert b"ACK ABSOLUTE_MOVE\r\n" in received  # the line end the console may show apart
 
 
 def test_the_device_vanishing_ends_the_bridge_with_an_error(qtbot, window: MainWindow, sim):
