@@ -421,10 +421,12 @@ class MachineState(QObject):
             self.undo_move()
 
     def job_ended(self, job: jobs.Job) -> None:
-        """`job` ended (done or failed): nothing runs, nothing moves any more."""
+        """`job` ended (done or failed): nothing it started moves any more, and unless a job
+        submitted after it waits its turn, nothing runs."""
         from app.window.device import jobs
 
-        self.busy_job = None
+        if job is self.busy_job:  # a Home clicked during a jog's tap is busy once the jog ends
+            self.busy_job = None
         if self.pause is not None:
             self.pause.ended()
         if self.moving:  # one job at a time: when it ends, nothing moves (arcs and jogs alike)

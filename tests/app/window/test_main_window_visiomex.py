@@ -130,6 +130,22 @@ def test_a_fresh_connection_says_the_position_is_unknown_until_home(
     assert "home confirmed" in window.status_line.message()
 
 
+def test_home_clicked_during_a_jog_step_says_home_confirmed_when_it_ends(
+    qtbot, window: MainWindow
+) -> None:
+    """The jog's end, reported after Home was queued behind it, does not clear Home's turn."""
+    _connect(qtbot, window)
+    window.jog_panel.set_step(1)
+    qtbot.mouseClick(window.findChild(QPushButton, "jogXPlus"), Qt.MouseButton.LeftButton)
+    jog = window.machine.busy_job
+    assert jog is not None and window.coordinates.home_button.isEnabled()
+    qtbot.mouseClick(window.coordinates.home_button, Qt.MouseButton.LeftButton)
+    assert window.machine.busy_job is not jog  # Home waits its turn behind the jog
+    qtbot.waitUntil(lambda: window.readout.status() == "live", timeout=8000)
+    assert window.readout.position() == (0.0, 0.0, 0.0)
+    assert "home confirmed" in window.status_line.message()
+
+
 def test_a_malformed_profile_is_refused_and_nothing_is_sent(
     qtbot, window: MainWindow, tmp_path: Path
 ) -> None:
