@@ -20,10 +20,11 @@ from app.window.device.machine_state import MachineState
 from app.window.device.ports import PortWatcher
 from app.window.device.worker_link import WorkerLink
 from app.window.keyboard_jog import KeyboardJog
+from app.window.layout.arrangements import DEVICE, OPERATE
 from app.window.layout.dock_balance import DockBalance
 from app.window.layout.dock_layout import BOTTOM, DEVICE_DOCKS, LEFT
 from app.window.layout.layout_report import watch as watch_layout
-from app.window.layout.layouts import DEVICE, OPERATE, Layouts
+from app.window.layout.layouts import Layouts
 from app.window.layout.screen_fit import ScreenFit
 from app.window.menus import build_menus
 from app.window.window_tools import WindowTools

@@ -1497,7 +1497,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>dispositivo %1 simulado</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+100"/>
+        <location filename="../../app/window/main_window.py" line="+101"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1890,12 +1890,12 @@ Send them anyway?</source>
         <translation>posición desconocida: no se puede consultar al dispositivo y sus tramas llevan destinos absolutos, así que se rechaza el desplazamiento; pulsar primero Fijar origen donde está la platina, Origen, o Ir a un punto absoluto</translation>
     </message>
     <message>
-        <location line="+204"/>
+        <location line="+206"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>la velocidad %1 mm/s se relee como %2 mm/s (el dispositivo redondea)</translation>
     </message>
     <message>
-        <location filename="../../app/window/layout/layouts.py" line="+127"/>
+        <location filename="../../app/window/layout/arrangements.py" line="+93"/>
         <source>&amp;Operate</source>
         <translation>&amp;Operar</translation>
     </message>
@@ -1910,7 +1910,7 @@ Send them anyway?</source>
         <translation>Trá&amp;fico</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Jog, go to and watch the stage: the views large</source>
         <translation>Desplazar, ir a y observar la platina: las vistas en grande</translation>
     </message>
@@ -1925,7 +1925,7 @@ Send them anyway?</source>
         <translation>La consola de tráfico y su línea de tiempo, a todo lo ancho</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location filename="../../app/window/layout/layouts.py" line="+112"/>
         <source>Reset &amp;layout</source>
         <translation>Restablecer &amp;diseño</translation>
     </message>

@@ -1497,7 +1497,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>appareil %1 simulé</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+100"/>
+        <location filename="../../app/window/main_window.py" line="+101"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1890,12 +1890,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé et ses trames portent des cibles absolues, un déplacement est donc refusé&#xa0;; d&apos;abord «&#xa0;Définir l&apos;origine&#xa0;» là où se trouve la platine, «&#xa0;Origine&#xa0;», ou «&#xa0;Aller à&#xa0;» vers un point absolu</translation>
     </message>
     <message>
-        <location line="+204"/>
+        <location line="+206"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>vitesse %1 mm/s relue comme %2 mm/s (l&apos;appareil arrondit)</translation>
     </message>
     <message>
-        <location filename="../../app/window/layout/layouts.py" line="+127"/>
+        <location filename="../../app/window/layout/arrangements.py" line="+93"/>
         <source>&amp;Operate</source>
         <translation>&amp;Pilotage</translation>
     </message>
@@ -1910,7 +1910,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>&amp;Trafic</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Jog, go to and watch the stage: the views large</source>
         <translation>Déplacer la platine, l&apos;envoyer à une position et la surveiller&#xa0;: les vues en grand</translation>
     </message>
@@ -1925,7 +1925,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>La console de trafic et sa chronologie, en pleine largeur</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location filename="../../app/window/layout/layouts.py" line="+112"/>
         <source>Reset &amp;layout</source>
         <translation>Réinitialiser la di&amp;sposition</translation>
     </message>

@@ -1497,7 +1497,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>模拟的 %1 设备</translation>
     </message>
     <message>
-        <location filename="../../app/window/main_window.py" line="+100"/>
+        <location filename="../../app/window/main_window.py" line="+101"/>
         <source>Motion Panel</source>
         <translation>Motion Panel</translation>
     </message>
@@ -1890,12 +1890,12 @@ Send them anyway?</source>
         <translation>位置未知：无法查询设备，且其帧携带的是绝对目标，因此点动被拒绝；请先在平台当前所在处“设为原点”、“回原点”，或“定位”到一个绝对点</translation>
     </message>
     <message>
-        <location line="+204"/>
+        <location line="+206"/>
         <source>speed %1 mm/s reads back as %2 mm/s (the device rounds)</source>
         <translation>速度 %1 mm/s 回读为 %2 mm/s（设备会取整）</translation>
     </message>
     <message>
-        <location filename="../../app/window/layout/layouts.py" line="+127"/>
+        <location filename="../../app/window/layout/arrangements.py" line="+93"/>
         <source>&amp;Operate</source>
         <translation>操作(&amp;P)</translation>
     </message>
@@ -1910,7 +1910,7 @@ Send them anyway?</source>
         <translation>通信(&amp;A)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Jog, go to and watch the stage: the views large</source>
         <translation>点动、定位并观察平台：视图放大显示</translation>
     </message>
@@ -1925,7 +1925,7 @@ Send them anyway?</source>
         <translation>通信控制台及其时间线，全宽显示</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location filename="../../app/window/layout/layouts.py" line="+112"/>
         <source>Reset &amp;layout</source>
         <translation>重置布局(&amp;Y)</translation>
     </message>

@@ -8,7 +8,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialog, QDockWidget
 
 from app.common.settings import read_travel
-from app.window.layout.layouts import SETUP
+from app.window.layout.arrangements import SETUP
 from app.window.main_window import MainWindow
 from drivers.device.travel import TravelLimits
 from widgets.travel_limits_dialog import TravelLimitsDialog

@@ -11,7 +11,7 @@ from PySide6.QtCore import QPoint, Qt
 from PySide6.QtGui import QAction, QRegion
 from PySide6.QtWidgets import QApplication, QDockWidget, QToolButton, QWidget
 
-from app.window.layout.layouts import NAMES, OPERATE, SETUP, TRAFFIC
+from app.window.layout.arrangements import NAMES, OPERATE, SETUP, TRAFFIC
 from app.window.main_window import MainWindow
 
 pytestmark = pytest.mark.timeout(60)

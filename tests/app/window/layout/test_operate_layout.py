@@ -7,7 +7,8 @@ import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QApplication, QDockWidget
 
-from app.window.layout.layouts import KEY, OPERATE
+from app.window.layout.arrangements import OPERATE
+from app.window.layout.layouts import KEY
 from app.window.main_window import MainWindow
 from widgets.view_tabs import VIEW_2D, ViewTabs
 
