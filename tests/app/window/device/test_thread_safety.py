@@ -226,9 +226,10 @@ def test_a_flood_of_device_lines_touches_the_gui_from_its_own_thread_only(
     def jog(step: int) -> None:
         done = len(finished)
         window.jog_panel.jog_requested.emit("x", 1.0)
-        guard.wait(
+        guard.wait(  # (a jog's time through a flood, not its speed: room for a busy CPU)
             qtbot,
             lambda: len(finished) > done and window.readout.position() == (step, 0.0, 0.0),
+            timeout=30_000,
         )
         assert isinstance(finished[done][0], jobs.MoveByJob), finished[done:]
 
@@ -258,7 +259,7 @@ def test_a_flood_of_device_lines_touches_the_gui_from_its_own_thread_only(
     assert window.connected and window.connection_bar.state() == "connected"
     done = len(finished)
     window.console.send_requested.emit(b"GET_POSITION\n")
-    guard.wait(qtbot, lambda: len(finished) > done)
+    guard.wait(qtbot, lambda: len(finished) > done, timeout=30_000)
     job, result = finished[done]
     assert isinstance(job, jobs.RawJob), finished[done:]
     assert result is not None
