@@ -5,11 +5,15 @@ most of the panel's start-up (issue 11's speed table: 5-8 times a bare window). 
 built with `LazyView` stand-ins instead: plain widgets with the views' object names that take
 the calls the window makes (the target, the travel box, the planned path, ...) and keep the last
 of each. `DeferredViews` builds the real views once the window has painted (or when something
-needs them sooner), puts them in the stand-ins' places, replays the calls and emits `ready`.
+needs them sooner), puts them in the stand-ins' places, replays the calls and emits `ready`. It
+does so a step a turn of the event loop (the views' libraries a step each), so that the device
+shown connected, a key or a repaint waits for one step (at most about 0.1 s), not for all.
 """
 
 from __future__ import annotations
 
+import importlib
+import logging
 from collections.abc import Callable
 from functools import partial
 from typing import TYPE_CHECKING
@@ -50,8 +54,22 @@ FORWARDED = frozenset(
         "grid_spacing",
     }
 )
+log = logging.getLogger(__name__)
 BACKGROUND_3D = QColor(24, 24, 28)  # as the 3D view's scene
 BACKGROUND_2D = QColor(0, 0, 0)  # as pyqtgraph's plots
+
+
+# The views' libraries, imported a step each before the views are built: the longest import
+# is then the longest wait the event loop has, not all of them together.
+PRELOADED = ("numpy", "pyqtgraph.Qt", "pyqtgraph", "OpenGL.GL", "pyqtgraph.opengl")
+
+
+def _preload(name: str) -> None:
+    """Import `name` now, should it import; the view that needs it says what went wrong."""
+    try:
+        importlib.import_module(name)
+    except Exception:  # (no OpenGL here, say: the 3D view shows its notice)
+        log.debug("%s did not import ahead of the views", name, exc_info=True)
 
 
 def position_view_3d(buffer: PositionBuffer | LazyPart) -> QWidget:
@@ -219,6 +237,7 @@ class DeferredViews(QObject):
     builds everything at once (for a screenshot, or a window that is never shown).
     """
 
+    usable = Signal()  # all but the views are built: the docks, the console, the menus
     ready = Signal()
 
     def __init__(self, window: QWidget, buffer: PositionBuffer | LazyPart) -> None:
@@ -227,7 +246,13 @@ class DeferredViews(QObject):
         self.view2d = LazyView("positionView2d", partial(position_view_2d, buffer), BACKGROUND_2D)
         self.view3d.built_view = partial(self._built, "view3d")
         self.view2d.built_view = partial(self._built, "view2d")
-        self._steps: list[Callable[[], object]] = [self.view3d.build, self.view2d.build]
+        self._steps: list[Callable[[], object]] = []  # what `add` adds, run first
+        self._view_steps: list[Callable[[], object]] = [  # the heaviest last
+            *(partial(_preload, name) for name in PRELOADED),
+            self.view3d.build,
+            self.view2d.build,
+        ]
+        self._usable = False
         self._ready = False
         self._scheduled = False
         window.installEventFilter(self)
@@ -236,10 +261,13 @@ class DeferredViews(QObject):
         """A view is built: it is the window's `name` from now on."""
         setattr(self.parent(), name, view)
 
-    def add(self, step: Callable[[], object], first: bool = False) -> None:
-        """Run `step` too when building (it must be harmless to run twice); `first`: before
-        the steps added so far, the views included (what the operator waits for)."""
-        if first:
+    def add(self, step: Callable[[], object], first: bool = False, plots: bool = False) -> None:
+        """Run `step` too when building, before the views (it must be harmless to run twice);
+        `first`: before the steps added so far (what the operator waits for); `plots`: with
+        the views, once their libraries are imported (a step that imports pyqtgraph)."""
+        if plots:
+            self._view_steps.append(step)
+        elif first:
             self._steps.insert(0, step)
         else:
             self._steps.append(step)
@@ -248,20 +276,57 @@ class DeferredViews(QObject):
         """Whether everything has been built."""
         return self._ready
 
+    def is_usable(self) -> bool:
+        """Whether all but the views has been built (`usable` was emitted)."""
+        return self._usable
+
+    def building(self) -> bool:
+        """Whether the window has painted and what it needs to be used is still being built
+        (the steps before the views)."""
+        return self._scheduled and not self._usable
+
     def build_now(self) -> None:
-        """Build whatever is not built yet; emits `ready` the first time."""
+        """Build whatever is not built yet; emits `usable` and `ready` the first time."""
         if self._ready:
             return
         self.parent().removeEventFilter(self)
-        for step in self._steps:
-            step()
-        self._steps.clear()  # they may hold the window: no reference cycle to it is kept
-        self._ready = True
-        self.ready.emit()
+        while self._steps or not self._usable or self._view_steps:
+            self._run_one()
+        self._finish()
+
+    def _run_one(self) -> None:
+        """The next step (popped first: they may hold the window, none is kept once run)."""
+        if self._steps:
+            self._steps.pop(0)()
+        elif not self._usable:  # a step of its own, between the two
+            self._usable = True
+            self.usable.emit()
+        elif self._view_steps:
+            self._view_steps.pop(0)()
+
+    def _next_step(self) -> None:
+        """One step a turn of the event loop, so that what arrives meanwhile (the device
+        shown connected, a key, a repaint) waits for one step, not for all of them."""
+        if self._ready:
+            return
+        self._run_one()
+        if self._steps or not self._usable or self._view_steps:
+            QTimer.singleShot(0, self, self._next_step)
+        else:
+            self._finish()
+
+    def _finish(self) -> None:
+        if not self._usable:
+            self._usable = True
+            self.usable.emit()
+        if not self._ready:
+            self._ready = True
+            self.ready.emit()
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
         """At the window's first paint, build just after it (once the event loop is back)."""
         if event.type() == QEvent.Type.Paint and not self._scheduled:
             self._scheduled = True
-            QTimer.singleShot(0, self, self.build_now)
+            self.parent().removeEventFilter(self)
+            QTimer.singleShot(0, self, self._next_step)
         return False

@@ -9,7 +9,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from PySide6.QtCore import Qt
+from PySide6.QtCore import Qt, QTimer
 from PySide6.QtWidgets import QMainWindow, QSplitter, QWidget
 
 from widgets.lazy_view import DeferredViews, LazyView
@@ -119,6 +119,60 @@ def test_the_window_builds_its_views_after_the_first_paint(qtbot) -> None:
     assert window.findChild(QWidget, "positionView2d") is window.view2d
     assert timeline.plots is not None
     assert timeline.latency_curve.getData()[1].tolist() == [5.0]  # what came before is drawn
+
+
+def _window_with_views(qtbot) -> tuple[QMainWindow, DeferredViews]:
+    """A window whose centre is the 2D view's stand-in, not shown yet."""
+    window = QMainWindow()
+    qtbot.addWidget(window)
+    views = DeferredViews(window, PositionBuffer(capacity=None))
+    window.setCentralWidget(views.view2d)
+    return window, views
+
+
+def test_the_steps_run_one_a_turn_so_what_arrives_meanwhile_waits_for_one_step(qtbot) -> None:
+    """A timer due during a step (as a device shown connected, or a key) runs before the next
+    step, not after all of them."""
+    window, views = _window_with_views(qtbot)
+    order: list[str] = []
+
+    def first() -> None:
+        order.append("first")
+        QTimer.singleShot(0, lambda: order.append("meanwhile"))
+
+    views.add(first, first=True)
+    views.add(lambda: order.append("last"))
+    with qtbot.waitSignal(views.ready, timeout=20_000):
+        window.show()
+    assert order == ["first", "meanwhile", "last"]
+    assert window.findChild(QWidget, "positionView2d") is not None
+
+
+def test_usable_comes_after_the_steps_and_before_the_views_and_plots(qtbot) -> None:
+    window, views = _window_with_views(qtbot)
+    order: list[str] = []
+    views.add(lambda: order.append("plots"), plots=True)
+    views.add(lambda: order.append("dock"))
+    views.usable.connect(
+        lambda: order.append(f"usable, 2D built: {views.view2d.real() is not None}")
+    )
+    assert not views.building()
+    with qtbot.waitSignal(views.ready, timeout=20_000):
+        window.show()
+    assert order == ["dock", "usable, 2D built: False", "plots"]
+    assert views.is_usable() and not views.building()
+
+
+def test_build_now_runs_the_steps_left_at_once(qtbot) -> None:
+    _window, views = _window_with_views(qtbot)
+    order: list[str] = []
+    views.add(lambda: order.append("a"))
+    views.add(lambda: order.append("b"))
+    with qtbot.waitSignal(views.ready, timeout=20_000):
+        views.build_now()
+    assert order == ["a", "b"] and views.is_ready()
+    views.build_now()  # once only
+    assert order == ["a", "b"]
 
 
 def test_the_window_shows_before_opengl_is_imported(tmp_path: Path) -> None:
