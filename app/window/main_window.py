@@ -293,10 +293,10 @@ class MainWindow(QMainWindow):
         self.dock_balance = DockBalance(self, LEFT)
         self.bottom_balance = DockBalance(self, BOTTOM, grow=True)
         for balance in (self.dock_balance, self.bottom_balance):
-            self.views.ready.connect(balance.start)
+            self.views.usable.connect(balance.start)
             self.layouts.after_apply.append(balance.request)
             self.layouts.after_device.append(balance.request)
-        self.views.ready.connect(self.layouts.fit_device)
+        self.views.usable.connect(self.layouts.fit_device)
 
         self.status_line = StatusLine(self)
         self.statusBar().addWidget(self.status_line, 1)
@@ -361,7 +361,10 @@ class MainWindow(QMainWindow):
         console.send_requested.connect(self.job_desk.send_raw)
         self.timeline = TrafficTimeline(self, deferred=True)
         self.timeline_dock.setWidget(self.timeline)
-        self.timeline.build_plots()
+        if self.views.building():  # pyqtgraph's import: with the views, after the docks
+            self.views.add(self.timeline.build_plots, plots=True)
+        else:
+            self.timeline.build_plots()
         self.timeline_feed = TimelineFeed(console, self.timeline)
         self.timeline.line_clicked.connect(self._show_console)
         return console

@@ -60,6 +60,7 @@ class WindowTools(QObject):
         window.readout.set_display(self.prefs.units, self.prefs.decimals)
         self.apply_units()
         window.views.add(self.apply_units)  # again once the device docks (the arc) are built
+        window.views.ready.connect(self.apply_units)  # and the views
         window.console.set_max_lines(self.prefs.console_max_lines)
         if self.prefs.theme == "system":  # nothing to change before the first paint (asking
             window.views.add(self.apply_theme)  # for the style costs some 40 ms): after it

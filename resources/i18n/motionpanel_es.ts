@@ -1633,7 +1633,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>&amp;Borrar trayectoria</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+72"/>
+        <location filename="../../app/window/device/connection.py" line="+76"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 indica su protocolo: conectando como %2</translation>
     </message>
@@ -1689,7 +1689,7 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>desconectado de %1 en %2</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+39"/>
         <source>connected to %1 on %2</source>
         <translation>conectado a %1 en %2</translation>
     </message>
@@ -1704,8 +1704,8 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>punto absoluto alcanzado: la posición se cuenta desde aquí</translation>
     </message>
     <message>
-        <location line="+52"/>
-        <location line="+114"/>
+        <location line="+53"/>
+        <location line="+116"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la posición es desconocida: este dispositivo no puede informar de ella; buscar el origen o fijar el origen</translation>
     </message>
@@ -1760,12 +1760,12 @@ Mantener una tecla para seguir avanzando; Shift para un paso diez veces mayor.</
         <translation>reconectando con %1</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-296"/>
         <source>port %1 disappeared</source>
         <translation>desapareció el puerto %1</translation>
     </message>
     <message>
-        <location line="+293"/>
+        <location line="+309"/>
         <source>%1 on %2</source>
         <translation>%1 en %2</translation>
     </message>
@@ -1869,7 +1869,7 @@ Send them anyway?</source>
         <translation>el dispositivo informó de un error: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="-109"/>
+        <location filename="../../app/window/device/connection.py" line="-125"/>
         <location filename="../../app/window/device/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>dispositivo: %1</translation>
@@ -1880,12 +1880,12 @@ Send them anyway?</source>
         <translation>%1 falló: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/machine_state.py" line="-115"/>
+        <location filename="../../app/window/device/machine_state.py" line="-118"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origen confirmado: la posición se cuenta desde aquí</translation>
     </message>
     <message>
-        <location line="+201"/>
+        <location line="+204"/>
         <source>position unknown: the device cannot be asked and its frames carry absolute targets, so a jog is refused; Set Home where the stage stands, Home, or Go to an absolute point first</source>
         <translation>posición desconocida: no se puede consultar al dispositivo y sus tramas llevan destinos absolutos, así que se rechaza el desplazamiento; pulsar primero Fijar origen donde está la platina, Origen, o Ir a un punto absoluto</translation>
     </message>
@@ -4799,7 +4799,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>Macros</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>&amp;Settings…</source>
         <translation>A&amp;justes…</translation>
     </message>

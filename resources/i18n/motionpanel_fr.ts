@@ -1633,7 +1633,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>&amp;Effacer la trace</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+72"/>
+        <location filename="../../app/window/device/connection.py" line="+76"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 indique son protocole&#xa0;: connexion en tant que %2</translation>
     </message>
@@ -1689,7 +1689,7 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>déconnecté de %1 sur %2</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+39"/>
         <source>connected to %1 on %2</source>
         <translation>connecté à %1 sur %2</translation>
     </message>
@@ -1704,8 +1704,8 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>point absolu atteint&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
     <message>
-        <location line="+52"/>
-        <location line="+114"/>
+        <location line="+53"/>
+        <location line="+116"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>la position est inconnue&#xa0;: cet appareil ne peut pas l&apos;indiquer&#xa0;; faire une prise d&apos;origine ou définir l&apos;origine</translation>
     </message>
@@ -1760,12 +1760,12 @@ Maintenir une touche pour continuer&#xa0;; Maj pour un pas dix fois plus grand.<
         <translation>reconnexion à %1</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-296"/>
         <source>port %1 disappeared</source>
         <translation>port %1 disparu</translation>
     </message>
     <message>
-        <location line="+293"/>
+        <location line="+309"/>
         <source>%1 on %2</source>
         <translation>%1 sur %2</translation>
     </message>
@@ -1869,7 +1869,7 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>l&apos;appareil a signalé une erreur&#xa0;: %1</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="-109"/>
+        <location filename="../../app/window/device/connection.py" line="-125"/>
         <location filename="../../app/window/device/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>appareil&#xa0;: %1</translation>
@@ -1880,12 +1880,12 @@ Les envoyer quand même&#xa0;?</translation>
         <translation>échec de %1&#xa0;: %2</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/machine_state.py" line="-115"/>
+        <location filename="../../app/window/device/machine_state.py" line="-118"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>origine confirmée&#xa0;: la position est comptée à partir d&apos;ici</translation>
     </message>
     <message>
-        <location line="+201"/>
+        <location line="+204"/>
         <source>position unknown: the device cannot be asked and its frames carry absolute targets, so a jog is refused; Set Home where the stage stands, Home, or Go to an absolute point first</source>
         <translation>position inconnue&#xa0;: l&apos;appareil ne peut pas être interrogé et ses trames portent des cibles absolues, un déplacement est donc refusé&#xa0;; d&apos;abord «&#xa0;Définir l&apos;origine&#xa0;» là où se trouve la platine, «&#xa0;Origine&#xa0;», ou «&#xa0;Aller à&#xa0;» vers un point absolu</translation>
     </message>
@@ -4799,7 +4799,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>Macros</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>&amp;Settings…</source>
         <translation>&amp;Réglages…</translation>
     </message>

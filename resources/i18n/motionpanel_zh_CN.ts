@@ -1633,7 +1633,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>清除轨迹(&amp;C)</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="+72"/>
+        <location filename="../../app/window/device/connection.py" line="+76"/>
         <source>%1 names its protocol: connecting as %2</source>
         <translation>%1 已指明其协议：按 %2 连接</translation>
     </message>
@@ -1689,7 +1689,7 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已断开通过 %2 与 %1 的连接</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+39"/>
         <source>connected to %1 on %2</source>
         <translation>已通过 %2 连接到 %1</translation>
     </message>
@@ -1704,8 +1704,8 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>已到达绝对点：位置从此处开始计数</translation>
     </message>
     <message>
-        <location line="+52"/>
-        <location line="+114"/>
+        <location line="+53"/>
+        <location line="+116"/>
         <source>the position is unknown: this device cannot report it; home it or set home</source>
         <translation>位置未知：此设备无法报告其位置；请回原点或设为原点</translation>
     </message>
@@ -1760,12 +1760,12 @@ Hold a key to keep stepping; Shift for a step ten times bigger.</source>
         <translation>正在重新连接到 %1</translation>
     </message>
     <message>
-        <location line="-280"/>
+        <location line="-296"/>
         <source>port %1 disappeared</source>
         <translation>端口 %1 已消失</translation>
     </message>
     <message>
-        <location line="+293"/>
+        <location line="+309"/>
         <source>%1 on %2</source>
         <translation>%2 上的 %1</translation>
     </message>
@@ -1869,7 +1869,7 @@ Send them anyway?</source>
         <translation>设备报告错误：%1</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/connection.py" line="-109"/>
+        <location filename="../../app/window/device/connection.py" line="-125"/>
         <location filename="../../app/window/device/machine_state.py" line="+5"/>
         <source>device: %1</source>
         <translation>设备：%1</translation>
@@ -1880,12 +1880,12 @@ Send them anyway?</source>
         <translation>%1 失败：%2</translation>
     </message>
     <message>
-        <location filename="../../app/window/device/machine_state.py" line="-115"/>
+        <location filename="../../app/window/device/machine_state.py" line="-118"/>
         <source>home confirmed: the position is counted from here</source>
         <translation>原点已确认：位置从此处开始计数</translation>
     </message>
     <message>
-        <location line="+201"/>
+        <location line="+204"/>
         <source>position unknown: the device cannot be asked and its frames carry absolute targets, so a jog is refused; Set Home where the stage stands, Home, or Go to an absolute point first</source>
         <translation>位置未知：无法查询设备，且其帧携带的是绝对目标，因此点动被拒绝；请先在平台当前所在处“设为原点”、“回原点”，或“定位”到一个绝对点</translation>
     </message>
@@ -4799,7 +4799,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>宏</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>&amp;Settings…</source>
         <translation>设置(&amp;S)…</translation>
     </message>

@@ -81,6 +81,10 @@ class Connection(QObject):
         self.bar = window.connection_bar
         self.last: tuple[str, str, int] | None = None  # port, protocol, baud asked for last
         self.bridge: BridgeSession | None = None
+        self._waiting: DeviceInfo | None = None  # ready while the window's docks were built
+        # A turn after: once the layout has fitted the docks built (as when the device answers
+        # after them), so the device's docks come in as they would then.
+        window.views.usable.connect(lambda: QTimer.singleShot(0, self, self._show_waiting))
         link.wirers.append(self._wire_worker)
         bar = self.bar
         bar.set_protocols(protocol_names())
@@ -310,6 +314,22 @@ class Connection(QObject):
         machine.show_status(state, detail)
 
     def _on_device_ready(self, info: DeviceInfo) -> None:
+        if self.window.views.building():  # the docks, console and menus first (a few 10 ms)
+            self._waiting = info
+            self.machine.held_back = True
+            self.machine.show_status()
+            return
+        self._show_device(info)
+
+    def _show_waiting(self) -> None:
+        info, self._waiting = self._waiting, None
+        self.machine.held_back = False
+        if info is not None and self.machine.connected:  # (not if the link went meanwhile)
+            self._show_device(info)
+        else:
+            self.machine.show_status()
+
+    def _show_device(self, info: DeviceInfo) -> None:
         window = self.window
         text = translate("MainWindow", "connected to %1 on %2")
         connected = fill(text, localized(info.identity), info.port)

@@ -73,6 +73,7 @@ class MachineState(QObject):
         self.estimate: MoveEstimate | None = None  # built with the worker
         self.pause: ProgramPause | None = None  # built with the worker
         self.bridging = False  # bridge mode: the readout follows the traffic (BridgeReadout)
+        self.held_back = False  # the device is ready, shown once the window's docks are built
         link.wirers.append(self._wire)
 
     @property
@@ -131,6 +132,8 @@ class MachineState(QObject):
         if not self.connected:
             name = connection or self.window.connection_bar.state()
             line.set_state(name if name != "connected" else status.IDLE, detail)
+        elif self.held_back:  # not idle before its controls are on
+            line.set_state(status.CONNECTING, detail)
         elif self.pause is not None and self.pause.paused and self.busy_job is not None:
             line.set_state(status.PAUSED, self.busy_job.describe())
         elif self.moving:

@@ -118,6 +118,25 @@ def unshown(qtbot, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> MainWindo
     return win
 
 
+def test_the_device_is_shown_once_the_docks_are_built_and_the_views_follow(
+    qtbot, unshown: MainWindow
+) -> None:
+    """Shown connected means usable: the console, the device docks and the menus are in; the
+    views (and the timeline's plots) may come a few steps later."""
+    seen: list[tuple[bool, bool, bool]] = []
+    unshown.connection.device_shown.connect(
+        lambda: seen.append(
+            (unshown.views.is_usable(), built(unshown.console), built(unshown.devices))
+        )
+    )
+    unshown.show()
+    unshown.connect_device("sim://coxiris?instant=1", "coxiris", 115200)
+    qtbot.waitUntil(lambda: bool(seen) and unshown.views.is_ready(), timeout=20_000)
+    assert seen == [(True, True, True)]
+    assert unshown.timeline is not None and unshown.timeline.plots is not None
+    assert unshown.view2d.objectName() == "positionView2d"
+
+
 def test_the_deferred_parts_get_the_calls_made_before_them(qtbot, unshown: MainWindow) -> None:
     win = unshown
     assert not built(win.console) and not built(win.devices) and not built(win.parameters)
