@@ -50,6 +50,9 @@ def test_jog_back_towards_the_box_is_allowed(
     )
     panel.wait_state("idle", 10.0)
     panel.key("Right")  # away from the box: refused
+    # As an operator: Left once the refusal is shown (a press while the refused step is still
+    # under way starts nothing, and the refusal comes back from the worker).
+    panel.wait_state("error", 10.0)  # the status bar's badge: the refusal shown
     panel.key("Left")
     wait_for(lambda: len(jogs()) >= 2, 10.0, "the second jog towards the box")
     panel.wait_state("idle", 10.0)
