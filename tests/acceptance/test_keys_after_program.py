@@ -33,7 +33,8 @@ def _report(panel: Panel, report: Path, layout: str) -> dict | None:
     panel.alive()
     with contextlib.suppress(FileNotFoundError, json.JSONDecodeError):  # not written yet
         data = json.loads(report.read_text(encoding="utf-8"))
-        if data["layout"] == layout and data["window"] == list(panel.geometry()[2:]):
+        same = data["layout"] == layout and data["window"] == list(panel.geometry()[2:])
+        if same and data["views_ready"]:  # (the docks under the views settle after them)
             return data
     return None
 

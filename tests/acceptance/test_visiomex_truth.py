@@ -47,7 +47,7 @@ def _start(rig: Rig, screen: XServer, tmp_path: Path) -> tuple[Sim, Panel, Path]
 
 def _rect(panel: Panel, report: Path, layout: str, name: str) -> tuple[int, int, int, int]:
     """The control `name` on the screen (x, y, width, height), from the layout report written
-    once the window has settled in `layout` at its present size."""
+    once the window has settled in `layout` at its present size, its views built."""
 
     def found() -> list[int] | None:
         panel.alive()
@@ -56,6 +56,8 @@ def _rect(panel: Panel, report: Path, layout: str, name: str) -> tuple[int, int,
         except (FileNotFoundError, json.JSONDecodeError):
             return None
         if data["layout"] != layout or data["window"] != list(panel.geometry()[2:]):
+            return None
+        if not data["views_ready"]:  # the docks under the views take their height after them
             return None
         return next((c["rect"] for c in data["controls"] if c["name"] == name), None)
 
