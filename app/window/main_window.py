@@ -294,6 +294,7 @@ class MainWindow(QMainWindow):
         self.bottom_balance = DockBalance(self, BOTTOM, grow=True)
         for balance in (self.dock_balance, self.bottom_balance):
             self.views.usable.connect(balance.start)
+            self.views.ready.connect(balance.request)  # the views in place of their stand-ins
             self.layouts.after_apply.append(balance.request)
             self.layouts.after_device.append(balance.request)
         self.views.usable.connect(self.layouts.fit_device)
