@@ -61,7 +61,7 @@ BACKGROUND_2D = QColor(0, 0, 0)  # as pyqtgraph's plots
 
 # The views' libraries, imported a step each before the views are built: the longest import
 # is then the longest wait the event loop has, not all of them together.
-PRELOADED = ("numpy", "pyqtgraph.Qt", "pyqtgraph", "OpenGL.GL", "pyqtgraph.opengl")
+PRELOADED = ("numpy", "pyqtgraph", "OpenGL.GL", "pyqtgraph.opengl")
 
 
 def _preload(name: str) -> None:
@@ -290,9 +290,13 @@ class DeferredViews(QObject):
         if self._ready:
             return
         self.parent().removeEventFilter(self)
-        while self._steps or not self._usable or self._view_steps:
+        while self._left():
             self._run_one()
         self._finish()
+
+    def _left(self) -> bool:
+        """Whether a step (or `usable`, between the two kinds) is still to come."""
+        return bool(self._steps or not self._usable or self._view_steps)
 
     def _run_one(self) -> None:
         """The next step (popped first: they may hold the window, none is kept once run)."""
@@ -310,15 +314,12 @@ class DeferredViews(QObject):
         if self._ready:
             return
         self._run_one()
-        if self._steps or not self._usable or self._view_steps:
+        if self._left():
             QTimer.singleShot(0, self, self._next_step)
         else:
             self._finish()
 
     def _finish(self) -> None:
-        if not self._usable:
-            self._usable = True
-            self.usable.emit()
         if not self._ready:
             self._ready = True
             self.ready.emit()
