@@ -17,6 +17,7 @@ from app.startup_marks import watch_startup
 from app.window.gc_main_thread import collect_for
 from app.window.main_window import MainWindow
 from app.window.preferences import read_preferences
+from drivers.errors import BadInput, UnknownProtocol
 from drivers.protocols.registry import get_protocol_class, protocol_names
 from widgets.gl_share import share_opengl_contexts  # imports no OpenGL, no numpy
 
@@ -82,7 +83,8 @@ def saved_language() -> str:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of motionpanel; returns the exit status."""
-    options = build_parser().parse_args(argv)
+    parser = build_parser()
+    options = parser.parse_args(argv)
     logging.basicConfig(
         level=logging.INFO if options.verbose else logging.WARNING,
         format="motionpanel: %(message)s",
@@ -102,14 +104,25 @@ def main(argv: Sequence[str] | None = None) -> int:
         # No arguments: reconnect to the last port (the simulated stage the first time).
         bar = window.connection_bar
         port, protocol = bar.port(), bar.protocol()
-        baud = bar.baud() or get_protocol_class(protocol).capabilities.default_baud
-    else:  # (a protocol's module is imported before the first paint only when needed here)
-        baud = options.baud or get_protocol_class(protocol).default_baud(options.variant)
+        baud = bar.baud()
+    else:
+        baud = options.baud
+    if options.variant:  # a wrong one is the command line's error, before any window shows
+        try:
+            baud = baud or get_protocol_class(protocol).default_baud(options.variant)
+        except (BadInput, UnknownProtocol) as exc:
+            parser.error(str(exc))
     if options.screenshot:
         take_screenshot(window, options.screenshot, app)
     _marks = watch_startup(window)  # bench/startup.py's (None: not asked for)
+
+    def connect() -> None:
+        """Just after the first paint: the protocol's module is imported (numpy, for some)."""
+        rate = baud or get_protocol_class(protocol).default_baud(options.variant)
+        window.connect_device(port, protocol, rate, options.variant)
+
+    window.views.add(connect, first=True)
     window.show()
-    window.connect_device(port, protocol, baud, options.variant)
     status = app.exec()
     window.close()
     return status
