@@ -55,6 +55,7 @@ FORWARDED = frozenset(
     }
 )
 log = logging.getLogger(__name__)
+VIEWS_BUILT = "views built: the window is complete"  # a --verbose line the tests wait for
 BACKGROUND_3D = QColor(24, 24, 28)  # as the 3D view's scene
 BACKGROUND_2D = QColor(0, 0, 0)  # as pyqtgraph's plots
 
@@ -322,6 +323,7 @@ class DeferredViews(QObject):
     def _finish(self) -> None:
         if not self._ready:
             self._ready = True
+            log.info(VIEWS_BUILT)
             self.ready.emit()
 
     def eventFilter(self, watched: QObject, event: QEvent) -> bool:
