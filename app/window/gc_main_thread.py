@@ -20,6 +20,7 @@ from PySide6.QtCore import QObject, QTimer, SignalInstance, Slot
 
 INTERVAL_MS = 500
 FULL_DEFERRED_S = 10.0  # the longest a full collection waits while the window is behind
+BURST_OBJECTS = 100_000  # young objects in one interval, while behind: a burst being taken in
 
 
 class MainThreadCollector(QObject):
@@ -31,6 +32,8 @@ class MainThreadCollector(QObject):
         """Whether the window is catching up (a traffic backlog): a full collection, which
         walks every live object (tens of ms with the backlog's), waits meanwhile."""
         self._deferred_since: float | None = None
+        self.bursts_set_aside = 0
+        """How many times the young objects of a burst were set aside instead of walked."""
         gc.disable()
         self._timer = QTimer(self)
         self._timer.setInterval(interval_ms)
@@ -46,8 +49,18 @@ class MainThreadCollector(QObject):
 
     @Slot()
     def collect(self) -> int:
-        """Collect the oldest generation whose count is past its threshold; objects freed."""
+        """Collect the oldest generation whose count is past its threshold; objects freed.
+
+        While the window catches up a burst (hundreds of thousands of traffic records, kept by
+        the console), walking its young objects would hold the GUI for tens of ms: they are
+        set aside as `settle` sets aside the window's (`gc.freeze`, which moves lists and walks
+        nothing). A record freed later leaves by its reference count; only a cycle among what
+        was young at that moment is never collected."""
         counts, thresholds = gc.get_count(), gc.get_threshold()
+        if counts[0] >= BURST_OBJECTS and self.behind():
+            gc.freeze()
+            self.bursts_set_aside += 1
+            return 0
         generation = -1
         for level in range(3):
             if counts[level] > thresholds[level]:

@@ -70,3 +70,32 @@ def test_a_full_collection_waits_while_the_window_is_behind(qtbot, monkeypatch) 
     collector.collect()
     assert full == [1, 1, 2, 2]
     collector.deleteLater()
+
+
+def test_a_burst_taken_in_while_behind_is_set_aside_not_walked(qtbot) -> None:
+    """Real objects, the real collector: a burst of young objects while the window is behind
+    is frozen (walked by no collection, now or later); the same burst while the window keeps
+    up is collected as usual."""
+    from app.window import gc_main_thread
+
+    collector = MainThreadCollector(interval_ms=60_000)  # called by hand here
+    gc.collect()
+    behind = [False]
+    collector.behind = lambda: behind[0]
+    try:
+        kept = [[index] for index in range(gc_main_thread.BURST_OBJECTS + 10)]
+        collector.collect()
+        assert gc.get_freeze_count() == 0 and collector.bursts_set_aside == 0  # walked
+        behind[0] = True
+        kept += [[index] for index in range(gc_main_thread.BURST_OBJECTS + 10)]
+        frozen_before = gc.get_freeze_count()
+        assert collector.collect() == 0
+        assert collector.bursts_set_aside == 1
+        assert gc.get_freeze_count() >= frozen_before + gc_main_thread.BURST_OBJECTS
+        assert gc.get_count()[0] < gc.get_threshold()[0]  # nothing young left to walk
+        collector.collect()
+        assert collector.bursts_set_aside == 1  # no burst since
+    finally:
+        del kept
+        gc.unfreeze()
+        collector.deleteLater()
