@@ -20,6 +20,9 @@ def _interrupted(port: str, protocol: str, arrived: Callable[[], object], *args:
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
+        # Ctrl-C as an interactive shell gives it (a shell that ran the tests in the background
+        # leaves SIGINT ignored, and a child inherits that)
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )
     try:
         wait_for(arrived, 15.0, "the move at the device")
