@@ -37,6 +37,7 @@ if TYPE_CHECKING:
     from drivers.link.records import Traffic
     from drivers.protocols.capabilities import Capabilities
     from drivers.protocols.events import PositionReport
+    from drivers.session.bench import Bench, BenchDevice, BenchError, open_bench, read_bench
     from drivers.session.device_session import DeviceSession, open_device
     from drivers.toolpath.loader import load_toolpath
     from drivers.toolpath.model import Toolpath
@@ -51,6 +52,9 @@ _ERRORS = (
 _HOMES = {
     "DeviceSession": "drivers.session.device_session",
     "open_device": "drivers.session.device_session",
+    **dict.fromkeys(
+        ("Bench", "BenchDevice", "BenchError", "open_bench", "read_bench"), "drivers.session.bench"
+    ),
     "PositionReport": "drivers.protocols.events",
     "Whereabouts": "drivers.device.position_truth",
     "TravelLimits": "drivers.device.travel",
@@ -69,6 +73,9 @@ __all__ = [
     "Aborted",
     "BadFile",
     "BadInput",
+    "Bench",
+    "BenchDevice",
+    "BenchError",
     "Capabilities",
     "CommunicationError",
     "DeviceError",
@@ -93,7 +100,9 @@ __all__ = [
     "UnknownProtocol",
     "Whereabouts",
     "load_toolpath",
+    "open_bench",
     "open_device",
+    "read_bench",
 ]
 
 _moved.install()

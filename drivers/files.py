@@ -33,6 +33,7 @@ LOG_MAX_BYTES = 512 * MiB  # streamed, so this bounds the time taken, not memory
 # is pruned to 200 MiB, `motionctl --log` appends to its file without end
 LOG_MAX_LINE = 64 * KiB  # our lines are ~90 characters and spy's ~80: a longer one is no log's
 MACRO_MAX_BYTES = 1 * MiB  # macros are a few KiB: room for hundreds of long ones
+BENCH_MAX_BYTES = 64 * KiB  # a bench names a few devices in some ten lines each: ~1 KiB
 SETTINGS_MAX_BYTES = 1 * MiB  # the panel writes a few KiB: its window layout, numbers per device
 CHUNK_BYTES = 1 * MiB  # a streamed file is read this much at a time
 
