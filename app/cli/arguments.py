@@ -22,6 +22,16 @@ def _add_options(parser: argparse.ArgumentParser, after: bool) -> None:
         **default,
     )
     parser.add_argument(
+        "--bench",
+        metavar="FILE",
+        help="a bench file (TOML, [devices.NAME] tables): the device's port, protocol and "
+        "settings come from it",
+        **default,
+    )
+    parser.add_argument(
+        "--device", metavar="NAME", help="the bench's device to drive (--bench)", **default
+    )
+    parser.add_argument(
         "--protocol",
         choices=PROTOCOL_CHOICES,
         help="the device's protocol; log decode: the one the log's connection notes name, "

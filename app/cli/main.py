@@ -11,6 +11,7 @@ from contextlib import ExitStack
 from typing import Any
 
 from app.cli.arguments import build_parser, check_needs, join_travel, parse_command_line
+from app.cli.bench_entry import at_bench_speed, bench_device
 from app.cli.command_help import command_help, wants_help
 from app.cli.command_line import UsageError, check_arity, run_command, validate_offline
 from app.cli.count import CliCount
@@ -33,6 +34,7 @@ from drivers.device.travel import TravelLimits, parse_travel
 from drivers.errors import BadInput, CommunicationError, DeviceError, MotionError, UnknownProtocol
 from drivers.protocols.base import Protocol
 from drivers.protocols.registry import create_protocol
+from drivers.session.bench import BenchDevice
 from drivers.session.device_session import DeviceSession, open_device
 
 log = logging.getLogger("motionctl")
@@ -61,11 +63,16 @@ def _travel(options: argparse.Namespace) -> TravelLimits | None:
     return limits
 
 
-def _protocol_settings(options: argparse.Namespace, protocol: Protocol) -> dict[str, float]:
-    """The protocol's settings: the options given, else those the panel saved for this port."""
+def _protocol_settings(
+    options: argparse.Namespace, protocol: Protocol, bench: BenchDevice | None = None
+) -> dict[str, float]:
+    """The protocol's settings: the options given, else the bench's, else those the panel
+    saved for this port."""
     values: dict[str, float] = {}
     if options.port is not None:
         values = read_protocol_settings(open_settings(), protocol.name, options.port)
+    if bench is not None:
+        values.update(bench.settings)
     given = {"ticks_per_mm": options.ticks_per_mm, "steps_per_mm": options.steps_per_mm}
     names = {s.name for s in protocol.settings}
     for name, value in given.items():
@@ -139,15 +146,16 @@ def _main(argv: Sequence[str] | None) -> int:
     log_to_stderr(options.verbose)
     report = Reporter(options.json)
     try:
+        bench = bench_device(options, arguments)
         check_arity(options.command, options.args)
         check_needs(options)
-    except UsageError as exc:
+    except (UsageError, BadInput) as exc:
         return report.fail(exc, EXIT_BAD_INPUT)
     if options.protocol is None:  # log decode: the log's notes name it; macro list: all
         return _any_protocol(options, report)
     try:
         protocol = create_protocol(options.protocol, options.variant)
-        protocol.configure(_protocol_settings(options, protocol))
+        protocol.configure(_protocol_settings(options, protocol, bench))
         travel = _travel(options)
         validate_offline(
             options.command, options.args, protocol, travel, options.kind, options.force
@@ -219,6 +227,7 @@ def _main(argv: Sequence[str] | None) -> int:
             session.on_move_started(moves)
             if options.command != "config":
                 session.start()  # e.g. the saved Firmata config: the board reset when opened
+                at_bench_speed(session, bench, options.command)
             if macro is not None:
                 result = run_macro(session, macro)
             else:

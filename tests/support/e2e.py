@@ -96,3 +96,14 @@ def motionctl(
     start = time.monotonic()
     done = subprocess.run(command, capture_output=True, text=True, timeout=timeout, cwd=ROOT)
     return Run(done.returncode, done.stdout, done.stderr, time.monotonic() - start)
+
+
+def motionctl_as_typed(*args: str, timeout: float = 60) -> subprocess.CompletedProcess[str]:
+    """`python -m app.cli ARGS`, exactly as given (no --port or --protocol added)."""
+    return subprocess.run(
+        [sys.executable, "-m", "app.cli", *args],
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+        cwd=ROOT,
+    )

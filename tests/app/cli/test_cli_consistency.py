@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -24,20 +23,14 @@ from drivers.messages import Message, plain_number
 from drivers.protocols import commands as cmd
 from drivers.protocols.coxiris import CoxirisProtocol
 from drivers.protocols.firmata import FirmataProtocol
-from tests.support.simproc import ROOT
+from tests.support.e2e import motionctl_as_typed
 
 pytestmark = pytest.mark.timeout(60)
 
 
 def motionctl(*args: str) -> subprocess.CompletedProcess[str]:
     """`python -m app.cli ARGS`, exactly as given."""
-    return subprocess.run(
-        [sys.executable, "-m", "app.cli", *args],
-        capture_output=True,
-        text=True,
-        timeout=40,
-        cwd=ROOT,
-    )
+    return motionctl_as_typed(*args, timeout=40)
 
 
 def _coxiris_log(path: Path, note: str | None) -> Path:
