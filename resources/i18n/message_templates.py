@@ -4,6 +4,11 @@ app/, for lupdate to read; not imported by anything. Do not edit: run update.py.
 QT_TRANSLATE_NOOP('messages', '--force is for raw only')  # app/cli/arguments.py
 QT_TRANSLATE_NOOP('messages', '{command} needs --port (the device to talk to)')  # app/cli/arguments.py
 QT_TRANSLATE_NOOP('messages', '{command} needs --protocol ({choices})')  # app/cli/arguments.py
+QT_TRANSLATE_NOOP('messages', '--device names a device of a bench: give --bench FILE')  # app/cli/bench_entry.py
+QT_TRANSLATE_NOOP('messages', '--port and --bench both name the device: give one of them')  # app/cli/bench_entry.py
+QT_TRANSLATE_NOOP('messages', '{bench} has {count} devices: choose one with --device ({names})')  # app/cli/bench_entry.py
+QT_TRANSLATE_NOOP('messages', '{bench} has no device {name!r} (it has {names})')  # app/cli/bench_entry.py
+QT_TRANSLATE_NOOP('messages', '--protocol {typed} disagrees with the bench: {name} is {protocol}')  # app/cli/bench_entry.py
 QT_TRANSLATE_NOOP('messages', 'usage: {usage} (got {count} arguments)')  # app/cli/command_line.py
 QT_TRANSLATE_NOOP('messages', 'usage: {usage}')  # app/cli/command_line.py
 QT_TRANSLATE_NOOP('messages', "{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor's steps per revolution and pins (or Configure in the panel's Stepper setup): it is kept and sent again at each run")  # app/cli/devices.py
@@ -463,6 +468,10 @@ QT_TRANSLATE_NOOP('messages', '{command}: expected {wanted}, got {code}')  # dri
 QT_TRANSLATE_NOOP('messages', "Y will not move: at these parameters the firmware's Y loop makes no step (it runs the ramp count, 0; set 22 and 24 so that the ramp length is above 0)")  # drivers/protocols/visiomex/where.py
 QT_TRANSLATE_NOOP('messages', "Y moves {moved:.3f} mm, not {asked:.3f}: the firmware's Y loop runs the ramp count ({loops} of {steps} steps)")  # drivers/protocols/visiomex/where.py
 QT_TRANSLATE_NOOP('messages', '{axis} moves {moved:.3f} mm, not {asked:.3f}: whole steps ({steps}), truncated as the firmware counts')  # drivers/protocols/visiomex/where.py
+QT_TRANSLATE_NOOP('messages', '{source}: {why}')  # drivers/session/bench.py
+QT_TRANSLATE_NOOP('messages', '{where}: device {device!r}: {why}')  # drivers/session/bench.py
+QT_TRANSLATE_NOOP('messages', 'bench file')  # drivers/session/bench.py
+QT_TRANSLATE_NOOP('messages', '{path}: no device {name!r} (the bench has {names})')  # drivers/session/bench.py
 QT_TRANSLATE_NOOP('messages', '{protocol} reports where it is: it is asked')  # drivers/session/device_session.py
 QT_TRANSLATE_NOOP('messages', '{protocol} has no stop command: the device finishes what it was sent')  # drivers/session/device_session.py
 QT_TRANSLATE_NOOP('messages', 'timeout {timeout:g} s refused: it must be positive')  # drivers/session/device_session.py

@@ -4926,7 +4926,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+10"/>
+        <location filename="message_templates.py" line="+15"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>hacia ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5006,7 +5006,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>uso: {usage} (se recibieron {count} argumentos)</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-8"/>
         <source>--force is for raw only</source>
         <translation>--force solo sirve para raw</translation>
     </message>
@@ -5021,7 +5021,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{command} necesita --protocol ({choices})</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
         <source>usage: {usage}</source>
         <translation>uso: {usage}</translation>
     </message>
@@ -5649,7 +5649,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>los datos SysEx deben ser de 7 bits; se recibió {byte:#04x}</translation>
     </message>
     <message>
-        <location line="+352"/>
+        <location line="+356"/>
         <source>{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)</source>
         <translation>{source} no indica ningún protocolo: decodificado como {protocol}, el protocolo que revela su tráfico ({frames} tramas reconocidas)</translation>
     </message>
@@ -5679,7 +5679,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{file}: vacío, no es un registro de Motion Panel ni una captura spy:// de pyserial (el formato raw de spy deja su archivo vacío); {hint}</translation>
     </message>
     <message>
-        <location line="-442"/>
+        <location line="-446"/>
         <source>the device reported: {reported}</source>
         <translation>el dispositivo informó: {reported}</translation>
     </message>
@@ -5984,7 +5984,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{protocol} no tiene consulta de identidad: no se puede preguntar al dispositivo qué es</translation>
     </message>
     <message>
-        <location line="+363"/>
+        <location line="+367"/>
         <source>{where}: {name} {value!r} is not a number</source>
         <translation>{where}: {name} {value!r} no es un número</translation>
     </message>
@@ -6079,12 +6079,37 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>no se puede escribir el programa {path}: {error}</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-173"/>
         <source>this looks like a {found} controller, not {expected}</source>
         <translation>parece un controlador {found}, no {expected}</translation>
     </message>
     <message>
-        <location line="-338"/>
+        <location line="-367"/>
+        <source>--device names a device of a bench: give --bench FILE</source>
+        <translation>--device nombra un dispositivo de un banco: indique --bench ARCHIVO</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--port and --bench both name the device: give one of them</source>
+        <translation>--port y --bench nombran ambos el dispositivo: indique solo uno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{bench} has {count} devices: choose one with --device ({names})</source>
+        <translation>{bench} tiene {count} dispositivos: elija uno con --device ({names})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{bench} has no device {name!r} (it has {names})</source>
+        <translation>{bench} no tiene el dispositivo {name!r} (tiene {names})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--protocol {typed} disagrees with the bench: {name} is {protocol}</source>
+        <translation>--protocol {typed} no coincide con el banco: {name} es {protocol}</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>{what} {text!r} refused: a whole number is needed</source>
         <translation>{what} {text!r} rechazado: se necesita un número entero</translation>
     </message>
@@ -7162,7 +7187,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>protocolo desconocido {name!r} (conocidos: {known})</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+105"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
         <translation>{protocol} no tiene comando de parada: el dispositivo termina lo que se le envió</translation>
     </message>
@@ -7222,7 +7247,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{error} (tras {rounds} rondas; antes se confirmaron {acknowledged} de {total} instrucciones)</translation>
     </message>
     <message>
-        <location line="-175"/>
+        <location line="-179"/>
         <source>protocol {name!r} cannot be loaded: {error}</source>
         <translation>el protocolo {name!r} no se puede cargar: {error}</translation>
     </message>
@@ -7232,7 +7257,27 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>protocolo {name!r}: {target} no es una clase de protocolo</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+98"/>
+        <source>{source}: {why}</source>
+        <translation>{source}: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: device {device!r}: {why}</source>
+        <translation>{where}: dispositivo {device!r}: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bench file</source>
+        <translation>archivo de banco</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{path}: no device {name!r} (the bench has {names})</source>
+        <translation>{path}: no hay dispositivo {name!r} (el banco tiene {names})</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>{name}</source>
         <translation>{name}</translation>
     </message>
@@ -7452,7 +7497,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{where}: se rechaza la velocidad {speed:g} mm/s: el dispositivo admite de {low:g} a {high:g} mm/s; no se ha enviado nada</translation>
     </message>
     <message>
-        <location line="-507"/>
+        <location line="-511"/>
         <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
         <translation>{command} rechazado: el motor paso a paso no está configurado para {port} (la placa lo olvida en cada reinicio y no hay ninguna configuración guardada para este puerto); ejecutar motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 con los pasos por revolución y los pines de su motor (o Configurar en la Configuración del motor del panel): se guarda y se vuelve a enviar en cada ejecución</translation>
     </message>
@@ -7482,7 +7527,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{axis} se mueve {moved:.3f} mm, no {asked:.3f}: pasos enteros ({steps}), truncados como cuenta el firmware</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>{protocol} reports where it is: it is asked</source>
         <translation>{protocol} informa de dónde está: se le consulta</translation>
     </message>
@@ -7562,7 +7607,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{pattern!r}… es una expresión regular demasiado grande: {error}</translation>
     </message>
     <message>
-        <location line="-349"/>
+        <location line="-353"/>
         <source>{url} is not open</source>
         <translation>{url} no está abierto</translation>
     </message>
@@ -7727,7 +7772,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{earlier}; {later}</translation>
     </message>
     <message>
-        <location line="+296"/>
+        <location line="+300"/>
         <source>expected a sim:// URL, got {url!r}</source>
         <translation>se esperaba una URL sim://, se recibió {url!r}</translation>
     </message>
@@ -7752,7 +7797,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>no se puede abrir {port}: {error}</translation>
     </message>
     <message>
-        <location line="-269"/>
+        <location line="-273"/>
         <source>{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first</source>
         <translation>{where} aceptó esta conexión y la cerró de inmediato{said}: probablemente otro cliente tiene el puerto (ser2net atiende a uno cada vez con max-connections: 1); cerrar primero ese cliente</translation>
     </message>

@@ -4926,7 +4926,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+10"/>
+        <location filename="message_templates.py" line="+15"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>vers ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5006,7 +5006,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>usage&#xa0;: {usage} ({count} arguments reçus)</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-8"/>
         <source>--force is for raw only</source>
         <translation>--force ne s&apos;applique qu&apos;à raw</translation>
     </message>
@@ -5021,7 +5021,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{command} nécessite --protocol ({choices})</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
         <source>usage: {usage}</source>
         <translation>usage&#xa0;: {usage}</translation>
     </message>
@@ -5649,7 +5649,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>les données SysEx doivent être sur 7 bits&#xa0;; reçu {byte:#04x}</translation>
     </message>
     <message>
-        <location line="+352"/>
+        <location line="+356"/>
         <source>{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)</source>
         <translation>{source} n&apos;indique aucun protocole&#xa0;: décodé en {protocol}, le protocole que révèle son trafic ({frames} trames reconnues)</translation>
     </message>
@@ -5679,7 +5679,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{file}&#xa0;: vide, ni un journal Motion Panel ni une capture pyserial spy:// (le format raw de spy laisse son fichier vide)&#xa0;; {hint}</translation>
     </message>
     <message>
-        <location line="-442"/>
+        <location line="-446"/>
         <source>the device reported: {reported}</source>
         <translation>l&apos;appareil a signalé&#xa0;: {reported}</translation>
     </message>
@@ -5984,7 +5984,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{protocol} n&apos;a pas de requête d&apos;identification&#xa0;: l&apos;appareil ne peut pas être interrogé sur ce qu&apos;il est</translation>
     </message>
     <message>
-        <location line="+363"/>
+        <location line="+367"/>
         <source>{where}: {name} {value!r} is not a number</source>
         <translation>{where}&#xa0;: {name} {value!r} n&apos;est pas un nombre</translation>
     </message>
@@ -6079,12 +6079,37 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>impossible d&apos;écrire le programme {path}&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-173"/>
         <source>this looks like a {found} controller, not {expected}</source>
         <translation>cela ressemble à un contrôleur {found}, pas {expected}</translation>
     </message>
     <message>
-        <location line="-338"/>
+        <location line="-367"/>
+        <source>--device names a device of a bench: give --bench FILE</source>
+        <translation>--device désigne un appareil d&apos;un banc&#xa0;: donnez --bench FICHIER</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--port and --bench both name the device: give one of them</source>
+        <translation>--port et --bench désignent tous deux l&apos;appareil&#xa0;: n&apos;en donnez qu&apos;un</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{bench} has {count} devices: choose one with --device ({names})</source>
+        <translation>{bench} a {count} appareils&#xa0;: choisissez-en un avec --device ({names})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{bench} has no device {name!r} (it has {names})</source>
+        <translation>{bench} n&apos;a pas d&apos;appareil {name!r} (il a {names})</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--protocol {typed} disagrees with the bench: {name} is {protocol}</source>
+        <translation>--protocol {typed} contredit le banc&#xa0;: {name} est {protocol}</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>{what} {text!r} refused: a whole number is needed</source>
         <translation>{what} {text!r} refusé : un nombre entier est nécessaire</translation>
     </message>
@@ -7162,7 +7187,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>protocole inconnu {name!r} (connus&#xa0;: {known})</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+105"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
         <translation>{protocol} n&apos;a pas de commande d&apos;arrêt&#xa0;: l&apos;appareil termine ce qui lui a été envoyé</translation>
     </message>
@@ -7222,7 +7247,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{error} (après {rounds} séries de tentatives&#xa0;; {acknowledged} instructions sur {total} avaient été acquittées auparavant)</translation>
     </message>
     <message>
-        <location line="-175"/>
+        <location line="-179"/>
         <source>protocol {name!r} cannot be loaded: {error}</source>
         <translation>le protocole {name!r} ne peut pas être chargé : {error}</translation>
     </message>
@@ -7232,7 +7257,27 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>protocole {name!r} : {target} n’est pas une classe de protocole</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+98"/>
+        <source>{source}: {why}</source>
+        <translation>{source}&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: device {device!r}: {why}</source>
+        <translation>{where}&#xa0;: appareil {device!r}&#xa0;: {why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bench file</source>
+        <translation>fichier de banc</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{path}: no device {name!r} (the bench has {names})</source>
+        <translation>{path}&#xa0;: pas d&apos;appareil {name!r} (le banc a {names})</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>{name}</source>
         <translation>{name}</translation>
     </message>
@@ -7452,7 +7497,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{where}&#xa0;: vitesse {speed:g} mm/s refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} mm/s&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
     <message>
-        <location line="-507"/>
+        <location line="-511"/>
         <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
         <translation>{command} refusé&#xa0;: le moteur pas à pas n&apos;est pas configuré pour {port} (la carte l&apos;oublie à chaque réinitialisation, et aucune configuration n&apos;est conservée pour ce port)&#xa0;; lancer motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 avec le nombre de pas par tour et les broches de votre moteur (ou «&#xa0;Configurer&#xa0;» dans la Configuration du moteur du panneau)&#xa0;: elle est conservée et renvoyée à chaque exécution</translation>
     </message>
@@ -7482,7 +7527,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{axis} se déplace de {moved:.3f} mm, et non de {asked:.3f}&#xa0;: pas entiers ({steps}), tronqués comme les compte le firmware</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>{protocol} reports where it is: it is asked</source>
         <translation>{protocol} indique où il se trouve&#xa0;: il est interrogé</translation>
     </message>
@@ -7562,7 +7607,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{pattern!r}… est une expression régulière trop grande&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="-349"/>
+        <location line="-353"/>
         <source>{url} is not open</source>
         <translation>{url} n&apos;est pas ouvert</translation>
     </message>
@@ -7727,7 +7772,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{earlier}&#xa0;; {later}</translation>
     </message>
     <message>
-        <location line="+296"/>
+        <location line="+300"/>
         <source>expected a sim:// URL, got {url!r}</source>
         <translation>URL sim:// attendue, reçu {url!r}</translation>
     </message>
@@ -7752,7 +7797,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>impossible d&apos;ouvrir {port}&#xa0;: {error}</translation>
     </message>
     <message>
-        <location line="-269"/>
+        <location line="-273"/>
         <source>{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first</source>
         <translation>{where} a accepté cette connexion et l&apos;a fermée aussitôt{said}&#xa0;: un autre client occupe probablement le port (ser2net n&apos;en sert qu&apos;un à la fois avec max-connections: 1)&#xa0;; fermer d&apos;abord ce client</translation>
     </message>

@@ -4926,7 +4926,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
 <context>
     <name>messages</name>
     <message>
-        <location filename="message_templates.py" line="+10"/>
+        <location filename="message_templates.py" line="+15"/>
         <source>to ({x:g}, {y:g}, {z:g}) mm</source>
         <translation>前往 ({x:g}, {y:g}, {z:g}) mm</translation>
     </message>
@@ -5006,7 +5006,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>用法：{usage}（收到 {count} 个参数）</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-8"/>
         <source>--force is for raw only</source>
         <translation>--force 仅适用于 raw</translation>
     </message>
@@ -5021,7 +5021,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{command} 需要 --protocol（{choices}）</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
         <source>usage: {usage}</source>
         <translation>用法：{usage}</translation>
     </message>
@@ -5649,7 +5649,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>SysEx 数据必须为 7 位；收到 {byte:#04x}</translation>
     </message>
     <message>
-        <location line="+352"/>
+        <location line="+356"/>
         <source>{source} names no protocol: decoded as {protocol}, which its traffic reads as ({frames} frames recognised)</source>
         <translation>{source} 未指明协议：按 {protocol} 解码，其通信内容符合该协议（识别出 {frames} 帧）</translation>
     </message>
@@ -5679,7 +5679,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{file}：文件为空，既不是 Motion Panel 日志，也不是 pyserial spy:// 捕获文件（spy 的 raw 格式会使其文件为空）；{hint}</translation>
     </message>
     <message>
-        <location line="-442"/>
+        <location line="-446"/>
         <source>the device reported: {reported}</source>
         <translation>设备报告：{reported}</translation>
     </message>
@@ -5984,7 +5984,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{protocol} 没有身份查询命令：无法查询设备的身份</translation>
     </message>
     <message>
-        <location line="+363"/>
+        <location line="+367"/>
         <source>{where}: {name} {value!r} is not a number</source>
         <translation>{where}：{name} {value!r} 不是数字</translation>
     </message>
@@ -6079,12 +6079,37 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>无法写入程序 {path}：{error}</translation>
     </message>
     <message>
-        <location line="-169"/>
+        <location line="-173"/>
         <source>this looks like a {found} controller, not {expected}</source>
         <translation>这看起来是 {found} 控制器，而不是 {expected}</translation>
     </message>
     <message>
-        <location line="-338"/>
+        <location line="-367"/>
+        <source>--device names a device of a bench: give --bench FILE</source>
+        <translation>--device 指定的是工作台中的设备：请给出 --bench 文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--port and --bench both name the device: give one of them</source>
+        <translation>--port 和 --bench 都指定了设备：只给出其中一个</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{bench} has {count} devices: choose one with --device ({names})</source>
+        <translation>{bench} 有 {count} 台设备：用 --device 选择一台（{names}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{bench} has no device {name!r} (it has {names})</source>
+        <translation>{bench} 没有设备 {name!r}（它有 {names}）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>--protocol {typed} disagrees with the bench: {name} is {protocol}</source>
+        <translation>--protocol {typed} 与工作台不符：{name} 是 {protocol}</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>{what} {text!r} refused: a whole number is needed</source>
         <translation>{what} {text!r} 被拒绝：需要整数</translation>
     </message>
@@ -7162,7 +7187,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>未知协议 {name!r}（已知：{known}）</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+105"/>
         <source>{protocol} has no stop command: the device finishes what it was sent</source>
         <translation>{protocol} 没有停止命令：设备会完成已发给它的内容</translation>
     </message>
@@ -7222,7 +7247,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{error}（经过 {rounds} 轮重试；此前 {total} 条指令中已有 {acknowledged} 条得到确认）</translation>
     </message>
     <message>
-        <location line="-175"/>
+        <location line="-179"/>
         <source>protocol {name!r} cannot be loaded: {error}</source>
         <translation>无法加载协议 {name!r}：{error}</translation>
     </message>
@@ -7232,7 +7257,27 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>协议 {name!r}：{target} 不是协议类</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+98"/>
+        <source>{source}: {why}</source>
+        <translation>{source}：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{where}: device {device!r}: {why}</source>
+        <translation>{where}：设备 {device!r}：{why}</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bench file</source>
+        <translation>工作台文件</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>{path}: no device {name!r} (the bench has {names})</source>
+        <translation>{path}：没有设备 {name!r}（工作台有 {names}）</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>{name}</source>
         <translation>{name}</translation>
     </message>
@@ -7452,7 +7497,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{where}：速度 {speed:g} mm/s 被拒绝：设备允许 {low:g} 至 {high:g} mm/s；未发送任何内容</translation>
     </message>
     <message>
-        <location line="-507"/>
+        <location line="-511"/>
         <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
         <translation>{command} 被拒绝：{port} 的步进电机尚未配置（控制板每次复位都会丢失该配置，且此端口没有保存的配置）；请运行 motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9，并换成您电机的每转步数和引脚（或在面板的“步进电机设置”中点击“配置”）：该配置会被保存，并在每次运行时重新发送</translation>
     </message>
@@ -7482,7 +7527,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{axis} 轴移动 {moved:.3f} mm，而不是 {asked:.3f}：按整步计（{steps} 步），按固件的计数方式截断</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+5"/>
         <source>{protocol} reports where it is: it is asked</source>
         <translation>{protocol} 会报告其位置：直接向其查询</translation>
     </message>
@@ -7562,7 +7607,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{pattern!r}… 正则表达式过大：{error}</translation>
     </message>
     <message>
-        <location line="-349"/>
+        <location line="-353"/>
         <source>{url} is not open</source>
         <translation>{url} 未打开</translation>
     </message>
@@ -7727,7 +7772,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{earlier}；{later}</translation>
     </message>
     <message>
-        <location line="+296"/>
+        <location line="+300"/>
         <source>expected a sim:// URL, got {url!r}</source>
         <translation>应为 sim:// URL，收到 {url!r}</translation>
     </message>
@@ -7752,7 +7797,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>无法打开 {port}：{error}</translation>
     </message>
     <message>
-        <location line="-269"/>
+        <location line="-273"/>
         <source>{where} accepted this connection and closed it at once{said}: another client probably holds the port (ser2net serves one at a time with max-connections: 1); close it there first</source>
         <translation>{where} 接受了此连接后立即将其关闭{said}：可能有其他客户端占用该端口（设置 max-connections: 1 时，ser2net 一次只服务一个客户端）；请先关闭那个客户端</translation>
     </message>

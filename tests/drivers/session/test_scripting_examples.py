@@ -46,12 +46,12 @@ def _run(code: str) -> list[str]:
     return done.stderr.splitlines()
 
 
-def test_the_section_has_the_three_examples() -> None:
-    assert len(_examples()) == 3
+def test_the_section_has_the_four_examples() -> None:
+    assert len(_examples()) == 4
 
 
 def test_the_grid_example_logs_25_positions_on_the_grid() -> None:
-    lines = _run(_example('"sim://coxiris"'))
+    lines = _run(_example('open_device("sim://coxiris"'))
     grid = [re.fullmatch(r"(\d),(\d): (\S+) (\S+) (\S+)", line) for line in lines]
     points = [m for m in grid if m is not None]
     assert len(points) == 25
@@ -72,7 +72,7 @@ def test_the_profile_example_has_each_value_confirmed() -> None:
 
 
 def test_the_laser_example_reports_progress_until_all_are_executed() -> None:
-    lines = _run(_example('"sim://laser-frame"'))
+    lines = _run(_example('open_device("sim://laser-frame"'))
     progress = [re.fullmatch(r"(\d+)/49 acknowledged, (\d+) executed", line) for line in lines]
     steps = [(int(m[1]), int(m[2])) for m in progress if m is not None]
     assert len(steps) >= 3  # told after each frame of 7, and while the queue drains
@@ -85,6 +85,11 @@ def test_the_laser_example_reports_progress_until_all_are_executed() -> None:
 def test_the_grid_example_prints_only_its_own_lines() -> None:
     """The example configures logging at INFO for itself: the library adds no line of its own
     (how the device replies to a move is the library's business, logged at DEBUG)."""
-    lines = _run(_example('"sim://coxiris"'))
+    lines = _run(_example('open_device("sim://coxiris"'))
     own = re.compile(r"device \S+|\d,\d: \S+ \S+ \S+")
     assert [line for line in lines if not own.fullmatch(line)] == []
+
+
+def test_the_bench_example_logs_where_each_device_went() -> None:
+    lines = _run(_example("open_bench"))
+    assert lines == ["stage: 10.00 5.00 2.00", "head: -3.00 4.00 0.00"]
