@@ -99,6 +99,8 @@ QT_TRANSLATE_NOOP('messages', '{error}; not sent: {jobs}')  # app/window/device/
 QT_TRANSLATE_NOOP('messages', '{error}; connecting again when {url} is back')  # app/window/device/worker_connection.py
 QT_TRANSLATE_NOOP('messages', '{url} is back: connecting again')  # app/window/device/worker_connection.py
 QT_TRANSLATE_NOOP('messages', 'the device says: {text}')  # app/window/device/worker_connection.py
+QT_TRANSLATE_NOOP('messages', '{axis} {value:g} mm refused: outside {low:g}..{high:g} mm (travel limits)')  # drivers/bluesky/stage.py
+QT_TRANSLATE_NOOP('messages', 'the stage is not connected: connect it first')  # drivers/bluesky/stage.py
 QT_TRANSLATE_NOOP('messages', 'the bridge to {device} is closed')  # drivers/bridge/snoop.py
 QT_TRANSLATE_NOOP('messages', 'cannot create a pseudo-terminal for {device}: {error}')  # drivers/bridge/snoop.py
 QT_TRANSLATE_NOOP('messages', 'the bridge is not open')  # drivers/bridge/snoop.py

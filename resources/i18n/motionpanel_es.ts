@@ -5374,7 +5374,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>el dispositivo dice: {text}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>the bridge to {device} is closed</source>
         <translation>el puente a {device} está cerrado</translation>
     </message>
@@ -6084,7 +6084,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>parece un controlador {found}, no {expected}</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-369"/>
         <source>--device names a device of a bench: give --bench FILE</source>
         <translation>--device nombra un dispositivo de un banco: indique --bench ARCHIVO</translation>
     </message>
@@ -6124,7 +6124,17 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>«{command}» es una orden de {owner}, no de {protocol}</translation>
     </message>
     <message>
-        <location line="+193"/>
+        <location line="+58"/>
+        <source>{axis} {value:g} mm refused: outside {low:g}..{high:g} mm (travel limits)</source>
+        <translation>{axis} {value:g} mm rechazado: fuera de {low:g}..{high:g} mm (límites de recorrido)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the stage is not connected: connect it first</source>
+        <translation>la platina no está conectada: conéctela primero</translation>
+    </message>
+    <message>
+        <location line="+136"/>
         <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
         <translation>{setting} {value} rechazado: de {minimum:g} a {maximum:g} {unit}</translation>
     </message>
@@ -7497,7 +7507,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{where}: se rechaza la velocidad {speed:g} mm/s: el dispositivo admite de {low:g} a {high:g} mm/s; no se ha enviado nada</translation>
     </message>
     <message>
-        <location line="-511"/>
+        <location line="-513"/>
         <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
         <translation>{command} rechazado: el motor paso a paso no está configurado para {port} (la placa lo olvida en cada reinicio y no hay ninguna configuración guardada para este puerto); ejecutar motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 con los pasos por revolución y los pines de su motor (o Configurar en la Configuración del motor del panel): se guarda y se vuelve a enviar en cada ejecución</translation>
     </message>
@@ -7507,7 +7517,7 @@ hex: bytes como 48 45 4C 4C 4F, enviados tal cual</translation>
         <translation>{file} no indica ningún protocolo (sin nota de conexión) y ningún protocolo reconoce su tráfico: indicar --protocol</translation>
     </message>
     <message>
-        <location line="+386"/>
+        <location line="+388"/>
         <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
         <translation>La velocidad no se puede fijar aquí: esta revisión del firmware temporiza sus pasos solo a partir de step_delay_instantaneous (15, 16), no de input_speed_steady (21, 22). &quot;dispositivo:&quot; es la velocidad a la que avanza X (15 en alto más 16 en bajo por paso); cambiar 15 y 16 en la tabla de parámetros para modificarla.</translation>
     </message>

@@ -5374,7 +5374,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>l&apos;appareil dit&#xa0;: {text}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>the bridge to {device} is closed</source>
         <translation>la passerelle vers {device} est fermée</translation>
     </message>
@@ -6084,7 +6084,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>cela ressemble à un contrôleur {found}, pas {expected}</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-369"/>
         <source>--device names a device of a bench: give --bench FILE</source>
         <translation>--device désigne un appareil d&apos;un banc&#xa0;: donnez --bench FICHIER</translation>
     </message>
@@ -6124,7 +6124,17 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>« {command} » est une commande de {owner}, pas de {protocol}</translation>
     </message>
     <message>
-        <location line="+193"/>
+        <location line="+58"/>
+        <source>{axis} {value:g} mm refused: outside {low:g}..{high:g} mm (travel limits)</source>
+        <translation>{axis} {value:g} mm refusé&#xa0;: hors de {low:g}..{high:g} mm (limites de course)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the stage is not connected: connect it first</source>
+        <translation>la platine n&apos;est pas connectée&#xa0;: connectez-la d&apos;abord</translation>
+    </message>
+    <message>
+        <location line="+136"/>
         <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
         <translation>{setting} {value} refusé&#xa0;: de {minimum:g} à {maximum:g} {unit}</translation>
     </message>
@@ -7497,7 +7507,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{where}&#xa0;: vitesse {speed:g} mm/s refusée&#xa0;: l&apos;appareil accepte de {low:g} à {high:g} mm/s&#xa0;; rien n&apos;a été envoyé</translation>
     </message>
     <message>
-        <location line="-511"/>
+        <location line="-513"/>
         <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
         <translation>{command} refusé&#xa0;: le moteur pas à pas n&apos;est pas configuré pour {port} (la carte l&apos;oublie à chaque réinitialisation, et aucune configuration n&apos;est conservée pour ce port)&#xa0;; lancer motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 avec le nombre de pas par tour et les broches de votre moteur (ou «&#xa0;Configurer&#xa0;» dans la Configuration du moteur du panneau)&#xa0;: elle est conservée et renvoyée à chaque exécution</translation>
     </message>
@@ -7507,7 +7517,7 @@ hex&#xa0;: octets comme 48 45 4C 4C 4F, envoyés tels quels</translation>
         <translation>{file} n&apos;indique aucun protocole (pas de note de connexion) et aucun protocole ne reconnaît son trafic&#xa0;: indiquer --protocol</translation>
     </message>
     <message>
-        <location line="+386"/>
+        <location line="+388"/>
         <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
         <translation>La vitesse ne peut pas être réglée ici&#xa0;: cette révision du firmware cadence ses pas uniquement sur step_delay_instantaneous (15, 16), et non sur input_speed_steady (21, 22). «&#xa0;appareil&#xa0;:&#xa0;» est la vitesse à laquelle X fait ses pas (15 à l&apos;état haut plus 16 à l&apos;état bas par pas)&#xa0;; modifier 15 et 16 dans le tableau des paramètres pour la changer.</translation>
     </message>

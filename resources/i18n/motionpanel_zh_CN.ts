@@ -5374,7 +5374,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>设备消息：{text}</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>the bridge to {device} is closed</source>
         <translation>到 {device} 的桥接已关闭</translation>
     </message>
@@ -6084,7 +6084,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>这看起来是 {found} 控制器，而不是 {expected}</translation>
     </message>
     <message>
-        <location line="-367"/>
+        <location line="-369"/>
         <source>--device names a device of a bench: give --bench FILE</source>
         <translation>--device 指定的是工作台中的设备：请给出 --bench 文件</translation>
     </message>
@@ -6124,7 +6124,17 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>“{command}”是 {owner} 的命令，不是 {protocol} 的</translation>
     </message>
     <message>
-        <location line="+193"/>
+        <location line="+58"/>
+        <source>{axis} {value:g} mm refused: outside {low:g}..{high:g} mm (travel limits)</source>
+        <translation>{axis} {value:g} mm 被拒绝：超出 {low:g}..{high:g} mm（行程限制）</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the stage is not connected: connect it first</source>
+        <translation>平台未连接：请先连接</translation>
+    </message>
+    <message>
+        <location line="+136"/>
         <source>{setting} {value} refused: {minimum:g} to {maximum:g} {unit}</source>
         <translation>{setting} {value} 被拒绝：允许 {minimum:g} 至 {maximum:g} {unit}</translation>
     </message>
@@ -7497,7 +7507,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{where}：速度 {speed:g} mm/s 被拒绝：设备允许 {low:g} 至 {high:g} mm/s；未发送任何内容</translation>
     </message>
     <message>
-        <location line="-511"/>
+        <location line="-513"/>
         <source>{command} refused: the stepper is not configured for {port} (the board forgets it at each reset, and none is kept for this port); run motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9 with your motor&apos;s steps per revolution and pins (or Configure in the panel&apos;s Stepper setup): it is kept and sent again at each run</source>
         <translation>{command} 被拒绝：{port} 的步进电机尚未配置（控制板每次复位都会丢失该配置，且此端口没有保存的配置）；请运行 motionctl --port {port} --protocol firmata config --steps-per-rev 200 --pins 8 9，并换成您电机的每转步数和引脚（或在面板的“步进电机设置”中点击“配置”）：该配置会被保存，并在每次运行时重新发送</translation>
     </message>
@@ -7507,7 +7517,7 @@ hex: bytes like 48 45 4C 4C 4F, sent as they are</source>
         <translation>{file} 未指明协议（没有连接说明），且没有任何协议能识别其通信内容：请指定 --protocol</translation>
     </message>
     <message>
-        <location line="+386"/>
+        <location line="+388"/>
         <source>The speed cannot be set here: this firmware revision times its steps from step_delay_instantaneous (15, 16) alone, not from input_speed_steady (21, 22). &quot;device:&quot; is the speed X steps at (15 high plus 16 low a step); change 15 and 16 in the parameter table to change it.</source>
         <translation>此处无法设置速度：此固件版本仅根据 step_delay_instantaneous（15、16）确定步进时序，而不是 input_speed_steady（21、22）。“设备：”是 X 的步进速度（每步 15 高电平加 16 低电平）；要改变它，请在参数表中修改 15 和 16。</translation>
     </message>
