@@ -21,7 +21,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from bench import bridge_latency, ser2net_latency, startup  # noqa: E402
+from bench import bluesky_scan, bridge_latency, ser2net_latency, startup  # noqa: E402
 from bench.laser_stream import bench_laser_stream  # noqa: E402
 from bench.motionsim import motionsim  # noqa: E402
 from bench.visiomex_write import bench_visiomex_write  # noqa: E402
@@ -279,6 +279,7 @@ def main() -> int:
         "startup": startup.measure(3 if options.quick else 5),
         "trail": bench_trail(1_000_000),  # --quick too: about 10 s
         "program_preview": bench_program_preview(100_000),  # --quick too: about 20 s
+        "bluesky_scan": bluesky_scan.measure(1 if options.quick else 3),
     }
     results["console_lines_per_s"] = results["console"]["console_lines_per_s"]
     trips = results["round_trips"]
@@ -291,6 +292,7 @@ def main() -> int:
     preview = results["program_preview"]
     results["program_parse_preview_s_1e5"] = preview.get("parse_preview_s")  # None: no display
     results["program_frame_ratio"] = preview.get("frame_ratio")
+    results["bluesky_grid_overhead"] = results["bluesky_scan"]["bluesky_grid_overhead"]
     if options.json:
         print(json.dumps(results, indent=None))
     else:
